@@ -1,0 +1,52 @@
+// Plain config structs with the paper's defaults (SI units), and their strict JSON parsing.
+// Every key, its unit and range are listed in configs/README.md.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+
+#include "core/dynamics_config.h"
+#include "core/material.h"
+
+namespace tbridge {
+
+struct BridgeConfig {
+  int n = 2;                // complexity: self-similar iterations, 1..14
+  int p = 1;                // bars per substructure module, 1..8
+  double beta_deg = 10.0;   // aspect angle [deg], (0, 90)
+  double span = 12.0;       // L [m]
+  double payload = 12000.0; // F, total external payload [N]
+  double deck_width = 1.5;  // w_d, deck beam width and distance between planes [m]
+  int planes = 1;           // 1 = planar bridge, 2 = 3D bridge of two coupled planes
+};
+
+struct DesignConfig {
+  double yield_safety_factor = 10.0;     // sigma_w = yield_stress / this, for members and deck
+  double buckling_safety_factor = 1.0;   // multiplies the bar force in the Euler check
+  double deck_string_min_radius = 0.01;  // [m]; deck strings are prestressed at sigma_w
+  double bar_min_radius = 0.0;           // [m]; 0 = no minimum
+  double gravity = 9.81;                 // g [m/s^2], for the deck self-weight
+  std::string solver = "ipopt";          // "ipopt" | "nlopt"
+  double tolerance = 1e-10;              // relative optimality tolerance of the solver
+  int max_iterations = 3000;             // solver iteration limit
+};
+
+struct Config {
+  BridgeConfig bridge;
+  Material material;
+  DesignConfig design;
+  std::optional<DynamicsConfig> dynamics;  // present when the file has a "dynamics" section
+};
+
+// Allowed structural limits checked by ParseConfig (exposed for messages and tests).
+inline constexpr int kMaxComplexity = 14;
+inline constexpr int kMaxBarsPerModule = 8;
+
+// Parses a whole config; throws ConfigError (key, value, allowed) on any bad or unknown key.
+Config ParseConfig(const nlohmann::json& root);
+Config LoadConfig(const std::string& path);
+// The resolved config, every default filled in, for echoing into outputs.
+nlohmann::json ToJson(const Config& config);
+
+}  // namespace tbridge

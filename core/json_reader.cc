@@ -1,0 +1,209 @@
+#include "core/json_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace tbridge {
+
+namespace {
+std::string Num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+bool Range::Contains(double v) const {
+  if (lo_open ? !(v > lo) : !(v >= lo)) return false;
+  if (hi_open ? !(v < hi) : !(v <= hi)) return false;
+  return true;
+}
+
+std::string Range::Describe() const {
+  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+  if (has_lo && has_hi) {
+    return std::string("a number in ") + (lo_open ? "(" : "[") + Num(lo) + ", " + Num(hi) +
+           (hi_open ? ")" : "]");
+  }
+  if (has_lo) return std::string("a number ") + (lo_open ? "> " : ">= ") + Num(lo);
+  if (has_hi) return std::string("a number ") + (hi_open ? "< " : "<= ") + Num(hi);
+  return "a finite number";
+}
+
+std::string Show(const nlohmann::json& value) {
+  std::string s = value.dump();
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+JsonSection::JsonSection(const nlohmann::json& object, std::string path)
+    : object_(object), path_(std::move(path)) {
+  if (!object_.is_object()) {
+    throw ConfigError(path_.empty() ? "(root)" : path_, Show(object_), "must be a JSON object");
+  }
+}
+
+std::string JsonSection::PathOf(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+const nlohmann::json& JsonSection::Get(const std::string& key) {
+  read_.push_back(key);
+  return object_.at(key);
+}
+
+double JsonSection::Number(const std::string& key, std::optional<double> fallback, Range range) {
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: " + range.Describe());
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_number()) throw ConfigError(PathOf(key), Show(v), "must be " + range.Describe());
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || !range.Contains(d)) {
+    throw ConfigError(PathOf(key), Show(v), "must be " + range.Describe());
+  }
+  return d;
+}
+
+int JsonSection::Integer(const std::string& key, std::optional<int> fallback, int lo, int hi) {
+  const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: " + allowed);
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_number()) throw ConfigError(PathOf(key), Show(v), "must be " + allowed);
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || d != std::floor(d) || d < lo || d > hi) {
+    throw ConfigError(PathOf(key), Show(v), "must be " + allowed);
+  }
+  return static_cast<int>(d);
+}
+
+bool JsonSection::Bool(const std::string& key, std::optional<bool> fallback) {
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: true or false");
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_boolean()) throw ConfigError(PathOf(key), Show(v), "must be true or false");
+  return v.get<bool>();
+}
+
+std::string JsonSection::Choice(const std::string& key, std::optional<std::string> fallback,
+                                const std::vector<std::string>& allowed) {
+  std::string list;
+  for (const std::string& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: one of " + list);
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_string() ||
+      std::find(allowed.begin(), allowed.end(), v.get<std::string>()) == allowed.end()) {
+    throw ConfigError(PathOf(key), Show(v), "must be one of " + list);
+  }
+  return v.get<std::string>();
+}
+
+std::string JsonSection::Text(const std::string& key, std::optional<std::string> fallback) {
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: a non-empty string");
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_string() || v.get<std::string>().empty()) {
+    throw ConfigError(PathOf(key), Show(v), "must be a non-empty string");
+  }
+  return v.get<std::string>();
+}
+
+std::vector<double> JsonSection::Numbers(const std::string& key,
+                                         std::optional<std::vector<double>> fallback, Range range) {
+  if (!Has(key)) {
+    if (!fallback) {
+      throw ConfigError(PathOf(key), "(missing)", "required: a list of " + range.Describe() + "s");
+    }
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_array()) throw ConfigError(PathOf(key), Show(v), "must be a list of numbers");
+  std::vector<double> out;
+  for (size_t k = 0; k < v.size(); ++k) {
+    const std::string item = PathOf(key) + "[" + std::to_string(k) + "]";
+    if (!v[k].is_number()) throw ConfigError(item, Show(v[k]), "must be " + range.Describe());
+    const double d = v[k].get<double>();
+    if (!std::isfinite(d) || !range.Contains(d)) {
+      throw ConfigError(item, Show(v[k]), "must be " + range.Describe());
+    }
+    out.push_back(d);
+  }
+  return out;
+}
+
+std::vector<int> JsonSection::Integers(const std::string& key,
+                                       std::optional<std::vector<int>> fallback, int lo, int hi) {
+  const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: a list of integers");
+    return *fallback;
+  }
+  const nlohmann::json& v = Get(key);
+  if (!v.is_array()) throw ConfigError(PathOf(key), Show(v), "must be a list of integers");
+  std::vector<int> out;
+  for (size_t k = 0; k < v.size(); ++k) {
+    const std::string item = PathOf(key) + "[" + std::to_string(k) + "]";
+    const double d = v[k].is_number() ? v[k].get<double>() : std::nan("");
+    if (!std::isfinite(d) || d != std::floor(d) || d < lo || d > hi) {
+      throw ConfigError(item, Show(v[k]), "must be " + allowed);
+    }
+    out.push_back(static_cast<int>(d));
+  }
+  return out;
+}
+
+JsonSection JsonSection::Section(const std::string& key, bool optional_section) {
+  if (!Has(key)) {
+    if (!optional_section) throw ConfigError(PathOf(key), "(missing)", "required section");
+    return JsonSection(nlohmann::json::object(), PathOf(key));
+  }
+  return JsonSection(Get(key), PathOf(key));
+}
+
+const nlohmann::json* JsonSection::Raw(const std::string& key) {
+  if (!Has(key)) return nullptr;
+  return &Get(key);
+}
+
+void JsonSection::Finish() const {
+  for (auto it = object_.begin(); it != object_.end(); ++it) {
+    if (std::find(read_.begin(), read_.end(), it.key()) == read_.end()) {
+      throw ConfigError(PathOf(it.key()), Show(it.value()),
+                        "unknown key (see configs/README.md for the keys allowed here)");
+    }
+  }
+}
+
+nlohmann::json ParseJsonText(const std::string& text, const std::string& source) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ConfigError(source + ": malformed JSON: " + e.what());
+  }
+}
+
+nlohmann::json ReadJsonFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(path + ": cannot open file for reading");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw ConfigError(path + ": read error");
+  return ParseJsonText(buffer.str(), path);
+}
+
+}  // namespace tbridge

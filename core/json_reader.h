@@ -1,0 +1,74 @@
+// Strict reading of JSON config objects: every key is typed, range-checked and consumed;
+// any key left unread is an error. Errors name the full key path, the value and what is allowed.
+#pragma once
+
+#include <initializer_list>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tbridge {
+
+// Closed or open numeric bounds for a config value.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+
+  static Range Positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range NonNegative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range Closed(double a, double b) { return {a, b, false, false}; }
+  static Range Open(double a, double b) { return {a, b, true, true}; }
+  bool Contains(double v) const;
+  std::string Describe() const;
+};
+
+class JsonSection {
+ public:
+  // `path` is the dotted key path of `object` ("" for the root). Throws ConfigError if
+  // `object` is not a JSON object.
+  JsonSection(const nlohmann::json& object, std::string path);
+
+  bool Has(const std::string& key) const { return object_.contains(key); }
+  // Finite number in `range`; `fallback` when absent (nullopt = required).
+  double Number(const std::string& key, std::optional<double> fallback, Range range);
+  // Integer in [lo, hi]; `fallback` when absent (nullopt = required).
+  int Integer(const std::string& key, std::optional<int> fallback, int lo, int hi);
+  bool Bool(const std::string& key, std::optional<bool> fallback);
+  // One of `allowed`; `fallback` when absent (nullopt = required).
+  std::string Choice(const std::string& key, std::optional<std::string> fallback,
+                     const std::vector<std::string>& allowed);
+  // Free string (non-empty).
+  std::string Text(const std::string& key, std::optional<std::string> fallback);
+  // List of finite numbers, each in `range`.
+  std::vector<double> Numbers(const std::string& key, std::optional<std::vector<double>> fallback,
+                              Range range);
+  std::vector<int> Integers(const std::string& key, std::optional<std::vector<int>> fallback,
+                            int lo, int hi);
+  // Nested object; absent -> empty object when `optional_section`, else ConfigError.
+  JsonSection Section(const std::string& key, bool optional_section = true);
+  // Raw access for arrays of objects; marks the key read. Returns nullptr when absent.
+  const nlohmann::json* Raw(const std::string& key);
+  // Path of a child key, for messages: "dynamics.loads[2].node".
+  std::string PathOf(const std::string& key) const;
+  // Throws ConfigError naming the first key that was never read.
+  void Finish() const;
+
+ private:
+  const nlohmann::json& Get(const std::string& key);
+  nlohmann::json object_;
+  std::string path_;
+  std::vector<std::string> read_;
+};
+
+// Parses JSON text; malformed input is a ConfigError naming `source` and the parser's reason.
+nlohmann::json ParseJsonText(const std::string& text, const std::string& source);
+// Reads and parses a file; unreadable files are a ConfigError naming the path.
+nlohmann::json ReadJsonFile(const std::string& path);
+// Short rendering of a JSON value for messages (truncated).
+std::string Show(const nlohmann::json& value);
+
+}  // namespace tbridge

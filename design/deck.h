@@ -1,0 +1,21 @@
+// Deck beams and node loads (paper eqs 3-9, corrected per SPEC.md §3).
+#pragma once
+
+#include "core/config.h"
+
+namespace tbridge {
+
+struct Deck {
+  double section_length = 0;  // l_d = L / 2^n [m]
+  double section_mass = 0;    // m_d, one deck beam [kg] (eq 7)
+  double thickness = 0;       // t_d = m_d / (rho w_d l_d) [m] (eq 6)
+  double beams_mass = 0;      // 2^n m_d [kg]
+  double total_load = 0;      // F_tot = F + 2^n m_d g [N] (eq 9)
+  double node_load = 0;       // load on each loaded deck node: F_tot / (2^n planes) [N]
+  double station_load = 0;    // F_tot / 2^n, the paper's f for a planar bridge [N]
+};
+
+// sigma_d = yield_stress / yield_safety_factor.
+Deck ComputeDeck(const BridgeConfig& bridge, const Material& material, const DesignConfig& design);
+
+}  // namespace tbridge

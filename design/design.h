@@ -1,0 +1,44 @@
+// The design pipeline: config -> topology -> deck and loads -> minimum mass -> sizing.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/config.h"
+#include "design/deck.h"
+#include "design/min_mass.h"
+#include "design/sizing.h"
+#include "design/topology.h"
+
+namespace tbridge {
+
+struct MassBreakdown {
+  double bars = 0;          // [kg]
+  double strings = 0;       // non-deck strings [kg]; bars + strings = paper eq. (49)
+  double deck_strings = 0;  // deck strings at their minimum radius [kg]
+  double deck_beams = 0;    // 2^n m_d [kg]
+  double structure = 0;     // bars + strings + deck strings [kg]
+  double total = 0;         // structure + deck beams [kg]
+};
+
+struct Design {
+  Config config;             // resolved
+  BridgeTopology topology;
+  Deck deck;
+  Eigen::Matrix3Xd loads;    // 3 x n_n applied node loads [N] (deck loads, downward)
+  std::vector<MemberSizing> bars;     // in structure bar order
+  std::vector<MemberSizing> strings;  // in structure string order
+  MassBreakdown mass;
+  SolverOutcome solver;
+  double equilibrium_residual = 0;  // max |A x + w| over free DOFs [N]
+  int self_stress_states = -1;      // n_b + n_s - rank(A); -1 when not computed (large n)
+};
+
+// Runs the whole design. Throws ConfigError for bad parameters and ModelError when no
+// design is found (the message carries the solver's status).
+Design RunDesign(const Config& config);
+
+// Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
+Eigen::VectorXd MemberForces(const Design& design);
+
+}  // namespace tbridge

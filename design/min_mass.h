@@ -1,0 +1,114 @@
+// The minimum-mass problem, independent of any solver (SPEC.md §4).
+//
+// Variables (all scaled to O(1)):
+//   c_b = C_b / F_ref           bar compressions,            b = 0..n_b-1
+//   t_k = T_k / F_ref           string tensions,             k = 0..n_s-1
+//   a_b = A_b sigma_w / F_ref   bar areas as yield capacity, b = 0..n_b-1
+// Constraints:
+//   equilibrium  A [c; t] = -w / F_ref                  (one row per free DOF)
+//   yield        a_b - c_b >= 0                         (bar area covers the force at sigma_w)
+//   buckling     a_b^2 - kappa_b^2 c_b >= 0             (Euler, pinned-pinned, solid circle)
+//   bounds       c, t >= 0; t_k >= t_min_k (prestressed minimum strings); a_b >= a_min_b
+// Objective: (structure mass) / M_ref = sum_b (l_b / L_ref) a_b + sum_k (l_k / L_ref) t_k,
+// with M_ref = rho L_ref F_ref / sigma_w: strings work at sigma_w, bars at their governing area.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/material.h"
+#include "core/structure.h"
+#include "design/equilibrium.h"
+
+namespace tbridge {
+
+struct MinMassSettings {
+  double working_stress = 0;          // sigma_w [Pa]
+  double buckling_safety_factor = 1;  // on the bar force in the Euler check
+  Material material;
+  std::vector<double> string_min_tension;  // per string [N] (prestress floor), may be 0
+  std::vector<double> bar_min_area;        // per bar [m^2], may be 0
+};
+
+class MinMassProblem {
+ public:
+  // `loads` is 3 x n_n [N]. Throws ModelError on inconsistent sizes.
+  MinMassProblem(const Structure& structure, const Eigen::Matrix3Xd& loads,
+                 MinMassSettings settings);
+
+  int num_bars() const { return nb_; }
+  int num_strings() const { return ns_; }
+  int num_variables() const { return 2 * nb_ + ns_; }
+  int num_equalities() const { return static_cast<int>(rhs_.size()); }
+  int num_constraints() const { return num_equalities() + 2 * nb_; }
+  // Index helpers into x.
+  int bar_force_index(int b) const { return b; }
+  int string_force_index(int k) const { return nb_ + k; }
+  int bar_area_index(int b) const { return nb_ + ns_ + b; }
+
+  // Bounds on x and on g(x) (equalities have lo = hi); +inf as std::numeric_limits::infinity.
+  void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const;
+  void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const;
+  // A feasible-ish start: least-norm equilibrium solution, pushed inside the bounds.
+  Eigen::VectorXd StartingPoint() const;
+
+  double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  const Eigen::VectorXd& ObjectiveGradient() const { return cost_; }  // constant
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const;
+
+  // Jacobian of g: fixed sparsity (row, col) and values in that order.
+  const std::vector<std::pair<int, int>>& JacobianPattern() const { return jac_pattern_; }
+  void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const;
+  // Hessian of the Lagrangian sigma f + sum lambda_i g_i: only the buckling rows contribute,
+  // 2 lambda on each a_b diagonal. Pattern is the n_b diagonal entries of the a block.
+  std::vector<std::pair<int, int>> HessianPattern() const;
+  void HessianValues(const double* lambda, double* values) const;
+
+  // Unscaled results.
+  double MassScale() const { return mass_ref_; }  // kg per objective unit
+  double ForceScale() const { return force_ref_; }  // N per force unit
+  Eigen::VectorXd MemberForces(const Eigen::Ref<const Eigen::VectorXd>& x) const;  // [C; T] in N
+  const EquilibriumSystem& equilibrium() const { return eq_; }
+  const MinMassSettings& settings() const { return settings_; }
+  // Buckling coefficient kappa_b (scaled): a_b >= kappa_b sqrt(c_b).
+  double Kappa(int b) const { return kappa_[b]; }
+
+ private:
+  int nb_ = 0, ns_ = 0;
+  MinMassSettings settings_;
+  EquilibriumSystem eq_;
+  Eigen::VectorXd rhs_;   // -w_free / F_ref
+  Eigen::VectorXd cost_;  // objective gradient
+  Eigen::VectorXd kappa_;
+  Eigen::VectorXd t_min_, a_min_;
+  double force_ref_ = 1, mass_ref_ = 1;
+  std::vector<std::pair<int, int>> jac_pattern_;
+  std::vector<double> eq_values_;  // constant equality-row values, in pattern order
+};
+
+// What a solver reports back: a value, not a getter.
+struct SolverOutcome {
+  std::string solver;       // "ipopt" | "nlopt"
+  std::string status;       // solver's own status name
+  std::string message;      // human-readable detail
+  int iterations = 0;
+  bool success = false;
+  double objective = 0;     // scaled objective at x
+};
+
+struct SolverOptions {
+  double tolerance = 1e-10;
+  int max_iterations = 3000;
+  bool verbose = false;
+};
+
+// Adapters: each is the only file that includes its solver's headers. `x` is the start on
+// entry and the solution on return.
+SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
+                             Eigen::VectorXd& x);
+SolverOutcome SolveWithNlopt(const MinMassProblem& problem, const SolverOptions& options,
+                             Eigen::VectorXd& x);
+
+}  // namespace tbridge

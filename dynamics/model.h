@@ -1,0 +1,2 @@
+// Placeholder header; the dynamic model is built from a Design.
+#pragma once
