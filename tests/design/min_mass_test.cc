@@ -1,0 +1,133 @@
+// Independent checks of the minimum-mass design: closed forms, equilibrium, the Euler formula
+// and a second solver.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+#include "design/design.h"
+#include "design/equilibrium.h"
+#include "design/test_support.h"
+
+namespace tbridge {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST_CASE("Equilibrium residual is below 1e-9 of the largest load", "[design][equilibrium]") {
+  for (int n = 1; n <= 8; ++n) {
+    const Design d = RunDesign(test::PaperConfig(n));
+    const Eigen::VectorXd r = EquilibriumResidual(BuildEquilibrium(d.topology.structure),
+                                                  MemberForces(d), d.loads);
+    INFO("n = " << n << ": max residual " << r.cwiseAbs().maxCoeff() << " N");
+    // The acceptance bound: 1e-9 of the largest node load.
+    CHECK(r.cwiseAbs().maxCoeff() <= 1e-9 * d.deck.node_load);
+  }
+}
+
+TEST_CASE("Support reactions carry what the deck nodes do not", "[design][equilibrium]") {
+  const Design d = RunDesign(test::PaperConfig(3));
+  const Eigen::Matrix3Xd R = SupportReactions(d.topology.structure, MemberForces(d), d.loads);
+  // Total vertical reaction = applied load; horizontal reactions cancel (symmetric bridge).
+  // Tolerance 1e-9 relative: the solution satisfies equilibrium to solver precision.
+  const double applied = -d.loads.row(1).sum();
+  CHECK(R.row(1).sum() == Approx(applied).epsilon(1e-9));
+  CHECK(std::abs(R.row(0).sum()) <= 1e-9 * applied);
+  // SPEC §3: the supports take F_tot minus what the 2^n - 1 deck nodes carry.
+  CHECK(applied + d.deck.station_load == Approx(d.deck.total_load).epsilon(1e-12));
+}
+
+TEST_CASE("Closed forms: V string of n = 1 and bar forces 2^v2(k) f", "[design][closed-form]") {
+  const Design d1 = RunDesign(test::PaperConfig(1));
+  const double f1 = d1.deck.node_load;
+  const double beta = 10.0 * kPi / 180.0;
+  // The V string carries f / (2 sin(beta/2)); relative 1e-9 = solver tolerance headroom.
+  for (const char* name : {"2-3", "2-4"}) {
+    CHECK(test::FindMember(d1, name)->force == Approx(f1 / (2 * std::sin(beta / 2))).epsilon(1e-9));
+  }
+  for (int n = 1; n <= 6; ++n) {
+    const Design d = RunDesign(test::PaperConfig(n));
+    for (int k = 1; k <= d.topology.structure.num_bars(); ++k) {
+      const int v2_power = k & -k;  // 2^v2(k)
+      INFO("n = " << n << ", bar " << k);
+      CHECK(d.bars[k - 1].force == Approx(v2_power * d.deck.node_load).epsilon(1e-9));
+    }
+  }
+}
+
+TEST_CASE("Exactly one self-stress for p = 1: the deck-string chain", "[design][equilibrium]") {
+  for (int n = 1; n <= 4; ++n) {
+    const Design d = RunDesign(test::PaperConfig(n));
+    CHECK(d.self_stress_states == 1);
+    // Minimum mass leaves the chain at its prestress floor: every deck string at sigma_w on
+    // the minimum radius (relative 1e-8: interior-point distance to an active bound).
+    for (const MemberSizing& s : d.strings) {
+      if (s.kind != MemberKind::kDeckString) continue;
+      CHECK(s.radius == Approx(0.01).epsilon(1e-8));
+      CHECK(s.stress == Approx(6.9e7).epsilon(1e-8));
+    }
+  }
+}
+
+TEST_CASE("Ipopt and NLopt agree on the total mass", "[design][solvers]") {
+  for (int n = 1; n <= 5; ++n) {
+    const Design a = RunDesign(test::PaperConfig(n, "ipopt"));
+    const Design b = RunDesign(test::PaperConfig(n, "nlopt"));
+    INFO("n = " << n << ": ipopt " << a.mass.total << " kg, nlopt " << b.mass.total << " kg ("
+                << b.solver.status << ")");
+    CHECK(a.solver.solver == "ipopt");
+    CHECK(b.solver.solver == "nlopt");
+    // The acceptance bound: 1e-6 relative in total mass.
+    CHECK(b.mass.total == Approx(a.mass.total).epsilon(1e-6));
+    CHECK(b.mass.bars + b.mass.strings == Approx(a.mass.bars + a.mass.strings).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("Buckling governs a long, lightly loaded, steep bridge", "[design][buckling]") {
+  // 60 m span, 200 N payload, beta = 40 deg, no deck self-weight: the n = 1 bar is 10.9 m
+  // long under a light load, where Euler needs far more area than yield.
+  Config c = test::PaperConfig(1);
+  c.bridge.span = 60.0;
+  c.bridge.payload = 200.0;
+  c.bridge.beta_deg = 40.0;
+  c.design.gravity = 0.0;
+  const Design d = RunDesign(c);
+  const MemberSizing& bar = d.bars.at(0);
+  REQUIRE(bar.governed_by == "buckling");
+  // By hand: bar length (L/2) tan(beta/2) = 30 tan(20 deg); it carries the whole node load.
+  const double l = 30.0 * std::tan(20.0 * kPi / 180.0);
+  const double C = d.deck.node_load;
+  CHECK(bar.length == Approx(l).epsilon(1e-12));
+  CHECK(bar.force == Approx(C).epsilon(1e-9));
+  // Euler, pinned-pinned: P_cr = pi^2 E I / l^2 with I = pi r^4 / 4 equals the force.
+  const double E = 2.06e11;
+  const double I = kPi * std::pow(bar.radius, 4) / 4.0;
+  CHECK(kPi * kPi * E * I / (l * l) == Approx(C).epsilon(1e-9));
+  // and the yield area would have been smaller.
+  CHECK(C / 6.9e7 < bar.area);
+  // A buckling safety factor of 4 doubles the radius' square: A ~ sqrt(SF).
+  c.design.buckling_safety_factor = 4.0;
+  const Design d4 = RunDesign(c);
+  CHECK(d4.bars.at(0).area == Approx(2.0 * bar.area).epsilon(1e-8));
+}
+
+TEST_CASE("A solver that cannot finish is a clear error, never a silent answer",
+          "[design][errors]") {
+  Config c = test::PaperConfig(3);
+  c.design.max_iterations = 1;
+  for (const char* solver : {"ipopt", "nlopt"}) {
+    c.design.solver = solver;
+    INFO(solver);
+    try {
+      RunDesign(c);
+      FAIL("expected a ModelError");
+    } catch (const ModelError& e) {
+      const std::string what = e.what();
+      CHECK(what.find("status") != std::string::npos);
+      CHECK(what.find(solver) != std::string::npos);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tbridge
