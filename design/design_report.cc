@@ -1,0 +1,192 @@
+#include "design/design_report.h"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace tbridge {
+
+namespace {
+
+using nlohmann::json;
+
+json MemberToJson(const MemberSizing& m) {
+  const bool bar = m.kind == MemberKind::kBar;
+  return json{{"name", m.name},
+              {"type", KindName(m.kind)},
+              {"nodes", {m.i + 1, m.j + 1}},
+              {"length", m.length},
+              {"force", m.force},
+              {"force_density", m.force_density},
+              {"area", m.area},
+              {"radius", m.radius},
+              {"mass", m.mass},
+              {"rest_length", m.rest_length},
+              // A bar is rigid in the model: it has no axial stiffness to report.
+              {"stiffness", bar ? json(nullptr) : json(m.stiffness)},
+              {"governed_by", m.governed_by},
+              {"stress", m.stress}};
+}
+
+// Units of every numeric field, mirroring the document's layout.
+json Units() {
+  return json{
+      {"config", "SI units unless the key name says otherwise (beta_deg in degrees); "
+                 "see configs/README.md"},
+      {"topology", {{"n", "1"}, {"p", "1"}, {"beta_deg", "deg"}, {"planes", "1"},
+                    {"nodes", "1"}, {"bars", "1"}, {"strings", "1"}, {"class", "1"},
+                    {"fixed_nodes", "1 (1-based node numbers)"}}},
+      {"deck", {{"section_length", "m"}, {"section_mass", "kg"}, {"thickness", "m"},
+                {"node_load", "N"}, {"total_load", "N"}, {"beams_mass", "kg"}}},
+      {"nodes", "m"},
+      {"members", {{"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"},
+                   {"force_density", "N/m"}, {"area", "m^2"}, {"radius", "m"},
+                   {"mass", "kg"}, {"rest_length", "m"}, {"stiffness", "N/m"},
+                   {"stress", "Pa"}}},
+      {"mass", {{"bars", "kg"}, {"strings", "kg"}, {"deck_strings", "kg"},
+                {"deck_beams", "kg"}, {"structure", "kg"}, {"total", "kg"}}},
+      {"solver", {{"iterations", "1"}}},
+      {"equilibrium_residual_N", "N"},
+      {"self_stress_states", "1"}};
+}
+
+// printf into a std::string; the attribute lets the compiler check every format string.
+__attribute__((format(printf, 1, 2))) std::string Format(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  va_list again;
+  va_copy(again, args);
+  char buffer[256];
+  const int n = std::vsnprintf(buffer, sizeof buffer, format, args);
+  va_end(args);
+  std::string text;
+  if (n >= 0 && static_cast<size_t>(n) < sizeof buffer) {
+    text.assign(buffer, static_cast<size_t>(n));
+  } else if (n >= 0) {
+    text.resize(static_cast<size_t>(n) + 1);
+    std::vsnprintf(text.data(), text.size(), format, again);
+    text.resize(static_cast<size_t>(n));
+  }
+  va_end(again);
+  return text;
+}
+
+int CountDeckStrings(const Design& d) {
+  int count = 0;
+  for (const MemberSizing& m : d.strings) count += m.kind == MemberKind::kDeckString;
+  return count;
+}
+
+}  // namespace
+
+nlohmann::json DesignToJson(const Design& d) {
+  const Structure& s = d.topology.structure;
+  json j;
+  j["config"] = ToJson(d.config);
+
+  json fixed = json::array();
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (v < static_cast<int>(s.fixed.size()) && s.fixed[v]) fixed.push_back(v + 1);
+  }
+  j["topology"] = {{"n", d.config.bridge.n},
+                   {"p", d.config.bridge.p},
+                   {"beta_deg", d.config.bridge.beta_deg},
+                   {"planes", d.topology.planes},
+                   {"nodes", s.num_nodes()},
+                   {"bars", s.num_bars()},
+                   {"strings", s.num_strings()},
+                   {"class", s.TensegrityClass()},
+                   {"fixed_nodes", fixed}};
+  j["deck"] = {{"section_length", d.deck.section_length},
+               {"section_mass", d.deck.section_mass},
+               {"thickness", d.deck.thickness},
+               {"node_load", d.deck.node_load},
+               {"total_load", d.deck.total_load},
+               {"beams_mass", d.deck.beams_mass}};
+
+  json nodes = json::array();
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    nodes.push_back({s.nodes(0, v), s.nodes(1, v), s.nodes(2, v)});
+  }
+  j["nodes"] = std::move(nodes);
+
+  json members = json::array();
+  for (const MemberSizing& m : d.bars) members.push_back(MemberToJson(m));
+  for (const MemberSizing& m : d.strings) members.push_back(MemberToJson(m));
+  j["members"] = std::move(members);
+
+  j["mass"] = {{"bars", d.mass.bars},
+               {"strings", d.mass.strings},
+               {"deck_strings", d.mass.deck_strings},
+               {"deck_beams", d.mass.deck_beams},
+               {"structure", d.mass.structure},
+               {"total", d.mass.total}};
+  j["solver"] = {{"name", d.solver.solver},
+                 {"status", d.solver.status},
+                 {"iterations", d.solver.iterations}};
+  j["equilibrium_residual_N"] = d.equilibrium_residual;
+  j["self_stress_states"] =
+      d.self_stress_states >= 0 ? json(d.self_stress_states) : json(nullptr);
+  j["units"] = Units();
+  return j;
+}
+
+std::string DesignSummary(const Design& d, int max_member_rows) {
+  const Structure& s = d.topology.structure;
+  const BridgeConfig& b = d.config.bridge;
+  std::string out;
+  auto line = [&out](const std::string& text) { out += text + "\n"; };
+
+  line(Format("%s bridge: n = %d, p = %d, beta = %g deg, span %g m, payload %g N",
+              b.planes == 1 ? "planar substructure" : "3D coupled", b.n, b.p, b.beta_deg,
+              b.span, b.payload));
+  line(Format("topology: %d nodes (%d fixed), %d bars, %d strings (%d deck), class %d",
+              s.num_nodes(), s.num_nodes() - s.num_free_nodes(), s.num_bars(), s.num_strings(),
+              CountDeckStrings(d), s.TensegrityClass()));
+  line(Format("deck: section l = %.4g m, m_d = %.5g kg, thickness %.4g mm; f = %.6g N per deck "
+              "node, F_tot = %.6g N",
+              d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3,
+              d.deck.node_load, d.deck.total_load));
+  std::string self_stress = d.self_stress_states >= 0 ? std::to_string(d.self_stress_states)
+                                                      : std::string("not computed");
+  line(Format("solver: %s, status %s after %d iterations; equilibrium residual %.2e N; "
+              "self-stress states: %s",
+              d.solver.solver.c_str(), d.solver.status.c_str(), d.solver.iterations,
+              d.equilibrium_residual, self_stress.c_str()));
+  line("");
+
+  line("members (force: tension for strings, compression for bars):");
+  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %s", "name", "type", "s [m]",
+              "force [N]", "r [mm]", "L0 [m]", "k_s [N/m]", "m [kg]", "governed by"));
+  std::vector<const MemberSizing*> rows;
+  for (const MemberSizing& m : d.bars) rows.push_back(&m);
+  for (const MemberSizing& m : d.strings) rows.push_back(&m);
+  const size_t shown = std::min(rows.size(), static_cast<size_t>(std::max(max_member_rows, 0)));
+  for (size_t k = 0; k < shown; ++k) {
+    const MemberSizing& m = *rows[k];
+    const bool bar = m.kind == MemberKind::kBar;
+    line(Format("  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %s", m.name.c_str(),
+                KindName(m.kind), m.length, m.force, m.radius * 1e3,
+                bar ? "-" : Format("%.4f", m.rest_length).c_str(),
+                bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, m.governed_by.c_str()));
+  }
+  if (shown < rows.size()) {
+    line(Format("  ... %zu more members omitted (all are in the JSON output)",
+                rows.size() - shown));
+  }
+  line("");
+
+  line("mass [kg]:");
+  line(Format("  bars                         %12.3f", d.mass.bars));
+  line(Format("  strings (non-deck)           %12.3f", d.mass.strings));
+  line(Format("  bars + strings (eq. 49)      %12.3f", d.mass.bars + d.mass.strings));
+  line(Format("  deck strings (min radius)    %12.3f", d.mass.deck_strings));
+  line(Format("  structure                    %12.3f", d.mass.structure));
+  line(Format("  deck beams                   %12.3f", d.mass.deck_beams));
+  line(Format("  total                        %12.3f", d.mass.total));
+  return out;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,37 @@
+// Reports of a finished design: the JSON document written by `tbridge design` and a text
+// summary for the terminal. Both read a Design and change nothing.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "design/design.h"
+
+namespace tbridge {
+
+// The design as JSON (field list and units in README.md, "Reading a design"):
+//   config                 resolved config, every default filled in (ToJson(Config))
+//   topology               {n, p, beta_deg, planes, nodes, bars, strings, class, fixed_nodes}
+//   deck                   {section_length, section_mass, thickness, node_load, total_load,
+//                           beams_mass}
+//   nodes                  [[x, y, z], ...]; node k (1-based) is entry k-1  [m]
+//   members                bars first, then strings, in structure order; each
+//                          {name, type, nodes [i, j] 1-based, length, force, force_density,
+//                           area, radius, mass, rest_length, stiffness, governed_by, stress}.
+//                          force is a magnitude (tension for strings, compression for bars);
+//                          stiffness is null for bars (rigid).
+//   mass                   {bars, strings, deck_strings, deck_beams, structure, total}  [kg]
+//   solver                 {name, status, iterations}
+//   equilibrium_residual_N largest node-force imbalance over the free DOFs  [N]
+//   self_stress_states     n_b + n_s - rank(A), or null when not computed (large designs)
+//   units                  the unit of every numeric field above ("1" = dimensionless)
+// Non-finite numbers cannot occur in a Design that RunDesign returned; nlohmann writes them
+// as null if they ever do. Does not throw except std::bad_alloc.
+nlohmann::json DesignToJson(const Design& design);
+
+// Multi-line text: parameters, topology counts, deck, solver, a member table in the style of
+// the paper's Tables 2-4 (r in mm, L0, k_s, m, governing mode) and the mass breakdown. At
+// most `max_member_rows` members are listed; the rest are counted as omitted.
+std::string DesignSummary(const Design& design, int max_member_rows = 20);
+
+}  // namespace tbridge
