@@ -1,0 +1,38 @@
+// Design time against complexity n = 1..12 (p = 1, buckling check on), per solver.
+// Usage: bench_design [max_n] [solver] [repeats]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "design/design.h"
+
+int main(int argc, char** argv) {
+  const int max_n = argc > 1 ? std::atoi(argv[1]) : 12;
+  const std::string solver = argc > 2 ? argv[2] : "ipopt";
+  const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
+  std::printf("%3s %6s %7s %9s %10s %12s %12s\n", "n", "bars", "strings", "iters", "mass_kg",
+              "best_ms", "median_ms");
+  for (int n = 1; n <= max_n; ++n) {
+    tbridge::Config c;
+    c.bridge.n = n;
+    c.design.solver = solver;
+    c.design.buckling_safety_factor = 1.0;  // Euler constraint active in the problem
+    std::vector<double> ms;
+    tbridge::Design d;
+    for (int r = 0; r < repeats; ++r) {
+      const auto t0 = std::chrono::steady_clock::now();
+      d = tbridge::RunDesign(c);
+      const auto t1 = std::chrono::steady_clock::now();
+      ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    std::printf("%3d %6d %7d %9d %10.3f %12.2f %12.2f\n", n, d.topology.structure.num_bars(),
+                d.topology.structure.num_strings(), d.solver.iterations, d.mass.total, ms.front(),
+                ms[ms.size() / 2]);
+    std::fflush(stdout);
+  }
+  return 0;
+}
