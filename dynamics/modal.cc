@@ -213,7 +213,11 @@ ModalResult ComputeModes(const DynamicModel& model, const ModalOptions& options)
     mode.frequency_hz = mode.omega_rad_s / (2 * std::numbers::pi);
     mode.period_s = mode.omega_rad_s != 0 ? 2 * std::numbers::pi / std::abs(mode.omega_rad_s) : 0.0;
     // The solver normalises y^T M_red y = 1; Z is orthonormal so x = Z y keeps x^T M x = 1.
-    const Eigen::VectorXd x = z * eig.eigenvectors().col(r);
+    Eigen::VectorXd x = z * eig.eigenvectors().col(r);
+    // Fix the arbitrary sign so that outputs are reproducible: largest component positive.
+    Eigen::Index largest = 0;
+    x.cwiseAbs().maxCoeff(&largest);
+    if (x(largest) < 0) x = -x;
     mode.shape = Eigen::Matrix3Xd::Zero(3, n_n);
     for (int d = 0; d < n_dof; ++d) mode.shape(sys.dof_axis[d], sys.dof_node[d]) = x(d);
   }

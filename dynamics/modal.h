@@ -38,7 +38,8 @@ struct Mode {
   double frequency_hz = 0;   // omega / (2 pi)
   double period_s = 0;       // 2 pi / |omega|; 0 for a zero-frequency (mechanism) mode
   // Node displacements (3 x n_n, zero at pinned nodes and out of plane when dim = 2), scaled
-  // so that shape^T M shape = 1 [m sqrt(kg)^-1].
+  // so that shape^T M shape = 1 [m sqrt(kg)^-1], signed so that its largest component is
+  // positive.
   Eigen::Matrix3Xd shape;
 };
 

@@ -263,6 +263,8 @@ TEST_CASE("dynamics: mode shapes are M-orthonormal and keep the bar lengths", "[
   Eigen::MatrixXd phi(n_dof, r.modes.size());
   for (size_t k = 0; k < r.modes.size(); ++k) {
     for (int d = 0; d < n_dof; ++d) phi(d, k) = r.modes[k].shape(sys.dof_axis[d], sys.dof_node[d]);
+    // Sign convention: the largest component is positive.
+    CHECK(r.modes[k].shape.maxCoeff() >= -r.modes[k].shape.minCoeff());
   }
   const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(phi.cols(), phi.cols());
   const Eigen::MatrixXd gram = phi.transpose() * sys.mass * phi;
