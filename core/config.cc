@@ -38,6 +38,8 @@ DesignConfig ParseDesign(JsonSection s) {
       s.Number("buckling_safety_factor", d.buckling_safety_factor, Range::Closed(1, 1000));
   d.deck_string_min_radius =
       s.Number("deck_string_min_radius", d.deck_string_min_radius, Range::Closed(0.0, 1.0));
+  d.transverse_string_min_radius = s.Number(
+      "transverse_string_min_radius", d.transverse_string_min_radius, Range::Closed(0.0, 1.0));
   d.bar_min_radius = s.Number("bar_min_radius", d.bar_min_radius, Range::Closed(0.0, 1.0));
   d.gravity = s.Number("gravity", d.gravity, Range::Closed(0.0, 100.0));
   d.solver = s.Choice("solver", d.solver, {"ipopt", "nlopt"});
@@ -74,6 +76,7 @@ nlohmann::json ToJson(const Config& c) {
   j["design"] = {{"yield_safety_factor", c.design.yield_safety_factor},
                  {"buckling_safety_factor", c.design.buckling_safety_factor},
                  {"deck_string_min_radius", c.design.deck_string_min_radius},
+                 {"transverse_string_min_radius", c.design.transverse_string_min_radius},
                  {"bar_min_radius", c.design.bar_min_radius},
                  {"gravity", c.design.gravity},
                  {"solver", c.design.solver},

@@ -25,6 +25,10 @@ struct DesignConfig {
   double yield_safety_factor = 10.0;     // sigma_w = yield_stress / this, for members and deck
   double buckling_safety_factor = 1.0;   // multiplies the bar force in the Euler check
   double deck_string_min_radius = 0.01;  // [m]; deck strings are prestressed at sigma_w
+  // [m], [0, 1]; strings of group "transverse" (3D bridge) are prestressed at sigma_w. They
+  // carry nothing under symmetric vertical loads, so without this floor min mass would
+  // leave them at zero area and the coupled bridge would be a mechanism.
+  double transverse_string_min_radius = 0.005;
   double bar_min_radius = 0.0;           // [m]; 0 = no minimum
   double gravity = 9.81;                 // g [m/s^2], for the deck self-weight
   std::string solver = "ipopt";          // "ipopt" | "nlopt"

@@ -37,6 +37,9 @@ Design RunDesign(const Config& config) {
   const double sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
   const double deck_min_area =
       std::numbers::pi * config.design.deck_string_min_radius * config.design.deck_string_min_radius;
+  const double transverse_min_area = std::numbers::pi *
+                                     config.design.transverse_string_min_radius *
+                                     config.design.transverse_string_min_radius;
   const double bar_min_area =
       std::numbers::pi * config.design.bar_min_radius * config.design.bar_min_radius;
 
@@ -50,6 +53,9 @@ Design RunDesign(const Config& config) {
   for (int k = 0; k < s.num_strings(); ++k) {
     // Deck strings have a minimum radius and are prestressed at the working stress.
     if (StringKind(s.strings[k]) == MemberKind::kDeckString) string_min_area[k] = deck_min_area;
+    // Transverse strings (3D bridge) likewise: unloaded by symmetric vertical loads, they
+    // stiffen the coupling only through this prestress.
+    if (s.strings[k].group == "transverse") string_min_area[k] = transverse_min_area;
     settings.string_min_tension[k] = sigma_w * string_min_area[k];
   }
 
