@@ -100,7 +100,7 @@ Eigen::VectorXd FreeForce(const DynamicModel& model, const Eigen::Matrix3Xd& pos
 // tolerance of 1 % is the acceptance bound, our values agree to the printed digits.
 constexpr double kSpecFrequencyTol = 0.01;
 
-TEST_CASE("dynamics: linearised frequencies of the designed bridges match SPEC 9", "[modal]") {
+TEST_CASE("Linearised frequencies of the designed bridges match SPEC 9", "[dynamics][modal]") {
   const std::map<int, std::vector<double>> lowest = {
       {1, {100.8, 663.7, 2286}}, {2, {81.7, 82.7, 229.3}}, {3, {77.2, 81.7, 166.9}}};
   const std::map<int, double> highest = {{1, 2286}, {2, 5087}, {3, 10019}};
@@ -119,7 +119,7 @@ TEST_CASE("dynamics: linearised frequencies of the designed bridges match SPEC 9
   }
 }
 
-TEST_CASE("dynamics: n = 3 further linearised frequencies match SPEC 9", "[modal]") {
+TEST_CASE("Further n = 3 linearised frequencies match SPEC 9", "[dynamics][modal]") {
   const ModalResult r = ComputeModes(ModelOf(PaperDesign(3)));
   const std::vector<double> expected = {77.2, 81.7, 166.9, 173.8, 253.9};
   for (size_t k = 0; k < expected.size(); ++k) {
@@ -130,7 +130,7 @@ TEST_CASE("dynamics: n = 3 further linearised frequencies match SPEC 9", "[modal
   CHECK(r.modes.size() == 21u);
 }
 
-TEST_CASE("dynamics: prestrained deck strings raise the fundamental as in SPEC 9", "[modal]") {
+TEST_CASE("Prestrained deck strings raise the fundamental as in SPEC 9", "[dynamics][modal]") {
   // {n, p, lowest omega [rad/s]}; same independent source and bound as above.
   const std::vector<std::tuple<int, double, double>> cases = {
       {1, 0.95, 134.6}, {1, 0.90, 164.3}, {2, 0.95, 142.5},
@@ -144,7 +144,7 @@ TEST_CASE("dynamics: prestrained deck strings raise the fundamental as in SPEC 9
   }
 }
 
-TEST_CASE("dynamics: RK4 stable step matches SPEC 9", "[modal]") {
+TEST_CASE("RK4 stable step matches SPEC 9", "[dynamics][modal]") {
   // SPEC prints 3 then 2 significant digits: half a unit of the last printed digit.
   const std::vector<std::tuple<int, double, double>> cases = {
       {1, 1.24e-3, 0.005e-3}, {2, 5.6e-4, 0.05e-4}, {3, 2.8e-4, 0.05e-4}, {4, 1.4e-4, 0.05e-4}};
@@ -155,7 +155,7 @@ TEST_CASE("dynamics: RK4 stable step matches SPEC 9", "[modal]") {
   }
 }
 
-TEST_CASE("dynamics: the lowest n = 2 mode is antisymmetric, the next symmetric", "[modal]") {
+TEST_CASE("The lowest n = 2 mode is antisymmetric, the next symmetric", "[dynamics][modal]") {
   const DynamicModel m = ModelOf(PaperDesign(2));
   const ModalResult r = ComputeModes(m);
   const SymmetryReport first = ClassifySymmetry(m.positions, r.modes[0].shape);
@@ -171,7 +171,7 @@ TEST_CASE("dynamics: the lowest n = 2 mode is antisymmetric, the next symmetric"
 
 // A node between two fixed points on a line, held by two equal taut strings: axial
 // omega^2 = 2k/m, transverse omega^2 = 2 q/m with q = T/s (the geometric stiffness alone).
-TEST_CASE("dynamics: string-mass oscillator matches its closed forms", "[modal]") {
+TEST_CASE("String-mass oscillator matches its closed forms", "[dynamics][modal]") {
   const double s = 2.0, rest = 1.9, k = 5e4, mass = 3.0;
   DynamicModel m;
   m.dim = 3;
@@ -196,7 +196,7 @@ TEST_CASE("dynamics: string-mass oscillator matches its closed forms", "[modal]"
 // An upright bar pinned at its foot, loaded by P at its head and held by two horizontal
 // taut strings: the bar's compression lambda = P/l softens the sway, the strings' axial
 // stiffness restores it: (m l^2/3) theta'' = -(2k l - P) l theta, omega^2 = 3 (2k - P/l) / m.
-TEST_CASE("dynamics: a loaded bar on prestressed strings matches its closed form", "[modal]") {
+TEST_CASE("A loaded bar on prestressed strings matches its closed form", "[dynamics][modal]") {
   const double l = 2.0, a = 1.5, rest = 1.4, k = 2e3, load = 3e3, mass = 40.0;
   DynamicModel m;
   m.dim = 2;
@@ -220,7 +220,7 @@ TEST_CASE("dynamics: a loaded bar on prestressed strings matches its closed form
   CHECK(buckled.modes[0].omega_rad_s < 0);
 }
 
-TEST_CASE("dynamics: the tangent stiffness is the derivative of the node forces", "[modal]") {
+TEST_CASE("The tangent stiffness is the derivative of the node forces", "[dynamics][modal]") {
   // Prestrained, so that geometric and material terms are both large.
   const DynamicModel m = ModelOf(PaperDesign(2), 0.95);
   const LinearisedSystem sys = Linearise(m);
@@ -241,7 +241,7 @@ TEST_CASE("dynamics: the tangent stiffness is the derivative of the node forces"
   CHECK(FreeForce(m, m.positions, sys).cwiseAbs().maxCoeff() < 1e-6);
 }
 
-TEST_CASE("dynamics: modal mass sums to the bar and node masses", "[modal]") {
+TEST_CASE("Modal mass sums to the bar and node masses", "[dynamics][modal]") {
   DynamicModel m = ModelOf(PaperDesign(2));
   m.node_mass(0) = 7.0;  // a point mass at deck node 1 must be counted too
   const LinearisedSystem sys = Linearise(m);
@@ -255,7 +255,7 @@ TEST_CASE("dynamics: modal mass sums to the bar and node masses", "[modal]") {
   }
 }
 
-TEST_CASE("dynamics: mode shapes are M-orthonormal and keep the bar lengths", "[modal]") {
+TEST_CASE("Mode shapes are M-orthonormal and keep the bar lengths", "[dynamics][modal]") {
   const DynamicModel m = ModelOf(PaperDesign(3));
   const LinearisedSystem sys = Linearise(m);
   const ModalResult r = ComputeModes(m);
@@ -280,7 +280,7 @@ TEST_CASE("dynamics: mode shapes are M-orthonormal and keep the bar lengths", "[
   CHECK((sys.constraints * phi).cwiseAbs().maxCoeff() < 1e-12 * sys.constraints.norm() * phi.norm());
 }
 
-TEST_CASE("dynamics: slack strings drop out of the tangent stiffness", "[modal]") {
+TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]") {
   DynamicModel m = ModelOf(PaperDesign(1));
   // Lengthen one substructure string's rest length past its length: it goes slack.
   int slack = -1;
@@ -298,7 +298,7 @@ TEST_CASE("dynamics: slack strings drop out of the tangent stiffness", "[modal]"
   CHECK((taut.stiffness - loose.stiffness).cwiseAbs().maxCoeff() > 1e6);
 }
 
-TEST_CASE("dynamics: modal analysis rejects bad models", "[modal]") {
+TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
   DynamicModel m = ModelOf(PaperDesign(1));
   m.dim = 4;
   CHECK_THROWS_AS(ComputeModes(m), ModelError);

@@ -30,7 +30,7 @@ Eigen::VectorXd Signal(const std::vector<Tone>& tones, double dt, int samples, d
   return y;
 }
 
-TEST_CASE("dynamics: FFT matches a direct DFT", "[response]") {
+TEST_CASE("FFT matches a direct DFT", "[dynamics][response]") {
   std::mt19937 rng(7);
   std::normal_distribution<double> normal;
   const int n = 64;
@@ -49,7 +49,7 @@ TEST_CASE("dynamics: FFT matches a direct DFT", "[response]") {
   CHECK_THROWS_AS(Fft(bad), std::invalid_argument);
 }
 
-TEST_CASE("dynamics: dominant frequency of a sinusoid between bins", "[response]") {
+TEST_CASE("Dominant frequency of a sinusoid between bins", "[dynamics][response]") {
   // 1 s record, 1000 samples: FFT bin 1 Hz; 53.3 rad/s = 8.483 Hz sits between bins, with an
   // offset the mean removal must not turn into a bias.
   const double dt = 1e-3, omega = 53.3;
@@ -68,7 +68,7 @@ TEST_CASE("dynamics: dominant frequency of a sinusoid between bins", "[response]
   CHECK(std::abs(g.frequency_hz - omega / (2 * kPi)) > 1e-4 * omega / (2 * kPi));
 }
 
-TEST_CASE("dynamics: the stronger of two sinusoids is dominant", "[response]") {
+TEST_CASE("The stronger of two sinusoids is dominant", "[dynamics][response]") {
   const double dt = 2e-3;
   const Eigen::VectorXd y = Signal({{1.0, 81.7, 0.1}, {0.6, 229.3, 1.3}}, dt, 1500);
   CHECK(DominantFrequency(y, dt).omega_rad_s == Approx(81.7).epsilon(1e-3));
@@ -79,7 +79,7 @@ TEST_CASE("dynamics: the stronger of two sinusoids is dominant", "[response]") {
   // Tolerance 1e-3: the other tone's leakage into the fit is what is left.
 }
 
-TEST_CASE("dynamics: a decaying sinusoid gives its damped frequency", "[response]") {
+TEST_CASE("A decaying sinusoid gives its damped frequency", "[dynamics][response]") {
   const double dt = 1e-3, omega = 100.8, zeta = 0.01;
   const double damped = omega * std::sqrt(1 - zeta * zeta);
   const Eigen::VectorXd y = Signal({{0.01, damped, 0.0, zeta * omega / damped}}, dt, 2000);
@@ -88,7 +88,7 @@ TEST_CASE("dynamics: a decaying sinusoid gives its damped frequency", "[response
   CHECK(MeanPeriodFromCrossings(y, dt).omega_rad_s == Approx(damped).epsilon(1e-3));
 }
 
-TEST_CASE("dynamics: estimators stand up to noise", "[response]") {
+TEST_CASE("Estimators stand up to noise", "[dynamics][response]") {
   std::mt19937 rng(11);
   std::normal_distribution<double> normal;
   const double dt = 5e-4, omega = 64.0;
@@ -108,7 +108,7 @@ TEST_CASE("dynamics: estimators stand up to noise", "[response]") {
   CHECK(MeanPeriodFromCrossings(mild, dt, none).omega_rad_s > 1.2 * omega);
 }
 
-TEST_CASE("dynamics: spectral and crossing estimators agree on a clean sinusoid", "[response]") {
+TEST_CASE("Spectral and crossing estimators agree on a clean sinusoid", "[dynamics][response]") {
   const double dt = 1e-4, omega = 142.5;
   const Eigen::VectorXd y = Signal({{0.3, omega, 0.7}}, dt, 12345, 2.0);
   const FrequencyEstimate spectral = DominantFrequency(y, dt);
@@ -119,7 +119,7 @@ TEST_CASE("dynamics: spectral and crossing estimators agree on a clean sinusoid"
   CHECK(crossings.cycles == Approx(std::floor(12345 * dt * omega / kPi) / 2).margin(0.51));
 }
 
-TEST_CASE("dynamics: deck frequency sums the deck nodes over the first second", "[response]") {
+TEST_CASE("Deck frequency sums the deck nodes over the first second", "[dynamics][response]") {
   // Two deck nodes in antiphase on a 40 rad/s mode cancel in the sum; the in-phase 60 rad/s
   // part remains. After t = 1 s a large 200 rad/s tail must be ignored.
   const double dt = 1e-3;
@@ -134,7 +134,7 @@ TEST_CASE("dynamics: deck frequency sums the deck nodes over the first second", 
   CHECK_THROWS_AS(DeckFrequency(Eigen::MatrixXd(), dt), std::invalid_argument);
 }
 
-TEST_CASE("dynamics: estimators reject unusable records", "[response]") {
+TEST_CASE("Estimators reject unusable records", "[dynamics][response]") {
   const Eigen::VectorXd flat = Eigen::VectorXd::Constant(100, 3.0);
   CHECK_THROWS_WITH(DominantFrequency(flat, 1e-3), Catch::Contains("constant"));
   CHECK_THROWS_AS(DominantFrequency(Eigen::VectorXd::Ones(1), 1e-3), std::invalid_argument);
