@@ -32,6 +32,6 @@ nlohmann::json DesignToJson(const Design& design);
 // Multi-line text: parameters, topology counts, deck, solver, a member table in the style of
 // the paper's Tables 2-4 (r in mm, L0, k_s, m, governing mode) and the mass breakdown. At
 // most `max_member_rows` members are listed; the rest are counted as omitted.
-std::string DesignSummary(const Design& design, int max_member_rows = 20);
+std::string DesignSummary(const Design& design, int max_member_rows = 30);
 
 }  // namespace tbridge
