@@ -13,7 +13,7 @@ namespace tbridge {
 
 // A bar or string between nodes i and j (0-based). `group` names a family of members that
 // can be addressed together from a config: strings "deck", "substructure", "transverse";
-// bars "vertical", "transverse". A string in group "deck" is a deck string.
+// bars "vertical", "substructure" (leaning bars of p >= 2 modules), "transverse". A string in group "deck" is a deck string.
 struct Member {
   int i = 0;
   int j = 0;

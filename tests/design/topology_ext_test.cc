@@ -33,12 +33,6 @@ Config Bridge3DConfig(const std::string& solver = "ipopt") {
   return c;
 }
 
-std::set<std::pair<int, int>> Pairs(const std::vector<Member>& members) {
-  std::set<std::pair<int, int>> out;
-  for (const Member& m : members) out.insert(std::minmax(m.i, m.j));
-  return out;
-}
-
 // Shortest distance between segments [p0, p1] and [q0, q1] (sampled closest-point search is
 // not needed: the classic clamped solution is exact for non-degenerate segments).
 double SegmentDistance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
@@ -101,19 +95,6 @@ TEST_CASE("p >= 2 numbering: deck nodes first in x order, supports last", "[topo
   CHECK(s.fixed[s.num_nodes() - 1]);
   CHECK(s.nodes(0, s.num_nodes() - 2) == 0.0);
   CHECK(s.nodes(0, s.num_nodes() - 1) == 12.0);
-}
-
-TEST_CASE("The p-bar generator with p = 1 is the paper's geometry", "[topology][multibar]") {
-  for (int n = 1; n <= 6; ++n) {
-    const BridgeTopology a = PlanarSubstructure(n, 1, 10.0, 12.0);
-    const BridgeTopology b = PlanarMultiBar(n, 1, 10.0, 12.0);
-    INFO("n = " << n);
-    // Same node numbering and positions to rounding (1e-12 m on a 12 m span).
-    REQUIRE(a.structure.num_nodes() == b.structure.num_nodes());
-    CHECK((a.structure.nodes - b.structure.nodes).cwiseAbs().maxCoeff() <= 1e-12);
-    CHECK(Pairs(a.structure.bars) == Pairs(b.structure.bars));
-    CHECK(Pairs(a.structure.strings) == Pairs(b.structure.strings));
-  }
 }
 
 TEST_CASE("p >= 2 members meet only at shared nodes", "[topology][multibar]") {
