@@ -1,17 +1,94 @@
-// Config of a dynamic scenario (the "dynamics" section). Plain data with defaults (SI units).
+// Config of a dynamic scenario (the "dynamics" section). Plain data with defaults, SI units.
+// Every key, its unit, default and range is listed in configs/README.md; ParseDynamicsConfig
+// enforces them and throws ConfigError naming the key path, the value and what is allowed.
 #pragma once
 
+#include <array>
 #include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
 
 namespace tbridge {
 
 class JsonSection;
 
-struct DynamicsConfig {
-  double duration = 1.0;  // simulated time [s]
-  double dt = 1e-5;       // fixed time step [s]
+// Bar-length constraint stabilisation (eqs 24-26, corrected in SPEC.md §8): the length error
+// h = b.b - l0^2 obeys h'' + 2 zeta omega h' + omega^2 h = 0.
+struct StabilisationConfig {
+  bool enabled = false;
+  double omega_rad_s = 100.0;  // omega [rad/s], > 0
+  double zeta = 1.0;           // zeta [-], >= 0
 };
 
+// Rest length = ratio x stretched (design) length for every string of `group`; k = E A / L0.
+struct PrestrainConfig {
+  std::string group;  // "deck" | "substructure" | "transverse"
+  double ratio = 1.0; // (0, 1.5]
+};
+
+// The paper's perturbation: both end nodes of every bar of one length class move down (-y)
+// by delta. Classes are numbered from the longest bar (1) to the shortest (Table 5).
+struct PerturbationConfig {
+  int bar_class = 0;  // 0 = no perturbation, else 1..number of classes
+  double delta = 0;   // [m]; positive = downwards
+};
+
+// Initial displacement and velocity of one node (1-based, as in every output).
+struct NodeInitialConfig {
+  int node = 1;
+  std::array<double, 3> displacement{0, 0, 0};  // [m]
+  std::array<double, 3> velocity{0, 0, 0};      // [m/s]
+};
+
+// A force on one node (1-based) for t_start <= t < t_end; schedules add up.
+struct LoadStepConfig {
+  double t_start = 0;  // [s]
+  double t_end = 0;    // [s], > t_start
+  int node = 1;
+  std::array<double, 3> force{0, 0, 0};  // [N]
+};
+
+struct RecordConfig {
+  std::vector<int> nodes;  // 1-based nodes whose positions go to the history; empty = none
+  int every = 1;           // record every k-th step (and the first); >= 1
+  bool csv = true;         // write history.csv (when nodes are recorded)
+};
+
+// Frequency from the deck motion (SPEC.md §9): the summed vertical deck-node displacement,
+// sampled every `every` steps, then its dominant spectral peak.
+struct FrequencyConfig {
+  bool enabled = true;
+  int every = 10;  // >= 1
+};
+
+// When a run counts as blown up (it stops with a ModelError).
+struct GuardConfig {
+  double max_bar_length_error = 1e-3;  // relative |l - l0| / l0, (0, 1]
+  // (H - H0) / E_ref where H = kinetic + elastic - external work + dissipated, and E_ref the
+  // initial kinetic + elastic energy; > 0
+  double max_energy_growth = 0.5;
+};
+
+struct DynamicsConfig {
+  double duration = 1.0;              // simulated time [s]
+  double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
+  std::string integrator = "rk4";     // "rk4" | "dopri5"
+  double rtol = 1e-8;                 // dopri5 relative tolerance
+  double atol = 1e-10;                // dopri5 absolute tolerance [m, m/s]
+  std::string string_mass = "bars";   // "bars" (eq 27) | "nodes" | "off"
+  double damping_c = 0;               // c per string [N s/m]
+  StabilisationConfig stabilisation;
+  std::vector<PrestrainConfig> prestrain;
+  PerturbationConfig perturbation;
+  std::vector<NodeInitialConfig> initial;
+  std::vector<LoadStepConfig> loads;
+  RecordConfig record;
+  FrequencyConfig frequency;
+  GuardConfig guard;
+  bool gravity_on_structure = false;  // add m g (down) of bars and node masses to the loads
+};
+
+// Strict parse; throws ConfigError (key path, value, allowed).
 DynamicsConfig ParseDynamicsConfig(JsonSection section);
 nlohmann::json ToJson(const DynamicsConfig& config);
 

@@ -1,1 +1,114 @@
 #include "dynamics/model.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+
+namespace tbridge {
+
+DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options) {
+  const Structure& st = design.topology.structure;
+  const Material& mat = design.config.material;
+  if (!(options.damping >= 0) || !std::isfinite(options.damping)) {
+    throw ConfigError("dynamics.damping_c", std::to_string(options.damping), "must be >= 0");
+  }
+  for (const StringPrestrain& p : options.prestrain) {
+    bool found = false;
+    for (const Member& m : st.strings) found = found || m.group == p.group;
+    if (!found) {
+      throw ConfigError("dynamics.prestrain.group", "\"" + p.group + "\"",
+                        "this bridge has no string of that group");
+    }
+    if (!(p.ratio > 0 && p.ratio <= 1.5)) {
+      throw ConfigError("dynamics.prestrain.ratio", std::to_string(p.ratio), "must be in (0, 1.5]");
+    }
+  }
+
+  DynamicModel m;
+  m.dim = st.dim();
+  m.positions = st.nodes;
+  m.fixed = st.fixed;
+  m.loads = design.loads;
+  m.node_mass = Eigen::VectorXd::Zero(st.num_nodes());
+  m.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
+  m.youngs_modulus = mat.youngs_modulus;
+  m.tensegrity_class = st.TensegrityClass();
+  m.deck_nodes = design.topology.deck_nodes;
+  m.gravity = design.config.design.gravity;
+
+  for (const MemberSizing& b : design.bars) m.bars.push_back({b.i, b.j, b.mass, b.length});
+
+  const std::vector<int> bars_at = st.BarsPerNode();
+  for (size_t k = 0; k < design.strings.size(); ++k) {
+    const MemberSizing& s = design.strings[k];
+    DynamicString ds;
+    ds.i = s.i;
+    ds.j = s.j;
+    ds.rest_length = s.rest_length;
+    ds.stiffness = s.stiffness;
+    ds.damping = options.damping;
+    ds.group = st.strings[k].group;
+    ds.name = s.name;
+    ds.mass = mat.density * s.area * s.rest_length;
+    for (const StringPrestrain& p : options.prestrain) {
+      if (p.group != ds.group) continue;
+      ds.rest_length = p.ratio * s.length;
+      ds.stiffness = mat.youngs_modulus * s.area / ds.rest_length;
+    }
+    m.string_area.push_back(s.area);
+    for (const int end : {s.i, s.j}) {
+      const double half = 0.5 * ds.mass;
+      if (st.fixed[end]) continue;  // carried by the support
+      if (options.string_mass == StringMassMode::kAtNodes ||
+          (options.string_mass == StringMassMode::kOnBars && bars_at[end] == 0)) {
+        m.node_mass(end) += half;
+      } else if (options.string_mass == StringMassMode::kOnBars) {
+        for (DynamicBar& b : m.bars) {
+          if (b.i == end || b.j == end) b.mass += half / bars_at[end];
+        }
+      }
+    }
+    m.strings.push_back(ds);
+  }
+
+  if (options.gravity_on_structure) {
+    for (const DynamicBar& b : m.bars) {
+      m.loads(1, b.i) -= 0.5 * b.mass * m.gravity;
+      m.loads(1, b.j) -= 0.5 * b.mass * m.gravity;
+    }
+    for (int a = 0; a < m.num_nodes(); ++a) m.loads(1, a) -= m.node_mass(a) * m.gravity;
+  }
+  return m;
+}
+
+std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const Design& design,
+                                             const ModelOptions& options) {
+  std::vector<PrestrainReport> out;
+  for (const StringPrestrain& p : options.prestrain) {
+    PrestrainReport r;
+    r.group = p.group;
+    r.ratio = p.ratio;
+    r.allowed_stress = model.allowed_stress;
+    r.yield_stress = design.config.material.yield_stress;
+    for (size_t k = 0; k < model.strings.size(); ++k) {
+      const DynamicString& s = model.strings[k];
+      if (s.group != p.group) continue;
+      ++r.strings;
+      const double length = (model.positions.col(s.j) - model.positions.col(s.i)).norm();
+      const double stress = model.youngs_modulus * (length - s.rest_length) / s.rest_length;
+      r.max_stress = std::max(r.max_stress, stress);
+    }
+    r.exceeds_allowed = r.max_stress > r.allowed_stress;
+    out.push_back(r);
+  }
+  return out;
+}
+
+double MovingMass(const DynamicModel& model) {
+  double total = model.node_mass.size() != 0 ? model.node_mass.sum() : 0.0;
+  for (const DynamicBar& b : model.bars) total += b.mass;
+  return total;
+}
+
+}  // namespace tbridge

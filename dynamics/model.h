@@ -45,8 +45,59 @@ struct DynamicModel {
   double youngs_modulus = 0;          // E [Pa]
   std::vector<double> string_area;    // A per string [m^2], for stress reports
   int tensegrity_class = 1;           // max bars at a node
+  std::vector<int> deck_nodes;        // free deck nodes (0-based, in order of x), for the
+                                      // deck measurement of SPEC.md §9; may be empty
+  double gravity = 9.81;              // g [m/s^2] used when gravity acts on the structure
 
   int num_nodes() const { return static_cast<int>(positions.cols()); }
 };
+
+// Rest length = ratio x stretched (design) length for every string of `group`, with
+// k = E A / L0 recomputed (SPEC.md §7).
+struct StringPrestrain {
+  std::string group;
+  double ratio = 1.0;  // (0, 1.5]
+};
+
+struct ModelOptions {
+  StringMassMode string_mass = StringMassMode::kOnBars;
+  double damping = 0;                      // c for every string [N s/m], >= 0
+  std::vector<StringPrestrain> prestrain;  // at most one entry per group
+  bool gravity_on_structure = false;       // add -m g (y) of bars and node masses to the loads
+};
+
+// What a prestrain implies (SPEC.md §7): the stress E (s - L0) / L0 at the design length s.
+struct PrestrainReport {
+  std::string group;
+  double ratio = 1.0;
+  int strings = 0;              // strings in the group
+  double max_stress = 0;        // [Pa], over the group's strings
+  double allowed_stress = 0;    // sigma_w [Pa]
+  double yield_stress = 0;      // [Pa]
+  bool exceeds_allowed = false; // max_stress > allowed_stress
+};
+
+// The dynamic model of `design`, handed over directly:
+// - bars: design mass and length; strings: design rest length, stiffness and area, mass
+//   rho A L0 (SPEC.md §8);
+// - kOnBars (eq 27): half of each string's mass goes to the bars at each end node, shared
+//   equally among them and spread uniformly along each bar; the half at a node without bars
+//   becomes a point mass there; kAtNodes: half of each string's mass is a point mass at each
+//   end node; kOff: none. In every mode the share at a support is carried by the support
+//   (pinned nodes get no mass);
+// - prestrain: L0 = ratio x design length, k = E A / L0; the mass stays rho A L0 of the
+//   design string (what SPEC.md §9's prestrained frequencies assume);
+// - loads: the design's constant deck loads (plus gravity on the structure when asked);
+// - dim 2 for planar designs (x-y), 3 otherwise; supports are the fixed nodes.
+// Throws ConfigError for a prestrain group that names no string or a negative damping.
+DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options = {});
+
+// The implied stress of each prestrained group of `options` in `model` (built with them).
+std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const Design& design,
+                                             const ModelOptions& options);
+
+// Mass that moves: bars (with their string share) plus node point masses [kg]. For the
+// paper's n = 1 bridge with kOnBars this is 141.94 kg (SPEC.md §8).
+double MovingMass(const DynamicModel& model);
 
 }  // namespace tbridge

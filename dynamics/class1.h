@@ -1,0 +1,138 @@
+// The class-1 right-hand side (paper eqs 16-27 with SPEC.md §8), evaluated per member with no
+// matrices. Class 1: no node carries more than one bar.
+//
+// State y (size 2 c, c = dim x n_n): node positions then velocities, node-major
+// (x_0, y_0[, z_0], x_1, ...) [m] and [m/s]. Pinned nodes stay in the state with zero
+// velocity and acceleration, so they are prescribed exactly (y + h 0 = y) and carry no
+// equation of motion (SPEC.md §8, eq 21).
+//
+// Forces. Each string pulls its ends with force density (eqs 16-17)
+//   gamma = max(k (1 - L0/s) + c (s . s_dot)/s^2, 0) if s >= L0, else 0;
+// F_i, F_j are the non-bar forces (loads + strings) at a bar's ends, b = n_j - n_i.
+// Bars. With point masses m_i, m_j at its ends a uniform rigid bar of mass m has the 2 x 2
+// mass matrix M = [m/3 + m_i, m/6; m/6, m/3 + m_j] (eq 21) acting on (a_i, a_j), with the bar
+// force lambda b (lambda > 0 in compression) pushing n_j and pulling n_i:
+//   M (a_i, a_j) = (F_i - lambda b, F_j + lambda b).
+// With A = M^-1, a_j - a_i = p F_i + q F_j + w lambda b (p = A01 - A00, q = A11 - A01,
+// w = A00 + A11 - 2 A01), and the length constraint b . (a_j - a_i) + |b_dot|^2 = 0 gives
+//   lambda = -(|b_dot|^2 + b . (p F_i + q F_j)) / (w l^2),   l^2 = current |b|^2.
+// Without point masses (p, q, w) = (-6, 6, 12)/m and this is eq 23 as corrected in SPEC §8:
+//   lambda = -m |b_dot|^2 / (12 l^2) - b . G / (2 l^2),  G = F_j - F_i,
+//   b_ddot = (6/m)(G + 2 lambda b), r_ddot = (F_i + F_j)/m, n_i,j_ddot = r_ddot -+ b_ddot/2.
+// Stabilisation (eqs 24-26, SPEC §8) makes h = b.b - l0^2 obey h'' + 2 zeta omega h' +
+// omega^2 h = 0:  lambda_c = lambda - (2 zeta omega b . b_dot + (omega^2/2) h) / (w l^2),
+// i.e. e = m/(12 l^2)(...) without point masses.
+// A bar with one pinned end rotates about it: (m/3 + m_j) a_j = F_j + lambda b.
+// Free nodes without a bar move as point masses: a = F / m_node.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamics/integrators.h"
+#include "dynamics/model.h"
+#include "dynamics/workspace.h"
+
+namespace tbridge {
+
+struct Class1Options {
+  bool stabilisation = false;
+  double omega_rad_s = 100.0;  // corrective frequency omega [rad/s]
+  double zeta = 1.0;           // corrective damping ratio [-]
+};
+
+// A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads.
+struct TimedLoad {
+  double t_start = 0, t_end = 0;
+  int node = 0;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]; z ignored when dim = 2
+};
+
+class Class1System {
+ public:
+  // Compiles `model` into flat per-member arrays. Throws ModelError when the model is not
+  // class 1, dim is not 2 or 3, an index or size is inconsistent, a bar's mass matrix is not
+  // positive definite, a free node without a bar has no mass, or a timed load names a node
+  // out of range.
+  Class1System(const DynamicModel& model, const Class1Options& options = {},
+               std::vector<TimedLoad> timed_loads = {});
+
+  int dim() const { return dim_; }
+  int num_nodes() const { return n_n_; }
+  int coordinates() const { return dim_ * n_n_; }
+  int state_size() const { return 2 * coordinates(); }
+  int num_members() const { return static_cast<int>(strings_.size() + bars_.size() + pinned_bars_.size()); }
+  bool damped() const { return damped_; }
+  bool stabilised() const { return options_.stabilisation; }
+
+  // The model's positions, at rest.
+  Eigen::VectorXd RestState() const;
+
+  // dy = f(t, y). Allocation-free; `ws` must be Class1Workspace(coordinates()).
+  // CAUTION: performance-sensitive
+  void Derivative(double t, const double* y, double* dy, Class1Workspace& ws) const;
+
+  // Kinetic energy of the state [J].
+  double KineticEnergy(const double* y) const;
+  // External node loads at time t, packed like the positions [N].
+  void LoadsAt(double t, double* force) const;
+  // Whether any timed load exists (else loads are constant).
+  bool has_timed_loads() const { return !timed_.empty(); }
+
+ private:
+  struct PackedString {
+    int oi, oj;  // coordinate offsets of the end nodes
+    double k, k_rest, c;  // k, k L0, damping c
+  };
+  struct PackedBar {  // both ends free
+    int oi, oj;
+    double a00, a01, a11;  // inverse mass matrix
+    double p, q, inv_w;    // see the top of the file
+    double rest_sq;        // l0^2
+    double m00, m01, m11;  // mass matrix, for the kinetic energy
+  };
+  struct PinnedBar {  // end i pinned
+    int oi, oj;
+    double mass;           // m/3 + m_j
+    double inv_mass;
+    double rest_sq;
+  };
+  struct LoneNode {
+    int o;
+    double mass, inv_mass;
+  };
+  struct PackedLoad {
+    double t_start, t_end;
+    int o;
+    double f[3];
+  };
+
+  template <int D, bool Damped, bool Stabilised>
+  void DerivativeImpl(double t, const double* y, double* dy, Class1Workspace& ws) const;
+
+  int dim_ = 2, n_n_ = 0;
+  bool damped_ = false;
+  Class1Options options_;
+  Eigen::VectorXd rest_positions_;  // packed
+  Eigen::VectorXd loads_;           // constant loads, packed [N]
+  std::vector<PackedString> strings_;
+  std::vector<PackedBar> bars_;
+  std::vector<PinnedBar> pinned_bars_;
+  std::vector<LoneNode> lone_;
+  std::vector<int> fixed_offsets_;
+  std::vector<PackedLoad> timed_;
+};
+
+// Adapter to the integrators: owns the workspace.
+class Class1Ode final : public OdeSystem {
+ public:
+  explicit Class1Ode(const Class1System& system) : system_(system), ws_(system.coordinates()) {}
+  int size() const override { return system_.state_size(); }
+  void Derivative(double t, const double* y, double* dy) override { system_.Derivative(t, y, dy, ws_); }
+
+ private:
+  const Class1System& system_;
+  Class1Workspace ws_;
+};
+
+}  // namespace tbridge

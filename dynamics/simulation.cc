@@ -1,0 +1,419 @@
+#include "dynamics/simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "dynamics/class1.h"
+#include "dynamics/integrators.h"
+
+namespace tbridge {
+
+namespace {
+
+constexpr double kSameLength = 1e-9;  // relative; bars this close share a length class
+
+std::string Num(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Per-step measurements of the summary, on the accepted states only.
+class Monitor {
+ public:
+  Monitor(const DynamicModel& model, const Class1System& system, const Eigen::VectorXd& y0,
+          const DynamicsConfig& config)
+      : model_(model), system_(system), config_(config), dim_(model.dim), x0_(y0.head(system.coordinates())) {
+    taut_.resize(model.strings.size());
+    summary_.slack.per_string.assign(model.strings.size(), 0);
+    summary_.allowed_stress = model.allowed_stress;
+    double kinetic = 0, elastic = 0, power = 0;
+    Measure(0.0, y0.data(), /*first=*/true, kinetic, elastic, power);
+    last_power_ = power;
+    auto& e = summary_.energy;
+    e.kinetic_start = kinetic;
+    e.elastic_start = elastic;
+    e.kinetic_end = kinetic;
+    e.elastic_end = elastic;
+    e.reference = std::max(kinetic + elastic, 1e-12);
+    h0_ = kinetic + elastic;
+    for (const LoadStepConfig& l : config.loads) {
+      timed_.push_back({l, x0_.segment((l.node - 1) * dim_, dim_)});
+    }
+  }
+
+  // After an accepted step from t_old to t (state y). Throws ModelError on a blow-up.
+  void Accept(int step, double t_old, double t, const double* y) {
+    const int c = system_.coordinates();
+    for (int i = 0; i < 2 * c; ++i) {
+      if (!std::isfinite(y[i])) Fail(step, t, "a node position or velocity is not finite");
+    }
+    double kinetic = 0, elastic = 0, power = 0;
+    Measure(t, y, false, kinetic, elastic, power);
+    auto& e = summary_.energy;
+    e.dissipated += 0.5 * (t - t_old) * (last_power_ + power);
+    last_power_ = power;
+    // Work of the loads: constant loads exactly, W . (x - x0); each timed load by its force
+    // times the displacement of its node over the part of the step it acts in.
+    double work = 0;
+    for (int i = 0; i < c; ++i) work += model_loads(i) * (y[i] - x0_(i));
+    for (TimedLoadState& l : timed_) {
+      const double overlap = std::min(t, l.config.t_end) - std::max(t_old, l.config.t_start);
+      const int o = (l.config.node - 1) * dim_;
+      if (overlap > 0) {
+        double fdx = 0;
+        for (int d = 0; d < dim_; ++d) fdx += l.config.force[d] * (y[o + d] - l.last(d));
+        timed_work_ += fdx * overlap / (t - t_old);
+      }
+      for (int d = 0; d < dim_; ++d) l.last(d) = y[o + d];
+    }
+    e.external_work = work + timed_work_;
+    e.kinetic_end = kinetic;
+    e.elastic_end = elastic;
+    const double drift = (kinetic + elastic - e.external_work + e.dissipated - h0_) / e.reference;
+    e.final_drift = drift;
+    e.max_drift = std::max(e.max_drift, std::abs(drift));
+    if (summary_.max_bar_length_error > config_.guard.max_bar_length_error) {
+      Fail(step, t, "the bar-length error " + Num(summary_.max_bar_length_error) +
+                        " exceeds guard.max_bar_length_error = " + Num(config_.guard.max_bar_length_error));
+    }
+    if (drift > config_.guard.max_energy_growth) {
+      Fail(step, t, "the energy grew by " + Num(drift) + " of its initial value (guard.max_energy_growth = " +
+                        Num(config_.guard.max_energy_growth) + ")");
+    }
+  }
+
+  SimulationSummary& summary() { return summary_; }
+
+ private:
+  struct TimedLoadState {
+    LoadStepConfig config;
+    Eigen::VectorXd last;  // node position at the previous accepted step
+  };
+
+  double model_loads(int i) const {
+    return model_.loads.size() != 0 ? model_.loads(i % dim_, i / dim_) : 0.0;
+  }
+
+  [[noreturn]] void Fail(int step, double t, const std::string& what) const {
+    std::ostringstream msg;
+    msg << "the run blew up at step " << step << ", t = " << t << " s: " << what
+        << ". Try a smaller dt (e.g. dt = " << config_.dt / 4 << " s)";
+    if (!config_.stabilisation.enabled) msg << " or enable stabilisation";
+    throw ModelError(msg.str());
+  }
+
+  void Measure(double t, const double* y, bool first, double& kinetic, double& elastic, double& power) {
+    const int c = system_.coordinates();
+    const double* x = y;
+    const double* v = y + c;
+    for (size_t k = 0; k < model_.strings.size(); ++k) {
+      const DynamicString& s = model_.strings[k];
+      double len2 = 0, rate = 0;
+      for (int d = 0; d < dim_; ++d) {
+        const double dx = x[s.j * dim_ + d] - x[s.i * dim_ + d];
+        len2 += dx * dx;
+        rate += dx * (v[s.j * dim_ + d] - v[s.i * dim_ + d]);
+      }
+      const double len = std::sqrt(len2);
+      const bool taut = len >= s.rest_length;
+      double tension = 0;
+      if (taut) {
+        const double stretch = len - s.rest_length;
+        const double spring = s.stiffness * stretch;
+        elastic += 0.5 * spring * stretch;
+        const double length_rate = rate / len;
+        tension = std::max(spring + s.damping * length_rate, 0.0);
+        power += (tension - spring) * length_rate;  // rate of work done on the damper
+      }
+      if (first) {
+        taut_[k] = taut;
+        if (!taut) ++summary_.slack.slack_at_start;
+      } else if (taut != taut_[k]) {
+        taut_[k] = taut;
+        ++summary_.slack.per_string[k];
+        ++summary_.slack.total;
+      }
+      if (k < model_.string_area.size() && model_.string_area[k] > 0) {
+        const double stress = tension / model_.string_area[k];
+        if (stress > summary_.max_string_stress) {
+          summary_.max_string_stress = stress;
+          summary_.max_stress_string = s.name;
+          summary_.max_stress_time = t;
+        }
+      }
+    }
+    for (const DynamicBar& b : model_.bars) {
+      double len2 = 0;
+      for (int d = 0; d < dim_; ++d) {
+        const double db = x[b.j * dim_ + d] - x[b.i * dim_ + d];
+        len2 += db * db;
+      }
+      summary_.max_bar_length_error =
+          std::max(summary_.max_bar_length_error, std::abs(std::sqrt(len2) - b.length) / b.length);
+    }
+    kinetic = system_.KineticEnergy(y);
+  }
+
+  const DynamicModel& model_;
+  const Class1System& system_;
+  const DynamicsConfig& config_;
+  int dim_;
+  Eigen::VectorXd x0_;
+  std::vector<bool> taut_;
+  std::vector<TimedLoadState> timed_;
+  double timed_work_ = 0;
+  double h0_ = 0;
+  double last_power_ = 0;
+  SimulationSummary summary_;
+};
+
+// A uniform output grid t_k = k * spacing and the rows filled so far.
+struct Sampler {
+  double spacing = 0;
+  long next = 0;  // index of the next grid time
+  long rows = 0;
+};
+
+}  // namespace
+
+ModelOptions ModelOptionsOf(const DynamicsConfig& c) {
+  ModelOptions o;
+  o.string_mass = c.string_mass == "nodes" ? StringMassMode::kAtNodes
+                  : c.string_mass == "off" ? StringMassMode::kOff
+                                           : StringMassMode::kOnBars;
+  o.damping = c.damping_c;
+  for (const PrestrainConfig& p : c.prestrain) o.prestrain.push_back({p.group, p.ratio});
+  o.gravity_on_structure = c.gravity_on_structure;
+  return o;
+}
+
+std::vector<std::vector<int>> BarLengthClasses(const DynamicModel& model) {
+  std::vector<int> order(model.bars.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return model.bars[a].length > model.bars[b].length; });
+  std::vector<std::vector<int>> classes;
+  for (const int k : order) {
+    const double l = model.bars[k].length;
+    if (!classes.empty()) {
+      const double ref = model.bars[classes.back().front()].length;
+      if (std::abs(l - ref) <= kSameLength * ref) {
+        classes.back().push_back(k);
+        continue;
+      }
+    }
+    classes.push_back({k});
+  }
+  return classes;
+}
+
+Eigen::VectorXd InitialState(const DynamicModel& model, const DynamicsConfig& config) {
+  const int dim = model.dim, n_n = model.num_nodes(), c = dim * n_n;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * c);
+  for (int a = 0; a < n_n; ++a) {
+    for (int d = 0; d < dim; ++d) y(a * dim + d) = model.positions(d, a);
+  }
+  const PerturbationConfig& p = config.perturbation;
+  if (p.bar_class > 0) {
+    const auto classes = BarLengthClasses(model);
+    if (p.bar_class > static_cast<int>(classes.size())) {
+      throw ConfigError("dynamics.perturbation.bar_class", std::to_string(p.bar_class),
+                        "this bridge has bar length classes 1.." + std::to_string(classes.size()) +
+                            " (1 = longest)");
+    }
+    std::vector<bool> moved(n_n, false);
+    for (const int k : classes[p.bar_class - 1]) {
+      for (const int a : {model.bars[k].i, model.bars[k].j}) {
+        if (model.fixed[a] || moved[a]) continue;
+        moved[a] = true;
+        y(a * dim + 1) -= p.delta;
+      }
+    }
+  }
+  for (size_t k = 0; k < config.initial.size(); ++k) {
+    const NodeInitialConfig& in = config.initial[k];
+    const std::string key = "dynamics.initial[" + std::to_string(k) + "]";
+    if (in.node > n_n) {
+      throw ConfigError(key + ".node", std::to_string(in.node), "must be in 1.." + std::to_string(n_n));
+    }
+    const int a = in.node - 1;
+    if (model.fixed[a]) throw ConfigError(key + ".node", std::to_string(in.node), "is a support; supports do not move");
+    if (dim == 2 && (in.displacement[2] != 0 || in.velocity[2] != 0)) {
+      throw ConfigError(key, "z component", "must be 0: this bridge moves in the x-y plane");
+    }
+    for (int d = 0; d < dim; ++d) {
+      y(a * dim + d) += in.displacement[d];
+      y(c + a * dim + d) += in.velocity[d];
+    }
+  }
+  // Rigid bars: the initial state must respect their lengths and length rates.
+  for (const DynamicBar& b : model.bars) {
+    double len2 = 0, rate = 0, speed2 = 0;
+    for (int d = 0; d < dim; ++d) {
+      const double db = y(b.j * dim + d) - y(b.i * dim + d);
+      const double dv = y(c + b.j * dim + d) - y(c + b.i * dim + d);
+      len2 += db * db;
+      rate += db * dv;
+      speed2 += dv * dv;
+    }
+    const double len = std::sqrt(len2);
+    const std::string name = std::to_string(b.i + 1) + "-" + std::to_string(b.j + 1);
+    if (std::abs(len - b.length) > 1e-9 * b.length) {
+      throw ConfigError("dynamics.initial", "bar " + name + " length " + Num(len) + " m",
+                        "initial displacements must keep every bar's length " + Num(b.length) +
+                            " m (move both ends of a bar together)");
+    }
+    if (std::abs(rate) > 1e-9 * len * std::max(std::sqrt(speed2), 1e-300) && speed2 > 0) {
+      throw ConfigError("dynamics.initial", "bar " + name + " length rate " + Num(rate / len) + " m/s",
+                        "initial velocities must keep every bar's length (relative velocity "
+                        "of its ends perpendicular to it)");
+    }
+  }
+  return y;
+}
+
+SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
+                          const std::vector<PrestrainReport>& prestrain) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const int dim = model.dim, n_n = model.num_nodes();
+
+  std::vector<TimedLoad> timed;
+  for (size_t k = 0; k < config.loads.size(); ++k) {
+    const LoadStepConfig& l = config.loads[k];
+    const std::string key = "dynamics.loads[" + std::to_string(k) + "]";
+    if (l.node > n_n) throw ConfigError(key + ".node", std::to_string(l.node), "must be in 1.." + std::to_string(n_n));
+    if (dim == 2 && l.force[2] != 0) throw ConfigError(key + ".force", Num(l.force[2]), "z must be 0 for a planar bridge");
+    timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2])});
+  }
+  SimulationResult result;
+  result.dim = dim;
+  for (const int node : config.record.nodes) {
+    if (node > n_n) throw ConfigError("dynamics.record.nodes", std::to_string(node), "must be in 1.." + std::to_string(n_n));
+    result.recorded_nodes.push_back(node - 1);
+  }
+
+  Class1Options options;
+  options.stabilisation = config.stabilisation.enabled;
+  options.omega_rad_s = config.stabilisation.omega_rad_s;
+  options.zeta = config.stabilisation.zeta;
+  const Class1System system(model, options, timed);
+  Class1Ode ode(system);
+  Eigen::VectorXd y = InitialState(model, config);
+  Monitor monitor(model, system, y, config);
+
+  // Output grids: history every record.every steps, deck samples every frequency.every steps.
+  const long total_steps = std::max<long>(1, std::lround(std::ceil(config.duration / config.dt - 1e-9)));
+  const bool deck = config.frequency.enabled && !model.deck_nodes.empty();
+  const int n_cols = 1 + dim * static_cast<int>(result.recorded_nodes.size());
+  const bool recording = !result.recorded_nodes.empty();
+  Sampler hist{config.dt * config.record.every, 0, 0};
+  Sampler deck_s{config.dt * config.frequency.every, 0, 0};
+  if (recording) result.history.resize(total_steps / config.record.every + 2, n_cols);
+  if (deck) {
+    result.deck_vertical.resize(total_steps / config.frequency.every + 2, static_cast<int>(model.deck_nodes.size()));
+    result.deck_sample_dt = deck_s.spacing;
+  }
+  auto take_history = [&](double t, const Eigen::VectorXd& state) {
+    if (hist.rows >= result.history.rows()) return;
+    result.history(hist.rows, 0) = t;
+    for (size_t k = 0; k < result.recorded_nodes.size(); ++k) {
+      for (int d = 0; d < dim; ++d) result.history(hist.rows, 1 + dim * k + d) = state(result.recorded_nodes[k] * dim + d);
+    }
+    ++hist.rows;
+  };
+  auto take_deck = [&](const Eigen::VectorXd& state) {
+    if (deck_s.rows >= result.deck_vertical.rows()) return;
+    for (size_t k = 0; k < model.deck_nodes.size(); ++k) {
+      const int a = model.deck_nodes[k];
+      result.deck_vertical(deck_s.rows, static_cast<int>(k)) = state(a * dim + 1) - model.positions(1, a);
+    }
+    ++deck_s.rows;
+  };
+  if (recording) take_history(0.0, y);
+  if (deck) take_deck(y);
+
+  SimulationSummary& s = monitor.summary();
+  s.integrator = config.integrator;
+  if (config.integrator == "rk4") {
+    Rk4Workspace ws(system.state_size());
+    for (long step = 1; step <= total_steps; ++step) {
+      const double t_old = (step - 1) * config.dt;
+      const double t = step == total_steps ? config.duration : step * config.dt;
+      Rk4Step(ode, t_old, t - t_old, y, ws);
+      monitor.Accept(static_cast<int>(step), t_old, t, y.data());
+      if (recording && step % config.record.every == 0) take_history(t, y);
+      if (deck && step % config.frequency.every == 0) take_deck(y);
+    }
+    s.steps = static_cast<int>(total_steps);
+    s.evaluations = 4 * total_steps;
+  } else {
+    Dopri5Options o;
+    o.rtol = config.rtol;
+    o.atol = config.atol;
+    Dopri5 dp(o);
+    Dopri5Workspace ws(system.state_size());
+    Eigen::VectorXd out(system.state_size());
+    double t = 0, h = config.dt;
+    dp.Start(ode, t, y, ws);
+    hist.next = deck_s.next = 1;
+    int step = 0;
+    while (t < config.duration) {
+      const double t_old = t;
+      dp.Step(ode, t, y, h, config.duration, ws);
+      monitor.Accept(++step, t_old, t, y.data());
+      // Dense output onto the uniform grids (within rounding of the end time).
+      if (recording) {
+        for (; hist.next * hist.spacing <= t * (1 + 1e-12); ++hist.next) {
+          dp.Interpolate(hist.next * hist.spacing, ws, out);
+          take_history(hist.next * hist.spacing, out);
+        }
+      }
+      if (deck) {
+        for (; deck_s.next * deck_s.spacing <= t * (1 + 1e-12); ++deck_s.next) {
+          dp.Interpolate(deck_s.next * deck_s.spacing, ws, out);
+          take_deck(out);
+        }
+      }
+    }
+    s.steps = dp.accepted();
+    s.rejected = dp.rejected();
+    s.evaluations = dp.evaluations();
+  }
+  if (recording) result.history.conservativeResize(hist.rows, n_cols);
+  if (deck) result.deck_vertical.conservativeResize(deck_s.rows, result.deck_vertical.cols());
+
+  s.duration = config.duration;
+  s.stress_exceeds_allowed = s.max_string_stress > s.allowed_stress;
+  s.prestrain = prestrain;
+  // Slack strings at the end, from the final state.
+  for (const DynamicString& st : model.strings) {
+    double len2 = 0;
+    for (int d = 0; d < dim; ++d) {
+      const double dx = y(st.j * dim + d) - y(st.i * dim + d);
+      len2 += dx * dx;
+    }
+    if (std::sqrt(len2) < st.rest_length) ++s.slack.slack_at_end;
+  }
+  if (config.frequency.enabled) {
+    if (!deck) {
+      s.frequency_note = "the model has no deck nodes";
+    } else {
+      try {
+        s.frequency = DeckFrequency(result.deck_vertical, result.deck_sample_dt, config.duration);
+        s.has_frequency = true;
+      } catch (const std::invalid_argument& e) {
+        s.frequency_note = std::string("no deck frequency: ") + e.what();
+      }
+    }
+  }
+  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  result.summary = s;
+  return result;
+}
+
+}  // namespace tbridge

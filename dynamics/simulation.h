@@ -1,0 +1,91 @@
+// A dynamic scenario of a class-1 model: initial conditions, time-varying loads, integration
+// (RK4 or DOPRI5), recording and a summary. Only what the config asks for is computed.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/dynamics_config.h"
+#include "dynamics/model.h"
+#include "dynamics/response.h"
+
+namespace tbridge {
+
+// Model options of a dynamics config (string mass, damping, prestrain, gravity). Throws
+// nothing: the config was validated when parsed.
+ModelOptions ModelOptionsOf(const DynamicsConfig& config);
+
+// Bars grouped by length, longest first (the paper's Table 5 numbering: class 1 is the
+// longest, central bar). Lengths equal within 1e-9 relative share a class. Entries are
+// 0-based bar indices.
+std::vector<std::vector<int>> BarLengthClasses(const DynamicModel& model);
+
+// Initial state (2 x dim x n_n, see dynamics/class1.h): the model's positions, then the
+// perturbation (both end nodes of every bar of the class move down, -y, by delta), then the
+// per-node displacements and velocities. Throws ConfigError naming the key for a class or
+// node out of range, a pinned node, a z component in a planar model, or an initial condition
+// that changes a bar's length (> 1e-9 relative) or its length rate.
+Eigen::VectorXd InitialState(const DynamicModel& model, const DynamicsConfig& config);
+
+struct SlackEvents {
+  int total = 0;                    // slack <-> taut transitions, all strings
+  std::vector<int> per_string;      // per model string
+  int slack_at_start = 0, slack_at_end = 0;
+};
+
+struct EnergyBalance {
+  double kinetic_start = 0, elastic_start = 0;  // [J]
+  double kinetic_end = 0, elastic_end = 0;      // [J]
+  double external_work = 0;  // work done by the loads since t = 0 [J]
+  double dissipated = 0;     // by string damping (trapezoidal in time) [J]
+  // H = kinetic + elastic - external work + dissipated is conserved by the exact dynamics;
+  // drift = max over the accepted steps of |H - H_0| / E_ref, E_ref = max(kinetic + elastic
+  // at start, 1e-12 J).
+  double reference = 0;
+  double max_drift = 0;
+  double final_drift = 0;
+};
+
+struct SimulationSummary {
+  std::string integrator;
+  int steps = 0;          // accepted steps
+  int rejected = 0;       // dopri5 only
+  long evaluations = 0;   // right-hand side calls
+  double duration = 0;    // simulated [s]
+  double wall_seconds = 0;
+  double max_string_stress = 0;  // tension / area over strings and steps [Pa]
+  std::string max_stress_string;
+  double max_stress_time = 0;    // [s]
+  double allowed_stress = 0;     // [Pa]
+  bool stress_exceeds_allowed = false;
+  SlackEvents slack;
+  double max_bar_length_error = 0;  // max |l - l0| / l0 over bars and steps
+  EnergyBalance energy;
+  std::vector<PrestrainReport> prestrain;
+  bool has_frequency = false;
+  FrequencyEstimate frequency;     // deck measurement of SPEC.md §9
+  std::string frequency_note;      // why there is none, when has_frequency is false
+};
+
+struct SimulationResult {
+  SimulationSummary summary;
+  // Recorded history: one row per record time: t, then dim coordinates of each recorded node.
+  std::vector<int> recorded_nodes;  // 0-based
+  int dim = 2;
+  Eigen::MatrixXd history;
+  // Deck vertical displacement (rows: samples every frequency.every steps from t = 0; columns:
+  // model.deck_nodes) [m]; empty when frequency is off.
+  Eigen::MatrixXd deck_vertical;
+  double deck_sample_dt = 0;  // [s]
+};
+
+// Runs `config` on `model`. Throws ConfigError for initial conditions or loads that do not
+// fit the model, ModelError when the model is not class 1 or the run blows up: NaN/Inf in the
+// state, a bar-length error above guard.max_bar_length_error, or energy growth above
+// guard.max_energy_growth. The message names the step and time and suggests a smaller dt.
+// `prestrain` reports are copied into the summary.
+SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
+                          const std::vector<PrestrainReport>& prestrain = {});
+
+}  // namespace tbridge

@@ -1,0 +1,175 @@
+// `tbridge simulate CONFIG.json -o OUTDIR [--quiet]`: a dynamic scenario of the designed bridge
+// (the config's "dynamics" section). Writes OUTDIR/summary.json and, when nodes are recorded,
+// OUTDIR/history.csv; both atomically and only after the run succeeded.
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+#include "core/error.h"
+#include "design/design.h"
+#include "dynamics/model.h"
+#include "dynamics/simulation.h"
+#include "tools/commands.h"
+#include "tools/output.h"
+
+namespace tbridge::cli {
+
+namespace {
+
+const CommandSpec& SimulateSpec() {
+  static const CommandSpec spec{
+      "simulate",
+      {"CONFIG.json"},
+      {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
+       {{"-q", "--quiet"}, "", "do not print the summary", false}},
+      "Designs the bridge of CONFIG.json, builds its dynamic model and runs the scenario of its\n"
+      "\"dynamics\" section (keys in configs/README.md). Writes OUTDIR/summary.json (the resolved\n"
+      "config, frequency, stresses, slack events, bar-length error, energy balance) and\n"
+      "OUTDIR/history.csv (t, then x, y[, z] of every recorded node). A run that blows up\n"
+      "writes nothing."};
+  return spec;
+}
+
+std::string MemberName(int i, int j) { return std::to_string(i + 1) + "-" + std::to_string(j + 1); }
+
+nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, const SimulationResult& r) {
+  const SimulationSummary& s = r.summary;
+  nlohmann::json j;
+  j["config"] = ToJson(config);
+  nlohmann::json classes = nlohmann::json::array();
+  const auto groups = BarLengthClasses(model);
+  for (size_t c = 0; c < groups.size(); ++c) {
+    nlohmann::json bars = nlohmann::json::array();
+    for (const int k : groups[c]) bars.push_back(MemberName(model.bars[k].i, model.bars[k].j));
+    classes.push_back({{"class", c + 1}, {"length_m", model.bars[groups[c].front()].length}, {"bars", bars}});
+  }
+  j["model"] = {{"dim", model.dim},
+                {"nodes", model.num_nodes()},
+                {"bars", model.bars.size()},
+                {"strings", model.strings.size()},
+                {"moving_mass_kg", MovingMass(model)},
+                {"bar_length_classes", classes}};
+  j["run"] = {{"integrator", s.integrator}, {"steps", s.steps},        {"rejected_steps", s.rejected},
+              {"evaluations", s.evaluations}, {"duration_s", s.duration}, {"wall_s", s.wall_seconds}};
+  if (s.has_frequency) {
+    j["frequency"] = {{"method", "dominant spectral peak of the summed vertical deck displacement"},
+                      {"periods", {s.frequency.period_s}},
+                      {"period_s", s.frequency.period_s},
+                      {"frequency_hz", s.frequency.frequency_hz},
+                      {"omega_rad_s", s.frequency.omega_rad_s},
+                      {"amplitude_m", s.frequency.amplitude}};
+  } else if (!s.frequency_note.empty()) {
+    j["frequency"] = {{"note", s.frequency_note}};
+  }
+  j["max_string_stress"] = {{"stress_pa", s.max_string_stress},
+                            {"string", s.max_stress_string},
+                            {"time_s", s.max_stress_time},
+                            {"allowed_pa", s.allowed_stress},
+                            {"exceeds_allowed", s.stress_exceeds_allowed}};
+  nlohmann::json per_string = nlohmann::json::object();
+  for (size_t k = 0; k < s.slack.per_string.size(); ++k) {
+    if (s.slack.per_string[k] > 0) per_string[model.strings[k].name] = s.slack.per_string[k];
+  }
+  j["slack"] = {{"transitions", s.slack.total},
+                {"per_string", per_string},
+                {"slack_at_start", s.slack.slack_at_start},
+                {"slack_at_end", s.slack.slack_at_end}};
+  j["max_bar_length_error"] = s.max_bar_length_error;
+  const EnergyBalance& e = s.energy;
+  j["energy"] = {{"kinetic_start_j", e.kinetic_start}, {"elastic_start_j", e.elastic_start},
+                 {"kinetic_end_j", e.kinetic_end},     {"elastic_end_j", e.elastic_end},
+                 {"external_work_j", e.external_work}, {"dissipated_j", e.dissipated},
+                 {"reference_j", e.reference},         {"max_relative_drift", e.max_drift},
+                 {"final_relative_drift", e.final_drift}};
+  if (!s.prestrain.empty()) {
+    nlohmann::json p = nlohmann::json::array();
+    for (const PrestrainReport& pr : s.prestrain) {
+      p.push_back({{"group", pr.group},
+                   {"ratio", pr.ratio},
+                   {"strings", pr.strings},
+                   {"implied_stress_pa", pr.max_stress},
+                   {"allowed_pa", pr.allowed_stress},
+                   {"yield_pa", pr.yield_stress},
+                   {"exceeds_allowed", pr.exceeds_allowed}});
+    }
+    j["prestrain"] = p;
+  }
+  return j;
+}
+
+std::string HistoryCsv(const SimulationResult& r) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "t";
+  const char* axes = "xyz";
+  for (const int node : r.recorded_nodes) {
+    for (int d = 0; d < r.dim; ++d) out << "," << axes[d] << node + 1;
+  }
+  out << "\n";
+  for (Eigen::Index row = 0; row < r.history.rows(); ++row) {
+    for (Eigen::Index col = 0; col < r.history.cols(); ++col) {
+      if (col > 0) out << ",";
+      out << r.history(row, col);
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+int RunSimulateCommand(const std::vector<std::string>& args) {
+  const CommandSpec& spec = SimulateSpec();
+  const ParsedArgs parsed = ParseArgs(args, spec);
+  if (parsed.help) {
+    std::cout << Usage(spec);
+    return 0;
+  }
+  const std::string out_dir = parsed.Required("-o");
+  const Config config = LoadConfig(parsed.positionals[0]);
+  if (!config.dynamics) {
+    throw ConfigError("dynamics", "(missing)", "tbridge simulate needs a \"dynamics\" section");
+  }
+  const DynamicsConfig& dc = *config.dynamics;
+  const Design design = RunDesign(config);
+  const ModelOptions options = ModelOptionsOf(dc);
+  const DynamicModel model = BuildDynamicModel(design, options);
+  const SimulationResult result = Simulate(model, dc, ReportPrestrain(model, design, options));
+
+  const std::string summary = SummaryJson(config, model, result).dump(2) + "\n";
+  const bool csv = dc.record.csv && !result.recorded_nodes.empty();
+  const std::string history = csv ? HistoryCsv(result) : std::string();
+  WriteFileAtomically(out_dir + "/summary.json", summary);
+  if (csv) WriteFileAtomically(out_dir + "/history.csv", history);
+  if (!parsed.Flag("-q")) {
+    const SimulationSummary& s = result.summary;
+    std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator << ", "
+              << s.wall_seconds << " s)\n";
+    if (s.has_frequency) {
+      std::cout << "deck frequency: T = " << s.frequency.period_s << " s, f = " << s.frequency.frequency_hz
+                << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
+    }
+    std::cout << "max string stress " << s.max_string_stress << " Pa (allowed " << s.allowed_stress << ")"
+              << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "") << "\n"
+              << "slack transitions " << s.slack.total << ", max bar-length error " << s.max_bar_length_error
+              << ", energy drift " << s.energy.max_drift << "\n";
+    for (const PrestrainReport& p : s.prestrain) {
+      std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress << " Pa"
+                << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ") << p.allowed_stress
+                << " Pa\n";
+    }
+    std::cout << "wrote " << out_dir << "/summary.json" << (csv ? " and history.csv" : "") << "\n";
+  }
+  return 0;
+}
+
+const CommandRegistrar kRegisterSimulate("simulate",
+                                         "dynamic scenario of CONFIG.json, written to OUTDIR",
+                                         &RunSimulateCommand);
+
+}  // namespace
+
+}  // namespace tbridge::cli
