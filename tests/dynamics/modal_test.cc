@@ -13,51 +13,19 @@
 #include "core/config.h"
 #include "core/error.h"
 #include "design/design.h"
+#include "dynamics/model.h"
 
 namespace tbridge {
 namespace {
 
-// The dynamic model of a design, built here so that these tests depend only on the model
-// contract: string mass rho A L0, and half of each string's mass goes to every bar at each of
-// its end nodes, shared among the bars there (eq. 27). Deck strings get rest length
-// p x stretched length and k = E A / L0 when prestrain > 0; their mass stays that of the
-// design string, which is what SPEC §9's prestrained frequencies assume (recomputing it as
-// rho A p s raises them by 0.2-0.9 %).
+// The dynamic model of a design with string masses on the bars (eq. 27); deck strings
+// prestrained to rest length p x stretched length when p > 0 (k recomputed, string mass kept
+// that of the design string, which is what SPEC §9's prestrained frequencies assume;
+// recomputing it as rho A p s would raise them by 0.2-0.9 %).
 DynamicModel ModelOf(const Design& d, double prestrain = 0) {
-  const Structure& st = d.topology.structure;
-  const double rho = d.config.material.density;
-  const double e = d.config.material.youngs_modulus;
-  DynamicModel m;
-  m.dim = st.dim();
-  m.positions = st.nodes;
-  m.fixed = st.fixed;
-  m.loads = d.loads;
-  m.node_mass = Eigen::VectorXd::Zero(st.num_nodes());
-  const std::vector<int> bars_at = st.BarsPerNode();
-  for (const MemberSizing& b : d.bars) m.bars.push_back({b.i, b.j, b.mass, b.length});
-  for (size_t k = 0; k < d.strings.size(); ++k) {
-    const MemberSizing& s = d.strings[k];
-    DynamicString ds;
-    ds.i = s.i;
-    ds.j = s.j;
-    ds.rest_length = s.rest_length;
-    ds.stiffness = s.stiffness;
-    ds.group = st.strings[k].group;
-    ds.name = s.name;
-    if (prestrain > 0 && ds.group == "deck") {
-      ds.rest_length = prestrain * s.length;
-      ds.stiffness = e * s.area / ds.rest_length;
-    }
-    ds.mass = rho * s.area * s.rest_length;
-    for (int end : {s.i, s.j}) {
-      if (bars_at[end] == 0) continue;
-      for (DynamicBar& b : m.bars) {
-        if (b.i == end || b.j == end) b.mass += 0.5 * ds.mass / bars_at[end];
-      }
-    }
-    m.strings.push_back(ds);
-  }
-  return m;
+  ModelOptions options;
+  if (prestrain > 0) options.prestrain.push_back({"deck", prestrain});
+  return BuildDynamicModel(d, options);
 }
 
 const Design& PaperDesign(int n) {
@@ -142,6 +110,11 @@ TEST_CASE("Prestrained deck strings raise the fundamental as in SPEC 9", "[dynam
     // The deck-chain prestress is a self-stress: the loads stay balanced (N).
     CHECK(r.equilibrium_residual < 1e-6);
   }
+}
+
+TEST_CASE("The n = 1 modal model carries SPEC 8's moving mass", "[dynamics][modal]") {
+  // Eq. 27 for n = 1: 141.94 kg (SPEC §8), printed to 0.01 kg.
+  CHECK(MovingMass(ModelOf(PaperDesign(1))) == Approx(141.94).margin(0.005));
 }
 
 TEST_CASE("RK4 stable step matches SPEC 9", "[dynamics][modal]") {

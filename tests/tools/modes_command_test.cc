@@ -1,0 +1,45 @@
+// `tbridge modes` end to end: the executable on a paper config.
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Exit code of `tbridge modes <args>`, output discarded; -1 when it did not exit.
+int RunModes(const std::string& args) {
+  const std::string command = std::string("'") + TBRIDGE_BINARY + "' modes " + args + " > /dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST_CASE("tbridge modes writes the n = 1 frequencies, shapes and RK4 step", "[tools][modes]") {
+  const fs::path dir = fs::temp_directory_path() / "tbridge_modes_test";
+  fs::remove_all(dir);
+  const fs::path out = dir / "modes.json";
+  const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n1.json";
+  REQUIRE(RunModes("'" + config + "' -o '" + out.string() + "' --count 1 -q") == 0);
+  std::ifstream in(out);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  REQUIRE(j.at("modes").size() == 3u);  // 4 free DOFs minus one bar length
+  // SPEC §9 (independent re-implementation, 4 printed digits): 100.8 and 1.24e-3 s.
+  CHECK(j["modes"][0]["omega_rad_s"].get<double>() == Approx(100.8).epsilon(0.01));
+  CHECK(j["modes"][0]["symmetry"] == "symmetric");
+  CHECK(j["rk4_stable_dt_s"].get<double>() == Approx(1.24e-3).margin(0.005e-3));
+  CHECK(j["mode_shapes"].size() == 1u);
+  CHECK(j["mode_shapes"][0]["displacements"].size() == 4u);  // every node, pinned ones at 0
+  CHECK(j["config"]["bridge"]["n"] == 1);
+  CHECK(j["stable"] == true);
+  // A bad count is a usage error (exit 2) and leaves the earlier file alone.
+  CHECK(RunModes("'" + config + "' -o '" + out.string() + "' --count -3") == 2);
+  CHECK(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+}  // namespace

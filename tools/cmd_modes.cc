@@ -1,0 +1,162 @@
+// `tbridge modes CONFIG.json -o OUT.json [--count K] [--quiet]`: the linearised vibration
+// modes of a designed bridge about its static equilibrium (dynamics/modal.h).
+
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+#include "core/error.h"
+#include "design/design.h"
+#include "dynamics/modal.h"
+#include "dynamics/model.h"
+#include "dynamics/simulation.h"
+#include "tools/commands.h"
+#include "tools/output.h"
+
+namespace tbridge::cli {
+
+namespace {
+
+constexpr int kDefaultShapes = 6;
+
+const CommandSpec& ModesSpec() {
+  static const CommandSpec spec{
+      "modes",
+      {"CONFIG.json"},
+      {{{"-o", "--output"}, "OUT.json", "where to write the modes, a JSON file", true},
+       {{"-k", "--count"}, "K", "mode shapes to write, lowest first (default 6; 0 = none)", false},
+       {{"-q", "--quiet"}, "", "do not print the frequency table", false}},
+      "Designs the bridge of CONFIG.json, builds its dynamic model (string masses on the bars,\n"
+      "eq. 27, unless a \"dynamics\" section says otherwise) and writes every linearised\n"
+      "natural frequency about the static equilibrium, with the bar lengths held, to OUT.json:\n"
+      "omega [rad/s], f [Hz], T [s], the symmetry about mid-span, the shapes of the first K\n"
+      "modes and the largest stable RK4 step."};
+  return spec;
+}
+
+int ParseCount(const ParsedArgs& parsed) {
+  const std::optional<std::string> text = parsed.Value("-k");
+  if (!text) return kDefaultShapes;
+  try {
+    size_t used = 0;
+    const int count = std::stoi(*text, &used);
+    if (used == text->size() && count >= 0) return count;
+  } catch (const std::exception&) {
+  }
+  throw UsageError("--count expects a whole number >= 0, got '" + *text + "'");
+}
+
+// Symmetry of every mode, or nothing when the structure is not mirror-symmetric about
+// mid-span (then no node has a partner and ClassifySymmetry throws).
+std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model, const ModalResult& modes) {
+  std::vector<std::optional<SymmetryReport>> out(modes.modes.size());
+  try {
+    for (size_t k = 0; k < modes.modes.size(); ++k) out[k] = ClassifySymmetry(model.positions, modes.modes[k].shape);
+  } catch (const ModelError&) {
+    std::fill(out.begin(), out.end(), std::nullopt);
+  }
+  return out;
+}
+
+nlohmann::json ModesToJson(const Design& design, const DynamicModel& model, const ModalResult& result,
+                           const std::vector<std::optional<SymmetryReport>>& symmetry, int shapes) {
+  nlohmann::json modes = nlohmann::json::array();
+  bool stable = true;
+  for (size_t k = 0; k < result.modes.size(); ++k) {
+    const Mode& m = result.modes[k];
+    stable = stable && m.omega_squared > 0;
+    nlohmann::json entry = {{"index", k + 1},
+                            {"omega_rad_s", m.omega_rad_s},
+                            {"frequency_hz", m.frequency_hz},
+                            {"period_s", m.period_s},
+                            {"symmetry", nullptr},
+                            {"symmetry_correlation", nullptr}};
+    if (symmetry[k]) {
+      entry["symmetry"] = SymmetryName(symmetry[k]->symmetry);
+      entry["symmetry_correlation"] = symmetry[k]->correlation;
+    }
+    modes.push_back(entry);
+  }
+  nlohmann::json shape_list = nlohmann::json::array();
+  for (int k = 0; k < shapes && k < static_cast<int>(result.modes.size()); ++k) {
+    nlohmann::json nodes = nlohmann::json::array();
+    const Eigen::Matrix3Xd& s = result.modes[k].shape;
+    for (Eigen::Index a = 0; a < s.cols(); ++a) nodes.push_back({s(0, a), s(1, a), s(2, a)});
+    shape_list.push_back({{"index", k + 1}, {"displacements", nodes}});
+  }
+  nlohmann::json out;
+  out["config"] = ToJson(design.config);
+  out["model"] = {{"dim", model.dim},
+                  {"nodes", model.num_nodes()},
+                  {"bars", model.bars.size()},
+                  {"strings", model.strings.size()},
+                  {"free_dofs", result.free_dofs},
+                  {"bar_constraints", result.constraints},
+                  {"slack_strings", result.slack_strings},
+                  {"equilibrium_residual_N", result.equilibrium_residual}};
+  out["stable"] = stable;
+  out["rk4_stable_dt_s"] = result.modes.empty() ? nlohmann::json(nullptr) : nlohmann::json(Rk4StableStep(result));
+  out["modes"] = modes;
+  out["mode_shapes"] = shape_list;
+  out["units"] = {{"omega_rad_s", "rad/s"},
+                  {"frequency_hz", "Hz"},
+                  {"period_s", "s"},
+                  {"rk4_stable_dt_s", "s"},
+                  {"equilibrium_residual_N", "N"},
+                  {"displacements", "m/sqrt(kg), mass-normalised: shape^T M shape = 1"}};
+  return out;
+}
+
+std::string ModesTable(const ModalResult& result, const std::vector<std::optional<SymmetryReport>>& symmetry,
+                       int max_rows) {
+  std::ostringstream out;
+  out << result.modes.size() << " modes (" << result.free_dofs << " free DOFs, " << result.constraints
+      << " bar lengths held)\n";
+  out << "  mode   omega [rad/s]      f [Hz]       T [s]  symmetry\n";
+  char line[160];
+  for (size_t k = 0; k < result.modes.size() && static_cast<int>(k) < max_rows; ++k) {
+    const Mode& m = result.modes[k];
+    std::snprintf(line, sizeof line, "%6zu %15.4g %11.4g %11.4g  %s\n", k + 1, m.omega_rad_s, m.frequency_hz,
+                  m.period_s, symmetry[k] ? SymmetryName(symmetry[k]->symmetry) : "-");
+    out << line;
+  }
+  if (static_cast<int>(result.modes.size()) > max_rows) {
+    out << "  ... " << result.modes.size() - max_rows << " more in the output file\n";
+  }
+  if (!result.modes.empty()) out << "RK4 stable for dt < " << Rk4StableStep(result) << " s\n";
+  return out.str();
+}
+
+int RunModesCommand(const std::vector<std::string>& args) {
+  const CommandSpec& spec = ModesSpec();
+  const ParsedArgs parsed = ParseArgs(args, spec);
+  if (parsed.help) {
+    std::cout << Usage(spec);
+    return 0;
+  }
+  const std::string out_path = parsed.Required("-o");
+  const int shapes = ParseCount(parsed);
+  // Everything that can fail runs before the output file is touched.
+  const Design design = RunDesign(LoadConfig(parsed.positionals[0]));
+  // A "dynamics" section sets the model (string mass, prestrain, gravity); the paper's
+  // model otherwise.
+  const ModelOptions options = design.config.dynamics ? ModelOptionsOf(*design.config.dynamics) : ModelOptions{};
+  const DynamicModel model = BuildDynamicModel(design, options);
+  const ModalResult result = ComputeModes(model);
+  const auto symmetry = Symmetries(model, result);
+  WriteFileAtomically(out_path, ModesToJson(design, model, result, symmetry, shapes).dump(2) + "\n");
+  if (!parsed.Flag("-q")) std::cout << ModesTable(result, symmetry, 20) << "wrote " << out_path << "\n";
+  return 0;
+}
+
+const CommandRegistrar kRegisterModes("modes", "linearised natural frequencies and mode shapes of a design",
+                                      &RunModesCommand);
+
+}  // namespace
+
+}  // namespace tbridge::cli
