@@ -238,6 +238,15 @@ TEST_CASE("a number too large for a double (1e999) names its key") {
   CHECK(message.find("1e999") != std::string::npos);
 }
 
+TEST_CASE("a key given twice in one object is rejected, not silently overwritten") {
+  // JSON parsers keep the last of two equal keys; a config with {"n": 3, "n": 4} would
+  // quietly design n = 4.
+  const std::string path = WriteText("duplicate.json", R"({"bridge": {"n": 3, "n": 4}})");
+  const std::string message = ConfigErrorOf([&] { LoadConfig(path); });
+  INFO("message: " << message);
+  CHECK(message.find("bridge.n") != std::string::npos);
+}
+
 TEST_CASE("malformed JSON names the file and the position") {
   const std::string path = WriteText("trailing_comma.json", R"({"bridge": {"n": 3,}})");
   const std::string message = ConfigErrorOf([&] { LoadConfig(path); });

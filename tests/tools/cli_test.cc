@@ -20,7 +20,7 @@ using nlohmann::json;
 
 struct Result {
   bool exited = false;  // false if the process died from a signal (a crash)
-  int code = -1;
+  int code = -1;        // exit code of the shell running tbridge
   std::string out;
   std::string err;
 };
@@ -50,8 +50,10 @@ Result Run(const fs::path& dir, const std::string& args) {
                               " 2> " + Quote(err.string());
   const int status = std::system(command.c_str());
   Result r;
-  r.exited = status != -1 && WIFEXITED(status);
-  r.code = r.exited ? WEXITSTATUS(status) : -1;
+  // The shell reports a child killed by signal s as exit code 128 + s; tbridge itself never
+  // exits with more than 4.
+  r.exited = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) < 128;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = ReadText(out);
   r.err = ReadText(err);
   return r;
@@ -115,6 +117,14 @@ TEST_CASE("bad configs exit 2, name the key and write no output") {
 TEST_CASE("a number too large for a double exits 2 and names the key") {
   ExpectCleanFailure("huge", R"({"bridge": {"n": 3, "span": 1e999}})", 2,
                      {"bridge.span", "1e999"});
+}
+
+TEST_CASE("deeply nested JSON is bad input, not a crash") {
+  // 100000 levels overflow any recursive parse, copy or print of the document; the tool must
+  // refuse the input (exit 2), not die from a signal.
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  ExpectCleanFailure("deep_root", deep, 2, {});
+  ExpectCleanFailure("deep_value", R"({"bridge": {"n": 3, "span": )" + deep + "}}", 2, {});
 }
 
 TEST_CASE("an unreadable config exits 2 and names the file") {
