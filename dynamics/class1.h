@@ -68,7 +68,8 @@ class Class1System {
   // The model's positions, at rest.
   Eigen::VectorXd RestState() const;
 
-  // dy = f(t, y). Allocation-free; `ws` must be Class1Workspace(coordinates()).
+  // dy = f(t, y); t only selects the timed loads. Allocation-free; `ws` must be
+  // Class1Workspace(coordinates()).
   // CAUTION: performance-sensitive
   void Derivative(double t, const double* y, double* dy, Class1Workspace& ws) const;
 
@@ -128,11 +129,23 @@ class Class1Ode final : public OdeSystem {
  public:
   explicit Class1Ode(const Class1System& system) : system_(system), ws_(system.coordinates()) {}
   int size() const override { return system_.state_size(); }
-  void Derivative(double t, const double* y, double* dy) override { system_.Derivative(t, y, dy, ws_); }
+  void Derivative(double t, const double* y, double* dy) override {
+    system_.Derivative(hold_loads_ ? load_time_ : t, y, dy, ws_);
+  }
+  // Evaluates the timed loads at `t` for every stage until released. A fixed-step driver holds
+  // them at each step's midpoint, so that a load switching on a step boundary is constant
+  // within every step (a switch inside the stages of one step would cost O(dt) in energy).
+  void HoldLoadsAt(double t) {
+    hold_loads_ = true;
+    load_time_ = t;
+  }
+  void ReleaseLoads() { hold_loads_ = false; }
 
  private:
   const Class1System& system_;
   Class1Workspace ws_;
+  bool hold_loads_ = false;
+  double load_time_ = 0;
 };
 
 }  // namespace tbridge

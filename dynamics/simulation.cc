@@ -344,6 +344,7 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
     for (long step = 1; step <= total_steps; ++step) {
       const double t_old = (step - 1) * config.dt;
       const double t = step == total_steps ? config.duration : step * config.dt;
+      if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * (t_old + t));
       Rk4Step(ode, t_old, t - t_old, y, ws);
       monitor.Accept(static_cast<int>(step), t_old, t, y.data());
       if (recording && step % config.record.every == 0) take_history(t, y);
