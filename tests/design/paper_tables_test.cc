@@ -14,7 +14,7 @@ namespace tbridge {
 namespace {
 
 nlohmann::json LoadTables() {
-  std::ifstream in(std::string(TBRIDGE_SOURCE_DIR) + "/tests/data/paper_tables_1_4.json");
+  std::ifstream in(std::string(TBRIDGE_SOURCE_DIR) + "/configs/reference/paper_tables_1_4.json");
   REQUIRE(in.good());
   return nlohmann::json::parse(in);
 }
