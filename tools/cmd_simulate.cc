@@ -11,9 +11,8 @@
 
 #include "core/config.h"
 #include "core/error.h"
-#include "design/design.h"
 #include "dynamics/model.h"
-#include "dynamics/simulation.h"
+#include "dynamics/scenario.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 
@@ -130,14 +129,10 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   }
   const std::string out_dir = parsed.Required("-o");
   const Config config = LoadConfig(parsed.positionals[0]);
-  if (!config.dynamics) {
-    throw ConfigError("dynamics", "(missing)", "tbridge simulate needs a \"dynamics\" section");
-  }
+  const ScenarioResult scenario = RunScenario(config);
   const DynamicsConfig& dc = *config.dynamics;
-  const Design design = RunDesign(config);
-  const ModelOptions options = ModelOptionsOf(dc);
-  const DynamicModel model = BuildDynamicModel(design, options);
-  const SimulationResult result = Simulate(model, dc, ReportPrestrain(model, design, options));
+  const DynamicModel& model = scenario.model;
+  const SimulationResult& result = scenario.simulation;
 
   const std::string summary = SummaryJson(config, model, result).dump(2) + "\n";
   const bool csv = dc.record.csv && !result.recorded_nodes.empty();
