@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -189,11 +191,77 @@ void JsonSection::Finish() const {
   }
 }
 
+namespace {
+
+// Configs are shallow; a bound on nesting keeps hostile input from exhausting the stack in
+// the recursive copies and walks that follow parsing.
+constexpr int kMaxJsonDepth = 64;
+
+// Tracks the key path while parsing, so that a repeated key (which JSON parsers silently
+// resolve to the last value) and a number too large for a double are reported by key.
+class KeyTracker {
+ public:
+  bool operator()(int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (depth > kMaxJsonDepth) {
+      throw ConfigError(Path(), "(nested " + std::to_string(depth) + " deep)",
+                        "JSON nesting is limited to " + std::to_string(kMaxJsonDepth) + " levels");
+    }
+    switch (event) {
+      case Event::object_start:
+        frames_.push_back({true, {}, ""});
+        break;
+      case Event::array_start:
+        frames_.push_back({false, {}, "[]"});
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        if (!frames_.empty()) frames_.pop_back();
+        break;
+      case Event::key: {
+        Frame& f = frames_.back();
+        f.current = parsed.get<std::string>();
+        if (!f.keys.insert(f.current).second) {
+          throw ConfigError(Path(), "(given twice)", "each key may appear only once in an object");
+        }
+        break;
+      }
+      case Event::value:
+        break;
+    }
+    return true;
+  }
+
+  std::string Path() const {
+    std::string path;
+    for (const Frame& f : frames_) {
+      if (f.current.empty()) continue;
+      path += (f.is_object && !path.empty() ? "." : "") + f.current;
+    }
+    return path.empty() ? "(root)" : path;
+  }
+
+ private:
+  struct Frame {
+    bool is_object;
+    std::set<std::string> keys;
+    std::string current;
+  };
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 nlohmann::json ParseJsonText(const std::string& text, const std::string& source) {
+  KeyTracker tracker;
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(text, std::ref(tracker));
   } catch (const nlohmann::json::parse_error& e) {
     throw ConfigError(source + ": malformed JSON: " + e.what());
+  } catch (const nlohmann::json::out_of_range& e) {
+    // e.g. 1e999: the number does not fit a double.
+    throw ConfigError(tracker.Path(), "(out of range, in " + source + ")",
+                      std::string("must be a finite number (") + e.what() + ")");
   }
 }
 
