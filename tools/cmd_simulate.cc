@@ -36,6 +36,26 @@ const CommandSpec& SimulateSpec() {
 
 std::string MemberName(int i, int j) { return std::to_string(i + 1) + "-" + std::to_string(j + 1); }
 
+// The model's geometry as plots need it: equilibrium node positions (1-based order), bars,
+// and strings with their rest lengths (after prestrain), so that slack strings (s < L0) can be
+// found from any recorded state.
+nlohmann::json ModelMembersJson(const DynamicModel& model) {
+  nlohmann::json nodes = nlohmann::json::array(), bars = nlohmann::json::array(),
+                 strings = nlohmann::json::array();
+  for (int v = 0; v < model.num_nodes(); ++v) {
+    nodes.push_back({model.positions(0, v), model.positions(1, v), model.positions(2, v)});
+  }
+  for (const DynamicBar& b : model.bars) bars.push_back({{"nodes", {b.i + 1, b.j + 1}}});
+  for (const DynamicString& s : model.strings) {
+    strings.push_back({{"nodes", {s.i + 1, s.j + 1}}, {"group", s.group}, {"rest_length_m", s.rest_length}});
+  }
+  std::vector<int> fixed;
+  for (int v = 0; v < model.num_nodes(); ++v) {
+    if (model.fixed[v]) fixed.push_back(v + 1);
+  }
+  return {{"positions", nodes}, {"fixed", fixed}, {"bars", bars}, {"strings", strings}};
+}
+
 nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, const SimulationResult& r) {
   const SimulationSummary& s = r.summary;
   nlohmann::json j;
@@ -52,7 +72,8 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                 {"bars", model.bars.size()},
                 {"strings", model.strings.size()},
                 {"moving_mass_kg", MovingMass(model)},
-                {"bar_length_classes", classes}};
+                {"bar_length_classes", classes},
+                {"members", ModelMembersJson(model)}};
   j["run"] = {{"integrator", s.integrator}, {"steps", s.steps},        {"rejected_steps", s.rejected},
               {"evaluations", s.evaluations}, {"duration_s", s.duration}, {"wall_s", s.wall_seconds}};
   if (s.has_frequency) {

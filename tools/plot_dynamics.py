@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+"""Figures from `tbridge simulate` outputs (OUTDIR/summary.json and OUTDIR/history.csv).
+
+  plot_dynamics.py snapshots OUTDIR -o FIG.png [--times 0.02,0.05,0.1] [--scale 3]
+      The bridge at chosen times, displacements amplified by --scale: initial shape dashed
+      black, bars thick, taut strings blue, slack strings (length < rest length) dashed red
+      (the paper's Figure 5). Planar bridges in the x-y plane.
+  plot_dynamics.py deck OUTDIR -o FIG.png [--axis y|x|z]
+      Displacement histories of the deck nodes (free nodes with y = 0) along an axis (the
+      paper's Figure 6 for y, Figures 9 and 11 for the 3D runs).
+
+Record every free node (dynamics.record.nodes) to draw snapshots. Uses Debian's matplotlib
+(/usr/bin/python3).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def load(outdir):
+    with open(os.path.join(outdir, "summary.json")) as f:
+        summary = json.load(f)
+    with open(os.path.join(outdir, "history.csv")) as f:
+        rows = list(csv.reader(f))
+    header, data = rows[0], [[float(v) for v in r] for r in rows[1:]]
+    return summary, header, data
+
+
+def columns(header):
+    """Maps (node, axis) -> column index for the recorded nodes (1-based node numbers)."""
+    out = {}
+    for k, name in enumerate(header[1:], start=1):
+        out[(int(name[1:]), "xyz".index(name[0]))] = k
+    return out
+
+
+def positions_at(summary, header, row, scale):
+    """Node positions (list of [x, y, z]) at a history row, displacement amplified."""
+    base = summary["model"]["members"]["positions"]
+    cols = columns(header)
+    pos = [list(p) for p in base]
+    for (node, axis), k in cols.items():
+        pos[node - 1][axis] = base[node - 1][axis] + scale * (row[k] - base[node - 1][axis])
+    return pos, cols
+
+
+def true_positions(summary, cols, row):
+    base = summary["model"]["members"]["positions"]
+    pos = [list(p) for p in base]
+    for (node, axis), k in cols.items():
+        pos[node - 1][axis] = row[k]
+    return pos
+
+
+def snapshots(args):
+    summary, header, data = load(args.outdir)
+    members = summary["model"]["members"]
+    recorded = {node for node, _ in columns(header)}
+    free = [v + 1 for v in range(len(members["positions"])) if v + 1 not in members["fixed"]]
+    missing = [v for v in free if v not in recorded]
+    if missing:
+        sys.exit(f"plot_dynamics: nodes {missing} were not recorded; set dynamics.record.nodes to every free node")
+    times = [float(t) for t in args.times.split(",")]
+    fig, axes = plt.subplots(len(times), 1, figsize=(9, 2.2 * len(times)), squeeze=False)
+    base = members["positions"]
+    for ax, t in zip(axes[:, 0], times):
+        row = min(data, key=lambda r: abs(r[0] - t))
+        pos, cols = positions_at(summary, header, row, args.scale)
+        real = true_positions(summary, cols, row)
+        for b in members["bars"]:
+            i, j = (n - 1 for n in b["nodes"])
+            ax.plot([base[i][0], base[j][0]], [base[i][1], base[j][1]], "k--", lw=0.8)
+            ax.plot([pos[i][0], pos[j][0]], [pos[i][1], pos[j][1]], "k-", lw=2.5)
+        slack = 0
+        for s in members["strings"]:
+            i, j = (n - 1 for n in s["nodes"])
+            ax.plot([base[i][0], base[j][0]], [base[i][1], base[j][1]], "k--", lw=0.5)
+            length = math.dist(real[i], real[j])
+            is_slack = length < s["rest_length_m"]
+            slack += is_slack
+            ax.plot([pos[i][0], pos[j][0]], [pos[i][1], pos[j][1]],
+                    "r--" if is_slack else "b-", lw=1.2 if is_slack else 0.9)
+        for v in members["fixed"]:
+            ax.plot(base[v - 1][0], base[v - 1][1], "k^", ms=8)
+        ax.set_title(f"t = {row[0]:.4f} s   ({slack} slack strings; displacements x{args.scale:g})",
+                     fontsize=9)
+        ax.set_aspect("auto")
+        ax.set_ylabel("y [m]")
+    axes[-1, 0].set_xlabel("x [m]")
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=110)
+
+
+def deck(args):
+    summary, header, data = load(args.outdir)
+    members = summary["model"]["members"]
+    base = members["positions"]
+    axis = "xyz".index(args.axis)
+    cols = columns(header)
+    nodes = [v + 1 for v, p in enumerate(base)
+             if abs(p[1]) < 1e-12 and v + 1 not in members["fixed"] and (v + 1, axis) in cols]
+    if not nodes:
+        sys.exit("plot_dynamics: no deck node (free, y = 0) was recorded")
+    fig, ax = plt.subplots(figsize=(9, 3.6))
+    t = [r[0] for r in data]
+    for v in nodes:
+        k = cols[(v, axis)]
+        ax.plot(t, [1e3 * (r[k] - base[v - 1][axis]) for r in data], lw=1.0, label=f"node {v}")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel(f"{args.axis} displacement [mm]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=min(len(nodes), 6))
+    if args.title:
+        ax.set_title(args.title, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=110)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("snapshots")
+    p.add_argument("outdir")
+    p.add_argument("-o", "--output", required=True)
+    p.add_argument("--times", default="0.02,0.05,0.1")
+    p.add_argument("--scale", type=float, default=3.0)
+    p.set_defaults(run=snapshots)
+    p = sub.add_parser("deck")
+    p.add_argument("outdir")
+    p.add_argument("-o", "--output", required=True)
+    p.add_argument("--axis", default="y", choices=["x", "y", "z"])
+    p.add_argument("--title", default="")
+    p.set_defaults(run=deck)
+    args = parser.parse_args()
+    args.run(args)
+
+
+if __name__ == "__main__":
+    main()
