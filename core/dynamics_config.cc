@@ -46,6 +46,7 @@ DynamicsConfig ParseDynamicsConfig(JsonSection s) {
                       "must not exceed duration = " + std::to_string(d.duration));
   }
   d.integrator = s.Choice("integrator", d.integrator, {"rk4", "dopri5"});
+  d.engine = s.Choice("engine", d.engine, {"auto", "class1", "classk"});
   d.rtol = s.Number("rtol", d.rtol, Range::Closed(1e-14, 1e-1));
   d.atol = s.Number("atol", d.atol, Range::Closed(1e-16, 1.0));
   d.string_mass = s.Choice("string_mass", d.string_mass, {"bars", "nodes", "off"});
@@ -140,6 +141,7 @@ nlohmann::json ToJson(const DynamicsConfig& d) {
   return {{"duration", d.duration},
           {"dt", d.dt},
           {"integrator", d.integrator},
+          {"engine", d.engine},
           {"rtol", d.rtol},
           {"atol", d.atol},
           {"string_mass", d.string_mass},

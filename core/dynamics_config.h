@@ -73,6 +73,9 @@ struct DynamicsConfig {
   double duration = 1.0;              // simulated time [s]
   double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
   std::string integrator = "rk4";     // "rk4" | "dopri5"
+  // "auto": the class-1 closed form when no node carries two bars, else class k;
+  // "class1" (throws for a class-k bridge) | "classk" (Lagrange multipliers, any bridge)
+  std::string engine = "auto";
   double rtol = 1e-8;                 // dopri5 relative tolerance
   double atol = 1e-10;                // dopri5 absolute tolerance [m, m/s]
   std::string string_mass = "bars";   // "bars" (eq 27) | "nodes" | "off"

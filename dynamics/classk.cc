@@ -1,0 +1,429 @@
+#include "dynamics/classk.h"
+
+#include <cholmod.h>
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "core/error.h"
+
+namespace tbridge {
+
+namespace {
+
+constexpr const char* kEngine = "class-k dynamics";
+
+std::string NodeName(int node) { return std::to_string(node + 1); }
+
+// One place where a constraint row meets a bar's copy (used only while building A's pattern):
+// a bar row (d < 0) is s b on the copy, s = -1 at end i and +1 at end j; a coincidence row is
+// s e_d.
+struct Touch {
+  int row, end, d;
+  double sign;
+};
+
+}  // namespace
+
+// CHOLMOD's state for one workspace. A holds the upper triangle (stype +1) in the system's
+// fill-reducing row order, so the factorisation runs in natural order: with a permutation or
+// a lower triangle, cholmod_factorize would build a transposed copy of A on every call.
+struct ClassKWorkspace::Solver {
+  cholmod_common common;
+  cholmod_sparse* a = nullptr;
+  cholmod_factor* factor = nullptr;
+  cholmod_dense* rhs = nullptr;
+  cholmod_dense* mu = nullptr;  // created by the first solve, reused afterwards
+  cholmod_dense* y = nullptr;   // cholmod_solve2's workspaces, likewise
+  cholmod_dense* e = nullptr;
+
+  Solver() { cholmod_start(&common); common.print = 0; }
+  ~Solver() {
+    cholmod_free_dense(&e, &common);
+    cholmod_free_dense(&y, &common);
+    cholmod_free_dense(&mu, &common);
+    cholmod_free_dense(&rhs, &common);
+    cholmod_free_factor(&factor, &common);
+    cholmod_free_sparse(&a, &common);
+    cholmod_finish(&common);
+  }
+  Solver(const Solver&) = delete;
+  Solver& operator=(const Solver&) = delete;
+};
+
+ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& options,
+                           std::vector<TimedLoad> timed_loads)
+    : dim_(model.dim), n_n_(model.num_nodes()), n_model_bars_(static_cast<int>(model.bars.size())), options_(options) {
+  if (dim_ != 2 && dim_ != 3) throw ModelError(std::string(kEngine) + ": dim must be 2 or 3");
+  if (static_cast<int>(model.fixed.size()) != n_n_) {
+    throw ModelError(std::string(kEngine) + ": fixed has " + std::to_string(model.fixed.size()) + " entries for " +
+                     std::to_string(n_n_) + " nodes");
+  }
+  const bool has_node_mass = model.node_mass.size() != 0;
+  if (has_node_mass && model.node_mass.size() != n_n_) {
+    throw ModelError(std::string(kEngine) + ": node_mass has the wrong size");
+  }
+  if (options.stabilisation && !(options.omega_rad_s > 0 && options.zeta >= 0)) {
+    throw ModelError(std::string(kEngine) + ": stabilisation needs omega > 0 and zeta >= 0");
+  }
+  auto node_mass = [&](int a) { return has_node_mass ? model.node_mass(a) : 0.0; };
+
+  loads_ = NodeLoads(model, timed_loads, kEngine);
+  strings_ = PackStrings(model, kEngine, damped_);
+  rest_positions_.resize(coordinates());
+  for (int a = 0; a < n_n_; ++a) {
+    for (int d = 0; d < dim_; ++d) rest_positions_(a * dim_ + d) = model.positions(d, a);
+  }
+
+  // Bars and their copies. A node's first copy is its primary: it takes the node's mass and
+  // force, and the node's acceleration is read from it.
+  primary_copy_.assign(n_n_, -1);
+  std::vector<std::vector<int>> node_copies(n_n_);
+  for (size_t k = 0; k < model.bars.size(); ++k) {
+    const DynamicBar& b = model.bars[k];
+    const std::string name = "bar " + NodeName(b.i) + "-" + NodeName(b.j);
+    if (b.i < 0 || b.j < 0 || b.i >= n_n_ || b.j >= n_n_ || b.i == b.j) {
+      throw ModelError(std::string(kEngine) + ": " + name + " names a node out of range");
+    }
+    if (!(b.mass >= 0 && b.length > 0)) throw ModelError(std::string(kEngine) + ": " + name + " needs mass >= 0 and length > 0");
+    const bool free_i = !model.fixed[b.i], free_j = !model.fixed[b.j];
+    if (!free_i && !free_j) continue;
+    PackedBar p{};
+    p.oi = b.i * dim_;
+    p.oj = b.j * dim_;
+    p.rest_sq = b.length * b.length;
+    p.model_index = static_cast<int>(k);
+    const int bar = static_cast<int>(bars_.size());
+    auto add_copy = [&](int node, int end, bool& primary) {
+      const int copy = static_cast<int>(copies_.size());
+      copies_.push_back({bar, end, node * dim_});
+      primary = node_copies[node].empty();
+      if (primary) primary_copy_[node] = copy;
+      node_copies[node].push_back(copy);
+      return copy;
+    };
+    p.ci = free_i ? add_copy(b.i, 0, p.fi) : -1;
+    p.cj = free_j ? add_copy(b.j, 1, p.fj) : -1;
+    p.m00 = free_i ? b.mass / 3.0 + (p.fi ? node_mass(b.i) : 0.0) : 0.0;
+    p.m11 = free_j ? b.mass / 3.0 + (p.fj ? node_mass(b.j) : 0.0) : 0.0;
+    p.m01 = free_i && free_j ? b.mass / 6.0 : 0.0;
+    if (free_i && free_j) {
+      const double det = p.m00 * p.m11 - p.m01 * p.m01;
+      if (!(det > 0)) throw ModelError(std::string(kEngine) + ": " + name + " has a singular mass matrix (no mass)");
+      p.a00 = p.m11 / det;
+      p.a11 = p.m00 / det;
+      p.a01 = -p.m01 / det;
+    } else {
+      const double m = free_i ? p.m00 : p.m11;
+      if (!(m > 0)) throw ModelError(std::string(kEngine) + ": " + name + " has no mass at its free end");
+      (free_i ? p.a00 : p.a11) = 1.0 / m;
+    }
+    p.w = p.a00 + p.a11 - 2.0 * p.a01;
+    bars_.push_back(p);
+  }
+
+  // Constraint rows in their natural order: bar rows, then dim rows per extra copy.
+  n_rows_ = static_cast<int>(bars_.size());
+  std::vector<std::vector<Touch>> touches(bars_.size());
+  for (int k = 0; k < num_bars(); ++k) {
+    if (bars_[k].ci >= 0) touches[k].push_back({k, 0, -1, -1.0});
+    if (bars_[k].cj >= 0) touches[k].push_back({k, 1, -1, 1.0});
+  }
+  for (int a = 0; a < n_n_; ++a) {
+    for (size_t r = 1; r < node_copies[a].size(); ++r) {
+      const Coincidence c{n_rows_, node_copies[a][r], node_copies[a][0], {0, 0, 0}};
+      coincidences_.push_back(c);
+      for (int d = 0; d < dim_; ++d) {
+        touches[copies_[c.copy].bar].push_back({c.row + d, copies_[c.copy].end, d, 1.0});
+        touches[copies_[c.primary].bar].push_back({c.row + d, copies_[c.primary].end, d, -1.0});
+      }
+      n_rows_ += dim_;
+    }
+  }
+
+  // A = J M^-1 J^T, bar by bar: every ordered pair of touches of a bar adds
+  // sign1 sign2 Minv(end1, end2) times |b|^2 (two bar rows), b_d (bar and coincidence row)
+  // or 1 (two coincidence rows on the same axis). Kept: the upper triangle.
+  struct Entry {
+    double constant = 0;
+    std::map<std::pair<int, int>, double> bar_terms;  // (bar, d) -> coef
+  };
+  std::map<std::pair<int, int>, Entry> entries;  // (row, col), row <= col, natural order
+  for (int k = 0; k < num_bars(); ++k) {
+    const PackedBar& p = bars_[k];
+    const double minv[2][2] = {{p.a00, p.a01}, {p.a01, p.a11}};
+    for (const Touch& t1 : touches[k]) {
+      for (const Touch& t2 : touches[k]) {
+        if (t1.row > t2.row) continue;
+        const double coef = t1.sign * t2.sign * minv[t1.end][t2.end];
+        Entry& e = entries[{t1.row, t2.row}];
+        if (t1.d < 0 && t2.d < 0) {
+          e.bar_terms[{k, -1}] += coef;
+        } else if (t1.d < 0 || t2.d < 0) {
+          e.bar_terms[{k, t1.d < 0 ? t2.d : t1.d}] += coef;
+        } else if (t1.d == t2.d) {
+          e.constant += coef;
+        }  // else a structural zero, kept so the pattern does not depend on the values
+      }
+    }
+  }
+  const int nnz = static_cast<int>(entries.size());
+
+  // Fill-reducing order (AMD), computed once on the pattern.
+  std::vector<int> new_row(n_rows_);
+  for (int r = 0; r < n_rows_; ++r) new_row[r] = r;
+  if (n_rows_ > 1) {
+    cholmod_common c;
+    cholmod_start(&c);
+    c.print = 0;
+    cholmod_sparse* pattern = cholmod_allocate_sparse(n_rows_, n_rows_, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c);
+    if (pattern == nullptr) {
+      cholmod_finish(&c);
+      throw ModelError(std::string(kEngine) + ": CHOLMOD could not allocate the constraint pattern");
+    }
+    std::vector<std::vector<int>> by_col(n_rows_);
+    for (const auto& [rc, e] : entries) by_col[rc.second].push_back(rc.first);
+    int* cp = static_cast<int*>(pattern->p);
+    int* ri = static_cast<int*>(pattern->i);
+    cp[0] = 0;
+    for (int col = 0; col < n_rows_; ++col) {
+      int at = cp[col];
+      for (const int row : by_col[col]) ri[at++] = row;
+      cp[col + 1] = at;
+    }
+    std::vector<int> perm(n_rows_);
+    const int ok = cholmod_amd(pattern, nullptr, 0, perm.data(), &c);
+    cholmod_free_sparse(&pattern, &c);
+    cholmod_finish(&c);
+    if (!ok) throw ModelError(std::string(kEngine) + ": CHOLMOD could not order the constraint matrix");
+    for (int k = 0; k < n_rows_; ++k) new_row[perm[k]] = k;
+  }
+
+  // The permuted upper triangle in compressed columns, with its constant and bar parts.
+  std::map<std::pair<int, int>, const Entry*> permuted;  // (col, row) -> entry: CSC order
+  for (const auto& [rc, e] : entries) {
+    const int r = new_row[rc.first], s = new_row[rc.second];
+    permuted[{std::max(r, s), std::min(r, s)}] = &e;
+  }
+  a_col_.assign(n_rows_ + 1, 0);
+  for (const auto& [cr, e] : permuted) {
+    const int at = static_cast<int>(a_row_.size());
+    ++a_col_[cr.first + 1];
+    a_row_.push_back(cr.second);
+    a_const_.push_back(e->constant);
+    for (const auto& [bd, coef] : e->bar_terms) {
+      if (coef != 0) a_bar_.push_back({at, bd.first, bd.second, coef});
+    }
+  }
+  for (int col = 0; col < n_rows_; ++col) a_col_[col + 1] += a_col_[col];
+  for (PackedBar& p : bars_) p.row = new_row[&p - bars_.data()];
+  for (Coincidence& c : coincidences_) {
+    for (int d = 0; d < dim_; ++d) c.rows[d] = new_row[c.row + d];
+  }
+
+  for (int a = 0; a < n_n_; ++a) {
+    if (model.fixed[a]) {
+      fixed_offsets_.push_back(a * dim_);
+    } else if (node_copies[a].empty()) {
+      const double m = node_mass(a);
+      if (!(m > 0)) {
+        throw ModelError(std::string(kEngine) + ": free node " + NodeName(a) +
+                         " has neither a bar nor a mass (use string_mass \"nodes\" or give it mass)");
+      }
+      lone_.push_back({a * dim_, m, 1.0 / m});
+    }
+  }
+}
+
+Eigen::VectorXd ClassKSystem::RestState() const {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(state_size());
+  y.head(coordinates()) = rest_positions_;
+  return y;
+}
+
+ClassKWorkspace::ClassKWorkspace(const ClassKSystem& system)
+    : force(Eigen::VectorXd::Zero(system.coordinates())),
+      u(Eigen::VectorXd::Zero(system.dim() * system.num_copies())),
+      jt_mu(Eigen::VectorXd::Zero(system.dim() * system.num_copies())),
+      b(Eigen::VectorXd::Zero(system.dim() * system.num_bars())),
+      bar_length_sq(Eigen::VectorXd::Zero(system.num_bars())),
+      solver(std::make_unique<Solver>()) {
+  const int n = system.num_constraints();
+  if (n == 0) return;
+  cholmod_common& c = solver->common;
+  // Natural order (A is stored permuted), simplicial LDL^T: refactorisation then works in
+  // the factor's own storage.
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_NATURAL;
+  c.postorder = 0;
+  c.supernodal = CHOLMOD_SIMPLICIAL;
+  c.final_ll = 0;
+  const int nnz = static_cast<int>(system.a_row_.size());
+  solver->a = cholmod_allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_REAL, &c);
+  solver->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &c);
+  if (solver->a == nullptr || solver->rhs == nullptr) {
+    throw ModelError(std::string(kEngine) + ": CHOLMOD could not allocate the constraint matrix");
+  }
+  std::memcpy(solver->a->p, system.a_col_.data(), sizeof(int) * system.a_col_.size());
+  std::memcpy(solver->a->i, system.a_row_.data(), sizeof(int) * system.a_row_.size());
+  solver->factor = cholmod_analyze(solver->a, &c);
+  if (solver->factor == nullptr || solver->factor->ordering != CHOLMOD_NATURAL) {
+    throw ModelError(std::string(kEngine) + ": CHOLMOD could not analyse the constraint matrix");
+  }
+  // One evaluation at rest: CHOLMOD allocates the numeric factor and the solve workspaces.
+  const Eigen::VectorXd y = system.RestState();
+  Eigen::VectorXd dy(y.size());
+  system.Derivative(0.0, y.data(), dy.data(), *this);
+}
+
+ClassKWorkspace::~ClassKWorkspace() = default;
+
+Eigen::VectorXd ClassKSystem::BarForceDensities(const ClassKWorkspace& ws) const {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(n_model_bars_);
+  if (ws.solver->mu == nullptr) return out;
+  const double* mu = static_cast<const double*>(ws.solver->mu->x);
+  for (const PackedBar& p : bars_) out(p.model_index) = mu[p.row];
+  return out;
+}
+
+void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
+  const bool stab = options_.stabilisation;
+  if (dim_ == 2) {
+    if (damped_) {
+      stab ? DerivativeImpl<2, true, true>(t, y, dy, ws) : DerivativeImpl<2, true, false>(t, y, dy, ws);
+    } else {
+      stab ? DerivativeImpl<2, false, true>(t, y, dy, ws) : DerivativeImpl<2, false, false>(t, y, dy, ws);
+    }
+  } else {
+    if (damped_) {
+      stab ? DerivativeImpl<3, true, true>(t, y, dy, ws) : DerivativeImpl<3, true, false>(t, y, dy, ws);
+    } else {
+      stab ? DerivativeImpl<3, false, true>(t, y, dy, ws) : DerivativeImpl<3, false, false>(t, y, dy, ws);
+    }
+  }
+}
+
+template <int D, bool Damped, bool Stabilised>
+void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
+  // CAUTION: performance-sensitive. Flat loops over preallocated buffers; CHOLMOD works in
+  // the factor and dense vectors it allocated during the workspace's warm-up evaluation.
+  const int c = coordinates();
+  const double* x = y;
+  const double* v = y + c;
+  double* f = ws.force.data();
+  double* acc = dy + c;
+  std::memcpy(dy, v, sizeof(double) * static_cast<size_t>(c));  // x' = v
+  loads_.At(t, f);
+  AccumulateStringForces<D, Damped>(strings_, x, v, f);
+
+  ClassKWorkspace::Solver& s = *ws.solver;
+  double* rhs = s.rhs != nullptr ? static_cast<double*>(s.rhs->x) : nullptr;
+  double* u = ws.u.data();
+  double* bvec = ws.b.data();
+  double* l2v = ws.bar_length_sq.data();
+  [[maybe_unused]] const double two_zeta_omega = 2.0 * options_.zeta * options_.omega_rad_s;
+  [[maybe_unused]] const double half_omega_sq = 0.5 * options_.omega_rad_s * options_.omega_rad_s;
+
+  // Per bar: b, u = M^-1 F on its copies, and its row of the right-hand side.
+  for (size_t k = 0; k < bars_.size(); ++k) {
+    const PackedBar& p = bars_[k];
+    double* b = bvec + k * D;
+    double fi[D], fj[D], ui[D], uj[D];
+    double l2 = 0, bd2 = 0, bdu = 0, bbd = 0;
+    for (int d = 0; d < D; ++d) {
+      b[d] = x[p.oj + d] - x[p.oi + d];
+      const double bd = v[p.oj + d] - v[p.oi + d];
+      fi[d] = p.fi ? f[p.oi + d] : 0.0;
+      fj[d] = p.fj ? f[p.oj + d] : 0.0;
+      ui[d] = p.a00 * fi[d] + p.a01 * fj[d];
+      uj[d] = p.a01 * fi[d] + p.a11 * fj[d];
+      l2 += b[d] * b[d];
+      bd2 += bd * bd;
+      bdu += b[d] * (uj[d] - ui[d]);
+      if constexpr (Stabilised) bbd += b[d] * bd;
+    }
+    l2v[k] = l2;
+    double numerator = bd2 + bdu;
+    if constexpr (Stabilised) numerator += two_zeta_omega * bbd + half_omega_sq * (l2 - p.rest_sq);
+    rhs[p.row] = -numerator;
+    for (int d = 0; d < D; ++d) {
+      if (p.ci >= 0) u[p.ci * D + d] = ui[d];
+      if (p.cj >= 0) u[p.cj * D + d] = uj[d];
+    }
+  }
+  for (const Coincidence& q : coincidences_) {
+    for (int d = 0; d < D; ++d) rhs[q.rows[d]] = -(u[q.copy * D + d] - u[q.primary * D + d]);
+  }
+
+  // A's values, numeric refactorisation in place, solve (pattern and order fixed).
+  const double* mu = nullptr;
+  if (s.a != nullptr) {
+    double* a = static_cast<double*>(s.a->x);
+    std::memcpy(a, a_const_.data(), sizeof(double) * a_const_.size());
+    for (const BarEntry& e : a_bar_) a[e.at] += e.coef * (e.d < 0 ? l2v[e.bar] : bvec[e.bar * D + e.d]);
+    cholmod_factorize(s.a, s.factor, &s.common);
+    if (s.common.status != CHOLMOD_OK || s.factor->minor != s.factor->n) {
+      throw ModelError(std::string(kEngine) + ": the constraint matrix J M^-1 J^T is not positive definite at t = " +
+                       std::to_string(t) + " s (dependent bar constraints or a collapsed bar)");
+    }
+    cholmod_solve2(CHOLMOD_A, s.factor, s.rhs, nullptr, &s.mu, nullptr, &s.y, &s.e, &s.common);
+    mu = static_cast<const double*>(s.mu->x);
+  }
+
+  // J^T mu on the copies: every copy belongs to exactly one bar end, then the coincidences.
+  double* jt = ws.jt_mu.data();
+  for (size_t k = 0; k < bars_.size(); ++k) {
+    const PackedBar& p = bars_[k];
+    const double m = mu[p.row];
+    for (int d = 0; d < D; ++d) {
+      if (p.ci >= 0) jt[p.ci * D + d] = -m * bvec[k * D + d];
+      if (p.cj >= 0) jt[p.cj * D + d] = m * bvec[k * D + d];
+    }
+  }
+  for (const Coincidence& q : coincidences_) {
+    for (int d = 0; d < D; ++d) {
+      jt[q.copy * D + d] += mu[q.rows[d]];
+      jt[q.primary * D + d] -= mu[q.rows[d]];
+    }
+  }
+  // Node accelerations from the primary copies: a = u + M^-1 J^T mu.
+  for (const PackedBar& p : bars_) {
+    for (int d = 0; d < D; ++d) {
+      const double gi = p.ci >= 0 ? jt[p.ci * D + d] : 0.0;
+      const double gj = p.cj >= 0 ? jt[p.cj * D + d] : 0.0;
+      if (p.ci >= 0 && p.fi) acc[p.oi + d] = u[p.ci * D + d] + p.a00 * gi + p.a01 * gj;
+      if (p.cj >= 0 && p.fj) acc[p.oj + d] = u[p.cj * D + d] + p.a01 * gi + p.a11 * gj;
+    }
+  }
+  for (const LoneNode& n : lone_) {
+    for (int d = 0; d < D; ++d) acc[n.o + d] = f[n.o + d] * n.inv_mass;
+  }
+  for (const int o : fixed_offsets_) {
+    for (int d = 0; d < D; ++d) {
+      acc[o + d] = 0;
+      dy[o + d] = 0;
+    }
+  }
+}
+
+double ClassKSystem::KineticEnergy(const double* y) const {
+  const double* v = y + coordinates();
+  auto dot = [&](int a, int b) {
+    double s = 0;
+    for (int d = 0; d < dim_; ++d) s += v[a + d] * v[b + d];
+    return s;
+  };
+  double e = 0;
+  for (const PackedBar& b : bars_) {
+    if (b.ci >= 0) e += b.m00 * dot(b.oi, b.oi);
+    if (b.cj >= 0) e += b.m11 * dot(b.oj, b.oj);
+    if (b.ci >= 0 && b.cj >= 0) e += 2.0 * b.m01 * dot(b.oi, b.oj);
+  }
+  for (const LoneNode& n : lone_) e += n.mass * dot(n.o, n.o);
+  return 0.5 * e;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,58 @@
+#include "dynamics/node_forces.h"
+
+#include <cstring>
+#include <string>
+
+#include "core/error.h"
+
+namespace tbridge {
+
+NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& timed, const char* engine)
+    : dim_(model.dim) {
+  const int n_n = model.num_nodes();
+  if (model.loads.size() != 0 && model.loads.cols() != n_n) {
+    throw ModelError(std::string(engine) + ": loads has the wrong size");
+  }
+  constant_ = Eigen::VectorXd::Zero(dim_ * n_n);
+  if (model.loads.size() != 0) {
+    for (int a = 0; a < n_n; ++a) {
+      for (int d = 0; d < dim_; ++d) constant_(a * dim_ + d) = model.loads(d, a);
+    }
+  }
+  for (const TimedLoad& l : timed) {
+    if (l.node < 0 || l.node >= n_n) {
+      throw ModelError(std::string(engine) + ": a timed load names node " + std::to_string(l.node + 1) +
+                       " out of range");
+    }
+    timed_.push_back({l.t_start, l.t_end, l.node * dim_, {l.force.x(), l.force.y(), l.force.z()}});
+  }
+}
+
+void NodeLoads::At(double t, double* force) const {
+  std::memcpy(force, constant_.data(), sizeof(double) * static_cast<size_t>(constant_.size()));
+  for (const PackedLoad& l : timed_) {
+    if (t >= l.t_start && t < l.t_end) {
+      for (int d = 0; d < dim_; ++d) force[l.o + d] += l.f[d];
+    }
+  }
+}
+
+std::vector<PackedString> PackStrings(const DynamicModel& model, const char* engine, bool& damped) {
+  const int n_n = model.num_nodes(), dim = model.dim;
+  std::vector<PackedString> out;
+  damped = false;
+  for (const DynamicString& s : model.strings) {
+    if (s.i < 0 || s.j < 0 || s.i >= n_n || s.j >= n_n) {
+      throw ModelError(std::string(engine) + ": string " + s.name + " names a node out of range");
+    }
+    if (!(s.rest_length > 0 && s.stiffness >= 0 && s.damping >= 0)) {
+      throw ModelError(std::string(engine) + ": string " + s.name + " needs L0 > 0, k >= 0, c >= 0");
+    }
+    if (model.fixed[s.i] && model.fixed[s.j]) continue;  // moves nothing
+    out.push_back({s.i * dim, s.j * dim, s.stiffness, s.stiffness * s.rest_length, s.damping});
+    damped = damped || s.damping > 0;
+  }
+  return out;
+}
+
+}  // namespace tbridge

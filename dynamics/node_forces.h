@@ -1,0 +1,81 @@
+// The non-bar node forces every engine needs, in packed coordinates (node-major, `dim` per
+// node): the external loads (constant plus timed steps) and the string pulls (eqs 16-17).
+// Shared by the class-1 and class-k engines so both apply exactly the same forces.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "dynamics/class1.h"  // TimedLoad
+#include "dynamics/model.h"
+
+namespace tbridge {
+
+// One string between coordinate offsets oi, oj (node x dim).
+struct PackedString {
+  int oi, oj;
+  double k, k_rest, c;  // stiffness k [N/m], k L0 [N], damping c [N s/m]
+};
+
+// Loads as a function of time, packed like the positions. Built once; At allocates nothing.
+class NodeLoads {
+ public:
+  NodeLoads() = default;
+  // Throws ModelError (naming `engine`) when a timed load names a node out of range or the
+  // model's loads have the wrong size.
+  NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& timed, const char* engine);
+
+  // force (dim x n_n) = constant loads + the timed loads active at t [N].
+  void At(double t, double* force) const;
+  bool has_timed() const { return !timed_.empty(); }
+
+ private:
+  struct PackedLoad {
+    double t_start, t_end;
+    int o;
+    double f[3];
+  };
+  int dim_ = 2;
+  Eigen::VectorXd constant_;
+  std::vector<PackedLoad> timed_;
+};
+
+// The strings of `model` that can move something (not both ends pinned), packed for `dim`.
+// Throws ModelError (naming `engine`) for a node out of range or L0 <= 0, k < 0, c < 0.
+// `damped` is set when any kept string has c > 0.
+std::vector<PackedString> PackStrings(const DynamicModel& model, const char* engine, bool& damped);
+
+// Adds every string's pull to f: force density
+//   gamma = max(k (1 - L0/s) + c (s . s_dot)/s^2, 0) if s >= L0, else 0,
+// pulling node i by gamma s and node j by -gamma s (s = n_j - n_i).
+// CAUTION: performance-sensitive (inlined into the engines' loops).
+template <int D, bool Damped>
+inline void AccumulateStringForces(const std::vector<PackedString>& strings, const double* x, const double* v,
+                                   double* f) {
+  for (const PackedString& s : strings) {
+    double dx[D];
+    double len2 = 0;
+    for (int d = 0; d < D; ++d) {
+      dx[d] = x[s.oj + d] - x[s.oi + d];
+      len2 += dx[d] * dx[d];
+    }
+    const double inv_len = 1.0 / std::sqrt(len2);
+    double gamma = s.k - s.k_rest * inv_len;  // k (1 - L0/s): negative exactly when s < L0
+    if constexpr (Damped) {
+      double rate = 0;  // s . s_dot
+      for (int d = 0; d < D; ++d) rate += dx[d] * (v[s.oj + d] - v[s.oi + d]);
+      const double total = gamma + s.c * rate * inv_len * inv_len;
+      gamma = gamma >= 0 ? std::max(total, 0.0) : 0.0;
+    } else {
+      gamma = std::max(gamma, 0.0);
+    }
+    for (int d = 0; d < D; ++d) {
+      f[s.oi + d] += gamma * dx[d];
+      f[s.oj + d] -= gamma * dx[d];
+    }
+  }
+}
+
+}  // namespace tbridge
