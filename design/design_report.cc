@@ -12,10 +12,11 @@ namespace {
 
 using nlohmann::json;
 
-json MemberToJson(const MemberSizing& m) {
+json MemberToJson(const MemberSizing& m, const Member& topology_member) {
   const bool bar = m.kind == MemberKind::kBar;
   return json{{"name", m.name},
               {"type", KindName(m.kind)},
+              {"group", topology_member.group},
               {"nodes", {m.i + 1, m.j + 1}},
               {"length", m.length},
               {"force", m.force},
@@ -113,8 +114,10 @@ nlohmann::json DesignToJson(const Design& d) {
   j["nodes"] = std::move(nodes);
 
   json members = json::array();
-  for (const MemberSizing& m : d.bars) members.push_back(MemberToJson(m));
-  for (const MemberSizing& m : d.strings) members.push_back(MemberToJson(m));
+  for (size_t b = 0; b < d.bars.size(); ++b) members.push_back(MemberToJson(d.bars[b], s.bars[b]));
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    members.push_back(MemberToJson(d.strings[k], s.strings[k]));
+  }
   j["members"] = std::move(members);
 
   j["mass"] = {{"bars", d.mass.bars},
