@@ -30,28 +30,45 @@ struct Touch {
 
 // CHOLMOD's state for one workspace. A holds the upper triangle (stype +1) in the system's
 // fill-reducing row order, so the factorisation runs in natural order: with a permutation or
-// a lower triangle, cholmod_factorize would build a transposed copy of A on every call.
+// a lower triangle, cholmod_factorize would build a transposed copy of A on every call. The
+// triangular solves are done here on the simplicial LDL^T factor, because cholmod_solve2
+// (SuiteSparse 5) allocates twice per call even with its reusable workspaces.
 struct ClassKWorkspace::Solver {
   cholmod_common common;
   cholmod_sparse* a = nullptr;
   cholmod_factor* factor = nullptr;
-  cholmod_dense* rhs = nullptr;
-  cholmod_dense* mu = nullptr;  // created by the first solve, reused afterwards
-  cholmod_dense* y = nullptr;   // cholmod_solve2's workspaces, likewise
-  cholmod_dense* e = nullptr;
 
-  Solver() { cholmod_start(&common); common.print = 0; }
+  Solver() {
+    cholmod_start(&common);
+    common.print = 0;
+  }
   ~Solver() {
-    cholmod_free_dense(&e, &common);
-    cholmod_free_dense(&y, &common);
-    cholmod_free_dense(&mu, &common);
-    cholmod_free_dense(&rhs, &common);
     cholmod_free_factor(&factor, &common);
     cholmod_free_sparse(&a, &common);
     cholmod_finish(&common);
   }
   Solver(const Solver&) = delete;
   Solver& operator=(const Solver&) = delete;
+
+  // x := A^-1 x with A = L D L^T (unit L below the diagonal, D on it), natural order.
+  // CAUTION: performance-sensitive
+  void Solve(double* x) const {
+    const int n = static_cast<int>(factor->n);
+    const int* lp = static_cast<const int*>(factor->p);
+    const int* li = static_cast<const int*>(factor->i);
+    const int* lnz = static_cast<const int*>(factor->nz);
+    const double* lx = static_cast<const double*>(factor->x);
+    for (int j = 0; j < n; ++j) {
+      const double xj = x[j];
+      for (int p = lp[j] + 1; p < lp[j] + lnz[j]; ++p) x[li[p]] -= lx[p] * xj;
+    }
+    for (int j = 0; j < n; ++j) x[j] /= lx[lp[j]];
+    for (int j = n - 1; j >= 0; --j) {
+      double xj = x[j];
+      for (int p = lp[j] + 1; p < lp[j] + lnz[j]; ++p) xj -= lx[p] * x[li[p]];
+      x[j] = xj;
+    }
+  }
 };
 
 ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& options,
@@ -250,6 +267,7 @@ ClassKWorkspace::ClassKWorkspace(const ClassKSystem& system)
       jt_mu(Eigen::VectorXd::Zero(system.dim() * system.num_copies())),
       b(Eigen::VectorXd::Zero(system.dim() * system.num_bars())),
       bar_length_sq(Eigen::VectorXd::Zero(system.num_bars())),
+      mu(Eigen::VectorXd::Zero(system.num_constraints())),
       solver(std::make_unique<Solver>()) {
   const int n = system.num_constraints();
   if (n == 0) return;
@@ -263,8 +281,7 @@ ClassKWorkspace::ClassKWorkspace(const ClassKSystem& system)
   c.final_ll = 0;
   const int nnz = static_cast<int>(system.a_row_.size());
   solver->a = cholmod_allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_REAL, &c);
-  solver->rhs = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &c);
-  if (solver->a == nullptr || solver->rhs == nullptr) {
+  if (solver->a == nullptr) {
     throw ModelError(std::string(kEngine) + ": CHOLMOD could not allocate the constraint matrix");
   }
   std::memcpy(solver->a->p, system.a_col_.data(), sizeof(int) * system.a_col_.size());
@@ -273,19 +290,32 @@ ClassKWorkspace::ClassKWorkspace(const ClassKSystem& system)
   if (solver->factor == nullptr || solver->factor->ordering != CHOLMOD_NATURAL) {
     throw ModelError(std::string(kEngine) + ": CHOLMOD could not analyse the constraint matrix");
   }
-  // One evaluation at rest: CHOLMOD allocates the numeric factor and the solve workspaces.
+  // One evaluation at rest: CHOLMOD allocates the numeric factor and its work arrays.
   const Eigen::VectorXd y = system.RestState();
   Eigen::VectorXd dy(y.size());
   system.Derivative(0.0, y.data(), dy.data(), *this);
+  if (solver->factor->is_super || solver->factor->is_ll || solver->factor->ordering != CHOLMOD_NATURAL) {
+    throw ModelError(std::string(kEngine) + ": CHOLMOD did not keep a simplicial LDL^T factor in natural order");
+  }
 }
 
 ClassKWorkspace::~ClassKWorkspace() = default;
 
+long ClassKWorkspace::factor_nonzeros() const {
+  if (solver->factor == nullptr) return 0;
+  const int* lnz = static_cast<const int*>(solver->factor->nz);
+  long total = 0;
+  for (size_t j = 0; j < solver->factor->n; ++j) total += lnz[j];
+  return total;
+}
+
+void ClassKWorkspace::Refactorise() {
+  if (solver->a != nullptr) cholmod_factorize(solver->a, solver->factor, &solver->common);
+}
+
 Eigen::VectorXd ClassKSystem::BarForceDensities(const ClassKWorkspace& ws) const {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(n_model_bars_);
-  if (ws.solver->mu == nullptr) return out;
-  const double* mu = static_cast<const double*>(ws.solver->mu->x);
-  for (const PackedBar& p : bars_) out(p.model_index) = mu[p.row];
+  for (const PackedBar& p : bars_) out(p.model_index) = ws.mu(p.row);
   return out;
 }
 
@@ -308,8 +338,8 @@ void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorks
 
 template <int D, bool Damped, bool Stabilised>
 void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
-  // CAUTION: performance-sensitive. Flat loops over preallocated buffers; CHOLMOD works in
-  // the factor and dense vectors it allocated during the workspace's warm-up evaluation.
+  // CAUTION: performance-sensitive. Flat loops over preallocated buffers; CHOLMOD refactorises
+  // into the factor and work arrays it allocated during the workspace's warm-up evaluation.
   const int c = coordinates();
   const double* x = y;
   const double* v = y + c;
@@ -320,7 +350,7 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
   AccumulateStringForces<D, Damped>(strings_, x, v, f);
 
   ClassKWorkspace::Solver& s = *ws.solver;
-  double* rhs = s.rhs != nullptr ? static_cast<double*>(s.rhs->x) : nullptr;
+  double* rhs = ws.mu.data();  // the right-hand side, solved in place into mu
   double* u = ws.u.data();
   double* bvec = ws.b.data();
   double* l2v = ws.bar_length_sq.data();
@@ -359,7 +389,7 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
   }
 
   // A's values, numeric refactorisation in place, solve (pattern and order fixed).
-  const double* mu = nullptr;
+  const double* mu = rhs;
   if (s.a != nullptr) {
     double* a = static_cast<double*>(s.a->x);
     std::memcpy(a, a_const_.data(), sizeof(double) * a_const_.size());
@@ -369,8 +399,7 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
       throw ModelError(std::string(kEngine) + ": the constraint matrix J M^-1 J^T is not positive definite at t = " +
                        std::to_string(t) + " s (dependent bar constraints or a collapsed bar)");
     }
-    cholmod_solve2(CHOLMOD_A, s.factor, s.rhs, nullptr, &s.mu, nullptr, &s.y, &s.e, &s.common);
-    mu = static_cast<const double*>(s.mu->x);
+    s.Solve(rhs);
   }
 
   // J^T mu on the copies: every copy belongs to exactly one bar end, then the coincidences.

@@ -27,8 +27,9 @@
 // independent) has a fixed sparsity pattern: bar rows couple only to the coincidence rows of
 // their own copies, coincidence rows to those sharing a bar. Its coincidence-coincidence
 // entries are constant; the rest are linear in b (bar-bar: w |b|^2). The pattern is analysed
-// once by CHOLMOD (AMD ordering, simplicial LDL^T); each evaluation refreshes the values,
-// refactorises numerically into the same factor and solves with reused workspaces.
+// once (AMD ordering, then CHOLMOD's symbolic analysis of the permuted matrix); each
+// evaluation refreshes the values, refactorises numerically into the same simplicial LDL^T
+// factor and solves with it.
 #pragma once
 
 #include <Eigen/Core>
@@ -141,11 +142,12 @@ class ClassKSystem {
   std::vector<BarEntry> a_bar_;
 };
 
-// Scratch of one ClassKSystem: node forces, per-copy vectors and the CHOLMOD matrix, factor
-// and solve buffers. The constructor allocates everything, analyses A's pattern once and runs
-// one evaluation at rest so that CHOLMOD has allocated its solve workspaces; after that an
-// evaluation reuses them (measured in tests/dynamics/classk_test.cc: zero CHOLMOD allocations
-// per evaluation). Throws ModelError when CHOLMOD cannot analyse or factorise A at rest.
+// Scratch of one ClassKSystem: node forces, per-copy vectors, the CHOLMOD matrix and factor.
+// The constructor allocates everything, analyses A's pattern once and runs one evaluation at
+// rest, in which CHOLMOD allocates the numeric factor and its work arrays; later evaluations
+// refactorise into them and solve with the factor in place (tests/dynamics/classk_test.cc
+// counts zero CHOLMOD allocations per step; cholmod_solve2 would allocate twice per call).
+// Throws ModelError when CHOLMOD cannot analyse or factorise A at rest.
 class ClassKWorkspace {
  public:
   explicit ClassKWorkspace(const ClassKSystem& system);
@@ -158,6 +160,12 @@ class ClassKWorkspace {
   Eigen::VectorXd jt_mu;  // J^T mu per copy [N]
   Eigen::VectorXd b;      // bar vectors, dim per packed bar [m]
   Eigen::VectorXd bar_length_sq;  // |b|^2 per packed bar [m^2]
+  Eigen::VectorXd mu;     // right-hand side, then the multipliers, per row of A [N/m], [N]
+
+  // Nonzeros of the factor L (with its diagonal); 0 without constraints.
+  long factor_nonzeros() const;
+  // Factorises A again at the values of the last evaluation, alone (for benchmarks).
+  void Refactorise();
 
   struct Solver;  // CHOLMOD state (classk.cc)
   std::unique_ptr<Solver> solver;
