@@ -118,28 +118,31 @@ FrequencyEstimate DominantFrequency(const Eigen::VectorXd& signal, double dt, co
     // Golden-section search for the best-fitting sinusoid within a quarter of the record's
     // resolution 1/T of the grid peak: inside the fit's main lobe, so one maximum.
     const double half_width = 0.25 / record;
+    // Fit the centred record: with the mean left in, the constant dominates the explained sum
+    // of squares and a small oscillation on a large offset loses its precision.
+    const Eigen::VectorXd centred = signal.array() - signal.mean();
     double lo = std::max(e.frequency_hz - half_width, 0.0), hi = std::min(e.frequency_hz + half_width, nyquist);
     const double ratio = 0.5 * (std::sqrt(5.0) - 1);
     double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
-    double fa = SinusoidFit(signal, dt, a).first, fb = SinusoidFit(signal, dt, b).first;
+    double fa = SinusoidFit(centred, dt, a).first, fb = SinusoidFit(centred, dt, b).first;
     while (hi - lo > 1e-12 * hi) {
       if (fa < fb) {
         lo = a;
         a = b;
         fa = fb;
         b = lo + ratio * (hi - lo);
-        fb = SinusoidFit(signal, dt, b).first;
+        fb = SinusoidFit(centred, dt, b).first;
       } else {
         hi = b;
         b = a;
         fb = fa;
         a = hi - ratio * (hi - lo);
-        fa = SinusoidFit(signal, dt, a).first;
+        fa = SinusoidFit(centred, dt, a).first;
       }
     }
     const double hz = 0.5 * (lo + hi);
     e = FromHz(hz);
-    e.amplitude = SinusoidFit(signal, dt, hz).second;
+    e.amplitude = SinusoidFit(centred, dt, hz).second;
   }
   e.cycles = record * e.frequency_hz;
   return e;
