@@ -1,0 +1,176 @@
+#include "sweep/candidate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+#include "dynamics/model.h"
+#include "sweep/first_frequency.h"
+#include "sweep/travelling_load.h"
+
+namespace tbridge {
+
+namespace {
+
+StringMassMode MassMode(const std::string& name) {
+  if (name == "nodes") return StringMassMode::kAtNodes;
+  if (name == "off") return StringMassMode::kOff;
+  return StringMassMode::kOnBars;
+}
+
+// grow_area (see candidate.h): the deck strings carry E A0 (1/r - 1) at an allowed stress.
+// Returns the area factor; updates the members and the mass breakdown of `design`.
+double GrowDeckStrings(Design& design, double ratio) {
+  const Material& mat = design.config.material;
+  const double sigma_w = mat.yield_stress / design.config.design.yield_safety_factor;
+  double factor = 1, deck_mass = 0;
+  for (MemberSizing& s : design.strings) {
+    if (s.kind != MemberKind::kDeckString) continue;
+    const double tension = mat.youngs_modulus * s.area * (1 / ratio - 1);
+    const double area = std::max(s.area, tension / sigma_w);
+    factor = std::max(factor, area / s.area);
+    if (area > s.area) s.governed_by = "prestress";
+    s.area = area;
+    s.radius = std::sqrt(area / std::numbers::pi);
+    s.force = tension;
+    s.force_density = tension / s.length;
+    s.stress = tension / area;
+    s.rest_length = s.length / (1 + s.stress / mat.youngs_modulus);
+    s.stiffness = mat.youngs_modulus * area / s.rest_length;
+    s.mass = mat.density * area * s.length;
+    deck_mass += s.mass;
+  }
+  MassBreakdown& m = design.mass;
+  m.deck_strings = deck_mass;
+  m.structure = m.bars + m.strings + m.deck_strings;
+  m.total = m.structure + m.deck_beams;
+  return factor;
+}
+
+double DeckStress(const Design& design) {
+  double stress = 0;
+  for (const MemberSizing& s : design.strings) {
+    if (s.kind == MemberKind::kDeckString) stress = std::max(stress, s.force / s.area);
+  }
+  return stress;
+}
+
+}  // namespace
+
+std::vector<Candidate> EnumerateCandidates(const SweepConfig& sweep) {
+  std::vector<Candidate> out;
+  for (const int n : sweep.n) {
+    for (const int p : sweep.p) {
+      for (const double beta : sweep.beta_deg) {
+        for (const double r : sweep.deck_prestrain) {
+          out.push_back({static_cast<int>(out.size()), n, p, beta, r});
+        }
+      }
+    }
+  }
+  return out;
+}
+
+Config CandidateConfig(const SweepSpec& spec, const Candidate& candidate) {
+  Config c = spec.base;
+  c.bridge.n = candidate.n;
+  c.bridge.p = candidate.p;
+  c.bridge.beta_deg = candidate.beta_deg;
+  c.dynamics.reset();
+  return c;
+}
+
+double JointMass(const Design& design, const JointMassConfig& joint) {
+  const Structure& st = design.topology.structure;
+  std::vector<double> largest(st.num_nodes(), 0.0);
+  auto meet = [&](const MemberSizing& m) {
+    largest[m.i] = std::max(largest[m.i], m.force);
+    largest[m.j] = std::max(largest[m.j], m.force);
+  };
+  for (const MemberSizing& b : design.bars) meet(b);
+  for (const MemberSizing& s : design.strings) meet(s);
+  double mass = 0;
+  for (int v = 0; v < st.num_nodes(); ++v) {
+    if (st.fixed[v]) continue;
+    mass += joint.per_node_kg + joint.per_force_kg_per_N * largest[v];
+  }
+  return mass;
+}
+
+CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate) {
+  const SweepConfig& sw = spec.sweep;
+  const SweepConstraints& con = sw.constraints;
+  CandidateRow row;
+  row.candidate = candidate;
+  try {
+    Design design = RunDesign(CandidateConfig(spec, candidate));
+    const Material& mat = design.config.material;
+    row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
+    ModelOptions options;
+    options.string_mass = MassMode(sw.travelling_load.string_mass);
+    options.damping = sw.travelling_load.damping_c;
+    const bool prestrained = candidate.deck_prestrain < 1.0;
+    if (prestrained && sw.prestrain_sizing == "grow_area") {
+      row.deck_string_area_factor = GrowDeckStrings(design, candidate.deck_prestrain);
+      row.prestress = DeckStress(design);
+    } else if (prestrained) {
+      options.prestrain.push_back({"deck", candidate.deck_prestrain});
+      row.prestress = mat.youngs_modulus * (1 / candidate.deck_prestrain - 1);
+    } else {
+      row.prestress = DeckStress(design);
+    }
+    const MassBreakdown& m = design.mass;
+    row.bars = m.bars;
+    row.strings = m.strings;
+    row.deck_strings = m.deck_strings;
+    row.deck_beams = m.deck_beams;
+    row.structure = m.structure;
+    row.total = m.total;
+    row.joint_mass = JointMass(design, sw.joint_mass);
+    row.objective = row.total + row.joint_mass;
+    row.free_nodes = design.topology.structure.num_free_nodes();
+
+    if (sw.NeedsModes() || sw.NeedsRun()) {
+      const DynamicModel model = BuildDynamicModel(design, options);
+      if (sw.NeedsModes()) row.first_frequency_rad_s = LowestFrequency(model).omega_rad_s;
+      if (sw.NeedsRun()) {
+        const TravellingLoadResult run = RunTravellingLoad(model, design, sw.travelling_load);
+        row.peak_deck_displacement = run.peak_deck_displacement;
+        row.peak_stress_ratio = run.peak_stress_ratio;
+        row.slack_strings = run.slack_strings;
+        row.peak_bar_capacity_ratio = run.peak_bar_capacity_ratio;
+      }
+    }
+  } catch (const ModelError& e) {
+    row.ok = false;
+    row.note = e.what();
+    row.feasible = false;
+    return row;
+  }
+
+  const double span = spec.base.bridge.span;
+  auto check = [&](bool active, bool passed, const char* name) {
+    if (active && !passed) row.violated.push_back(name);
+  };
+  check(con.min_first_frequency_rad_s.has_value(),
+        row.first_frequency_rad_s && *row.first_frequency_rad_s >= con.min_first_frequency_rad_s.value_or(0),
+        kMinFirstFrequency);
+  check(con.max_deck_displacement.has_value(),
+        row.peak_deck_displacement && *row.peak_deck_displacement <= con.max_deck_displacement.value_or(0),
+        kMaxDeckDisplacement);
+  check(con.span_over_displacement.has_value(),
+        row.peak_deck_displacement && *row.peak_deck_displacement * con.span_over_displacement.value_or(0) <= span,
+        kSpanOverDisplacement);
+  check(con.no_slack_under_service, row.slack_strings && *row.slack_strings == 0, kNoSlack);
+  check(con.max_dynamic_stress_ratio.has_value(),
+        row.peak_stress_ratio && *row.peak_stress_ratio <= con.max_dynamic_stress_ratio.value_or(0), kMaxDynamicStress);
+  check(con.bar_capacity_during_motion, row.peak_bar_capacity_ratio && *row.peak_bar_capacity_ratio <= 1.0,
+        kBarCapacity);
+  // 1e-12 relative: the design state sits exactly at sigma_w up to rounding.
+  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-12), kPrestressAllowed);
+  row.feasible = row.violated.empty();
+  return row;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,85 @@
+// The "sweep" section of a config: the candidate grid of the outer loop, the objective's
+// joint-mass term, the optional static and dynamic constraints and the travelling-load run.
+// Every key, its unit, default and range is listed in configs/README.md under "sweep".
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+
+namespace tbridge {
+
+// Joint (node) mass added to the objective, after Carpentieri, Skelton and Fraternali's
+// parametric design: per_node_kg for every free node, plus per_force_kg_per_N times the
+// largest member force meeting at each free node.
+struct JointMassConfig {
+  double per_node_kg = 0;         // [kg], >= 0
+  double per_force_kg_per_N = 0;  // [kg/N], >= 0
+  bool enabled() const { return per_node_kg > 0 || per_force_kg_per_N > 0; }
+};
+
+// Each constraint is off when absent. Dynamic ones run the travelling load.
+struct SweepConstraints {
+  std::optional<double> min_first_frequency_rad_s;  // [rad/s], > 0
+  std::optional<double> max_deck_displacement;      // peak |dy| of a deck node [m], > 0
+  std::optional<double> span_over_displacement;     // span / peak |dy| must be >= this [-], > 0
+  bool no_slack_under_service = false;              // no string goes slack in the run
+  std::optional<double> max_dynamic_stress_ratio;   // peak string stress / sigma_w [-], > 0
+  bool bar_capacity_during_motion = false;          // peak bar force <= yield and Euler capacity
+  bool prestress_within_allowed = false;            // prestrained strings' stress <= sigma_w
+};
+
+// The service load (the design's deck node load f times load_factor, downward) stands on each
+// free deck node in turn, in order of x, for duration / (number of deck nodes) each, on top of
+// the design loads; the bridge starts at rest in its design equilibrium. Fixed-step RK4.
+struct TravellingLoadConfig {
+  double duration = 0.5;     // [s], [1e-6, 100]
+  double dt = 1e-5;          // RK4 step [s], [1e-9, 1e-2], at most duration
+  double load_factor = 1.0;  // moving load / design node load [-], (0, 100]
+  std::string string_mass = "bars";  // as dynamics.string_mass
+  double damping_c = 0;      // c of every string [N s/m], [0, 1e9]
+};
+
+struct SweepConfig {
+  std::vector<int> n;                // complexities, each in [1, kMaxComplexity]; non-empty
+  std::vector<int> p;                // bars per module, each in [1, kMaxBarsPerModule]
+  std::vector<double> beta_deg;      // aspect angles [deg], each in (0, 90)
+  // Rest / stretched length of the deck strings; 1.0 = the design state (prestressed at
+  // sigma_w by the minimum radius), each in (0, 1].
+  std::vector<double> deck_prestrain;
+  // "grow_area": a prestrain ratio r < 1 asks for the deck-string tension E A0 (1/r - 1) of
+  // the design area A0; the area grows to tension / sigma_w (never shrinks) so the prestress
+  // stays allowed, and the mass shows it. "keep_area": A0 is kept, rest length = r x length
+  // (the paper's Table 6 experiment); the implied stress E (1/r - 1) may exceed sigma_w.
+  std::string prestrain_sizing = "grow_area";
+  JointMassConfig joint_mass;
+  SweepConstraints constraints;
+  TravellingLoadConfig travelling_load;
+  bool report_first_frequency = false;  // compute it even without the constraint
+  bool report_travelling_load = false;  // run the travelling load even without a constraint
+
+  bool NeedsModes() const { return report_first_frequency || constraints.min_first_frequency_rad_s.has_value(); }
+  bool NeedsRun() const;
+  int size() const {
+    return static_cast<int>(n.size() * p.size() * beta_deg.size() * deck_prestrain.size());
+  }
+};
+
+// A sweep file: a normal config (bridge, material, design; no dynamics) plus "sweep".
+struct SweepSpec {
+  Config base;  // bridge.n, p, beta_deg are overridden per candidate
+  SweepConfig sweep;
+};
+
+// Strict parse. bridge.n may be omitted (the grid sets it). Throws ConfigError naming the key
+// path, the value and what is allowed: unknown keys, empty or repeated grid values, values out
+// of range, a "dynamics" section, p > 1 with planes = 2.
+SweepSpec ParseSweepSpec(const nlohmann::json& root);
+SweepSpec LoadSweepSpec(const std::string& path);
+// Resolved spec with every default filled in, echoed into the outputs.
+nlohmann::json ToJson(const SweepSpec& spec);
+
+}  // namespace tbridge
