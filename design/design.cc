@@ -24,6 +24,18 @@ Eigen::VectorXd MemberForces(const Design& d) {
   return x;
 }
 
+const MemberSizing* FindMember(const Design& d, const std::string& name) {
+  const auto dash = name.find('-');
+  if (dash == std::string::npos) return nullptr;
+  const std::string flipped = name.substr(dash + 1) + "-" + name.substr(0, dash);
+  for (const auto* list : {&d.bars, &d.strings}) {
+    for (const MemberSizing& m : *list) {
+      if (m.name == name || m.name == flipped) return &m;
+    }
+  }
+  return nullptr;
+}
+
 Design RunDesign(const Config& config) {
   Design d;
   d.config = config;

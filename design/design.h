@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
 #include "core/config.h"
@@ -40,5 +41,9 @@ Design RunDesign(const Config& config);
 
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);
+
+// The sized member called "i-j" (1-based nodes, either order, as the paper writes them);
+// nullptr when the design has no such member.
+const MemberSizing* FindMember(const Design& design, const std::string& name);
 
 }  // namespace tbridge

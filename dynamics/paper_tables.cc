@@ -37,17 +37,6 @@ void AddRelative(PaperReproduction& out, int table, const std::string& item, dou
   out.checks.push_back(c);
 }
 
-const MemberSizing* FindMember(const Design& d, const std::string& name) {
-  const auto dash = name.find('-');
-  const std::string flipped = name.substr(dash + 1) + "-" + name.substr(0, dash);
-  for (const auto* list : {&d.bars, &d.strings}) {
-    for (const MemberSizing& m : *list) {
-      if (m.name == name || m.name == flipped) return &m;
-    }
-  }
-  return nullptr;
-}
-
 std::string DeltaText(const nlohmann::json& delta) {
   std::string s = "[";
   for (size_t k = 0; k < delta.size(); ++k) {

@@ -1,6 +1,7 @@
-// Shared helpers for the design tests: paper configs and member lookup by name.
+// Shared test helpers: the paper's configs and designs.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "core/config.h"
@@ -16,16 +17,12 @@ inline Config PaperConfig(int n, const std::string& solver = "ipopt") {
   return c;
 }
 
-// Finds a member by its "i-j" name in either node order; nullptr when absent.
-inline const MemberSizing* FindMember(const Design& d, const std::string& name) {
-  const auto dash = name.find('-');
-  const std::string flipped = name.substr(dash + 1) + "-" + name.substr(0, dash);
-  for (const auto* list : {&d.bars, &d.strings}) {
-    for (const MemberSizing& m : *list) {
-      if (m.name == name || m.name == flipped) return &m;
-    }
-  }
-  return nullptr;
+// The paper's design for complexity n with default settings, computed once per process.
+inline const Design& PaperDesign(int n) {
+  static std::map<int, Design> cache;
+  auto it = cache.find(n);
+  if (it == cache.end()) it = cache.emplace(n, RunDesign(PaperConfig(n))).first;
+  return it->second;
 }
 
 }  // namespace tbridge::test

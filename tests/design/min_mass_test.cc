@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "design/design.h"
 #include "design/equilibrium.h"
-#include "design/test_support.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
@@ -43,7 +43,7 @@ TEST_CASE("Closed forms: V string of n = 1 and bar forces 2^v2(k) f", "[design][
   const double beta = 10.0 * kPi / 180.0;
   // The V string carries f / (2 sin(beta/2)); relative 1e-9 = solver tolerance headroom.
   for (const char* name : {"2-3", "2-4"}) {
-    CHECK(test::FindMember(d1, name)->force == Approx(f1 / (2 * std::sin(beta / 2))).epsilon(1e-9));
+    CHECK(FindMember(d1, name)->force == Approx(f1 / (2 * std::sin(beta / 2))).epsilon(1e-9));
   }
   for (int n = 1; n <= 6; ++n) {
     const Design d = RunDesign(test::PaperConfig(n));

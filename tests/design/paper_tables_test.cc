@@ -8,7 +8,7 @@
 #include <string>
 
 #include "design/design.h"
-#include "design/test_support.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
@@ -26,18 +26,11 @@ double PrintedTolerance(const std::string& printed) {
   return 0.5 * std::pow(10.0, -decimals);
 }
 
-const Design& DesignFor(int n) {
-  static std::map<int, Design> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) it = cache.emplace(n, RunDesign(test::PaperConfig(n))).first;
-  return it->second;
-}
-
 TEST_CASE("Table 1: counts, deck section length and node load", "[paper][table1]") {
   const nlohmann::json tables = LoadTables();
   for (const auto& row : tables["table1"]) {
     const int n = row["n"];
-    const Design& d = DesignFor(n);
+    const Design& d = test::PaperDesign(n);
     INFO("n = " << n);
     const Structure& s = d.topology.structure;
     // Counts are exact integers.
@@ -59,7 +52,7 @@ TEST_CASE("Tables 2-4: string radius, rest length and stiffness", "[paper][table
   for (const auto& row : tables["strings"]) {
     const int n = row["n"];
     const std::string name = row["member"];
-    const MemberSizing* m = test::FindMember(DesignFor(n), name);
+    const MemberSizing* m = FindMember(test::PaperDesign(n), name);
     INFO("n = " << n << ", cable " << name);
     REQUIRE(m != nullptr);
     REQUIRE(m->kind != MemberKind::kBar);
@@ -81,7 +74,7 @@ TEST_CASE("Tables 2-4: bar radius and mass", "[paper][tables2-4]") {
   for (const auto& row : tables["bars"]) {
     const int n = row["n"];
     const std::string name = row["member"];
-    const MemberSizing* m = test::FindMember(DesignFor(n), name);
+    const MemberSizing* m = FindMember(test::PaperDesign(n), name);
     INFO("n = " << n << ", bar " << name);
     REQUIRE(m != nullptr);
     REQUIRE(m->kind == MemberKind::kBar);
@@ -103,7 +96,7 @@ TEST_CASE("Mass breakdown matches SPEC §4 reference values", "[paper][mass]") {
     double eq49, deck_beams;
   };
   for (const Ref& ref : {Ref{1, 252.433, 5263.50}, Ref{2, 176.199, 1795.26}, Ref{3, 132.357, 720.27}}) {
-    const Design& d = DesignFor(ref.n);
+    const Design& d = test::PaperDesign(ref.n);
     INFO("n = " << ref.n);
     CHECK(std::abs(d.mass.bars + d.mass.strings - ref.eq49) <= 0.0005);
     CHECK(std::abs(d.mass.deck_beams - ref.deck_beams) <= 0.005);

@@ -11,7 +11,7 @@
 #include "design/design.h"
 #include "design/equilibrium.h"
 #include "design/stability.h"
-#include "design/test_support.h"
+#include "test_support.h"
 #include "design/topology.h"
 
 namespace tbridge {

@@ -25,6 +25,7 @@
 #include "dynamics/model.h"
 #include "dynamics/response.h"
 #include "dynamics/simulation.h"
+#include "test_support.h"
 
 // Heap allocation counters for the no-allocation test. operator new is replaced for the whole
 // test executable, and malloc/calloc/realloc are interposed (Eigen allocates with malloc, not
@@ -67,17 +68,6 @@ void operator delete[](void* p, size_t) noexcept { __libc_free(p); }
 namespace tbridge {
 namespace {
 
-const Design& PaperDesign(int n) {
-  static std::map<int, Design> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) {
-    Config c;
-    c.bridge.n = n;
-    it = cache.emplace(n, RunDesign(c)).first;
-  }
-  return it->second;
-}
-
 // The paper's scenario (SPEC.md §9) with a perturbation of bar class `bar_class` by delta.
 DynamicsConfig Scenario(double duration, double dt, int bar_class, double delta) {
   DynamicsConfig c;
@@ -101,7 +91,7 @@ Eigen::VectorXd RunRk4(const Class1System& system, Eigen::VectorXd y, double dt,
 }
 
 TEST_CASE("the model takes the design's members and eq. 27 string masses") {
-  const Design& d = PaperDesign(1);
+  const Design& d = test::PaperDesign(1);
   const DynamicModel m = BuildDynamicModel(d);
   // SPEC.md §8: bar plus half of every string at its ends gives 141.94 kg for n = 1 (printed
   // to 0.01 kg, hence 0.005).
@@ -123,7 +113,7 @@ TEST_CASE("the model takes the design's members and eq. 27 string masses") {
 }
 
 TEST_CASE("prestrain sets rest lengths, recomputes k and flags the implied stress") {
-  const Design& d = PaperDesign(1);
+  const Design& d = test::PaperDesign(1);
   ModelOptions o;
   o.prestrain = {{"deck", 0.95}};
   const DynamicModel m = BuildDynamicModel(d, o);
@@ -143,7 +133,7 @@ TEST_CASE("prestrain sets rest lengths, recomputes k and flags the implied stres
 
 TEST_CASE("an unperturbed designed bridge stays at rest for 1 s") {
   for (int n = 1; n <= 3; ++n) {
-    const DynamicModel m = BuildDynamicModel(PaperDesign(n));
+    const DynamicModel m = BuildDynamicModel(test::PaperDesign(n));
     const Class1System system(m);
     Class1Ode ode(system);
     Eigen::VectorXd y = system.RestState();
@@ -164,7 +154,7 @@ TEST_CASE("an unperturbed designed bridge stays at rest for 1 s") {
 TEST_CASE("RK4 converges at order 4 on a smooth motion without slack") {
   // n = 1, central bar down by 1 mm: every string stays taut, so the right-hand side is
   // smooth. Errors at t = 0.1 s against a run with a 32x finer step.
-  const DynamicModel m = BuildDynamicModel(PaperDesign(1));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(1));
   const Class1System system(m);
   const DynamicsConfig c = Scenario(0.1, 1e-5, 1, 1e-3);
   REQUIRE(Simulate(m, c).summary.slack.total == 0);  // the premise: smooth
@@ -185,7 +175,7 @@ TEST_CASE("RK4 converges at order 4 on a smooth motion without slack") {
 }
 
 TEST_CASE("without damping or slack the energy is conserved") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(2));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   DynamicsConfig c = Scenario(0.3, 1e-5, 1, 1e-3);
   const SimulationResult r = Simulate(m, c);
   REQUIRE(r.summary.slack.total == 0);  // the premise: no string ever goes slack
@@ -200,7 +190,7 @@ TEST_CASE("without damping or slack the energy is conserved") {
 
 TEST_CASE("stabilisation holds bar lengths to 1e-9 over 1e5 steps") {
   // n = 2 with the central bar down by 0.1 m: strings go slack and bars bounce (SPEC.md §9).
-  const DynamicModel m = BuildDynamicModel(PaperDesign(2));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   DynamicsConfig c = Scenario(1.0, 1e-5, 1, 0.1);
   const SimulationResult plain = Simulate(m, c);
   c.stabilisation.enabled = true;
@@ -275,10 +265,10 @@ TEST_CASE("a mass on a V of two strings oscillates at sqrt(k_eff/m)") {
 }
 
 TEST_CASE("string damping dissipates energy and the balance still closes") {
-  const DynamicModel undamped = BuildDynamicModel(PaperDesign(1));
+  const DynamicModel undamped = BuildDynamicModel(test::PaperDesign(1));
   ModelOptions o;
   o.damping = 2e3;  // N s/m
-  const DynamicModel m = BuildDynamicModel(PaperDesign(1), o);
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(1), o);
   DynamicsConfig c = Scenario(0.5, 1e-5, 1, 1e-3);
   const SimulationResult r = Simulate(m, c);
   const EnergyBalance& e = r.summary.energy;
@@ -295,7 +285,7 @@ TEST_CASE("string damping dissipates energy and the balance still closes") {
 }
 
 TEST_CASE("DOPRI5 agrees with a fine RK4") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(2));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   DynamicsConfig c = Scenario(0.1, 1e-6, 2, 1e-3);
   const Class1System system(m);
   const Eigen::VectorXd y0 = InitialState(m, c);
@@ -353,12 +343,12 @@ TEST_CASE("DOPRI5 dense output is accurate between steps") {
 }
 
 TEST_CASE("the RK4 step allocates nothing") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(3));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(3));
   Class1Options stab;
   stab.stabilisation = true;
   ModelOptions damped_options;
   damped_options.damping = 10;
-  const DynamicModel damped = BuildDynamicModel(PaperDesign(3), damped_options);
+  const DynamicModel damped = BuildDynamicModel(test::PaperDesign(3), damped_options);
   for (const auto& [model, options] : {std::pair{&m, Class1Options{}}, std::pair{&m, stab}, std::pair{&damped, stab}}) {
     const Class1System system(*model, options, {TimedLoad{0, 1, 2, Eigen::Vector3d(0, -100, 0)}});
     Class1Ode ode(system);
@@ -384,7 +374,7 @@ TEST_CASE("the RK4 step allocates nothing") {
 }
 
 TEST_CASE("DOPRI5 steps allocate nothing") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(2));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   const Class1System system(m);
   Class1Ode ode(system);
   Dopri5 dp;
@@ -405,7 +395,7 @@ TEST_CASE("DOPRI5 steps allocate nothing") {
 }
 
 TEST_CASE("a run that blows up stops with the step, the time and a smaller dt") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(2));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   // dt = 2e-3 is 3.6x the RK4 stability limit of n = 2 (5.6e-4 s, SPEC.md §9).
   DynamicsConfig c = Scenario(1.0, 2e-3, 1, 0.01);
   try {
@@ -421,7 +411,7 @@ TEST_CASE("a run that blows up stops with the step, the time and a smaller dt") 
 }
 
 TEST_CASE("the paper's n = 1 run: periodic slack bouncing at T = 0.1178 s") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(1));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(1));
   DynamicsConfig c = Scenario(1.0, 1e-5, 1, 0.1);
   c.frequency.enabled = true;
   const SimulationResult r = Simulate(m, c);
@@ -435,7 +425,7 @@ TEST_CASE("the paper's n = 1 run: periodic slack bouncing at T = 0.1178 s") {
 }
 
 TEST_CASE("a travelling load does work and the balance closes") {
-  const Design& d = PaperDesign(2);
+  const Design& d = test::PaperDesign(2);
   const DynamicModel m = BuildDynamicModel(d);
   DynamicsConfig c = Scenario(0.3, 1e-5, 0, 0);
   // 1 kN stepping across the three deck nodes, 0.1 s each.
@@ -483,7 +473,7 @@ TEST_CASE("bad dynamics configs name the key, the value and what is allowed") {
 }
 
 TEST_CASE("initial conditions that do not fit the bridge are config errors") {
-  const DynamicModel m = BuildDynamicModel(PaperDesign(2));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   DynamicsConfig c = Scenario(1, 1e-5, 3, 0.1);  // n = 2 has two length classes
   CHECK_THROWS_WITH(InitialState(m, c), Catch::Contains("dynamics.perturbation.bar_class"));
   c = Scenario(1, 1e-5, 0, 0);
@@ -501,7 +491,7 @@ TEST_CASE("initial conditions that do not fit the bridge are config errors") {
 TEST_CASE("bar length classes run from the longest bar to the shortest") {
   // Table 5: n = 3 delta_1 moves the central bar, delta_2 the two middle ones, delta_3 the four
   // short ones.
-  const DynamicModel m = BuildDynamicModel(PaperDesign(3));
+  const DynamicModel m = BuildDynamicModel(test::PaperDesign(3));
   const auto classes = BarLengthClasses(m);
   REQUIRE(classes.size() == 3);
   CHECK(classes[0].size() == 1);

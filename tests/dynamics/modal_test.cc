@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "design/design.h"
 #include "dynamics/model.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
@@ -26,17 +27,6 @@ DynamicModel ModelOf(const Design& d, double prestrain = 0) {
   ModelOptions options;
   if (prestrain > 0) options.prestrain.push_back({"deck", prestrain});
   return BuildDynamicModel(d, options);
-}
-
-const Design& PaperDesign(int n) {
-  static std::map<int, Design> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) {
-    Config c;
-    c.bridge.n = n;
-    it = cache.emplace(n, RunDesign(c)).first;
-  }
-  return it->second;
 }
 
 // Free-DOF nodal force of `model` at `positions` with the bar force densities held: loads,
@@ -73,7 +63,7 @@ TEST_CASE("Linearised frequencies of the designed bridges match SPEC 9", "[dynam
       {1, {100.8, 663.7, 2286}}, {2, {81.7, 82.7, 229.3}}, {3, {77.2, 81.7, 166.9}}};
   const std::map<int, double> highest = {{1, 2286}, {2, 5087}, {3, 10019}};
   for (const auto& [n, expected] : lowest) {
-    const ModalResult r = ComputeModes(ModelOf(PaperDesign(n)));
+    const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(n)));
     INFO("n = " << n);
     REQUIRE(r.modes.size() >= 3);
     for (size_t k = 0; k < expected.size(); ++k) {
@@ -88,7 +78,7 @@ TEST_CASE("Linearised frequencies of the designed bridges match SPEC 9", "[dynam
 }
 
 TEST_CASE("Further n = 3 linearised frequencies match SPEC 9", "[dynamics][modal]") {
-  const ModalResult r = ComputeModes(ModelOf(PaperDesign(3)));
+  const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(3)));
   const std::vector<double> expected = {77.2, 81.7, 166.9, 173.8, 253.9};
   for (size_t k = 0; k < expected.size(); ++k) {
     CHECK(r.modes[k].omega_rad_s == Approx(expected[k]).epsilon(kSpecFrequencyTol));
@@ -104,7 +94,7 @@ TEST_CASE("Prestrained deck strings raise the fundamental as in SPEC 9", "[dynam
       {1, 0.95, 134.6}, {1, 0.90, 164.3}, {2, 0.95, 142.5},
       {2, 0.90, 186.5}, {3, 0.95, 155.2}, {3, 0.90, 208.5}};
   for (const auto& [n, p, omega] : cases) {
-    const ModalResult r = ComputeModes(ModelOf(PaperDesign(n), p));
+    const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(n), p));
     INFO("n = " << n << ", p = " << p << ": " << r.modes.front().omega_rad_s << " rad/s");
     CHECK(r.modes.front().omega_rad_s == Approx(omega).epsilon(kSpecFrequencyTol));
     // The deck-chain prestress is a self-stress: the loads stay balanced (N).
@@ -114,7 +104,7 @@ TEST_CASE("Prestrained deck strings raise the fundamental as in SPEC 9", "[dynam
 
 TEST_CASE("The n = 1 modal model carries SPEC 8's moving mass", "[dynamics][modal]") {
   // Eq. 27 for n = 1: 141.94 kg (SPEC §8), printed to 0.01 kg.
-  CHECK(MovingMass(ModelOf(PaperDesign(1))) == Approx(141.94).margin(0.005));
+  CHECK(MovingMass(ModelOf(test::PaperDesign(1))) == Approx(141.94).margin(0.005));
 }
 
 TEST_CASE("RK4 stable step matches SPEC 9", "[dynamics][modal]") {
@@ -122,14 +112,14 @@ TEST_CASE("RK4 stable step matches SPEC 9", "[dynamics][modal]") {
   const std::vector<std::tuple<int, double, double>> cases = {
       {1, 1.24e-3, 0.005e-3}, {2, 5.6e-4, 0.05e-4}, {3, 2.8e-4, 0.05e-4}, {4, 1.4e-4, 0.05e-4}};
   for (const auto& [n, dt, half_unit] : cases) {
-    const double got = Rk4StableStep(ComputeModes(ModelOf(PaperDesign(n))));
+    const double got = Rk4StableStep(ComputeModes(ModelOf(test::PaperDesign(n))));
     INFO("n = " << n << ": dt_max = " << got);
     CHECK(std::abs(got - dt) <= half_unit);
   }
 }
 
 TEST_CASE("The lowest n = 2 mode is antisymmetric, the next symmetric", "[dynamics][modal]") {
-  const DynamicModel m = ModelOf(PaperDesign(2));
+  const DynamicModel m = ModelOf(test::PaperDesign(2));
   const ModalResult r = ComputeModes(m);
   const SymmetryReport first = ClassifySymmetry(m.positions, r.modes[0].shape);
   const SymmetryReport second = ClassifySymmetry(m.positions, r.modes[1].shape);
@@ -137,8 +127,8 @@ TEST_CASE("The lowest n = 2 mode is antisymmetric, the next symmetric", "[dynami
   CHECK(first.symmetry == ModeSymmetry::kAntisymmetric);
   CHECK(second.symmetry == ModeSymmetry::kSymmetric);
   CHECK(std::string(SymmetryName(first.symmetry)) == "antisymmetric");
-  const ModalResult r1 = ComputeModes(ModelOf(PaperDesign(1)));
-  CHECK(ClassifySymmetry(PaperDesign(1).topology.structure.nodes, r1.modes[0].shape).symmetry ==
+  const ModalResult r1 = ComputeModes(ModelOf(test::PaperDesign(1)));
+  CHECK(ClassifySymmetry(test::PaperDesign(1).topology.structure.nodes, r1.modes[0].shape).symmetry ==
         ModeSymmetry::kSymmetric);
 }
 
@@ -195,7 +185,7 @@ TEST_CASE("A loaded bar on prestressed strings matches its closed form", "[dynam
 
 TEST_CASE("The tangent stiffness is the derivative of the node forces", "[dynamics][modal]") {
   // Prestrained, so that geometric and material terms are both large.
-  const DynamicModel m = ModelOf(PaperDesign(2), 0.95);
+  const DynamicModel m = ModelOf(test::PaperDesign(2), 0.95);
   const LinearisedSystem sys = Linearise(m);
   const int n_dof = static_cast<int>(sys.stiffness.rows());
   Eigen::MatrixXd fd(n_dof, n_dof);
@@ -215,7 +205,7 @@ TEST_CASE("The tangent stiffness is the derivative of the node forces", "[dynami
 }
 
 TEST_CASE("Modal mass sums to the bar and node masses", "[dynamics][modal]") {
-  DynamicModel m = ModelOf(PaperDesign(2));
+  DynamicModel m = ModelOf(test::PaperDesign(2));
   m.node_mass(0) = 7.0;  // a point mass at deck node 1 must be counted too
   const LinearisedSystem sys = Linearise(m);
   double expected = m.node_mass.sum();
@@ -229,7 +219,7 @@ TEST_CASE("Modal mass sums to the bar and node masses", "[dynamics][modal]") {
 }
 
 TEST_CASE("Mode shapes are M-orthonormal and keep the bar lengths", "[dynamics][modal]") {
-  const DynamicModel m = ModelOf(PaperDesign(3));
+  const DynamicModel m = ModelOf(test::PaperDesign(3));
   const LinearisedSystem sys = Linearise(m);
   const ModalResult r = ComputeModes(m);
   const int n_dof = static_cast<int>(sys.mass.rows());
@@ -254,7 +244,7 @@ TEST_CASE("Mode shapes are M-orthonormal and keep the bar lengths", "[dynamics][
 }
 
 TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]") {
-  DynamicModel m = ModelOf(PaperDesign(1));
+  DynamicModel m = ModelOf(test::PaperDesign(1));
   // Lengthen one substructure string's rest length past its length: it goes slack.
   int slack = -1;
   for (size_t k = 0; k < m.strings.size() && slack < 0; ++k) {
@@ -272,13 +262,13 @@ TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]"
 }
 
 TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
-  DynamicModel m = ModelOf(PaperDesign(1));
+  DynamicModel m = ModelOf(test::PaperDesign(1));
   m.dim = 4;
   CHECK_THROWS_AS(ComputeModes(m), ModelError);
-  m = ModelOf(PaperDesign(1));
+  m = ModelOf(test::PaperDesign(1));
   m.bars[0].mass = 0;  // its two nodes move without mass
   CHECK_THROWS_WITH(ComputeModes(m), Catch::Contains("mass matrix is singular"));
-  m = ModelOf(PaperDesign(1));
+  m = ModelOf(test::PaperDesign(1));
   m.strings[0].j = 99;
   CHECK_THROWS_AS(ComputeModes(m), ModelError);
   CHECK_THROWS_AS(Rk4StableStep(ModalResult{}), ModelError);
