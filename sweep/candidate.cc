@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 
 #include "core/error.h"
@@ -12,6 +13,18 @@
 namespace tbridge {
 
 namespace {
+
+// The minimum-mass solve runs one at a time: Ipopt's linear solver (MUMPS, sequential build)
+// keeps global state and crashes when two solves run at once. The dynamics run in parallel.
+std::mutex& DesignMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+Design LockedDesign(const Config& config) {
+  std::lock_guard<std::mutex> lock(DesignMutex());
+  return RunDesign(config);
+}
 
 StringMassMode MassMode(const std::string& name) {
   if (name == "nodes") return StringMassMode::kAtNodes;
@@ -104,7 +117,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   CandidateRow row;
   row.candidate = candidate;
   try {
-    Design design = RunDesign(CandidateConfig(spec, candidate));
+    Design design = LockedDesign(CandidateConfig(spec, candidate));
     const Material& mat = design.config.material;
     row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
     ModelOptions options;
@@ -167,8 +180,9 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
         row.peak_stress_ratio && *row.peak_stress_ratio <= con.max_dynamic_stress_ratio.value_or(0), kMaxDynamicStress);
   check(con.bar_capacity_during_motion, row.peak_bar_capacity_ratio && *row.peak_bar_capacity_ratio <= 1.0,
         kBarCapacity);
-  // 1e-12 relative: the design state sits exactly at sigma_w up to rounding.
-  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-12), kPrestressAllowed);
+  // 1e-8 relative: the design state sits at sigma_w up to the solver's force tolerance
+  // (design.tolerance, 1e-10 by default, seen as 2e-10 relative in the deck strings).
+  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-8), kPrestressAllowed);
   row.feasible = row.violated.empty();
   return row;
 }

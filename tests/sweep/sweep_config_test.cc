@@ -1,0 +1,119 @@
+// Strict parsing of the "sweep" section and of --shard: bad input names the key, the value
+// and what is allowed.
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/error.h"
+#include "sweep/sweep.h"
+#include "sweep/sweep_config.h"
+
+namespace tbridge {
+namespace {
+
+using nlohmann::json;
+
+json Base() {
+  return json::parse(R"({"bridge": {"beta_deg": 10}, "sweep": {"n": [1, 2, 3]}})");
+}
+
+// The message of the ConfigError that parsing `root` throws ("" when it parses).
+std::string ErrorOf(const json& root) {
+  try {
+    ParseSweepSpec(root);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST_CASE("a minimal sweep config resolves its defaults", "[sweep]") {
+  const SweepSpec s = ParseSweepSpec(Base());
+  CHECK(s.sweep.n == std::vector<int>{1, 2, 3});
+  CHECK(s.sweep.p == std::vector<int>{1});
+  CHECK(s.sweep.beta_deg == std::vector<double>{10.0});
+  CHECK(s.sweep.deck_prestrain == std::vector<double>{1.0});
+  CHECK(s.sweep.size() == 3);
+  CHECK_FALSE(s.sweep.NeedsModes());
+  CHECK_FALSE(s.sweep.NeedsRun());
+  // The echoed config (with null for absent constraints) reads back to the same spec.
+  const SweepSpec again = ParseSweepSpec(ToJson(s));
+  CHECK(ToJson(again) == ToJson(s));
+  CHECK(SweepFingerprint(again) == SweepFingerprint(s));
+}
+
+TEST_CASE("bad sweep configs name the key, the value and what is allowed", "[sweep]") {
+  json j = Base();
+  j["sweep"]["bogus"] = 1;
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.bogus"));
+
+  j = Base();
+  j["sweep"]["constraints"] = {{"min_first_frequency", 50}};  // the key has a unit suffix
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.constraints.min_first_frequency"));
+
+  j = Base();
+  j["sweep"]["n"] = json::array();
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.n") && Catch::Contains("at least one"));
+
+  j = Base();
+  j["sweep"]["n"] = {1, 15};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.n[1]") && Catch::Contains("[1, 14]"));
+
+  j = Base();
+  j["sweep"]["n"] = {2, 2};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.n[1]") && Catch::Contains("only once"));
+
+  j = Base();
+  j["sweep"]["deck_prestrain"] = {1.0, 1.2};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.deck_prestrain[1]"));
+
+  j = Base();
+  j["sweep"]["beta_deg"] = {10, 90};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.beta_deg[1]"));
+
+  j = Base();
+  j["sweep"]["joint_mass"] = {{"per_node_kg", -1}};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.joint_mass.per_node_kg"));
+
+  j = Base();
+  j["sweep"]["travelling_load"] = {{"duration", 0.01}, {"dt", 0.005}, {"extra", 1}};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.extra"));
+
+  j = Base();
+  j["sweep"]["travelling_load"] = {{"duration", 0.001}, {"dt", 0.005}};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.dt"));
+
+  j = Base();
+  j["dynamics"] = json::object();
+  CHECK_THAT(ErrorOf(j), Catch::Contains("dynamics") && Catch::Contains("sweep.travelling_load"));
+
+  j = Base();
+  j.erase("sweep");
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep"));
+
+  j = Base();
+  j["bridge"]["planes"] = 2;
+  j["sweep"]["p"] = {1, 2};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.p[1]") && Catch::Contains("planes"));
+
+  j = Base();
+  j["bridge"]["colour"] = "red";  // the base config stays strict too
+  CHECK_THAT(ErrorOf(j), Catch::Contains("bridge.colour"));
+}
+
+TEST_CASE("shard specs are i/N with 1 <= i <= N", "[sweep]") {
+  CHECK(ParseShard("1/1", "--shard").count == 1);
+  const Shard s = ParseShard("2/3", "--shard");
+  CHECK((s.index == 2 && s.count == 3));
+  CHECK(s.Has(1));
+  CHECK(s.Has(4));
+  CHECK_FALSE(s.Has(2));
+  for (const char* bad : {"3/2", "0/2", "a/b", "1/0", "1", "/2", "1/2/3", "-1/2", ""}) {
+    INFO(bad);
+    CHECK_THROWS_WITH(ParseShard(bad, "--shard"), Catch::Contains("--shard") && Catch::Contains("i/N"));
+  }
+}
+
+}  // namespace
+}  // namespace tbridge
