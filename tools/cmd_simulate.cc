@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -15,6 +16,7 @@
 #include "dynamics/scenario.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "tools/vtk_export.h"
 
 namespace tbridge::cli {
 
@@ -25,7 +27,8 @@ const CommandSpec& SimulateSpec() {
       "simulate",
       {"CONFIG.json"},
       {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
-       {{"-q", "--quiet"}, "", "do not print the summary", false}},
+       {{"-q", "--quiet"}, "", "do not print the summary", false},
+       {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.pvd + run_<k>.vtp)", false}},
       "Designs the bridge of CONFIG.json, builds its dynamic model and runs the scenario of its\n"
       "\"dynamics\" section (keys in configs/README.md). Writes OUTDIR/summary.json (the resolved\n"
       "config, frequency, stresses, slack events, bar-length error, energy balance) and\n"
@@ -158,7 +161,11 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   const std::string summary = SummaryJson(config, model, result).dump(2) + "\n";
   const bool csv = dc.record.csv && !result.recorded_nodes.empty();
   const std::string history = csv ? HistoryCsv(result) : std::string();
+  const auto vtk_dir = parsed.Value("--vtk");
+  // Built before anything is written, so a bad request leaves no partial output.
+  const auto vtk = vtk_dir ? VtkSeries(model, result) : std::map<std::string, std::string>();
   WriteFileAtomically(out_dir + "/summary.json", summary);
+  for (const auto& [name, content] : vtk) WriteFileAtomically(*vtk_dir + "/" + name, content);
   if (csv) WriteFileAtomically(out_dir + "/history.csv", history);
   if (!parsed.Flag("-q")) {
     const SimulationSummary& s = result.summary;

@@ -12,42 +12,17 @@
 #include <sstream>
 #include <string>
 
+#include "cli_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-fs::path FreshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("tbridge_sweep_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
-
-Result Run(const fs::path& dir, const std::string& args) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command =
-      Quote(TBRIDGE_BINARY) + " " + args + " > " + Quote(out.string()) + " 2> " + Quote(err.string());
-  const int status = std::system(command.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = ReadText(out);
-  r.err = ReadText(err);
-  return r;
-}
+using tbridge::test::FreshDir;
+using tbridge::test::Quote;
+using tbridge::test::ReadText;
+using Result = tbridge::test::CliResult;
+Result Run(const fs::path& dir, const std::string& args) { return tbridge::test::RunTbridge(dir, args); }
 
 // Six candidates with a first frequency and a short travelling load each (about 0.2 s).
 fs::path SmallSweep(const fs::path& dir) {
@@ -101,7 +76,7 @@ TEST_CASE("sweep: shards merged equal the single run byte for byte", "[sweep]") 
   const std::string config = Quote(SmallSweep(dir).string());
   REQUIRE(Run(dir, "sweep " + config + " -o " + Quote((dir / "all").string()) + " -q").code == 0);
   for (const char* s : {"1", "2", "3"}) {
-    const Result r = Run(dir, "sweep " + config + " -o " + Quote((dir / ("s" + std::string(s))).string()) +
+    const Result r = Run(dir, "sweep " + config + " -o " + Quote((dir / (std::string("s") + s)).string()) +
                                   " --shard " + s + "/3 -j 1");
     REQUIRE(r.code == 0);
     CHECK_THAT(r.out, Catch::Contains("evaluated 2, reused 0"));

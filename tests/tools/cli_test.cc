@@ -13,51 +13,18 @@
 #include <sstream>
 #include <string>
 
+#include "cli_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct Result {
-  bool exited = false;  // false if the process died from a signal (a crash)
-  int code = -1;        // exit code of the shell running tbridge
-  std::string out;
-  std::string err;
-};
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// A fresh, empty directory per test case.
-fs::path FreshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("tbridge_cli_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
-
-// Runs `tbridge <args>` with stdout and stderr captured in `dir`.
-Result Run(const fs::path& dir, const std::string& args) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = Quote(TBRIDGE_BINARY) + " " + args + " > " + Quote(out.string()) +
-                              " 2> " + Quote(err.string());
-  const int status = std::system(command.c_str());
-  Result r;
-  // The shell reports a child killed by signal s as exit code 128 + s; tbridge itself never
-  // exits with more than 4.
-  r.exited = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) < 128;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = ReadText(out);
-  r.err = ReadText(err);
-  return r;
-}
+using tbridge::test::FreshDir;
+using tbridge::test::Quote;
+using tbridge::test::ReadText;
+using Result = tbridge::test::CliResult;
+Result Run(const fs::path& dir, const std::string& args) { return tbridge::test::RunTbridge(dir, args); }
 
 fs::path WriteConfig(const fs::path& dir, const std::string& text) {
   const fs::path path = dir / "config.json";

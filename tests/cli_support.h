@@ -1,0 +1,58 @@
+// Running the built `tbridge` executable from a test, as a user would.
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace tbridge::test {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  bool exited = false;  // false if the process died from a signal (a crash)
+  int code = -1;        // exit code of the shell running tbridge
+  std::string out;
+  std::string err;
+};
+
+inline std::string ReadText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A fresh, empty directory per test case, unique to this process.
+inline fs::path FreshDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("tbridge_test_" + std::to_string(::getpid())) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+inline std::string Quote(const std::string& s) { return "'" + s + "'"; }
+
+// Runs `tbridge <args>` with stdout and stderr captured in `dir`.
+inline CliResult RunTbridge(const fs::path& dir, const std::string& args) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command = Quote(TBRIDGE_BINARY) + " " + args + " > " + Quote(out.string()) +
+                              " 2> " + Quote(err.string());
+  const int status = std::system(command.c_str());
+  CliResult r;
+  // The shell reports a child killed by signal s as exit code 128 + s; tbridge itself never
+  // exits with more than 4.
+  r.exited = status != -1 && WIFEXITED(status) && WEXITSTATUS(status) < 128;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = ReadText(out);
+  r.err = ReadText(err);
+  return r;
+}
+
+}  // namespace tbridge::test

@@ -1,0 +1,95 @@
+#include "tools/vtk_export.h"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+#include "core/error.h"
+
+namespace tbridge::cli {
+
+namespace {
+
+// Node positions (3 x n_n) at history row `row`: recorded coordinates over the model's rest.
+Eigen::Matrix3Xd PositionsAt(const DynamicModel& model, const SimulationResult& r, Eigen::Index row) {
+  Eigen::Matrix3Xd p = model.positions;
+  for (size_t k = 0; k < r.recorded_nodes.size(); ++k) {
+    for (int d = 0; d < r.dim; ++d) p(d, r.recorded_nodes[k]) = r.history(row, 1 + k * r.dim + d);
+  }
+  return p;
+}
+
+std::string Piece(const DynamicModel& model, const Eigen::Matrix3Xd& p) {
+  std::ostringstream out;
+  out.precision(10);
+  const size_t lines = model.bars.size() + model.strings.size();
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n"
+      << "<Piece NumberOfPoints=\"" << model.num_nodes() << "\" NumberOfVerts=\"0\" NumberOfLines=\""
+      << lines << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+  out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (int v = 0; v < model.num_nodes(); ++v) out << p(0, v) << " " << p(1, v) << " " << p(2, v) << "\n";
+  out << "</DataArray>\n</Points>\n";
+  out << "<PointData Vectors=\"displacement\">\n"
+      << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (int v = 0; v < model.num_nodes(); ++v) {
+    const Eigen::Vector3d u = p.col(v) - model.positions.col(v);
+    out << u.x() << " " << u.y() << " " << u.z() << "\n";
+  }
+  out << "</DataArray>\n</PointData>\n";
+  out << "<Lines>\n<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (const DynamicBar& b : model.bars) out << b.i << " " << b.j << "\n";
+  for (const DynamicString& s : model.strings) out << s.i << " " << s.j << "\n";
+  out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+  for (size_t k = 1; k <= lines; ++k) out << 2 * k << "\n";
+  out << "</DataArray>\n</Lines>\n";
+  std::ostringstream type, tension, slack;
+  tension.precision(10);
+  for (size_t b = 0; b < model.bars.size(); ++b) {
+    type << "0\n";
+    tension << "0\n";
+    slack << "0\n";
+  }
+  for (const DynamicString& s : model.strings) {
+    const double length = (p.col(s.j) - p.col(s.i)).norm();
+    const bool is_slack = length < s.rest_length;
+    type << (s.group == "deck" ? 2 : 1) << "\n";
+    tension << (is_slack ? 0.0 : s.stiffness * (length - s.rest_length)) << "\n";
+    slack << (is_slack ? 1 : 0) << "\n";
+  }
+  out << "<CellData Scalars=\"tension_N\">\n"
+      << "<DataArray type=\"Int32\" Name=\"member_type\" format=\"ascii\">\n" << type.str() << "</DataArray>\n"
+      << "<DataArray type=\"Float64\" Name=\"tension_N\" format=\"ascii\">\n" << tension.str() << "</DataArray>\n"
+      << "<DataArray type=\"Int32\" Name=\"slack\" format=\"ascii\">\n" << slack.str() << "</DataArray>\n"
+      << "</CellData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  return out.str();
+}
+
+}  // namespace
+
+std::map<std::string, std::string> VtkSeries(const DynamicModel& model, const SimulationResult& r) {
+  if (r.history.rows() == 0) {
+    throw ConfigError("dynamics.record.nodes", "[]", "the VTK export needs recorded nodes: list every free node");
+  }
+  for (int v = 0; v < model.num_nodes(); ++v) {
+    if (model.fixed[v]) continue;
+    if (std::find(r.recorded_nodes.begin(), r.recorded_nodes.end(), v) == r.recorded_nodes.end()) {
+      throw ConfigError("dynamics.record.nodes", "(node " + std::to_string(v + 1) + " missing)",
+                        "the VTK export needs every free node recorded");
+    }
+  }
+  std::map<std::string, std::string> files;
+  std::ostringstream pvd;
+  pvd.precision(12);
+  pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (Eigen::Index row = 0; row < r.history.rows(); ++row) {
+    const std::string name = "run_" + std::to_string(row) + ".vtp";
+    files[name] = Piece(model, PositionsAt(model, r, row));
+    pvd << "<DataSet timestep=\"" << r.history(row, 0) << "\" part=\"0\" file=\"" << name << "\"/>\n";
+  }
+  pvd << "</Collection>\n</VTKFile>\n";
+  files["run.pvd"] = pvd.str();
+  return files;
+}
+
+}  // namespace tbridge::cli
