@@ -3,6 +3,7 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 #include <cmath>
+#include <mutex>
 
 #include "design/min_mass.h"
 
@@ -142,6 +143,10 @@ std::string StatusName(Ipopt::ApplicationReturnStatus s) {
 
 SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
                              Eigen::VectorXd& x) {
+  // Debian's Ipopt uses the sequential MUMPS, which keeps global state: two solves at once
+  // crash it. Solves are serialised here, so any caller may run designs on several threads.
+  static std::mutex solver_mutex;
+  const std::lock_guard<std::mutex> lock(solver_mutex);
   Ipopt::SmartPtr<MinMassTnlp> nlp = new MinMassTnlp(problem, x);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", options.verbose ? 5 : 0);

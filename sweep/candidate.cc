@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <numbers>
 
 #include "core/error.h"
@@ -13,18 +12,6 @@
 namespace tbridge {
 
 namespace {
-
-// The minimum-mass solve runs one at a time: Ipopt's linear solver (MUMPS, sequential build)
-// keeps global state and crashes when two solves run at once. The dynamics run in parallel.
-std::mutex& DesignMutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-Design LockedDesign(const Config& config) {
-  std::lock_guard<std::mutex> lock(DesignMutex());
-  return RunDesign(config);
-}
 
 StringMassMode MassMode(const std::string& name) {
   if (name == "nodes") return StringMassMode::kAtNodes;
@@ -117,7 +104,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   CandidateRow row;
   row.candidate = candidate;
   try {
-    Design design = LockedDesign(CandidateConfig(spec, candidate));
+    Design design = RunDesign(CandidateConfig(spec, candidate));
     const Material& mat = design.config.material;
     row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
     ModelOptions options;

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
+#include <thread>
+#include <vector>
 
 #include "core/error.h"
 #include "design/design.h"
@@ -81,6 +83,23 @@ TEST_CASE("Ipopt and NLopt agree on the total mass", "[design][solvers]") {
     CHECK(b.mass.total == Approx(a.mass.total).epsilon(1e-6));
     CHECK(b.mass.bars + b.mass.strings == Approx(a.mass.bars + a.mass.strings).epsilon(1e-6));
   }
+}
+
+TEST_CASE("Designs may run on several threads at once", "[design][solvers]") {
+  // Ipopt's sequential MUMPS keeps global state; unserialised concurrent solves crash it.
+  // Every thread must get the single-threaded answer, bit for bit (same start, same solver).
+  const double expected = RunDesign(test::PaperConfig(4)).mass.total;
+  std::vector<double> masses(4, 0.0);
+  std::vector<std::thread> threads;
+  for (size_t t = 0; t < masses.size(); ++t) {
+    threads.emplace_back([&masses, t] {
+      masses[t] = RunDesign(test::PaperConfig(4, t % 2 ? "nlopt" : "ipopt")).mass.total;
+    });
+  }
+  for (std::thread& th : threads) th.join();
+  for (size_t t = 0; t < masses.size(); t += 2) CHECK(masses[t] == expected);
+  // NLopt threads: the solvers' agreement bound, 1e-6 relative.
+  for (size_t t = 1; t < masses.size(); t += 2) CHECK(masses[t] == Approx(expected).epsilon(1e-6));
 }
 
 TEST_CASE("Buckling governs a long, lightly loaded, steep bridge", "[design][buckling]") {
