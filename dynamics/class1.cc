@@ -1,6 +1,5 @@
 #include "dynamics/class1.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -27,9 +26,6 @@ Class1System::Class1System(const DynamicModel& model, const Class1Options& optio
   if (has_node_mass && model.node_mass.size() != n_n_) {
     throw ModelError("class-1 dynamics: node_mass has the wrong size");
   }
-  if (model.loads.size() != 0 && model.loads.cols() != n_n_) {
-    throw ModelError("class-1 dynamics: loads has the wrong size");
-  }
   if (options.stabilisation && !(options.omega_rad_s > 0 && options.zeta >= 0)) {
     throw ModelError("class-1 dynamics: stabilisation needs omega > 0 and zeta >= 0");
   }
@@ -38,13 +34,11 @@ Class1System::Class1System(const DynamicModel& model, const Class1Options& optio
     if (a < 0 || a >= n_n_) throw ModelError("class-1 dynamics: " + what + " names node " + NodeName(a) + " out of range");
   };
 
+  loads_ = NodeLoads(model, timed_loads, "class-1 dynamics");
+  strings_ = PackStrings(model, "class-1 dynamics", damped_);
   rest_positions_.resize(coordinates());
-  loads_ = Eigen::VectorXd::Zero(coordinates());
   for (int a = 0; a < n_n_; ++a) {
-    for (int d = 0; d < dim_; ++d) {
-      rest_positions_(a * dim_ + d) = model.positions(d, a);
-      if (model.loads.size() != 0) loads_(a * dim_ + d) = model.loads(d, a);
-    }
+    for (int d = 0; d < dim_; ++d) rest_positions_(a * dim_ + d) = model.positions(d, a);
   }
 
   std::vector<int> bars_at(n_n_, 0);
@@ -59,17 +53,6 @@ Class1System::Class1System(const DynamicModel& model, const Class1Options& optio
       throw ModelError("class-1 dynamics: node " + NodeName(a) + " carries " +
                        std::to_string(bars_at[a]) + " bars; this is a class-k structure");
     }
-  }
-
-  for (const DynamicString& s : model.strings) {
-    check_node(s.i, "string " + s.name);
-    check_node(s.j, "string " + s.name);
-    if (!(s.rest_length > 0 && s.stiffness >= 0 && s.damping >= 0)) {
-      throw ModelError("class-1 dynamics: string " + s.name + " needs L0 > 0, k >= 0, c >= 0");
-    }
-    if (model.fixed[s.i] && model.fixed[s.j]) continue;  // moves nothing
-    strings_.push_back({s.i * dim_, s.j * dim_, s.stiffness, s.stiffness * s.rest_length, s.damping});
-    damped_ = damped_ || s.damping > 0;
   }
 
   for (const DynamicBar& b : model.bars) {
@@ -116,12 +99,6 @@ Class1System::Class1System(const DynamicModel& model, const Class1Options& optio
       lone_.push_back({a * dim_, m, 1.0 / m});
     }
   }
-
-  for (const TimedLoad& l : timed_loads) {
-    check_node(l.node, "a timed load");
-    PackedLoad p{l.t_start, l.t_end, l.node * dim_, {l.force.x(), l.force.y(), l.force.z()}};
-    timed_.push_back(p);
-  }
 }
 
 Eigen::VectorXd Class1System::RestState() const {
@@ -130,32 +107,9 @@ Eigen::VectorXd Class1System::RestState() const {
   return y;
 }
 
-void Class1System::LoadsAt(double t, double* force) const {
-  std::memcpy(force, loads_.data(), sizeof(double) * static_cast<size_t>(coordinates()));
-  for (const PackedLoad& l : timed_) {
-    if (t >= l.t_start && t < l.t_end) {
-      for (int d = 0; d < dim_; ++d) force[l.o + d] += l.f[d];
-    }
-  }
-}
-
 void Class1System::Derivative(double t, const double* y, double* dy, Class1Workspace& ws) const {
-  // One dispatch per call picks the loop specialised for the dimension and for what the
-  // scene needs: the velocity terms only with damping, the correction only when asked.
-  const bool stab = options_.stabilisation;
-  if (dim_ == 2) {
-    if (damped_) {
-      stab ? DerivativeImpl<2, true, true>(t, y, dy, ws) : DerivativeImpl<2, true, false>(t, y, dy, ws);
-    } else {
-      stab ? DerivativeImpl<2, false, true>(t, y, dy, ws) : DerivativeImpl<2, false, false>(t, y, dy, ws);
-    }
-  } else {
-    if (damped_) {
-      stab ? DerivativeImpl<3, true, true>(t, y, dy, ws) : DerivativeImpl<3, true, false>(t, y, dy, ws);
-    } else {
-      stab ? DerivativeImpl<3, false, true>(t, y, dy, ws) : DerivativeImpl<3, false, false>(t, y, dy, ws);
-    }
-  }
+  Specialise(dim_, damped_, options_.stabilisation,
+             [&]<int D, bool Damped, bool Stabilised>() { DerivativeImpl<D, Damped, Stabilised>(t, y, dy, ws); });
 }
 
 template <int D, bool Damped, bool Stabilised>
@@ -170,28 +124,7 @@ void Class1System::DerivativeImpl(double t, const double* y, double* dy, Class1W
   LoadsAt(t, f);
 
   // Strings (eqs 16-17).
-  for (const PackedString& s : strings_) {
-    double dx[D];
-    double len2 = 0;
-    for (int d = 0; d < D; ++d) {
-      dx[d] = x[s.oj + d] - x[s.oi + d];
-      len2 += dx[d] * dx[d];
-    }
-    const double inv_len = 1.0 / std::sqrt(len2);
-    double gamma = s.k - s.k_rest * inv_len;  // k (1 - L0/s): negative exactly when s < L0
-    if constexpr (Damped) {
-      double rate = 0;  // s . s_dot
-      for (int d = 0; d < D; ++d) rate += dx[d] * (v[s.oj + d] - v[s.oi + d]);
-      const double total = gamma + s.c * rate * inv_len * inv_len;
-      gamma = gamma >= 0 ? std::max(total, 0.0) : 0.0;
-    } else {
-      gamma = std::max(gamma, 0.0);
-    }
-    for (int d = 0; d < D; ++d) {
-      f[s.oi + d] += gamma * dx[d];
-      f[s.oj + d] -= gamma * dx[d];
-    }
-  }
+  AccumulateStringForces<D, Damped>(strings_, x, v, f);
 
   // Bars with both ends free (eq 23 in closed form, see the header).
   [[maybe_unused]] const double two_zeta_omega = 2.0 * options_.zeta * options_.omega_rad_s;

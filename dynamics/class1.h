@@ -29,8 +29,10 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "dynamics/engine_ode.h"
 #include "dynamics/integrators.h"
 #include "dynamics/model.h"
+#include "dynamics/node_forces.h"
 #include "dynamics/workspace.h"
 
 namespace tbridge {
@@ -39,13 +41,6 @@ struct Class1Options {
   bool stabilisation = false;
   double omega_rad_s = 100.0;  // corrective frequency omega [rad/s]
   double zeta = 1.0;           // corrective damping ratio [-]
-};
-
-// A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads.
-struct TimedLoad {
-  double t_start = 0, t_end = 0;
-  int node = 0;
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]; z ignored when dim = 2
 };
 
 class Class1System {
@@ -76,15 +71,11 @@ class Class1System {
   // Kinetic energy of the state [J].
   double KineticEnergy(const double* y) const;
   // External node loads at time t, packed like the positions [N].
-  void LoadsAt(double t, double* force) const;
+  void LoadsAt(double t, double* force) const { loads_.At(t, force); }
   // Whether any timed load exists (else loads are constant).
-  bool has_timed_loads() const { return !timed_.empty(); }
+  bool has_timed_loads() const { return loads_.has_timed(); }
 
  private:
-  struct PackedString {
-    int oi, oj;  // coordinate offsets of the end nodes
-    double k, k_rest, c;  // k, k L0, damping c
-  };
   struct PackedBar {  // both ends free
     int oi, oj;
     double a00, a01, a11;  // inverse mass matrix
@@ -102,11 +93,6 @@ class Class1System {
     int o;
     double mass, inv_mass;
   };
-  struct PackedLoad {
-    double t_start, t_end;
-    int o;
-    double f[3];
-  };
 
   template <int D, bool Damped, bool Stabilised>
   void DerivativeImpl(double t, const double* y, double* dy, Class1Workspace& ws) const;
@@ -115,37 +101,18 @@ class Class1System {
   bool damped_ = false;
   Class1Options options_;
   Eigen::VectorXd rest_positions_;  // packed
-  Eigen::VectorXd loads_;           // constant loads, packed [N]
+  NodeLoads loads_;                 // constant and timed loads
   std::vector<PackedString> strings_;
   std::vector<PackedBar> bars_;
   std::vector<PinnedBar> pinned_bars_;
   std::vector<LoneNode> lone_;
   std::vector<int> fixed_offsets_;
-  std::vector<PackedLoad> timed_;
 };
 
-// Adapter to the integrators: owns the workspace.
-class Class1Ode final : public OdeSystem {
- public:
-  explicit Class1Ode(const Class1System& system) : system_(system), ws_(system.coordinates()) {}
-  int size() const override { return system_.state_size(); }
-  void Derivative(double t, const double* y, double* dy) override {
-    system_.Derivative(hold_loads_ ? load_time_ : t, y, dy, ws_);
-  }
-  // Evaluates the timed loads at `t` for every stage until released. A fixed-step driver holds
-  // them at each step's midpoint, so that a load switching on a step boundary is constant
-  // within every step (a switch inside the stages of one step would cost O(dt) in energy).
-  void HoldLoadsAt(double t) {
-    hold_loads_ = true;
-    load_time_ = t;
-  }
-  void ReleaseLoads() { hold_loads_ = false; }
+inline Class1Workspace MakeWorkspace(const Class1System& system) { return Class1Workspace(system.coordinates()); }
 
- private:
-  const Class1System& system_;
-  Class1Workspace ws_;
-  bool hold_loads_ = false;
-  double load_time_ = 0;
-};
+// Adapter to the integrators: owns the workspace and can hold the timed loads at one time for
+// the stages of a step (dynamics/engine_ode.h).
+using Class1Ode = EngineOde<Class1System, Class1Workspace>;
 
 }  // namespace tbridge

@@ -320,20 +320,8 @@ Eigen::VectorXd ClassKSystem::BarForceDensities(const ClassKWorkspace& ws) const
 }
 
 void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
-  const bool stab = options_.stabilisation;
-  if (dim_ == 2) {
-    if (damped_) {
-      stab ? DerivativeImpl<2, true, true>(t, y, dy, ws) : DerivativeImpl<2, true, false>(t, y, dy, ws);
-    } else {
-      stab ? DerivativeImpl<2, false, true>(t, y, dy, ws) : DerivativeImpl<2, false, false>(t, y, dy, ws);
-    }
-  } else {
-    if (damped_) {
-      stab ? DerivativeImpl<3, true, true>(t, y, dy, ws) : DerivativeImpl<3, true, false>(t, y, dy, ws);
-    } else {
-      stab ? DerivativeImpl<3, false, true>(t, y, dy, ws) : DerivativeImpl<3, false, false>(t, y, dy, ws);
-    }
-  }
+  Specialise(dim_, damped_, options_.stabilisation,
+             [&]<int D, bool Damped, bool Stabilised>() { DerivativeImpl<D, Damped, Stabilised>(t, y, dy, ws); });
 }
 
 template <int D, bool Damped, bool Stabilised>

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "dynamics/class1.h"
+#include "dynamics/engine_ode.h"
 #include "dynamics/integrators.h"
 #include "dynamics/model.h"
 #include "dynamics/node_forces.h"
@@ -171,17 +172,9 @@ class ClassKWorkspace {
   std::unique_ptr<Solver> solver;
 };
 
-// Adapter to the integrators: owns the workspace.
-class ClassKOde final : public OdeSystem {
- public:
-  explicit ClassKOde(const ClassKSystem& system) : system_(system), ws_(system) {}
-  int size() const override { return system_.state_size(); }
-  void Derivative(double t, const double* y, double* dy) override { system_.Derivative(t, y, dy, ws_); }
-  const ClassKWorkspace& workspace() const { return ws_; }
+inline ClassKWorkspace MakeWorkspace(const ClassKSystem& system) { return ClassKWorkspace(system); }
 
- private:
-  const ClassKSystem& system_;
-  ClassKWorkspace ws_;
-};
+// Adapter to the integrators: owns the workspace (dynamics/engine_ode.h).
+using ClassKOde = EngineOde<ClassKSystem, ClassKWorkspace>;
 
 }  // namespace tbridge

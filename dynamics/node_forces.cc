@@ -42,8 +42,11 @@ std::vector<PackedString> PackStrings(const DynamicModel& model, const char* eng
   std::vector<PackedString> out;
   damped = false;
   for (const DynamicString& s : model.strings) {
-    if (s.i < 0 || s.j < 0 || s.i >= n_n || s.j >= n_n) {
-      throw ModelError(std::string(engine) + ": string " + s.name + " names a node out of range");
+    for (const int a : {s.i, s.j}) {
+      if (a < 0 || a >= n_n) {
+        throw ModelError(std::string(engine) + ": string " + s.name + " names node " + std::to_string(a + 1) +
+                         " out of range");
+      }
     }
     if (!(s.rest_length > 0 && s.stiffness >= 0 && s.damping >= 0)) {
       throw ModelError(std::string(engine) + ": string " + s.name + " needs L0 > 0, k >= 0, c >= 0");

@@ -8,10 +8,16 @@
 #include <cmath>
 #include <vector>
 
-#include "dynamics/class1.h"  // TimedLoad
 #include "dynamics/model.h"
 
 namespace tbridge {
+
+// A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads.
+struct TimedLoad {
+  double t_start = 0, t_end = 0;
+  int node = 0;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]; z ignored when dim = 2
+};
 
 // One string between coordinate offsets oi, oj (node x dim).
 struct PackedString {

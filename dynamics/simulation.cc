@@ -5,9 +5,11 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "core/error.h"
 #include "dynamics/class1.h"
+#include "dynamics/classk.h"
 #include "dynamics/integrators.h"
 
 namespace tbridge {
@@ -22,10 +24,12 @@ std::string Num(double v) {
   return s.str();
 }
 
-// Per-step measurements of the summary, on the accepted states only.
+// Per-step measurements of the summary, on the accepted states only. `System` is the engine
+// (Class1System or ClassKSystem): it gives the coordinates and the kinetic energy.
+template <class System>
 class Monitor {
  public:
-  Monitor(const DynamicModel& model, const Class1System& system, const Eigen::VectorXd& y0,
+  Monitor(const DynamicModel& model, const System& system, const Eigen::VectorXd& y0,
           const DynamicsConfig& config)
       : model_(model), system_(system), config_(config), dim_(model.dim), x0_(y0.head(system.coordinates())) {
     taut_.resize(model.strings.size());
@@ -156,11 +160,21 @@ class Monitor {
       summary_.max_bar_length_error =
           std::max(summary_.max_bar_length_error, std::abs(std::sqrt(len2) - b.length) / b.length);
     }
+    for (const int a : model_.deck_nodes) {
+      for (int d = 0; d < dim_; ++d) {
+        const double u = std::abs(x[a * dim_ + d] - model_.positions(d, a));
+        if (u > summary_.peak_deck_displacement[d]) {
+          summary_.peak_deck_displacement[d] = u;
+          summary_.peak_deck_node[d] = a;
+          summary_.peak_deck_time[d] = t;
+        }
+      }
+    }
     kinetic = system_.KineticEnergy(y);
   }
 
   const DynamicModel& model_;
-  const Class1System& system_;
+  const System& system_;
   const DynamicsConfig& config_;
   int dim_;
   Eigen::VectorXd x0_;
@@ -180,6 +194,31 @@ struct Sampler {
 };
 
 }  // namespace
+
+int MaxBarsAtANode(const DynamicModel& model) {
+  std::vector<int> count(model.num_nodes(), 0);
+  int most = 0;
+  for (const DynamicBar& b : model.bars) {
+    for (const int a : {b.i, b.j}) {
+      if (a >= 0 && a < model.num_nodes()) most = std::max(most, ++count[a]);
+    }
+  }
+  return most;
+}
+
+std::string EngineFor(const DynamicModel& model, const DynamicsConfig& config) {
+  const int k = MaxBarsAtANode(model);
+  if (config.engine == "classk") return "classk";
+  if (config.engine == "class1") {
+    if (k > 1) {
+      throw ConfigError("dynamics.engine", "\"class1\"",
+                        "this bridge is class " + std::to_string(k) +
+                            " (a node carries several bars); use \"auto\" or \"classk\"");
+    }
+    return "class1";
+  }
+  return k > 1 ? "classk" : "class1";
+}
 
 ModelOptions ModelOptionsOf(const DynamicsConfig& c) {
   ModelOptions o;
@@ -277,34 +316,19 @@ Eigen::VectorXd InitialState(const DynamicModel& model, const DynamicsConfig& co
   return y;
 }
 
-SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  const int dim = model.dim, n_n = model.num_nodes();
+namespace {
 
-  std::vector<TimedLoad> timed;
-  for (size_t k = 0; k < config.loads.size(); ++k) {
-    const LoadStepConfig& l = config.loads[k];
-    const std::string key = "dynamics.loads[" + std::to_string(k) + "]";
-    if (l.node > n_n) throw ConfigError(key + ".node", std::to_string(l.node), "must be in 1.." + std::to_string(n_n));
-    if (dim == 2 && l.force[2] != 0) throw ConfigError(key + ".force", Num(l.force[2]), "z must be 0 for a planar bridge");
-    timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2])});
-  }
-  SimulationResult result;
-  result.dim = dim;
-  for (const int node : config.record.nodes) {
-    if (node > n_n) throw ConfigError("dynamics.record.nodes", std::to_string(node), "must be in 1.." + std::to_string(n_n));
-    result.recorded_nodes.push_back(node - 1);
-  }
-
-  Class1Options options;
-  options.stabilisation = config.stabilisation.enabled;
-  options.omega_rad_s = config.stabilisation.omega_rad_s;
-  options.zeta = config.stabilisation.zeta;
-  const Class1System system(model, options, timed);
-  Class1Ode ode(system);
+// Integrates `config` with the engine `system` (Class1System or ClassKSystem, its adapter
+// `Ode`) and fills `result`, whose recorded nodes are set.
+template <class System, class Ode>
+SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& config,
+                             const std::vector<PrestrainReport>& prestrain, const System& system,
+                             SimulationResult result,
+                             std::chrono::steady_clock::time_point wall_start) {
+  const int dim = model.dim;
+  Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
-  Monitor monitor(model, system, y, config);
+  Monitor<System> monitor(model, system, y, config);
 
   // Output grids: history every record.every steps, deck samples every frequency.every steps.
   const long total_steps = std::max<long>(1, std::lround(std::ceil(config.duration / config.dt - 1e-9)));
@@ -338,6 +362,7 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   if (deck) take_deck(y);
 
   SimulationSummary& s = monitor.summary();
+  s.engine = result.summary.engine;
   s.integrator = config.integrator;
   if (config.integrator == "rk4") {
     Rk4Workspace ws(system.state_size());
@@ -415,6 +440,43 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   result.summary = s;
   return result;
+}
+
+}  // namespace
+
+SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
+                          const std::vector<PrestrainReport>& prestrain) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const int dim = model.dim, n_n = model.num_nodes();
+
+  std::vector<TimedLoad> timed;
+  for (size_t k = 0; k < config.loads.size(); ++k) {
+    const LoadStepConfig& l = config.loads[k];
+    const std::string key = "dynamics.loads[" + std::to_string(k) + "]";
+    if (l.node > n_n) throw ConfigError(key + ".node", std::to_string(l.node), "must be in 1.." + std::to_string(n_n));
+    if (dim == 2 && l.force[2] != 0) throw ConfigError(key + ".force", Num(l.force[2]), "z must be 0 for a planar bridge");
+    timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2])});
+  }
+  SimulationResult result;
+  result.dim = dim;
+  for (const int node : config.record.nodes) {
+    if (node > n_n) throw ConfigError("dynamics.record.nodes", std::to_string(node), "must be in 1.." + std::to_string(n_n));
+    result.recorded_nodes.push_back(node - 1);
+  }
+
+  const std::string engine = EngineFor(model, config);
+  result.summary.engine = engine;
+  // Both engines take the same stabilisation settings (ClassKOptions is Class1Options).
+  Class1Options options;
+  options.stabilisation = config.stabilisation.enabled;
+  options.omega_rad_s = config.stabilisation.omega_rad_s;
+  options.zeta = config.stabilisation.zeta;
+  if (engine == "class1") {
+    const Class1System system(model, options, timed);
+    return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, std::move(result), wall_start);
+  }
+  const ClassKSystem system(model, options, timed);
+  return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, std::move(result), wall_start);
 }
 
 }  // namespace tbridge

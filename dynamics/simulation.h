@@ -1,8 +1,10 @@
-// A dynamic scenario of a class-1 model: initial conditions, time-varying loads, integration
-// (RK4 or DOPRI5), recording and a summary. Only what the config asks for is computed.
+// A dynamic scenario of a model: initial conditions, time-varying loads, integration (RK4 or
+// DOPRI5) with the class-1 or the class-k engine, recording and a summary. Only what the
+// config asks for is computed.
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -49,6 +51,7 @@ struct EnergyBalance {
 
 struct SimulationSummary {
   std::string integrator;
+  std::string engine;     // "class1" | "classk" (EngineFor)
   int steps = 0;          // accepted steps
   int rejected = 0;       // dopri5 only
   long evaluations = 0;   // right-hand side calls
@@ -61,6 +64,11 @@ struct SimulationSummary {
   bool stress_exceeds_allowed = false;
   SlackEvents slack;
   double max_bar_length_error = 0;  // max |l - l0| / l0 over bars and steps
+  // Largest |displacement| of a deck node (model.deck_nodes) from the model's positions, per
+  // axis x, y, z, over the accepted steps [m]; the node (0-based, -1 if none) and time [s].
+  std::array<double, 3> peak_deck_displacement{0, 0, 0};
+  std::array<int, 3> peak_deck_node{-1, -1, -1};
+  std::array<double, 3> peak_deck_time{0, 0, 0};
   EnergyBalance energy;
   std::vector<PrestrainReport> prestrain;
   bool has_frequency = false;
@@ -80,10 +88,10 @@ struct SimulationResult {
   double deck_sample_dt = 0;  // [s]
 };
 
-// Runs `config` on `model`. Throws ConfigError for initial conditions or loads that do not
-// fit the model, ModelError when the model is not class 1 or the run blows up: NaN/Inf in the
-// state, a bar-length error above guard.max_bar_length_error, or energy growth above
-// guard.max_energy_growth. The message names the step and time and suggests a smaller dt.
+// Runs `config` on `model` with the engine EngineFor picks. Throws ConfigError for initial
+// conditions, loads or an engine that do not fit the model, ModelError when the run blows up:
+// NaN/Inf in the state, a bar-length error above guard.max_bar_length_error, energy growth
+// above guard.max_energy_growth, or (class k) a singular constraint matrix. The message names the step and time and suggests a smaller dt.
 // `prestrain` reports are copied into the summary.
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
                           const std::vector<PrestrainReport>& prestrain = {});

@@ -77,7 +77,7 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                 {"moving_mass_kg", MovingMass(model)},
                 {"bar_length_classes", classes},
                 {"members", ModelMembersJson(model)}};
-  j["run"] = {{"integrator", s.integrator}, {"steps", s.steps},        {"rejected_steps", s.rejected},
+  j["run"] = {{"integrator", s.integrator}, {"engine", s.engine}, {"steps", s.steps}, {"rejected_steps", s.rejected},
               {"evaluations", s.evaluations}, {"duration_s", s.duration}, {"wall_s", s.wall_seconds}};
   if (s.has_frequency) {
     j["frequency"] = {{"method", "dominant spectral peak of the summed vertical deck displacement"},
@@ -103,6 +103,14 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                 {"slack_at_start", s.slack.slack_at_start},
                 {"slack_at_end", s.slack.slack_at_end}};
   j["max_bar_length_error"] = s.max_bar_length_error;
+  nlohmann::json peak = nlohmann::json::object();
+  for (int d = 0; d < model.dim; ++d) {
+    const int node = s.peak_deck_node[d];
+    peak[std::string(1, "xyz"[d])] = {{"displacement_m", s.peak_deck_displacement[d]},
+                                      {"node", node >= 0 ? nlohmann::json(node + 1) : nlohmann::json()},
+                                      {"time_s", s.peak_deck_time[d]}};
+  }
+  j["peak_deck_displacement"] = peak;
   const EnergyBalance& e = s.energy;
   j["energy"] = {{"kinetic_start_j", e.kinetic_start}, {"elastic_start_j", e.elastic_start},
                  {"kinetic_end_j", e.kinetic_end},     {"elastic_end_j", e.elastic_end},
@@ -169,12 +177,17 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   if (csv) WriteFileAtomically(out_dir + "/history.csv", history);
   if (!parsed.Flag("-q")) {
     const SimulationSummary& s = result.summary;
-    std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator << ", "
+    std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator << ", " << s.engine << ", "
               << s.wall_seconds << " s)\n";
     if (s.has_frequency) {
       std::cout << "deck frequency: T = " << s.frequency.period_s << " s, f = " << s.frequency.frequency_hz
                 << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
     }
+    std::cout << "peak deck displacement";
+    for (int d = 0; d < model.dim; ++d) {
+      std::cout << (d > 0 ? ", " : " ") << "xyz"[d] << " " << s.peak_deck_displacement[d] << " m";
+    }
+    std::cout << "\n";
     std::cout << "max string stress " << s.max_string_stress << " Pa (allowed " << s.allowed_stress << ")"
               << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "") << "\n"
               << "slack transitions " << s.slack.total << ", max bar-length error " << s.max_bar_length_error
