@@ -4,10 +4,13 @@
   plot_dynamics.py snapshots OUTDIR -o FIG.png [--times 0.02,0.05,0.1] [--scale 3]
       The bridge at chosen times, displacements amplified by --scale: initial shape dashed
       black, bars thick, taut strings blue, slack strings (length < rest length) dashed red
-      (the paper's Figure 5). Planar bridges in the x-y plane.
+      (the paper's Figure 5). Planar bridges in the x-y plane; a 3D bridge as one oblique
+      view per time, side by side (the paper's Figures 8 and 10), with the deck nodes'
+      displacement in mm noted.
   plot_dynamics.py deck OUTDIR -o FIG.png [--axis y|x|z]
       Displacement histories of the deck nodes (free nodes with y = 0) along an axis (the
-      paper's Figure 6 for y, Figures 9 and 11 for the 3D runs).
+      paper's Figure 6 for y, Figures 9 and 11 for the 3D runs). Dashed vertical lines mark
+      the times at which a timed load (dynamics.loads) switches on or off.
 
 Record every free node (dynamics.record.nodes) to draw snapshots. Uses Debian's matplotlib
 (/usr/bin/python3).
@@ -60,6 +63,57 @@ def true_positions(summary, cols, row):
     return pos
 
 
+def is_3d(members):
+    return any(abs(p[2]) > 1e-12 for p in members["positions"])
+
+
+def snapshots_3d(args, summary, header, data, times):
+    """One oblique 3D view per time: x along the span, z across, y up."""
+    from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (registers the projection)
+
+    members = summary["model"]["members"]
+    base = members["positions"]
+    fig = plt.figure(figsize=(5.2 * len(times), 4.4))
+    for k, t in enumerate(times):
+        ax = fig.add_subplot(1, len(times), k + 1, projection="3d")
+        row = min(data, key=lambda r: abs(r[0] - t))
+        pos, cols = positions_at(summary, header, row, args.scale)
+        real = true_positions(summary, cols, row)
+
+        def line(i, j, points, *style, **kw):
+            ax.plot([points[i][0], points[j][0]], [points[i][2], points[j][2]],
+                    [points[i][1], points[j][1]], *style, **kw)
+
+        for b in members["bars"]:
+            i, j = (n - 1 for n in b["nodes"])
+            line(i, j, base, "k--", lw=0.5)
+            line(i, j, pos, "k-", lw=2.2)
+        slack = 0
+        for s in members["strings"]:
+            i, j = (n - 1 for n in s["nodes"])
+            is_slack = math.dist(real[i], real[j]) < s["rest_length_m"]
+            slack += is_slack
+            colour = "r--" if is_slack else ("g-" if s.get("group") == "transverse" else "b-")
+            line(i, j, pos, colour, lw=0.7)
+        for v in members["fixed"]:
+            p = base[v - 1]
+            ax.plot([p[0]], [p[2]], [p[1]], "k^", ms=6)
+        deck = [v for v, p in enumerate(base) if abs(p[1]) < 1e-12 and v + 1 not in members["fixed"]]
+        peak = max((math.dist(real[v], base[v]) for v in deck), default=0.0)
+        ax.set_title(f"t = {row[0]:.4f} s   x{args.scale:g}\nlargest deck displacement {1e3 * peak:.3f} mm"
+                     + (f", {slack} slack" if slack else ""), fontsize=9)
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("z [m]")
+        ax.set_zlabel("y [m]")
+        xs = [p[0] for p in base]
+        zs = sorted({round(p[2], 9) for p in base})
+        ax.set_yticks(zs)
+        ax.set_box_aspect((max(xs) - min(xs), 4.0, 3.0))
+        ax.view_init(elev=18, azim=-60)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=110)
+
+
 def snapshots(args):
     summary, header, data = load(args.outdir)
     members = summary["model"]["members"]
@@ -69,6 +123,9 @@ def snapshots(args):
     if missing:
         sys.exit(f"plot_dynamics: nodes {missing} were not recorded; set dynamics.record.nodes to every free node")
     times = [float(t) for t in args.times.split(",")]
+    if is_3d(members):
+        snapshots_3d(args, summary, header, data, times)
+        return
     fig, axes = plt.subplots(len(times), 1, figsize=(9, 2.2 * len(times)), squeeze=False)
     base = members["positions"]
     for ax, t in zip(axes[:, 0], times):
@@ -113,7 +170,14 @@ def deck(args):
     t = [r[0] for r in data]
     for v in nodes:
         k = cols[(v, axis)]
-        ax.plot(t, [1e3 * (r[k] - base[v - 1][axis]) for r in data], lw=1.0, label=f"node {v}")
+        plane_b = base[v - 1][2] > 1e-12  # the 3D bridge's second plane: dashed
+        ax.plot(t, [1e3 * (r[k] - base[v - 1][axis]) for r in data], "--" if plane_b else "-",
+                lw=1.0, label=f"node {v}")
+    duration = summary["config"]["dynamics"]["duration"]
+    switches = sorted({t for load in summary["config"]["dynamics"].get("loads", [])
+                       for t in (load["t_start"], load["t_end"]) if 0 < t < duration})
+    for ts in switches:
+        ax.axvline(ts, color="k", ls="--", lw=0.8)
     ax.set_xlabel("t [s]")
     ax.set_ylabel(f"{args.axis} displacement [mm]")
     ax.grid(alpha=0.3)
