@@ -4,6 +4,7 @@
 
 #include <suitesparse/SuiteSparse_config.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "core/config.h"
+#include "core/structure.h"
 #include "design/design.h"
 #include "dynamics/class1.h"
 #include "dynamics/integrators.h"
@@ -48,6 +50,36 @@ Eigen::VectorXd RunRk4(OdeSystem& ode, Eigen::VectorXd y, double dt, long steps,
     each(k + 1, (k + 1) * dt, y);
   }
   return y;
+}
+
+TEST_CASE("eq. 27 shares a string's half mass among the bars at its end node") {
+  // The 3D bridge: every bar node meets two bars (its plane's bar and a rung), so each bar
+  // gets a quarter of the mass of every string at its ends, and the total is unchanged.
+  const Design& design = DesignOf(2, 1, 2);
+  const DynamicModel model = BuildDynamicModel(design);
+  const Structure& st = design.topology.structure;
+  const std::vector<int> bars_at = st.BarsPerNode();
+  double expected_total = 0;
+  for (size_t k = 0; k < model.bars.size(); ++k) {
+    double expected = design.bars[k].mass;
+    for (const DynamicString& s : model.strings) {
+      for (const int end : {s.i, s.j}) {
+        if (!model.fixed[end] && (end == model.bars[k].i || end == model.bars[k].j)) {
+          expected += 0.5 * s.mass / bars_at[end];
+        }
+      }
+    }
+    CHECK(model.bars[k].mass == Approx(expected).epsilon(1e-14));  // the same sums, reordered
+    expected_total += expected;
+  }
+  double string_share = 0;  // string mass not carried by the supports
+  for (const DynamicString& s : model.strings) {
+    for (const int end : {s.i, s.j}) string_share += model.fixed[end] ? 0.0 : 0.5 * s.mass;
+  }
+  double bar_mass = 0;
+  for (const MemberSizing& b : design.bars) bar_mass += b.mass;
+  CHECK(MovingMass(model) == Approx(bar_mass + string_share).epsilon(1e-14));
+  CHECK(*std::max_element(bars_at.begin(), bars_at.end()) == 2);
 }
 
 TEST_CASE("class-1 and class-k engines give the same trajectory on a class-1 bridge") {
