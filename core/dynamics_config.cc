@@ -45,7 +45,7 @@ DynamicsConfig ParseDynamicsConfig(JsonSection s) {
     throw ConfigError(s.PathOf("dt"), std::to_string(d.dt),
                       "must not exceed duration = " + std::to_string(d.duration));
   }
-  d.integrator = s.Choice("integrator", d.integrator, {"rk4", "dopri5"});
+  d.integrator = s.Choice("integrator", d.integrator, {"auto", "rk4", "dopri5", "sdirk3"});
   d.engine = s.Choice("engine", d.engine, {"auto", "class1", "classk"});
   d.rtol = s.Number("rtol", d.rtol, Range::Closed(1e-14, 1e-1));
   d.atol = s.Number("atol", d.atol, Range::Closed(1e-16, 1.0));

@@ -72,7 +72,10 @@ struct GuardConfig {
 struct DynamicsConfig {
   double duration = 1.0;              // simulated time [s]
   double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
-  std::string integrator = "rk4";     // "rk4" | "dopri5"
+  // "auto" | "rk4" | "dopri5" | "sdirk3". "auto": RK4 when dt is below half its stability
+  // limit 2 sqrt(2)/omega_max (omega_max of the initial state, by power iteration), else the
+  // implicit SDIRK3 at the same dt (BENCHMARKS.md, work-precision, has the evidence).
+  std::string integrator = "auto";
   // "auto": the class-1 closed form when no node carries two bars, else class k;
   // "class1" (throws for a class-k bridge) | "classk" (Lagrange multipliers, any bridge)
   std::string engine = "auto";

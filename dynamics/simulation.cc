@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,7 +12,10 @@
 #include "core/error.h"
 #include "dynamics/class1.h"
 #include "dynamics/classk.h"
+#include "dynamics/coupling.h"
 #include "dynamics/integrators.h"
+#include "dynamics/sdirk.h"
+#include "dynamics/step_size.h"
 
 namespace tbridge {
 
@@ -93,6 +98,9 @@ class Monitor {
 
   SimulationSummary& summary() { return summary_; }
 
+  // Called on a blow-up only: the highest linearised frequency of the initial state [rad/s].
+  void SetOmegaMax(std::function<double()> omega_max) { omega_max_ = std::move(omega_max); }
+
  private:
   struct TimedLoadState {
     LoadStepConfig config;
@@ -105,8 +113,22 @@ class Monitor {
 
   [[noreturn]] void Fail(int step, double t, const std::string& what) const {
     std::ostringstream msg;
-    msg << "the run blew up at step " << step << ", t = " << t << " s: " << what
-        << ". Try a smaller dt (e.g. dt = " << config_.dt / 4 << " s)";
+    msg << "the run blew up at step " << step << ", t = " << t << " s: " << what << ". Try a smaller dt";
+    // A safe dt from the highest linearised frequency: half RK4's limit 2 sqrt(2)/omega_max.
+    double omega = 0;
+    try {
+      if (omega_max_) omega = omega_max_();
+    } catch (const std::exception&) {
+      omega = 0;  // no advice beats a second failure
+    }
+    const double safe = 0.5 * Rk4StepLimit(omega);
+    if (omega > 0 && safe < config_.dt) {
+      msg << ": the highest linearised frequency " << omega << " rad/s makes RK4 stable only below "
+          << 2 * safe << " s, so dt = " << safe << " s is safe (or integrator \"sdirk3\" keeps this dt)";
+    } else {
+      msg << " (e.g. dt = " << config_.dt / 4 << " s; the highest linearised frequency " << omega
+          << " rad/s allows this dt, so the cause is the motion, not stability)";
+    }
     if (!config_.stabilisation.enabled) msg << " or enable stabilisation";
     throw ModelError(msg.str());
   }
@@ -183,8 +205,16 @@ class Monitor {
   double timed_work_ = 0;
   double h0_ = 0;
   double last_power_ = 0;
+  std::function<double()> omega_max_;
   SimulationSummary summary_;
 };
+
+// "auto" resolved (see DynamicsConfig::integrator): RK4 where dt is at most half its stability
+// limit at the initial state, the implicit SDIRK3 where RK4 would be unstable.
+std::string ResolveIntegrator(const DynamicsConfig& config, OdeSystem& ode, const Eigen::VectorXd& y) {
+  if (config.integrator != "auto") return config.integrator;
+  return config.dt <= 0.5 * Rk4StepLimit(HighestFrequency(ode, y).omega_max) ? "rk4" : "sdirk3";
+}
 
 // A uniform output grid t_k = k * spacing and the rows filled so far.
 struct Sampler {
@@ -329,6 +359,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
   Monitor<System> monitor(model, system, y, config);
+  const Eigen::VectorXd y_start = y;
+  monitor.SetOmegaMax([&] { return HighestFrequency(ode, y_start).omega_max; });
 
   // Output grids: history every record.every steps, deck samples every frequency.every steps.
   const long total_steps = std::max<long>(1, std::lround(std::ceil(config.duration / config.dt - 1e-9)));
@@ -363,20 +395,27 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 
   SimulationSummary& s = monitor.summary();
   s.engine = result.summary.engine;
-  s.integrator = config.integrator;
-  if (config.integrator == "rk4") {
-    Rk4Workspace ws(system.state_size());
+  const std::string integrator = ResolveIntegrator(config, ode, y);
+  s.integrator = integrator;
+  if (integrator == "rk4" || integrator == "sdirk3") {
+    Rk4Workspace ws(integrator == "rk4" ? system.state_size() : 0);
+    std::unique_ptr<Sdirk3> sdirk;
+    if (integrator == "sdirk3") sdirk = std::make_unique<Sdirk3>(CouplingOf(model), system.state_size());
     for (long step = 1; step <= total_steps; ++step) {
       const double t_old = (step - 1) * config.dt;
       const double t = step == total_steps ? config.duration : step * config.dt;
       if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * (t_old + t));
-      Rk4Step(ode, t_old, t - t_old, y, ws);
+      if (sdirk) {
+        sdirk->Step(ode, t_old, t - t_old, y);
+      } else {
+        Rk4Step(ode, t_old, t - t_old, y, ws);
+      }
       monitor.Accept(static_cast<int>(step), t_old, t, y.data());
       if (recording && step % config.record.every == 0) take_history(t, y);
       if (deck && step % config.frequency.every == 0) take_deck(y);
     }
     s.steps = static_cast<int>(total_steps);
-    s.evaluations = 4 * total_steps;
+    s.evaluations = sdirk ? sdirk->stats().evaluations : 4 * total_steps;
   } else {
     Dopri5Options o;
     o.rtol = config.rtol;

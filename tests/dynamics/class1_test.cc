@@ -398,6 +398,7 @@ TEST_CASE("a run that blows up stops with the step, the time and a smaller dt") 
   const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   // dt = 2e-3 is 3.6x the RK4 stability limit of n = 2 (5.6e-4 s, SPEC.md §9).
   DynamicsConfig c = Scenario(1.0, 2e-3, 1, 0.01);
+  c.integrator = "rk4";  // "auto" would take the implicit path here and not blow up
   try {
     Simulate(m, c);
     FAIL("expected ModelError");

@@ -5,7 +5,6 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <map>
 
 #include "core/config.h"
 #include "core/error.h"
@@ -16,20 +15,12 @@
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
 
-const Design& SdirkDesign(int n) {
-  static std::map<int, Design> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) {
-    Config c;
-    c.bridge.n = n;
-    it = cache.emplace(n, RunDesign(c)).first;
-  }
-  return it->second;
-}
+const Design& SdirkDesign(int n) { return test::PaperDesign(n); }
 
 Eigen::VectorXd Perturbed(const DynamicModel& m, double delta) {
   DynamicsConfig c;

@@ -1,0 +1,31 @@
+// A step too large for the integrator: `tbridge simulate` stops with the step, the time and a
+// safe dt from the highest linearised frequency, and writes no output.
+
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "cli_support.h"
+
+namespace tbridge {
+namespace {
+
+TEST_CASE("simulate: a blown-up run names step, time and a safe dt and writes nothing") {
+  const test::fs::path dir = test::FreshDir("guard");
+  const test::fs::path config = dir / "config.json";
+  // n = 3 at dt = 2e-3 s: 7x RK4's stability limit 2.8e-4 s (SPEC.md §9).
+  std::ofstream(config) << R"({"bridge": {"n": 3},
+    "dynamics": {"duration": 0.5, "dt": 2e-3, "integrator": "rk4",
+                 "perturbation": {"bar_class": 1, "delta": 0.1}}})";
+  const test::CliResult r = test::RunTbridge(dir, "simulate " + test::Quote(config.string()) + " -o " +
+                                                      test::Quote((dir / "out").string()));
+  INFO(r.err);
+  CHECK(r.exited);
+  CHECK(r.code != 0);
+  CHECK_THAT(r.err, Catch::Contains("blew up at step") && Catch::Contains("t = "));
+  CHECK_THAT(r.err, Catch::Contains("highest linearised frequency") && Catch::Contains("dt = "));
+  CHECK(!test::fs::exists(dir / "out" / "summary.json"));
+  CHECK(!test::fs::exists(dir / "out" / "history.csv"));
+}
+
+}  // namespace
+}  // namespace tbridge
