@@ -35,6 +35,13 @@ bool g_counting = false;
 long g_allocations = 0;
 }  // namespace
 
+// AddressSanitizer owns malloc and operator new; interposing them there breaks its start-up.
+// Sanitizer builds run the tests without the counters (the Release suite proves the steps
+// allocation-free).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kCountingAllocations = false;
+#else
+constexpr bool kCountingAllocations = true;
 extern "C" {
 void* __libc_malloc(size_t);
 void* __libc_calloc(size_t, size_t);
@@ -64,6 +71,7 @@ void operator delete(void* p) noexcept { __libc_free(p); }
 void operator delete[](void* p) noexcept { __libc_free(p); }
 void operator delete(void* p, size_t) noexcept { __libc_free(p); }
 void operator delete[](void* p, size_t) noexcept { __libc_free(p); }
+#endif
 
 namespace tbridge {
 namespace {
@@ -370,7 +378,7 @@ TEST_CASE("the RK4 step allocates nothing") {
   g_counting = false;
   CHECK(probe->sum() == 64);
   delete probe;
-  CHECK(g_allocations == 2);
+  CHECK(g_allocations == (kCountingAllocations ? 2 : 0));
 }
 
 TEST_CASE("DOPRI5 steps allocate nothing") {
