@@ -2,7 +2,7 @@
 // method (RK4, dt = 1e-3 s, 5000 steps): time per step and total error against a converged
 // reference (RK4 at dt = 1e-5 s).
 //
-//   build-perf/bench/bench_motes
+//   build/bench/bench_motes
 //
 // Class-1 prism: bottom triangle on the unit circle at z = 0, top triangle at z = 1 turned by
 // 150 deg; bars b_k-t_k; strings: bottom b_k-b_k+1, top t_k-t_k+1, vertical b_k-t_k+1, each

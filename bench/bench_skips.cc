@@ -1,7 +1,7 @@
 // What skipping unneeded work saves: each line times a scene with and without one feature the
 // scene does not need, on the paper's planar bridge of complexity n.
 //
-//   build-perf/bench/bench_skips [n=6]
+//   build/bench/bench_skips [n=6]
 //
 // - damping: the velocity terms run only when some string has c > 0; forced on here with
 //   c = 1e-300 N s/m (no physical effect) against c = 0;

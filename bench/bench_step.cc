@@ -1,7 +1,7 @@
 // Cost of one class-1 RK4 step per member for the paper's planar bridges n = 1..12, with the
 // scene's variants: plain, string damping on, stabilisation on.
 //
-//   build-dyn/bench/bench_step [max_n]
+//   build/bench/bench_step [max_n]
 //
 // Each case is timed over enough steps to take ~0.2 s, after a warm-up; the state starts from
 // the design with the central bar 1 mm down, so strings stay taut and nothing is skipped.

@@ -1,7 +1,7 @@
 // Run time against error for the class-1 bridges: RK4 at a ladder of dt, DOPRI5 at a ladder of
 // tolerances, SDIRK3 (implicit) at a ladder of dt.
 //
-//   build-perf/bench/bench_work_precision [min_n] [max_n] > wp.csv
+//   build/bench/bench_work_precision [min_n] [max_n] > wp.csv
 //   python3 tools/plot_work_precision.py wp.csv docs/work_precision.png > table.md
 //
 // Scenes: the designed bridge of the paper (p = 1) with its longest bar pushed down by

@@ -154,7 +154,7 @@ TEST_CASE("an unperturbed designed bridge stays at rest for 1 s") {
       worst = std::max(worst, (Positions(system, y) - x0).cwiseAbs().maxCoeff());
     }
     INFO("n = " << n << ": largest node motion " << worst << " m");
-    // The bound: design and dynamics agree when nothing moves by more than 1e-9 span.
+    // The acceptance bound: design and dynamics agree when nothing moves by more than 1e-9 span.
     CHECK(worst <= 1e-9 * 12.0);
   }
 }
@@ -174,7 +174,7 @@ TEST_CASE("RK4 converges at order 4 on a smooth motion without slack") {
   const double e1 = (run(h) - reference).cwiseAbs().maxCoeff();
   const double e2 = (run(h / 2) - reference).cwiseAbs().maxCoeff();
   INFO("errors " << e1 << " and " << e2 << " m");
-  // The acceptance band: 2^4 = 16 +- 3 (measured 15.6). The reference's own error is
+  // The acceptance band: 2^4 = 16 +- 3 (measured 15.6). The reference's own error is
   // 16^4 ~ 6e4 times smaller than e2, so it does not bias the ratio.
   CHECK(e1 / e2 == Approx(16).margin(3));
   // Both far above the rounding of ~10 m coordinates over these steps (~1e-14 m), or the
@@ -208,7 +208,7 @@ TEST_CASE("stabilisation holds bar lengths to 1e-9 over 1e5 steps") {
   REQUIRE(stabilised.summary.steps == 100000);
   INFO("bar-length error: " << plain.summary.max_bar_length_error << " without, "
                             << stabilised.summary.max_bar_length_error << " with stabilisation");
-  // The bound.
+  // The acceptance bound.
   CHECK(stabilised.summary.max_bar_length_error <= 1e-9);
   // And the correction is what holds them: the same run without it drifts (6e-6 measured).
   CHECK(plain.summary.max_bar_length_error > 1e-7);
@@ -266,7 +266,7 @@ TEST_CASE("a mass on a V of two strings oscillates at sqrt(k_eff/m)") {
   const double spectral = DominantFrequency(signal, dt).omega_rad_s;
   const double crossings = MeanPeriodFromCrossings(signal, dt).omega_rad_s;
   INFO("omega " << spectral << " (spectral), " << crossings << " (crossings) vs " << omega);
-  // The bound. Both estimators are exact for a sinusoid up to interpolation (~1e-9);
+  // The acceptance bound. Both estimators are exact for a sinusoid up to interpolation (~1e-9);
   // the model's own errors (nonlinearity 2e-7, RK4 phase 2e-10) are far below it.
   CHECK(spectral == Approx(omega).epsilon(1e-4));
   CHECK(crossings == Approx(omega).epsilon(1e-4));

@@ -1,5 +1,5 @@
 // Linearised modes against small-amplitude time histories of the nonlinear model: the two
-// must give the same frequency (issue acceptance: within 1 % at delta = 1e-4 m).
+// must give the same frequency (acceptance: within 1 % at delta = 1e-4 m).
 #include <catch2/catch.hpp>
 #include <cmath>
 
