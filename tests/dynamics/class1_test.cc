@@ -25,6 +25,7 @@
 #include "dynamics/model.h"
 #include "dynamics/response.h"
 #include "dynamics/simulation.h"
+#include "dynamics/rk4_support.h"
 #include "test_support.h"
 
 // Heap allocation counters for the no-allocation test. operator new is replaced for the whole
@@ -90,13 +91,7 @@ DynamicsConfig Scenario(double duration, double dt, int bar_class, double delta)
 // Positions part of a state, as a vector.
 Eigen::VectorXd Positions(const Class1System& s, const Eigen::VectorXd& y) { return y.head(s.coordinates()); }
 
-// Integrates with fixed-step RK4 from y for `steps` steps of dt.
-Eigen::VectorXd RunRk4(const Class1System& system, Eigen::VectorXd y, double dt, long steps) {
-  Class1Ode ode(system);
-  Rk4Workspace ws(system.state_size());
-  for (long k = 0; k < steps; ++k) Rk4Step(ode, k * dt, dt, y, ws);
-  return y;
-}
+using test::RunRk4;
 
 TEST_CASE("the model takes the design's members and eq. 27 string masses") {
   const Design& d = test::PaperDesign(1);

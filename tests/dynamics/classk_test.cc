@@ -22,6 +22,7 @@
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "dynamics/rk4_support.h"
 
 namespace tbridge {
 namespace {
@@ -40,17 +41,7 @@ const Design& DesignOf(int n, int p, int planes = 1) {
   return it->second;
 }
 
-// Fixed-step RK4 on `ode` from y for `steps` steps of dt, calling `each(step, t, y)` after
-// every step.
-template <class Each>
-Eigen::VectorXd RunRk4(OdeSystem& ode, Eigen::VectorXd y, double dt, long steps, Each each) {
-  Rk4Workspace ws(ode.size());
-  for (long k = 0; k < steps; ++k) {
-    Rk4Step(ode, k * dt, dt, y, ws);
-    each(k + 1, (k + 1) * dt, y);
-  }
-  return y;
-}
+using test::RunRk4;
 
 TEST_CASE("eq. 27 shares a string's half mass among the bars at its end node") {
   // The 3D bridge: every bar node meets two bars (its plane's bar and a rung), so each bar

@@ -16,6 +16,7 @@
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "test_support.h"
+#include "dynamics/rk4_support.h"
 
 namespace tbridge {
 namespace {
@@ -37,12 +38,7 @@ Eigen::VectorXd RunSdirk(const DynamicModel& m, const Class1System& system, Eige
   return y;
 }
 
-Eigen::VectorXd RunRk4Steps(const Class1System& system, Eigen::VectorXd y, double dt, long steps) {
-  Class1Ode ode(system);
-  Rk4Workspace ws(system.state_size());
-  for (long k = 0; k < steps; ++k) Rk4Step(ode, k * dt, dt, y, ws);
-  return y;
-}
+using test::RunRk4;
 
 TEST_CASE("the colouring never gives two columns of one row the same colour") {
   for (int n : {1, 3, 5}) {
@@ -72,7 +68,7 @@ TEST_CASE("SDIRK3 converges at order 3 on a smooth motion without slack") {
   const DynamicModel m = BuildDynamicModel(SdirkDesign(1));
   const Class1System system(m);
   const Eigen::VectorXd y0 = Perturbed(m, 1e-3);
-  const Eigen::VectorXd reference = RunRk4Steps(system, y0, 1e-5, 10000).head(system.coordinates());
+  const Eigen::VectorXd reference = RunRk4(system, y0, 1e-5, 10000).head(system.coordinates());
   auto error = [&](double dt) {
     const Eigen::VectorXd y = RunSdirk(m, system, y0, dt, std::lround(0.1 / dt));
     return (y.head(system.coordinates()) - reference).cwiseAbs().maxCoeff();
@@ -92,7 +88,7 @@ TEST_CASE("SDIRK3 converges to RK4 on a large slack motion of n = 2") {
   const DynamicModel m = BuildDynamicModel(SdirkDesign(2));
   const Class1System system(m);
   const Eigen::VectorXd y0 = Perturbed(m, 0.1);
-  const Eigen::VectorXd rk4 = RunRk4Steps(system, y0, 2.5e-6, 20000);
+  const Eigen::VectorXd rk4 = RunRk4(system, y0, 2.5e-6, 20000);
   auto error = [&](double dt) {
     const Eigen::VectorXd y = RunSdirk(m, system, y0, dt, std::lround(0.05 / dt));
     return (rk4 - y).head(system.coordinates()).cwiseAbs().maxCoeff();
@@ -114,7 +110,7 @@ TEST_CASE("SDIRK3 steps 10x past RK4's stability limit on n = 6 and stays bounde
   INFO("RK4 limit " << rk4_limit << " s, SDIRK3 dt " << dt << " s");
   const Eigen::VectorXd y0 = Perturbed(m, 1e-3);
   // RK4 at this dt blows up (the premise).
-  const Eigen::VectorXd explicit_run = RunRk4Steps(system, y0, dt, 2000);
+  const Eigen::VectorXd explicit_run = RunRk4(system, y0, dt, 2000);
   CHECK(!(explicit_run.allFinite() && (explicit_run - y0).cwiseAbs().maxCoeff() < 1.0));
   SdirkStats stats;
   const Eigen::VectorXd y = RunSdirk(m, system, y0, dt, 2000, &stats);
