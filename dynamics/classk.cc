@@ -313,10 +313,9 @@ void ClassKWorkspace::Refactorise() {
   if (solver->a != nullptr) cholmod_factorize(solver->a, solver->factor, &solver->common);
 }
 
-Eigen::VectorXd ClassKSystem::BarForceDensities(const ClassKWorkspace& ws) const {
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(n_model_bars_);
+void ClassKSystem::BarForceDensities(const ClassKWorkspace& ws, Eigen::VectorXd& out) const {
+  out.setZero(n_model_bars_);
   for (const PackedBar& p : bars_) out(p.model_index) = ws.mu(p.row);
-  return out;
 }
 
 void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const {

@@ -79,8 +79,9 @@ class ClassKSystem {
   void Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const;
 
   // The bar force densities lambda (> 0 in compression) [N/m] of the last evaluation in `ws`,
-  // in the order of the model's bars (0 for bars with both ends pinned).
-  Eigen::VectorXd BarForceDensities(const ClassKWorkspace& ws) const;
+  // in the order of the model's bars (0 for bars with both ends pinned), into `out`.
+  // Allocation-free when `out` already has one entry per model bar.
+  void BarForceDensities(const ClassKWorkspace& ws, Eigen::VectorXd& out) const;
 
   // Kinetic energy of the state [J].
   double KineticEnergy(const double* y) const;

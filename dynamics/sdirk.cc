@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -167,6 +168,21 @@ bool Sdirk3::SolveStage(OdeSystem& system, double t_stage, double h, bool fresh)
 }
 
 void Sdirk3::Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
+  Split(system, t, h, y, options_.max_halvings);
+}
+
+void Sdirk3::Split(OdeSystem& system, double t, double h, Eigen::VectorXd& y, int halvings_left) {
+  if (Attempt(system, t, h, y)) return;
+  if (halvings_left == 0) {
+    Fail(t, h, "Newton did not converge with a fresh Jacobian, even after halving the step " +
+                   std::to_string(options_.max_halvings) + " times,");
+  }
+  ++stats_.halvings;
+  Split(system, t, 0.5 * h, y, halvings_left - 1);
+  Split(system, t + 0.5 * h, 0.5 * h, y, halvings_left - 1);
+}
+
+bool Sdirk3::Attempt(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
   // CAUTION: performance-sensitive. Lazy Eigen expressions into the workspace.
   const double hg = h * kGamma;
   y0_ = y;
@@ -198,7 +214,7 @@ void Sdirk3::Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
       }
     }
     if (ok) break;
-    if (fresh) Fail(t, h, "Newton did not converge with a fresh Jacobian");
+    if (fresh) return false;  // y untouched: the caller splits the step
     Refresh(system, t, h, y0_);
     fresh = true;
   }
@@ -208,6 +224,7 @@ void Sdirk3::Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
     if (!std::isfinite(y[i])) Fail(t, h, "the state is not finite");
   }
   ++stats_.steps;
+  return true;
 }
 
 }  // namespace tbridge

@@ -48,13 +48,18 @@ struct SdirkOptions {
   double max_contraction = 0.5; // ||dV_k+1|| / ||dV_k|| above this triggers a refresh
   int max_refreshes = 4;        // re-linearisations within one stage (slack kinks)
   bool refresh_every_step = false;
+  // When Newton fails even with a fresh Jacobian (a slack kink inside the step can leave no
+  // contraction), the step is done as two halves, recursively, at most this many times deep
+  // (h / 2^k); only then does Step throw. Rare: the default step sizes rarely need it.
+  int max_halvings = 6;
   // Forward-difference increment: the velocity moves by eps max(1, |v_q|) and the position
   // by h gamma times that, but at least eps max(1, |x_q|) [-].
   double fd_eps = 1e-7;
 };
 
 struct SdirkStats {
-  long steps = 0;
+  long steps = 0;          // accepted steps, halves of split steps counted singly
+  long halvings = 0;       // steps split in two after Newton failed
   long newton_iterations = 0;
   long jacobians = 0;     // Jacobian estimates (each costs colours x dim evaluations)
   long evaluations = 0;   // right-hand-side calls, Jacobian ones included
@@ -72,13 +77,17 @@ class Sdirk3 {
 
   // One step of size h [s] from (t, y); y becomes y(t + h). `system` must be second order as
   // described at the top and of the size given to the constructor. Throws ModelError naming
-  // t and proposing a smaller dt when Newton fails with a fresh Jacobian, when the state is
-  // not finite, or when the factorisation fails.
+  // t and proposing a smaller dt when Newton fails with a fresh Jacobian at max_halvings deep,
+  // when the state is not finite, or when the factorisation fails.
   void Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y);
 
   const SdirkStats& stats() const { return stats_; }
 
  private:
+  // Step, split in halves while Newton fails (up to `halvings_left` deep).
+  void Split(OdeSystem& system, double t, double h, Eigen::VectorXd& y, int halvings_left);
+  // One step; false (y untouched) when Newton fails with a fresh Jacobian.
+  bool Attempt(OdeSystem& system, double t, double h, Eigen::VectorXd& y);
   // Estimates D at (t, y) for step h and factorises I - h gamma D.
   void Refresh(OdeSystem& system, double t, double h, const Eigen::VectorXd& y);
   // Solves one stage; returns false when Newton must restart with a fresh Jacobian.

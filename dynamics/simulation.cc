@@ -34,14 +34,24 @@ std::string Num(double v) {
 template <class System>
 class Monitor {
  public:
+  // `probe`, when given, measures the bar forces (SimulationOutputs::bar_forces).
   Monitor(const DynamicModel& model, const System& system, const Eigen::VectorXd& y0,
-          const DynamicsConfig& config)
-      : model_(model), system_(system), config_(config), dim_(model.dim), x0_(y0.head(system.coordinates())) {
+          const DynamicsConfig& config, const ClassKSystem* probe)
+      : model_(model), system_(system), config_(config), dim_(model.dim), x0_(y0.head(system.coordinates())),
+        probe_(probe) {
     taut_.resize(model.strings.size());
+    ever_slack_.assign(model.strings.size(), 0);
     summary_.slack.per_string.assign(model.strings.size(), 0);
+    if (probe_) {
+      probe_ws_ = std::make_unique<ClassKWorkspace>(*probe_);
+      probe_dy_.resize(probe_->state_size());
+      lambda_.setZero(static_cast<Eigen::Index>(model.bars.size()));
+      summary_.peak_bar_compression.assign(model.bars.size(), 0.0);
+      summary_.peak_bar_tension.assign(model.bars.size(), 0.0);
+    }
     summary_.allowed_stress = model.allowed_stress;
     double kinetic = 0, elastic = 0, power = 0;
-    Measure(0.0, y0.data(), /*first=*/true, kinetic, elastic, power);
+    Measure(0.0, 0.0, y0.data(), /*first=*/true, kinetic, elastic, power);
     last_power_ = power;
     auto& e = summary_.energy;
     e.kinetic_start = kinetic;
@@ -62,7 +72,7 @@ class Monitor {
       if (!std::isfinite(y[i])) Fail(step, t, "a node position or velocity is not finite");
     }
     double kinetic = 0, elastic = 0, power = 0;
-    Measure(t, y, false, kinetic, elastic, power);
+    Measure(t, 0.5 * (t_old + t), y, false, kinetic, elastic, power);
     auto& e = summary_.energy;
     e.dissipated += 0.5 * (t - t_old) * (last_power_ + power);
     last_power_ = power;
@@ -133,7 +143,9 @@ class Monitor {
     throw ModelError(msg.str());
   }
 
-  void Measure(double t, const double* y, bool first, double& kinetic, double& elastic, double& power) {
+  // The state y at time t; the loads of `load_time` act on it (the step's hold time).
+  void Measure(double t, double load_time, const double* y, bool first, double& kinetic, double& elastic,
+               double& power) {
     const int c = system_.coordinates();
     const double* x = y;
     const double* v = y + c;
@@ -155,6 +167,10 @@ class Monitor {
         const double length_rate = rate / len;
         tension = std::max(spring + s.damping * length_rate, 0.0);
         power += (tension - spring) * length_rate;  // rate of work done on the damper
+      }
+      if (!taut && !ever_slack_[k]) {
+        ever_slack_[k] = 1;
+        ++summary_.slack.ever_slack;
       }
       if (first) {
         taut_[k] = taut;
@@ -192,7 +208,18 @@ class Monitor {
         }
       }
     }
+    if (probe_) MeasureBarForces(load_time, y);
     kinetic = system_.KineticEnergy(y);
+  }
+
+  void MeasureBarForces(double load_time, const double* y) {
+    probe_->Derivative(load_time, y, probe_dy_.data(), *probe_ws_);
+    probe_->BarForceDensities(*probe_ws_, lambda_);
+    for (size_t k = 0; k < model_.bars.size(); ++k) {
+      const double force = lambda_(static_cast<Eigen::Index>(k)) * model_.bars[k].length;  // > 0: compression
+      double& peak = force >= 0 ? summary_.peak_bar_compression[k] : summary_.peak_bar_tension[k];
+      peak = std::max(peak, std::abs(force));
+    }
   }
 
   const DynamicModel& model_;
@@ -201,7 +228,11 @@ class Monitor {
   int dim_;
   Eigen::VectorXd x0_;
   std::vector<bool> taut_;
+  std::vector<char> ever_slack_;
   std::vector<TimedLoadState> timed_;
+  const ClassKSystem* probe_;
+  std::unique_ptr<ClassKWorkspace> probe_ws_;
+  Eigen::VectorXd probe_dy_, lambda_;
   double timed_work_ = 0;
   double h0_ = 0;
   double last_power_ = 0;
@@ -209,12 +240,6 @@ class Monitor {
   SimulationSummary summary_;
 };
 
-// "auto" resolved (see DynamicsConfig::integrator): RK4 where dt is at most half its stability
-// limit at the initial state, the implicit SDIRK3 where RK4 would be unstable.
-std::string ResolveIntegrator(const DynamicsConfig& config, OdeSystem& ode, const Eigen::VectorXd& y) {
-  if (config.integrator != "auto") return config.integrator;
-  return config.dt <= 0.5 * Rk4StepLimit(HighestFrequency(ode, y).omega_max) ? "rk4" : "sdirk3";
-}
 
 // A uniform output grid t_k = k * spacing and the rows filled so far.
 struct Sampler {
@@ -224,6 +249,11 @@ struct Sampler {
 };
 
 }  // namespace
+
+std::string ResolveIntegrator(const std::string& requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y) {
+  if (requested != "auto") return requested;
+  return dt <= 0.5 * Rk4StepLimit(HighestFrequency(ode, y).omega_max) ? "rk4" : "sdirk3";
+}
 
 int MaxBarsAtANode(const DynamicModel& model) {
   std::vector<int> count(model.num_nodes(), 0);
@@ -353,12 +383,12 @@ namespace {
 template <class System, class Ode>
 SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& config,
                              const std::vector<PrestrainReport>& prestrain, const System& system,
-                             SimulationResult result,
+                             const ClassKSystem* probe, SimulationResult result,
                              std::chrono::steady_clock::time_point wall_start) {
   const int dim = model.dim;
   Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
-  Monitor<System> monitor(model, system, y, config);
+  Monitor<System> monitor(model, system, y, config, probe);
   const Eigen::VectorXd y_start = y;
   monitor.SetOmegaMax([&] { return HighestFrequency(ode, y_start).omega_max; });
 
@@ -395,7 +425,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 
   SimulationSummary& s = monitor.summary();
   s.engine = result.summary.engine;
-  const std::string integrator = ResolveIntegrator(config, ode, y);
+  const std::string integrator = ResolveIntegrator(config.integrator, config.dt, ode, y);
   s.integrator = integrator;
   if (integrator == "rk4" || integrator == "sdirk3") {
     Rk4Workspace ws(integrator == "rk4" ? system.state_size() : 0);
@@ -484,7 +514,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 }  // namespace
 
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain) {
+                          const std::vector<PrestrainReport>& prestrain, const SimulationOutputs& outputs) {
   const auto wall_start = std::chrono::steady_clock::now();
   const int dim = model.dim, n_n = model.num_nodes();
 
@@ -510,12 +540,18 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   options.stabilisation = config.stabilisation.enabled;
   options.omega_rad_s = config.stabilisation.omega_rad_s;
   options.zeta = config.stabilisation.zeta;
+  // Bar forces come from the class-k multipliers for either engine; a class-k run could share
+  // its system, but a second one keeps the two paths alike and costs only its arrays.
+  std::unique_ptr<ClassKSystem> probe;
+  if (outputs.bar_forces) probe = std::make_unique<ClassKSystem>(model, options, timed);
   if (engine == "class1") {
     const Class1System system(model, options, timed);
-    return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, std::move(result), wall_start);
+    return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, probe.get(), std::move(result),
+                                                wall_start);
   }
   const ClassKSystem system(model, options, timed);
-  return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, std::move(result), wall_start);
+  return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, probe.get(), std::move(result),
+                                              wall_start);
 }
 
 }  // namespace tbridge

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/dynamics_config.h"
+#include "dynamics/integrators.h"
 #include "dynamics/model.h"
 #include "dynamics/response.h"
 
@@ -34,6 +35,7 @@ struct SlackEvents {
   int total = 0;                    // slack <-> taut transitions, all strings
   std::vector<int> per_string;      // per model string
   int slack_at_start = 0, slack_at_end = 0;
+  int ever_slack = 0;               // strings slack at the start or after some accepted step
 };
 
 struct EnergyBalance {
@@ -70,6 +72,9 @@ struct SimulationSummary {
   std::array<int, 3> peak_deck_node{-1, -1, -1};
   std::array<double, 3> peak_deck_time{0, 0, 0};
   EnergyBalance energy;
+  // Per model bar, only when SimulationOutputs::bar_forces asks: the largest compression and
+  // the largest tension at the start and after the accepted steps [N] (0 if never).
+  std::vector<double> peak_bar_compression, peak_bar_tension;
   std::vector<PrestrainReport> prestrain;
   bool has_frequency = false;
   FrequencyEstimate frequency;     // deck measurement of SPEC.md §9
@@ -88,12 +93,27 @@ struct SimulationResult {
   double deck_sample_dt = 0;  // [s]
 };
 
+// Measurements beyond the summary's defaults, for callers that need them (the outer loop's
+// capacity check). Each costs per accepted step.
+struct SimulationOutputs {
+  // Bar forces lambda l from the class-k multipliers (the class-1 closed form on a class-1
+  // model) at every accepted state, with the loads of the step just taken: one extra
+  // right-hand side and one sparse solve per step.
+  bool bar_forces = false;
+};
+
+// "auto" resolved (see DynamicsConfig::integrator): "rk4" where `dt` is at most half RK4's
+// stability limit at the state `y` (omega_max by power iteration, dynamics/step_size.h), else
+// "sdirk3". Any other request is returned as it is.
+std::string ResolveIntegrator(const std::string& requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y);
+
 // Runs `config` on `model` with the engine EngineFor picks. Throws ConfigError for initial
 // conditions, loads or an engine that do not fit the model, ModelError when the run blows up:
 // NaN/Inf in the state, a bar-length error above guard.max_bar_length_error, energy growth
 // above guard.max_energy_growth, or (class k) a singular constraint matrix. The message names the step and time and suggests a smaller dt.
 // `prestrain` reports are copied into the summary.
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain = {});
+                          const std::vector<PrestrainReport>& prestrain = {},
+                          const SimulationOutputs& outputs = {});
 
 }  // namespace tbridge

@@ -140,6 +140,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
         row.peak_stress_ratio = run.peak_stress_ratio;
         row.slack_strings = run.slack_strings;
         row.peak_bar_capacity_ratio = run.peak_bar_capacity_ratio;
+        row.run_integrator = run.integrator;
       }
     }
   } catch (const ModelError& e) {

@@ -211,6 +211,7 @@ nlohmann::json RowToJson(const CandidateRow& r) {
           {"peak_stress_ratio", Opt(r.peak_stress_ratio)},
           {"slack_strings", Opt(r.slack_strings)},
           {"peak_bar_capacity_ratio", Opt(r.peak_bar_capacity_ratio)},
+          {"run_integrator", Opt(r.run_integrator)},
           {"feasible", r.feasible},
           {"violated", r.violated}};
 }
@@ -244,6 +245,7 @@ CandidateRow RowFromJson(const nlohmann::json& j) {
     r.peak_stress_ratio = GetOpt<double>(j, "peak_stress_ratio");
     r.slack_strings = GetOpt<int>(j, "slack_strings");
     r.peak_bar_capacity_ratio = GetOpt<double>(j, "peak_bar_capacity_ratio");
+    r.run_integrator = GetOpt<std::string>(j, "run_integrator");
     r.feasible = j.at("feasible").get<bool>();
     r.violated = j.at("violated").get<std::vector<std::string>>();
     return r;
@@ -268,7 +270,7 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
   std::ostringstream out;
   out << "index,n,p,beta_deg,deck_prestrain,ok,bars_kg,strings_kg,deck_strings_kg,deck_beams_kg,structure_kg,"
          "total_kg,joint_mass_kg,objective_kg,deck_string_area_factor,prestress_pa,first_frequency_rad_s,"
-         "peak_deck_displacement_m,peak_stress_ratio,slack_strings,peak_bar_capacity_ratio,feasible,violated,note\n";
+         "peak_deck_displacement_m,peak_stress_ratio,slack_strings,peak_bar_capacity_ratio,run_integrator,feasible,violated,note\n";
   auto opt = [](const std::optional<double>& v) { return v ? Fixed(*v) : std::string(); };
   for (const CandidateRow& r : rows) {
     const Candidate& c = r.candidate;
@@ -278,7 +280,7 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
         << "," << Fixed(r.objective) << "," << Fixed(r.deck_string_area_factor) << "," << Fixed(r.prestress) << ","
         << opt(r.first_frequency_rad_s) << "," << opt(r.peak_deck_displacement) << "," << opt(r.peak_stress_ratio)
         << "," << (r.slack_strings ? std::to_string(*r.slack_strings) : std::string()) << ","
-        << opt(r.peak_bar_capacity_ratio) << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","
+        << opt(r.peak_bar_capacity_ratio) << "," << r.run_integrator.value_or("") << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","
         << CsvText(r.note) << "\n";
   }
   return out.str();

@@ -54,6 +54,7 @@ TravellingLoadConfig ParseTravellingLoad(JsonSection s) {
   if (t.dt > t.duration) {
     throw ConfigError(s.PathOf("dt"), std::to_string(t.dt), "must be at most sweep.travelling_load.duration");
   }
+  t.integrator = s.Choice("integrator", t.integrator, {"auto", "rk4", "sdirk3"});
   t.load_factor = s.Number("load_factor", t.load_factor, Range{0.0, 100.0, true, false});
   t.string_mass = s.Choice("string_mass", t.string_mass, {"bars", "nodes", "off"});
   t.damping_c = s.Number("damping_c", t.damping_c, Range::Closed(0.0, 1e9));
@@ -154,6 +155,7 @@ nlohmann::json ToJson(const SweepSpec& spec) {
       {"travelling_load",
        {{"duration", s.travelling_load.duration},
         {"dt", s.travelling_load.dt},
+        {"integrator", s.travelling_load.integrator},
         {"load_factor", s.travelling_load.load_factor},
         {"string_mass", s.travelling_load.string_mass},
         {"damping_c", s.travelling_load.damping_c}}},

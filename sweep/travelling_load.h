@@ -1,10 +1,12 @@
-// The outer loop's nonlinear service run: a load travelling across the deck of a class-1
-// model (sweep.travelling_load in configs/README.md), with the peaks the dynamic constraints
-// need. Fixed-step RK4 on Class1System; loads held constant within each step.
+// The outer loop's nonlinear service run: a load travelling across the deck of a designed
+// bridge (sweep.travelling_load in configs/README.md), with the peaks the dynamic constraints
+// need. It is a dynamics scenario like any other: Simulate (dynamics/simulation.h) runs it with
+// the engine the bridge needs (class 1 or class k) and the integrator "auto" picks.
 #pragma once
 
-#include <vector>
+#include <string>
 
+#include "core/dynamics_config.h"
 #include "design/design.h"
 #include "dynamics/model.h"
 #include "sweep/sweep_config.h"
@@ -20,14 +22,22 @@ struct TravellingLoadResult {
   // pi E A^2 / (4 l^2 SF_buckling)) for compression and sigma_w A for tension [-]
   double peak_bar_capacity_ratio = 0;
   long steps = 0;
+  double dt = 0;           // the step taken [s]: the largest <= config.dt that divides a station
+  std::string integrator;  // "rk4" | "sdirk3", as resolved
+  std::string engine;      // "class1" | "classk"
 };
 
-// Runs the travelling load on `model` (built from `design`; bars in design order). The
-// moving force is load_factor x design.deck.node_load, downward, on deck station k (every
-// plane) for t in [k, k + 1) x duration / stations. Every step is checked.
-// Throws ModelError when the model is not class 1, has no deck nodes, or the run blows up
-// (non-finite state or a bar-length error above 1e-3 relative: the message suggests a smaller
-// sweep.travelling_load.dt).
+// The scenario of the run: the moving force load_factor x design.deck.node_load, downward,
+// on deck station k (every plane) for t in [k, k + 1) x duration / stations, on top of the
+// design loads; no frequency measurement, no recording. The step is the largest one <=
+// config.dt that puts a whole number of steps in each station, so the load switches on
+// step boundaries. Throws ModelError when the model has no deck nodes.
+DynamicsConfig TravellingLoadScenario(const DynamicModel& model, const Design& design,
+                                      const TravellingLoadConfig& config);
+
+// Runs the scenario on `model` (built from `design`; bars in design order). Throws ModelError
+// when the run blows up (non-finite state, a bar-length error above 1e-3 relative, or energy
+// growth; the message names the step and time and proposes a step).
 TravellingLoadResult RunTravellingLoad(const DynamicModel& model, const Design& design,
                                        const TravellingLoadConfig& config);
 
