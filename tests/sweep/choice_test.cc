@@ -1,5 +1,6 @@
-// The outer loop's choice on real candidates: a binding frequency constraint, an interior
-// optimum from joint mass checked against an independent scan, and the monotone case.
+// The outer loop's choice on real candidates: a binding frequency constraint (frequency falling
+// with n at the design state, rising with n under Table 6's prestrain), an interior optimum
+// from joint mass checked against an independent scan, and the monotone case.
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -49,6 +50,34 @@ TEST_CASE("a binding frequency constraint picks the lightest n that still meets 
   CHECK(c.binding == "min_first_frequency");
   CHECK_FALSE(rows[2].feasible);
   CHECK(rows[2].violated == std::vector<std::string>{"min_first_frequency"});
+}
+
+TEST_CASE("where prestrain makes frequency rise with n, a binding constraint picks the smallest feasible n",
+          "[sweep]") {
+  // Table 6's experiment: deck strings at rest length 0.95 x length with their design area
+  // (keep_area). SPEC.md §9: the lowest frequency is then 134.6, 142.5, 155.2 rad/s for
+  // n = 1, 2, 3: it rises with n. 30 kg per joint makes the objective grow from n = 3 on
+  // (1302, 1363, 2145 kg for n = 3, 4, 5), so 160 rad/s excludes n <= 3, the unconstrained
+  // optimum, and the lightest feasible candidate is the smallest feasible n.
+  const SweepSpec spec = Spec(R"({"n": [1, 2, 3, 4, 5], "deck_prestrain": [0.95], "prestrain_sizing": "keep_area",
+      "joint_mass": {"per_node_kg": 30}, "constraints": {"min_first_frequency_rad_s": 160}})");
+  const std::vector<CandidateRow> rows = RunAll(spec);
+  REQUIRE(rows.size() == 5);
+  // Tolerance 0.1 rad/s: SPEC.md prints these frequencies to one decimal.
+  CHECK(rows[0].first_frequency_rad_s.value() == Approx(134.6).margin(0.1));
+  CHECK(rows[1].first_frequency_rad_s.value() == Approx(142.5).margin(0.1));
+  CHECK(rows[2].first_frequency_rad_s.value() == Approx(155.2).margin(0.1));
+  int smallest_feasible_n = 0;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    if (k > 0) CHECK(*rows[k].first_frequency_rad_s > *rows[k - 1].first_frequency_rad_s);  // the premise
+    if (*rows[k].first_frequency_rad_s >= 160 && smallest_feasible_n == 0) smallest_feasible_n = rows[k].candidate.n;
+  }
+  CHECK(rows[2].objective < rows[3].objective);  // the unconstrained optimum is infeasible
+  const SweepChoice c = Choose(rows);
+  REQUIRE(c.found);
+  CHECK(rows[c.index].candidate.n == smallest_feasible_n);
+  CHECK(smallest_feasible_n == 4);
+  CHECK(c.binding == "min_first_frequency");
 }
 
 TEST_CASE("joint mass makes the optimum interior, as an independent scan finds", "[sweep]") {
