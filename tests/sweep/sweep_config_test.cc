@@ -85,6 +85,11 @@ TEST_CASE("bad sweep configs name the key, the value and what is allowed", "[swe
   CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.dt"));
 
   j = Base();
+  j["sweep"]["travelling_load"] = {{"integrator", "dopri5"}};  // adaptive steps miss the stations
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.integrator") && Catch::Contains("dopri5") &&
+                             Catch::Contains("sdirk3"));
+
+  j = Base();
   j["dynamics"] = json::object();
   CHECK_THAT(ErrorOf(j), Catch::Contains("dynamics") && Catch::Contains("sweep.travelling_load"));
 
