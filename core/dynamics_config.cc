@@ -13,28 +13,6 @@ namespace {
 // real node count.
 constexpr int kMaxNode = 1 << 20;
 
-std::array<double, 3> Vector3(JsonSection& s, const std::string& key) {
-  const std::vector<double> v = s.Numbers(key, std::vector<double>{0, 0, 0}, Range());
-  if (v.size() != 3) {
-    throw ConfigError(s.PathOf(key), std::to_string(v.size()) + " numbers",
-                      "must be a list of 3 numbers [x, y, z]");
-  }
-  return {v[0], v[1], v[2]};
-}
-
-// Each element of the array `key` must be an object; `parse` reads one of them.
-template <typename T, typename F>
-std::vector<T> ObjectList(JsonSection& s, const std::string& key, F parse) {
-  std::vector<T> out;
-  const nlohmann::json* raw = s.Raw(key);
-  if (raw == nullptr) return out;
-  if (!raw->is_array()) throw ConfigError(s.PathOf(key), Show(*raw), "must be a list of objects");
-  for (size_t k = 0; k < raw->size(); ++k) {
-    out.push_back(parse(JsonSection((*raw)[k], s.PathOf(key) + "[" + std::to_string(k) + "]")));
-  }
-  return out;
-}
-
 }  // namespace
 
 DynamicsConfig ParseDynamicsConfig(JsonSection s) {
@@ -83,8 +61,8 @@ DynamicsConfig ParseDynamicsConfig(JsonSection s) {
   d.initial = ObjectList<NodeInitialConfig>(s, "initial", [](JsonSection p) {
     NodeInitialConfig c;
     c.node = p.Integer("node", std::nullopt, 1, kMaxNode);
-    c.displacement = Vector3(p, "displacement");
-    c.velocity = Vector3(p, "velocity");
+    c.displacement = p.Vector3("displacement", std::array<double, 3>{0, 0, 0});
+    c.velocity = p.Vector3("velocity", std::array<double, 3>{0, 0, 0});
     p.Finish();
     return c;
   });
@@ -97,7 +75,7 @@ DynamicsConfig ParseDynamicsConfig(JsonSection s) {
                         "must be greater than t_start = " + std::to_string(c.t_start));
     }
     c.node = p.Integer("node", std::nullopt, 1, kMaxNode);
-    c.force = Vector3(p, "force");
+    c.force = p.Vector3("force", std::array<double, 3>{0, 0, 0});
     p.Finish();
     return c;
   });

@@ -169,6 +169,19 @@ std::vector<int> JsonSection::Integers(const std::string& key,
   return out;
 }
 
+std::array<double, 3> JsonSection::Vector3(const std::string& key,
+                                           std::optional<std::array<double, 3>> fallback) {
+  if (!Has(key)) {
+    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: a list of 3 numbers [x, y, z]");
+    return *fallback;
+  }
+  const std::vector<double> v = Numbers(key, std::nullopt, Range());
+  if (v.size() != 3) {
+    throw ConfigError(PathOf(key), std::to_string(v.size()) + " numbers", "must be a list of 3 numbers [x, y, z]");
+  }
+  return {v[0], v[1], v[2]};
+}
+
 JsonSection JsonSection::Section(const std::string& key, bool optional_section) {
   if (!Has(key)) {
     if (!optional_section) throw ConfigError(PathOf(key), "(missing)", "required section");

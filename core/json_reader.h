@@ -2,12 +2,16 @@
 // any key left unread is an error. Errors name the full key path, the value and what is allowed.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "core/error.h"
 
 namespace tbridge {
 
@@ -48,6 +52,8 @@ class JsonSection {
                               Range range);
   std::vector<int> Integers(const std::string& key, std::optional<std::vector<int>> fallback,
                             int lo, int hi);
+  // A list of exactly 3 finite numbers [x, y, z]; `fallback` when absent (nullopt = required).
+  std::array<double, 3> Vector3(const std::string& key, std::optional<std::array<double, 3>> fallback);
   // Nested object; absent -> empty object when `optional_section`, else ConfigError.
   JsonSection Section(const std::string& key, bool optional_section = true);
   // Raw access for arrays of objects; marks the key read. Returns nullptr when absent.
@@ -70,5 +76,19 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& source)
 nlohmann::json ReadJsonFile(const std::string& path);
 // Short rendering of a JSON value for messages (truncated).
 std::string Show(const nlohmann::json& value);
+
+// Each element of the array `key` must be an object; `parse` reads one of them as a
+// JsonSection with the path "key[k]". Absent = empty list.
+template <typename T, typename F>
+std::vector<T> ObjectList(JsonSection& section, const std::string& key, F parse) {
+  std::vector<T> out;
+  const nlohmann::json* raw = section.Raw(key);
+  if (raw == nullptr) return out;
+  if (!raw->is_array()) throw ConfigError(section.PathOf(key), Show(*raw), "must be a list of objects");
+  for (std::size_t k = 0; k < raw->size(); ++k) {
+    out.push_back(parse(JsonSection((*raw)[k], section.PathOf(key) + "[" + std::to_string(k) + "]")));
+  }
+  return out;
+}
 
 }  // namespace tbridge
