@@ -54,9 +54,28 @@ DesignConfig ParseDesign(JsonSection s) {
 Config ParseConfig(const nlohmann::json& root) {
   JsonSection top(root, "");
   Config c;
-  c.bridge = ParseBridge(top.Section("bridge", /*optional_section=*/false));
-  c.material = ParseMaterial(top.Section("material"));
-  c.design = ParseDesign(top.Section("design"));
+  if (top.Has("structure")) {
+    if (top.Has("bridge")) {
+      throw ConfigError("structure", "(given with 'bridge')",
+                        "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
+                        "not both");
+    }
+    for (const char* section : {"material", "design"}) {
+      if (top.Has(section)) {
+        throw ConfigError(section, "(section)",
+                          "not allowed with \"structure\": a custom scene gives its masses, stiffnesses and rest "
+                          "lengths directly");
+      }
+    }
+    c.structure = ParseStructureConfig(top.Section("structure"));
+  } else {
+    if (!top.Has("bridge")) {
+      throw ConfigError("bridge", "(missing)", "required section (or \"structure\" for a custom scene)");
+    }
+    c.bridge = ParseBridge(top.Section("bridge"));
+    c.material = ParseMaterial(top.Section("material"));
+    c.design = ParseDesign(top.Section("design"));
+  }
   if (top.Has("dynamics")) c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
   top.Finish();
   return c;
@@ -66,6 +85,11 @@ Config LoadConfig(const std::string& path) { return ParseConfig(ReadJsonFile(pat
 
 nlohmann::json ToJson(const Config& c) {
   nlohmann::json j;
+  if (c.structure) {
+    j["structure"] = ToJson(*c.structure);
+    if (c.dynamics) j["dynamics"] = ToJson(*c.dynamics);
+    return j;
+  }
   j["bridge"] = {{"n", c.bridge.n},           {"p", c.bridge.p},
                  {"beta_deg", c.bridge.beta_deg}, {"span", c.bridge.span},
                  {"payload", c.bridge.payload},   {"deck_width", c.bridge.deck_width},

@@ -8,6 +8,7 @@
 
 #include "core/dynamics_config.h"
 #include "core/material.h"
+#include "core/structure_config.h"
 
 namespace tbridge {
 
@@ -36,11 +37,15 @@ struct DesignConfig {
   int max_iterations = 3000;             // solver iteration limit
 };
 
+// A config describes either a designed bridge ("bridge", with "material" and "design") or a
+// custom scene ("structure"); `structure` is set exactly in the second case, and then
+// `bridge`, `material` and `design` keep their defaults and are not echoed.
 struct Config {
   BridgeConfig bridge;
   Material material;
   DesignConfig design;
-  std::optional<DynamicsConfig> dynamics;  // present when the file has a "dynamics" section
+  std::optional<StructureConfig> structure;  // present when the file has a "structure" section
+  std::optional<DynamicsConfig> dynamics;    // present when the file has a "dynamics" section
 };
 
 // Allowed structural limits checked by ParseConfig (exposed for messages and tests).

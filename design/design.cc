@@ -37,6 +37,11 @@ const MemberSizing* FindMember(const Design& d, const std::string& name) {
 }
 
 Design RunDesign(const Config& config) {
+  if (config.structure) {
+    throw ConfigError("structure", "(custom scene)",
+                      "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
+                      "or tbridge modes");
+  }
   Design d;
   d.config = config;
   d.topology = MakeBridge(config.bridge);

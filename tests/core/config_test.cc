@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "config_expect.h"
 #include "core/error.h"
 #include "core/json_reader.h"
 
@@ -19,6 +20,8 @@ namespace tbridge {
 namespace {
 
 using nlohmann::json;
+using test::ConfigErrorOf;
+using test::ExpectRejected;
 
 // A valid config with the paper's n = 3 parameters; tests break one key at a time.
 json GoodConfig() {
@@ -28,32 +31,6 @@ json GoodConfig() {
     "material": { "density": 7862, "yield_stress": 6.9e8, "youngs_modulus": 2.06e11 },
     "design":   { "yield_safety_factor": 10, "buckling_safety_factor": 1,
                   "deck_string_min_radius": 0.01, "gravity": 9.81, "solver": "ipopt" } })");
-}
-
-// The message of the ConfigError that `parse` throws; fails the test if it throws anything
-// else or nothing.
-template <typename F>
-std::string ConfigErrorOf(F&& parse) {
-  try {
-    parse();
-  } catch (const ConfigError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    FAIL("expected ConfigError, got another exception: " << e.what());
-  }
-  FAIL("expected ConfigError, nothing was thrown");
-  return "";
-}
-
-// Checks that `config` is rejected with a message naming `key`, showing `value` and saying
-// what is allowed (`allowed` is a fragment of that phrase).
-void ExpectRejected(const json& config, const std::string& key, const std::string& value,
-                    const std::string& allowed) {
-  const std::string message = ConfigErrorOf([&] { ParseConfig(config); });
-  INFO("message: " << message);
-  CHECK(message.find("'" + key + "'") != std::string::npos);
-  CHECK(message.find(value) != std::string::npos);
-  CHECK(message.find(allowed) != std::string::npos);
 }
 
 std::filesystem::path TempDir() {

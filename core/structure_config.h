@@ -1,0 +1,70 @@
+// Config of a custom tensegrity scene (the "structure" section): nodes, supports, bars,
+// strings, node masses and constant loads given directly, for `tbridge simulate` and `modes`
+// without a design. Plain data, SI units, node numbers 1-based as in every message and output.
+// Every key, its unit, default and range is listed in configs/README.md; ParseStructureConfig
+// enforces them and throws ConfigError naming the key path, the value and what is allowed.
+#pragma once
+
+#include <array>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <vector>
+
+namespace tbridge {
+
+class JsonSection;
+
+// A rigid bar between two distinct nodes; its length is held at the given node positions.
+struct StructureBarConfig {
+  std::array<int, 2> nodes{1, 2};  // 1-based end nodes
+  double mass_kg = 0;              // [kg], >= 0
+};
+
+// An elastic string: tension k (s - L0) + damping while s >= L0, slack below.
+struct StructureStringConfig {
+  std::array<int, 2> nodes{1, 2};  // 1-based end nodes
+  double stiffness_n_m = 0;        // k [N/m], >= 0
+  double damping_n_s_m = 0;        // c [N s/m], >= 0: force density term c (s . s_dot) / s^2
+  // The rest length: exactly one of the two is given.
+  std::optional<double> rest_length_m;  // L0 [m], > 0
+  std::optional<double> rest_ratio;     // L0 / (length at the given node positions), > 0
+  double mass_kg = 0;                   // [kg], >= 0; shared per dynamics.string_mass
+  std::optional<double> area_m2;        // [m^2], > 0; only for the stress report
+};
+
+struct StructureNodeMass {
+  int node = 1;        // 1-based
+  double mass_kg = 0;  // point mass [kg], >= 0
+};
+
+struct StructureLoad {
+  int node = 1;                            // 1-based
+  std::array<double, 3> force_n{0, 0, 0};  // constant [N]
+};
+
+struct StructureConfig {
+  int dim = 3;  // 2: motion in the x-y plane (every z must be 0); 3: full 3D
+  std::vector<std::array<double, 3>> nodes;  // [m]; node k is entry k - 1
+  std::vector<int> pinned;                   // supports (prescribed, not integrated)
+  std::vector<StructureNodeMass> node_masses;
+  std::vector<StructureBarConfig> bars;
+  std::vector<StructureStringConfig> strings;
+  std::vector<StructureLoad> loads;
+  // Free nodes whose summed vertical (y) displacement gives the frequency measurement and
+  // the peak displacement report; empty = none.
+  std::vector<int> deck_nodes;
+  // sigma_w [Pa] for the stress report; required when a string has an area.
+  std::optional<double> allowed_stress_pa;
+  double gravity_m_s2 = 9.81;  // g, acting in -y when dynamics.gravity_on_structure is set
+
+  // L0 of string `k`: rest_length_m, or rest_ratio x its length at the node positions.
+  double RestLength(int k) const;
+  // Length of the member joining 1-based nodes `ends` at the node positions [m].
+  double Length(const std::array<int, 2>& ends) const;
+};
+
+// Strict parse; throws ConfigError (key path, value, allowed).
+StructureConfig ParseStructureConfig(JsonSection section);
+nlohmann::json ToJson(const StructureConfig& config);
+
+}  // namespace tbridge
