@@ -39,7 +39,6 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
 
   for (const MemberSizing& b : design.bars) m.bars.push_back({b.i, b.j, b.mass, b.length});
 
-  const std::vector<int> bars_at = st.BarsPerNode();
   for (size_t k = 0; k < design.strings.size(); ++k) {
     const MemberSizing& s = design.strings[k];
     DynamicString ds;
@@ -57,29 +56,40 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
       ds.stiffness = mat.youngs_modulus * s.area / ds.rest_length;
     }
     m.string_area.push_back(s.area);
+    m.strings.push_back(ds);
+  }
+  ShareStringMass(m, options.string_mass);
+  if (options.gravity_on_structure) AddStructureWeight(m);
+  return m;
+}
+
+void ShareStringMass(DynamicModel& m, StringMassMode mode) {
+  std::vector<int> bars_at(m.num_nodes(), 0);
+  for (const DynamicBar& b : m.bars) {
+    ++bars_at[b.i];
+    ++bars_at[b.j];
+  }
+  for (const DynamicString& s : m.strings) {
     for (const int end : {s.i, s.j}) {
-      const double half = 0.5 * ds.mass;
-      if (st.fixed[end]) continue;  // carried by the support
-      if (options.string_mass == StringMassMode::kAtNodes ||
-          (options.string_mass == StringMassMode::kOnBars && bars_at[end] == 0)) {
+      const double half = 0.5 * s.mass;
+      if (m.fixed[end]) continue;  // carried by the support
+      if (mode == StringMassMode::kAtNodes || (mode == StringMassMode::kOnBars && bars_at[end] == 0)) {
         m.node_mass(end) += half;
-      } else if (options.string_mass == StringMassMode::kOnBars) {
+      } else if (mode == StringMassMode::kOnBars) {
         for (DynamicBar& b : m.bars) {
           if (b.i == end || b.j == end) b.mass += half / bars_at[end];
         }
       }
     }
-    m.strings.push_back(ds);
   }
+}
 
-  if (options.gravity_on_structure) {
-    for (const DynamicBar& b : m.bars) {
-      m.loads(1, b.i) -= 0.5 * b.mass * m.gravity;
-      m.loads(1, b.j) -= 0.5 * b.mass * m.gravity;
-    }
-    for (int a = 0; a < m.num_nodes(); ++a) m.loads(1, a) -= m.node_mass(a) * m.gravity;
+void AddStructureWeight(DynamicModel& m) {
+  for (const DynamicBar& b : m.bars) {
+    m.loads(1, b.i) -= 0.5 * b.mass * m.gravity;
+    m.loads(1, b.j) -= 0.5 * b.mass * m.gravity;
   }
-  return m;
+  for (int a = 0; a < m.num_nodes(); ++a) m.loads(1, a) -= m.node_mass(a) * m.gravity;
 }
 
 std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const Design& design,

@@ -92,6 +92,14 @@ struct PrestrainReport {
 // Throws ConfigError for a prestrain group that names no string or a negative damping.
 DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options = {});
 
+// Shares the mass of every string of `model` out as BuildDynamicModel describes for `mode`
+// (eq 27 for kOnBars), adding to the bar masses and node_mass; nothing at pinned nodes.
+void ShareStringMass(DynamicModel& model, StringMassMode mode);
+
+// Adds the weight -m g (along y, g = model.gravity) of the bars (half at each end) and the
+// node masses to model.loads.
+void AddStructureWeight(DynamicModel& model);
+
 // The implied stress of each prestrained group of `options` in `model` (built with them).
 std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const Design& design,
                                              const ModelOptions& options);

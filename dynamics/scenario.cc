@@ -1,6 +1,7 @@
 #include "dynamics/scenario.h"
 
 #include "core/error.h"
+#include "dynamics/structure_model.h"
 
 namespace tbridge {
 
@@ -10,8 +11,13 @@ ScenarioResult RunScenario(const Config& config) {
   }
   const DynamicsConfig& dc = *config.dynamics;
   ScenarioResult r;
-  r.design = RunDesign(config);
   const ModelOptions options = ModelOptionsOf(dc);
+  if (config.structure) {
+    r.model = BuildStructureModel(*config.structure, options);
+    r.simulation = Simulate(r.model, dc);
+    return r;
+  }
+  r.design = RunDesign(config);
   r.model = BuildDynamicModel(r.design, options);
   r.simulation = Simulate(r.model, dc, ReportPrestrain(r.model, r.design, options));
   return r;

@@ -1,4 +1,5 @@
-// One dynamic scenario end to end: config -> design -> dynamic model -> simulation.
+// One dynamic scenario end to end: config -> design -> dynamic model -> simulation, or, for a
+// custom scene, config -> structure model -> simulation.
 #pragma once
 
 #include <vector>
@@ -11,13 +12,14 @@
 namespace tbridge {
 
 struct ScenarioResult {
-  Design design;
+  Design design;  // empty for a "structure" config
   DynamicModel model;
   SimulationResult simulation;
 };
 
 // Throws ConfigError when `config` has no "dynamics" section (or a bad one), ModelError when
-// the design or the run fails (see RunDesign and Simulate).
+// the design or the run fails (see RunDesign and Simulate). A "structure" config skips the
+// design and builds its model with BuildStructureModel.
 ScenarioResult RunScenario(const Config& config);
 
 }  // namespace tbridge

@@ -1,5 +1,6 @@
 // `tbridge modes CONFIG.json -o OUT.json [--count K] [--quiet]`: the linearised vibration
-// modes of a designed bridge about its static equilibrium (dynamics/modal.h).
+// modes of a designed bridge, or of a custom "structure", about its static equilibrium
+// (dynamics/modal.h).
 
 #include <cstdio>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "dynamics/structure_model.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 
@@ -31,9 +33,11 @@ const CommandSpec& ModesSpec() {
       {{{"-o", "--output"}, "OUT.json", "where to write the modes, a JSON file", true},
        {{"-k", "--count"}, "K", "mode shapes to write, lowest first (default 6; 0 = none)", false},
        {{"-q", "--quiet"}, "", "do not print the frequency table", false}},
-      "Designs the bridge of CONFIG.json, builds its dynamic model (string masses on the bars,\n"
-      "eq. 27, unless a \"dynamics\" section says otherwise) and writes every linearised\n"
-      "natural frequency about the static equilibrium, with the bar lengths held, to OUT.json:\n"
+      "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
+      "model (string masses on the bars, eq. 27, unless a \"dynamics\" section says otherwise)\n"
+      "and writes every linearised natural frequency about the static equilibrium, with the bar\n"
+      "lengths held, to OUT.json (a structure out of equilibrium is linearised where it stands\n"
+      "and its force imbalance reported as equilibrium_residual_N):\n"
       "omega [rad/s], f [Hz], T [s], the symmetry about mid-span, the shapes of the first K\n"
       "modes and the largest stable RK4 step."};
   return spec;
@@ -63,7 +67,7 @@ std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model,
   return out;
 }
 
-nlohmann::json ModesToJson(const Design& design, const DynamicModel& model, const ModalResult& result,
+nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, const ModalResult& result,
                            const std::vector<std::optional<SymmetryReport>>& symmetry, int shapes) {
   nlohmann::json modes = nlohmann::json::array();
   bool stable = true;
@@ -90,7 +94,7 @@ nlohmann::json ModesToJson(const Design& design, const DynamicModel& model, cons
     shape_list.push_back({{"index", k + 1}, {"displacements", nodes}});
   }
   nlohmann::json out;
-  out["config"] = ToJson(design.config);
+  out["config"] = ToJson(config);
   out["model"] = {{"dim", model.dim},
                   {"nodes", model.num_nodes()},
                   {"bars", model.bars.size()},
@@ -142,19 +146,20 @@ int RunModesCommand(const std::vector<std::string>& args) {
   const std::string out_path = parsed.Required("-o");
   const int shapes = ParseCount(parsed);
   // Everything that can fail runs before the output file is touched.
-  const Design design = RunDesign(LoadConfig(parsed.positionals[0]));
+  const Config config = LoadConfig(parsed.positionals[0]);
   // A "dynamics" section sets the model (string mass, prestrain, gravity); the paper's
   // model otherwise.
-  const ModelOptions options = design.config.dynamics ? ModelOptionsOf(*design.config.dynamics) : ModelOptions{};
-  const DynamicModel model = BuildDynamicModel(design, options);
+  const ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
+  const DynamicModel model =
+      config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(RunDesign(config), options);
   const ModalResult result = ComputeModes(model);
   const auto symmetry = Symmetries(model, result);
-  WriteFileAtomically(out_path, ModesToJson(design, model, result, symmetry, shapes).dump(2) + "\n");
+  WriteFileAtomically(out_path, ModesToJson(config, model, result, symmetry, shapes).dump(2) + "\n");
   if (!parsed.Flag("-q")) std::cout << ModesTable(result, symmetry, 20) << "wrote " << out_path << "\n";
   return 0;
 }
 
-const CommandRegistrar kRegisterModes("modes", "linearised natural frequencies and mode shapes of a design",
+const CommandRegistrar kRegisterModes("modes", "linearised natural frequencies and mode shapes of a design or structure",
                                       &RunModesCommand);
 
 }  // namespace

@@ -1,5 +1,5 @@
-// `tbridge simulate CONFIG.json -o OUTDIR [--quiet]`: a dynamic scenario of the designed bridge
-// (the config's "dynamics" section). Writes OUTDIR/summary.json and, when nodes are recorded,
+// `tbridge simulate CONFIG.json -o OUTDIR [--quiet]`: a dynamic scenario (the config's
+// "dynamics" section) of the designed bridge or of the config's custom "structure". Writes OUTDIR/summary.json and, when nodes are recorded,
 // OUTDIR/history.csv; both atomically and only after the run succeeded.
 
 #include <cstdio>
@@ -29,8 +29,8 @@ const CommandSpec& SimulateSpec() {
       {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
        {{"-q", "--quiet"}, "", "do not print the summary", false},
        {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.pvd + run_<k>.vtp)", false}},
-      "Designs the bridge of CONFIG.json, builds its dynamic model and runs the scenario of its\n"
-      "\"dynamics\" section (keys in configs/README.md). Writes OUTDIR/summary.json (the resolved\n"
+      "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
+      "model and runs the scenario of its \"dynamics\" section (keys in configs/README.md). Writes OUTDIR/summary.json (the resolved\n"
       "config, frequency, stresses, slack events, bar-length error, energy balance) and\n"
       "OUTDIR/history.csv (t, then x, y[, z] of every recorded node). A run that blows up\n"
       "writes nothing."};
@@ -183,14 +183,18 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
       std::cout << "deck frequency: T = " << s.frequency.period_s << " s, f = " << s.frequency.frequency_hz
                 << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
     }
-    std::cout << "peak deck displacement";
-    for (int d = 0; d < model.dim; ++d) {
-      std::cout << (d > 0 ? ", " : " ") << "xyz"[d] << " " << s.peak_deck_displacement[d] << " m";
+    if (!model.deck_nodes.empty()) {
+      std::cout << "peak deck displacement";
+      for (int d = 0; d < model.dim; ++d) {
+        std::cout << (d > 0 ? ", " : " ") << "xyz"[d] << " " << s.peak_deck_displacement[d] << " m";
+      }
+      std::cout << "\n";
     }
-    std::cout << "\n";
-    std::cout << "max string stress " << s.max_string_stress << " Pa (allowed " << s.allowed_stress << ")"
-              << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "") << "\n"
-              << "slack transitions " << s.slack.total << ", max bar-length error " << s.max_bar_length_error
+    if (s.allowed_stress > 0) {  // a structure without string areas has no stress to report
+      std::cout << "max string stress " << s.max_string_stress << " Pa (allowed " << s.allowed_stress << ")"
+                << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "") << "\n";
+    }
+    std::cout << "slack transitions " << s.slack.total << ", max bar-length error " << s.max_bar_length_error
               << ", energy drift " << s.energy.max_drift << "\n";
     for (const PrestrainReport& p : s.prestrain) {
       std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress << " Pa"
