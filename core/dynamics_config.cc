@@ -84,6 +84,7 @@ DynamicsConfig ParseDynamicsConfig(JsonSection s) {
     d.record.nodes = r.Integers("nodes", d.record.nodes, 1, kMaxNode);
     d.record.every = r.Integer("every", d.record.every, 1, 1 << 30);
     d.record.csv = r.Bool("csv", d.record.csv);
+    d.record.bar_forces = r.Bool("bar_forces", d.record.bar_forces);
     r.Finish();
   }
   {
@@ -132,7 +133,8 @@ nlohmann::json ToJson(const DynamicsConfig& d) {
           {"perturbation", {{"bar_class", d.perturbation.bar_class}, {"delta", d.perturbation.delta}}},
           {"initial", initial},
           {"loads", loads},
-          {"record", {{"nodes", d.record.nodes}, {"every", d.record.every}, {"csv", d.record.csv}}},
+          {"record",
+           {{"nodes", d.record.nodes}, {"every", d.record.every}, {"csv", d.record.csv}, {"bar_forces", d.record.bar_forces}}},
           {"frequency", {{"enabled", d.frequency.enabled}, {"every", d.frequency.every}}},
           {"guard",
            {{"max_bar_length_error", d.guard.max_bar_length_error},

@@ -52,6 +52,9 @@ struct RecordConfig {
   std::vector<int> nodes;  // 1-based nodes whose positions go to the history; empty = none
   int every = 1;           // record every k-th step (and the first); >= 1
   bool csv = true;         // write history.csv (when nodes are recorded)
+  // Peak compression and tension of every bar over the run, into the summary; costs one
+  // extra right-hand side and sparse solve per step (dynamics/simulation.h).
+  bool bar_forces = false;
 };
 
 // Frequency from the deck motion (SPEC.md §9): the summed vertical deck-node displacement,

@@ -34,7 +34,7 @@ std::string Num(double v) {
 template <class System>
 class Monitor {
  public:
-  // `probe`, when given, measures the bar forces (SimulationOutputs::bar_forces).
+  // `probe`, when given, measures the bar forces (record.bar_forces).
   Monitor(const DynamicModel& model, const System& system, const Eigen::VectorXd& y0,
           const DynamicsConfig& config, const ClassKSystem* probe)
       : model_(model), system_(system), config_(config), dim_(model.dim), x0_(y0.head(system.coordinates())),
@@ -514,7 +514,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 }  // namespace
 
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain, const SimulationOutputs& outputs) {
+                          const std::vector<PrestrainReport>& prestrain) {
   const auto wall_start = std::chrono::steady_clock::now();
   const int dim = model.dim, n_n = model.num_nodes();
 
@@ -543,7 +543,7 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   // Bar forces come from the class-k multipliers for either engine; a class-k run could share
   // its system, but a second one keeps the two paths alike and costs only its arrays.
   std::unique_ptr<ClassKSystem> probe;
-  if (outputs.bar_forces) probe = std::make_unique<ClassKSystem>(model, options, timed);
+  if (config.record.bar_forces) probe = std::make_unique<ClassKSystem>(model, options, timed);
   if (engine == "class1") {
     const Class1System system(model, options, timed);
     return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, probe.get(), std::move(result),

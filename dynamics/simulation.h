@@ -72,8 +72,10 @@ struct SimulationSummary {
   std::array<int, 3> peak_deck_node{-1, -1, -1};
   std::array<double, 3> peak_deck_time{0, 0, 0};
   EnergyBalance energy;
-  // Per model bar, only when SimulationOutputs::bar_forces asks: the largest compression and
-  // the largest tension at the start and after the accepted steps [N] (0 if never).
+  // Per model bar, only when record.bar_forces asks: the largest compression and the largest
+  // tension at the start and after the accepted steps [N] (0 if never). Bar forces lambda l
+  // come from the class-k multipliers (the class-1 closed form on a class-1 model) with the
+  // loads of the step just taken: one extra right-hand side and sparse solve per step.
   std::vector<double> peak_bar_compression, peak_bar_tension;
   std::vector<PrestrainReport> prestrain;
   bool has_frequency = false;
@@ -93,15 +95,6 @@ struct SimulationResult {
   double deck_sample_dt = 0;  // [s]
 };
 
-// Measurements beyond the summary's defaults, for callers that need them (the outer loop's
-// capacity check). Each costs per accepted step.
-struct SimulationOutputs {
-  // Bar forces lambda l from the class-k multipliers (the class-1 closed form on a class-1
-  // model) at every accepted state, with the loads of the step just taken: one extra
-  // right-hand side and one sparse solve per step.
-  bool bar_forces = false;
-};
-
 // "auto" resolved (see DynamicsConfig::integrator): "rk4" where `dt` is at most half RK4's
 // stability limit at the state `y` (omega_max by power iteration, dynamics/step_size.h), else
 // "sdirk3". Any other request is returned as it is.
@@ -113,7 +106,6 @@ std::string ResolveIntegrator(const std::string& requested, double dt, OdeSystem
 // above guard.max_energy_growth, or (class k) a singular constraint matrix. The message names the step and time and suggests a smaller dt.
 // `prestrain` reports are copied into the summary.
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain = {},
-                          const SimulationOutputs& outputs = {});
+                          const std::vector<PrestrainReport>& prestrain = {});
 
 }  // namespace tbridge

@@ -23,6 +23,7 @@ DynamicsConfig TravellingLoadScenario(const DynamicModel& model, const Design& d
   run.dt = station_time / per_station;
   run.integrator = config.integrator;
   run.frequency.enabled = false;
+  run.record.bar_forces = true;  // the capacity check
   for (int k = 0; k < stations; ++k) {
     for (int plane = 0; plane < planes; ++plane) {
       run.loads.push_back({k * station_time, (k + 1) * station_time, model.deck_nodes[k + plane * stations] + 1,
@@ -36,9 +37,7 @@ TravellingLoadResult RunTravellingLoad(const DynamicModel& model, const Design& 
                                        const TravellingLoadConfig& config) {
   if (design.bars.size() != model.bars.size()) throw ModelError("travelling load: model and design bars differ");
   const DynamicsConfig run = TravellingLoadScenario(model, design, config);
-  SimulationOutputs outputs;
-  outputs.bar_forces = true;
-  const SimulationSummary s = Simulate(model, run, {}, outputs).summary;
+  const SimulationSummary s = Simulate(model, run).summary;
 
   TravellingLoadResult r;
   r.peak_deck_displacement = s.peak_deck_displacement[1];

@@ -29,7 +29,7 @@ struct TravellingLoadResult {
 
 // The scenario of the run: the moving force load_factor x design.deck.node_load, downward,
 // on deck station k (every plane) for t in [k, k + 1) x duration / stations, on top of the
-// design loads; no frequency measurement, no recording. The step is the largest one <=
+// design loads; bar-force peaks, no frequency measurement, no node history. The step is the largest one <=
 // config.dt that puts a whole number of steps in each station, so the load switches on
 // step boundaries. Throws ModelError when the model has no deck nodes.
 DynamicsConfig TravellingLoadScenario(const DynamicModel& model, const Design& design,

@@ -101,7 +101,8 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
   j["slack"] = {{"transitions", s.slack.total},
                 {"per_string", per_string},
                 {"slack_at_start", s.slack.slack_at_start},
-                {"slack_at_end", s.slack.slack_at_end}};
+                {"slack_at_end", s.slack.slack_at_end},
+                {"strings_ever_slack", s.slack.ever_slack}};
   j["max_bar_length_error"] = s.max_bar_length_error;
   nlohmann::json peak = nlohmann::json::object();
   for (int d = 0; d < model.dim; ++d) {
@@ -111,6 +112,15 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                                       {"time_s", s.peak_deck_time[d]}};
   }
   j["peak_deck_displacement"] = peak;
+  if (!s.peak_bar_compression.empty()) {
+    nlohmann::json bars = nlohmann::json::array();
+    for (size_t k = 0; k < model.bars.size(); ++k) {
+      bars.push_back({{"bar", MemberName(model.bars[k].i, model.bars[k].j)},
+                      {"compression_n", s.peak_bar_compression[k]},
+                      {"tension_n", s.peak_bar_tension[k]}});
+    }
+    j["bar_force_peaks"] = bars;
+  }
   const EnergyBalance& e = s.energy;
   j["energy"] = {{"kinetic_start_j", e.kinetic_start}, {"elastic_start_j", e.elastic_start},
                  {"kinetic_end_j", e.kinetic_end},     {"elastic_end_j", e.elastic_end},

@@ -1,4 +1,4 @@
-// Bar-force peaks of a run (SimulationOutputs::bar_forces) against the static design: a bridge
+// Bar-force peaks of a run (dynamics.record.bar_forces) against the static design: a bridge
 // left at rest in its design equilibrium keeps the bar forces the minimum-mass solve found.
 
 #include <catch2/catch.hpp>
@@ -22,9 +22,8 @@ TEST_CASE("at rest the bar-force peaks are the design's bar forces", "[dynamics]
     run.dt = 1e-5;
     run.integrator = "rk4";
     run.frequency.enabled = false;
-    SimulationOutputs outputs;
-    outputs.bar_forces = true;
-    const SimulationSummary s = Simulate(model, run, {}, outputs).summary;
+    run.record.bar_forces = true;
+    const SimulationSummary s = Simulate(model, run).summary;
     INFO("p = " << p << ", engine " << s.engine);
     CHECK(s.engine == (p == 1 ? "class1" : "classk"));
     REQUIRE(s.peak_bar_compression.size() == design.bars.size());

@@ -1,6 +1,7 @@
 // `tbridge simulate` and `tbridge modes` on a custom scene (a config's "structure" section), as
 // a user runs them: the shipped D-bar, and a bad scene that must be named and write nothing.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -33,6 +34,32 @@ TEST_CASE("simulate: the D-bar scene runs and echoes its structure") {
   CHECK(summary["run"]["engine"] == "classk");
   CHECK(summary["run"]["steps"] == 5000);
   CHECK(test::fs::exists(dir / "out" / "history.csv"));
+}
+
+TEST_CASE("simulate: record.bar_forces puts each bar's force peaks in the summary") {
+  const test::fs::path dir = test::FreshDir("structure_bar_forces");
+  nlohmann::json config = nlohmann::json::parse(test::ReadText(kDBar));
+  config["dynamics"]["record"]["bar_forces"] = true;
+  const test::fs::path path = dir / "dbar_forces.json";
+  std::ofstream(path) << config.dump(2);
+  const test::CliResult r = Run(dir, "simulate", path.string(), dir / "out");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json summary = nlohmann::json::parse(test::ReadText(dir / "out" / "summary.json"));
+  const nlohmann::json& peaks = summary["bar_force_peaks"];
+  REQUIRE(peaks.size() == 4);
+  CHECK(peaks[0]["bar"] == "4-1");
+  double largest = 0;
+  for (const auto& p : peaks) {
+    CHECK(p["compression_n"].get<double>() >= 0);
+    CHECK(p["tension_n"].get<double>() >= 0);
+    largest = std::max({largest, p["compression_n"].get<double>(), p["tension_n"].get<double>()});
+  }
+  // The strings start at 150 N and 100 N (k = 100 N/m, stretched 1.5 m and 1 m): the bars
+  // that hold them apart carry forces of that order.
+  CHECK(largest > 10.0);
+  CHECK(largest < 1e4);
+  CHECK(summary["config"]["dynamics"]["record"]["bar_forces"] == true);
 }
 
 TEST_CASE("modes: the D-bar scene") {
