@@ -3,7 +3,12 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 #include <cmath>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
 #include <mutex>
+#include <thread>
 
 #include "design/min_mass.h"
 
@@ -139,14 +144,63 @@ std::string StatusName(Ipopt::ApplicationReturnStatus s) {
   }
 }
 
-}  // namespace
+// Debian's Ipopt factorises with the sequential MUMPS, whose Fortran modules keep state
+// between calls: two solves at once crash it, and so can solves taken in turn by different
+// threads (seen under the address sanitizer). So one thread, started on first use, runs every
+// solve in order of arrival, and any caller may run designs on several threads.
+class SolverThread {
+ public:
+  static SolverThread& Instance() {
+    static SolverThread thread;
+    return thread;
+  }
 
-SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
-                             Eigen::VectorXd& x) {
-  // Debian's Ipopt uses the sequential MUMPS, which keeps global state: two solves at once
-  // crash it. Solves are serialised here, so any caller may run designs on several threads.
-  static std::mutex solver_mutex;
-  const std::lock_guard<std::mutex> lock(solver_mutex);
+  // Runs `job` on the solver thread and returns its result (or rethrows its exception).
+  SolverOutcome Run(const std::function<SolverOutcome()>& job) {
+    std::packaged_task<SolverOutcome()> task(job);
+    std::future<SolverOutcome> result = task.get_future();
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      queue_.push_back(&task);
+    }
+    wake_.notify_one();
+    return result.get();
+  }
+
+  ~SolverThread() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_one();
+    worker_.join();
+  }
+
+ private:
+  SolverThread() : worker_([this] { Loop(); }) {}
+
+  void Loop() {
+    for (;;) {
+      std::packaged_task<SolverOutcome()>* task = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
+        if (queue_.empty()) return;  // stopping, nothing left
+        task = queue_.front();
+        queue_.pop_front();
+      }
+      (*task)();  // the caller waits on its future, so the task outlives this call
+    }
+  }
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::packaged_task<SolverOutcome()>*> queue_;
+  bool stop_ = false;
+  std::thread worker_;  // last: starts once the members above exist
+};
+
+SolverOutcome SolveHere(const MinMassProblem& problem, const SolverOptions& options, Eigen::VectorXd& x) {
   Ipopt::SmartPtr<MinMassTnlp> nlp = new MinMassTnlp(problem, x);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", options.verbose ? 5 : 0);
@@ -173,6 +227,13 @@ SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions&
   out.objective = problem.Objective(x);
   out.message = out.success ? "optimal" : "Ipopt stopped with " + out.status;
   return out;
+}
+
+}  // namespace
+
+SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
+                             Eigen::VectorXd& x) {
+  return SolverThread::Instance().Run([&] { return SolveHere(problem, options, x); });
 }
 
 }  // namespace tbridge

@@ -106,7 +106,8 @@ struct SolverOptions {
 
 // Adapters: each is the only file that includes its solver's headers. `x` is the start on
 // entry and the solution on return. Both may be called from several threads; Ipopt solves
-// then run one at a time (its sequential MUMPS is not reentrant).
+// then run one at a time, all on one thread of the adapter (its sequential MUMPS is not
+// reentrant).
 SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
                              Eigen::VectorXd& x);
 SolverOutcome SolveWithNlopt(const MinMassProblem& problem, const SolverOptions& options,
