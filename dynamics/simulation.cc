@@ -252,7 +252,7 @@ struct Sampler {
 
 std::string ResolveIntegrator(const std::string& requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y) {
   if (requested != "auto") return requested;
-  return dt <= 0.5 * Rk4StepLimit(HighestFrequency(ode, y).omega_max) ? "rk4" : "sdirk3";
+  return dt <= kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max) ? "rk4" : "sdirk3";
 }
 
 int MaxBarsAtANode(const DynamicModel& model) {

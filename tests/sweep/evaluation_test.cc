@@ -123,7 +123,7 @@ TEST_CASE("the implicit travelling-load run agrees with RK4 at a resolving step"
   t.dt = 2e-5;  // a third of RK4's limit at n = 4 (1.4e-4 s, BENCHMARKS.md)
   const TravellingLoadResult explicit_run = RunTravellingLoad(model, d, t);
   t.integrator = "auto";
-  t.dt = 5e-4;  // above half RK4's limit: auto picks SDIRK3
+  t.dt = 5e-4;  // 3.5x RK4's limit: auto picks SDIRK3
   const TravellingLoadResult implicit_run = RunTravellingLoad(model, d, t);
   CHECK(implicit_run.integrator == "sdirk3");
   CHECK(implicit_run.steps * 20 < explicit_run.steps);
