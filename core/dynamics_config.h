@@ -76,8 +76,9 @@ struct DynamicsConfig {
   double duration = 1.0;              // simulated time [s]
   double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
   // "auto" | "rk4" | "dopri5" | "sdirk3". "auto": RK4 when dt is at most 0.9 of its stability
-  // limit 2 sqrt(2)/omega_max (omega_max of the initial state, by power iteration), else the
-  // implicit SDIRK3 at the same dt (BENCHMARKS.md, work-precision, has the evidence).
+  // limit 2 sqrt(2)/omega_max (omega_max of the initial state, by power iteration), RK4
+  // sub-steps while up to 40 per step serve, else the implicit SDIRK3 at the same dt
+  // (ResolveIntegrator in dynamics/simulation.h; BENCHMARKS.md has the evidence).
   std::string integrator = "auto";
   // "auto": the class-1 closed form when no node carries two bars, else class k;
   // "class1" (throws for a class-k bridge) | "classk" (Lagrange multipliers, any bridge)

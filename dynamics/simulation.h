@@ -54,6 +54,7 @@ struct EnergyBalance {
 struct SimulationSummary {
   std::string integrator;
   std::string engine;     // "class1" | "classk" (EngineFor)
+  int substeps = 1;       // RK4 sub-steps per step ("auto" beyond RK4's limit)
   int steps = 0;          // accepted steps
   int rejected = 0;       // dopri5 only
   long evaluations = 0;   // right-hand side calls
@@ -100,11 +101,23 @@ struct SimulationResult {
 // up to 0.92 of it, on every scene, 0.1 m pushes with slack chatter included; and between
 // half the limit and the limit it beat SDIRK3 (n = 8: 3.4 s against 43 s).
 inline constexpr double kAutoRk4Fraction = 0.9;
+// One SDIRK3 step costs about as much as this many RK4 steps (BENCHMARKS.md, Cost per step:
+// ~12 right-hand sides plus sparse solves, 36-50 RK4 steps measured).
+inline constexpr int kSdirkStepInRk4Steps = 40;
 
-// "auto" resolved (see DynamicsConfig::integrator): "rk4" where `dt` is at most
-// kAutoRk4Fraction of RK4's stability limit at the state `y` (omega_max by power iteration,
-// dynamics/step_size.h), else "sdirk3". Any other request is returned as it is.
-std::string ResolveIntegrator(const std::string& requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y);
+struct IntegratorChoice {
+  std::string name;   // "rk4" | "dopri5" | "sdirk3"
+  int substeps = 1;   // RK4 steps per step of dt (auto only)
+};
+
+// "auto" resolved (see DynamicsConfig::integrator), with L = kAutoRk4Fraction x RK4's
+// stability limit at the state `y` (omega_max by power iteration, dynamics/step_size.h):
+// - dt <= L: RK4 at dt;
+// - else, while m = ceil(dt / L) RK4 sub-steps cost no more than one SDIRK3 step
+//   (m <= kSdirkStepInRk4Steps): RK4 with m sub-steps per step, as accurate as RK4 gets;
+// - else SDIRK3 at dt, which damps what it does not resolve.
+// Any other request is returned as it is, with one sub-step.
+IntegratorChoice ResolveIntegrator(const std::string& requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y);
 
 // Runs `config` on `model` with the engine EngineFor picks. Throws ConfigError for initial
 // conditions, loads or an engine that do not fit the model, ModelError when the run blows up:

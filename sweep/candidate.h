@@ -47,7 +47,7 @@ struct CandidateRow {
   std::optional<double> peak_stress_ratio;       // peak string stress / sigma_w
   std::optional<int> slack_strings;
   std::optional<double> peak_bar_capacity_ratio;
-  std::optional<std::string> run_integrator;  // "rk4" | "sdirk3": what the travelling load ran with
+  std::optional<std::string> run_integrator;  // "rk4" | "rk4xM" | "sdirk3": what the travelling load ran with
   bool feasible = false;
   std::vector<std::string> violated;  // constraint names, in the order above
 };

@@ -38,12 +38,12 @@ struct SweepConstraints {
 struct TravellingLoadConfig {
   double duration = 0.5;     // [s], [1e-6, 100]
   // Largest step [s], [1e-9, 1e-2], at most duration; the step taken is the largest <= dt
-  // that divides a station's time. At 1e-4 s the implicit integrator gives the deck peak to
-  // 0.2 % and member force peaks to 4 % at n = 7-8 (BENCHMARKS.md, Sweep timing); 5e-4 s is
-  // a 4x cheaper screening step (deck peak within 6 %, string stress peaks 10-20 % low).
+  // that divides a station's time. At 1e-4 s "auto" runs RK4 (with sub-steps) up to n = 9;
+  // 5e-4 s is a screening step that leaves n >= 7-8 to SDIRK3 (deck peak within 3.4 %,
+  // string stress peaks 22 % low at n = 8; BENCHMARKS.md, Sweep timing).
   double dt = 1e-4;
-  // "auto" | "rk4" | "sdirk3", as dynamics.integrator: "auto" is RK4 where dt is at most half
-  // its stability limit, else SDIRK3 (which damps the modes far above 1/dt).
+  // "auto" | "rk4" | "sdirk3", as dynamics.integrator: "auto" is RK4 (with up to 40
+  // sub-steps) where that is stable, else SDIRK3 (which damps the modes far above 1/dt).
   std::string integrator = "auto";
   double load_factor = 1.0;  // moving load / design node load [-], (0, 100]
   std::string string_mass = "bars";  // as dynamics.string_mass

@@ -46,7 +46,7 @@ TravellingLoadResult RunTravellingLoad(const DynamicModel& model, const Design& 
   r.slack_strings = s.slack.ever_slack;
   r.steps = s.steps;
   r.dt = run.dt;
-  r.integrator = s.integrator;
+  r.integrator = s.substeps > 1 ? s.integrator + "x" + std::to_string(s.substeps) : s.integrator;
   r.engine = s.engine;
   const double sigma_w = model.allowed_stress;
   const double sf_buckling = design.config.design.buckling_safety_factor;

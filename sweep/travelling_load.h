@@ -23,7 +23,7 @@ struct TravellingLoadResult {
   double peak_bar_capacity_ratio = 0;
   long steps = 0;
   double dt = 0;           // the step taken [s]: the largest <= config.dt that divides a station
-  std::string integrator;  // "rk4" | "sdirk3", as resolved
+  std::string integrator;  // "rk4" | "rk4xM" (M sub-steps per step) | "sdirk3", as resolved
   std::string engine;      // "class1" | "classk"
 };
 

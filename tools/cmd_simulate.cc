@@ -77,7 +77,8 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                 {"moving_mass_kg", MovingMass(model)},
                 {"bar_length_classes", classes},
                 {"members", ModelMembersJson(model)}};
-  j["run"] = {{"integrator", s.integrator}, {"engine", s.engine}, {"steps", s.steps}, {"rejected_steps", s.rejected},
+  j["run"] = {{"integrator", s.integrator}, {"substeps", s.substeps}, {"engine", s.engine}, {"steps", s.steps},
+              {"rejected_steps", s.rejected},
               {"evaluations", s.evaluations}, {"duration_s", s.duration}, {"wall_s", s.wall_seconds}};
   if (s.has_frequency) {
     j["frequency"] = {{"method", "dominant spectral peak of the summed vertical deck displacement"},
@@ -187,8 +188,9 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   if (csv) WriteFileAtomically(out_dir + "/history.csv", history);
   if (!parsed.Flag("-q")) {
     const SimulationSummary& s = result.summary;
-    std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator << ", " << s.engine << ", "
-              << s.wall_seconds << " s)\n";
+    std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator;
+    if (s.substeps > 1) std::cout << " x " << s.substeps << " sub-steps";
+    std::cout << ", " << s.engine << ", " << s.wall_seconds << " s)\n";
     if (s.has_frequency) {
       std::cout << "deck frequency: T = " << s.frequency.period_s << " s, f = " << s.frequency.frequency_hz
                 << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";

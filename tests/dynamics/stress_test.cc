@@ -132,14 +132,14 @@ TEST_CASE("n = 12: design and a short run with the automatic integrator", "[stre
   Config c;
   c.bridge.n = 12;
   const DynamicModel m = BuildDynamicModel(RunDesign(c));
-  // From the design state, under the design loads: 1e-5 s is ~25x RK4's limit here, so "auto"
-  // must take the implicit path, and the designed equilibrium must hold. (A push of the
-  // central bar sets thousands of 1e-7 m-prestretched strings chattering; SDIRK3's Newton
-  // does not converge there above ~RK4's limit: BENCHMARKS.md.)
-  const SimulationSummary s = Simulate(m, Run(2e-3, 1e-5, 0.0, "auto")).summary;
+  // From the design state, under the design loads: 1e-4 s is ~250x RK4's limit here (more
+  // RK4 sub-steps than an SDIRK3 step costs), so "auto" must take the implicit path, and the
+  // designed equilibrium must hold. (A push of the central bar sets strings chattering, where
+  // the history is chaotic from n = 9 on and SDIRK3 no fallback: BENCHMARKS.md.)
+  const SimulationSummary s = Simulate(m, Run(2e-3, 1e-4, 0.0, "auto")).summary;
   Describe("n = 12", s);
   CHECK(s.integrator == "sdirk3");
-  CHECK(s.steps == 200);
+  CHECK(s.steps == 20);
   // At rest only the design's equilibrium residual and Newton's tolerance move anything:
   // measured 1.3e-6 relative; a hundredth of the default guard bounds it.
   CHECK(s.max_bar_length_error < 1e-5);
