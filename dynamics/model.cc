@@ -1,5 +1,6 @@
 #include "dynamics/model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -113,6 +114,17 @@ std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const De
     out.push_back(r);
   }
   return out;
+}
+
+int MaxBarsAtANode(const DynamicModel& model) {
+  std::vector<int> count(model.num_nodes(), 0);
+  int most = 0;
+  for (const DynamicBar& b : model.bars) {
+    for (const int a : {b.i, b.j}) {
+      if (a >= 0 && a < model.num_nodes()) most = std::max(most, ++count[a]);
+    }
+  }
+  return most;
 }
 
 double MovingMass(const DynamicModel& model) {

@@ -104,6 +104,10 @@ void AddStructureWeight(DynamicModel& model);
 std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const Design& design,
                                              const ModelOptions& options);
 
+// The largest number of bars meeting at a node (0 without bars); end indices out of range
+// are skipped (the engines reject them with a message).
+int MaxBarsAtANode(const DynamicModel& model);
+
 // Mass that moves: bars (with their string share) plus node point masses [kg]. For the
 // paper's n = 1 bridge with kOnBars this is 141.94 kg (SPEC.md §8).
 double MovingMass(const DynamicModel& model);

@@ -259,17 +259,6 @@ IntegratorChoice ResolveIntegrator(const std::string& requested, double dt, OdeS
   return {"sdirk3", 1};
 }
 
-int MaxBarsAtANode(const DynamicModel& model) {
-  std::vector<int> count(model.num_nodes(), 0);
-  int most = 0;
-  for (const DynamicBar& b : model.bars) {
-    for (const int a : {b.i, b.j}) {
-      if (a >= 0 && a < model.num_nodes()) most = std::max(most, ++count[a]);
-    }
-  }
-  return most;
-}
-
 std::string EngineFor(const DynamicModel& model, const DynamicsConfig& config) {
   const int k = MaxBarsAtANode(model);
   if (config.engine == "classk") return "classk";

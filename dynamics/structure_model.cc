@@ -65,12 +65,10 @@ DynamicModel BuildStructureModel(const StructureConfig& c, const ModelOptions& o
   m.gravity = c.gravity_m_s2;
   for (const int node : c.deck_nodes) m.deck_nodes.push_back(node - 1);
 
-  std::vector<int> bars_at(n_n, 0);
   for (const StructureBarConfig& b : c.bars) {
     m.bars.push_back({b.nodes[0] - 1, b.nodes[1] - 1, b.mass_kg, c.Length(b.nodes)});
-    for (const int end : b.nodes)
-      m.tensegrity_class = std::max(m.tensegrity_class, ++bars_at[end - 1]);
   }
+  m.tensegrity_class = std::max(1, MaxBarsAtANode(m));
   for (size_t k = 0; k < c.strings.size(); ++k) {
     const StructureStringConfig& s = c.strings[k];
     DynamicString ds;
