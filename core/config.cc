@@ -42,7 +42,7 @@ DesignConfig ParseDesign(JsonSection s) {
       "transverse_string_min_radius", d.transverse_string_min_radius, Range::Closed(0.0, 1.0));
   d.bar_min_radius = s.Number("bar_min_radius", d.bar_min_radius, Range::Closed(0.0, 1.0));
   d.gravity = s.Number("gravity", d.gravity, Range::Closed(0.0, 100.0));
-  d.solver = s.Choice("solver", d.solver, {"ipopt", "nlopt"});
+  d.solver = s.Choice("solver", d.solver, {"auto", "direct", "ipopt", "nlopt"});
   d.tolerance = s.Number("tolerance", d.tolerance, Range::Closed(1e-14, 1e-3));
   d.max_iterations = s.Integer("max_iterations", d.max_iterations, 1, 1000000);
   s.Finish();

@@ -13,7 +13,7 @@
 namespace tbridge {
 
 struct BridgeConfig {
-  int n = 2;                // complexity: self-similar iterations, 1..14
+  int n = 2;                // complexity: self-similar iterations, 1..16
   int p = 1;                // bars per substructure module, 1..8
   double beta_deg = 10.0;   // aspect angle [deg], (0, 90)
   double span = 12.0;       // L [m]
@@ -32,7 +32,10 @@ struct DesignConfig {
   double transverse_string_min_radius = 0.005;
   double bar_min_radius = 0.0;           // [m]; 0 = no minimum
   double gravity = 9.81;                 // g [m/s^2], for the deck self-weight
-  std::string solver = "ipopt";          // "ipopt" | "nlopt"
+  // "auto" | "direct" | "ipopt" | "nlopt": how the self-stress coefficients are found. "direct"
+  // applies when there is at most one self-stress and it loads no bar (every planar bridge);
+  // "auto" takes it there and Ipopt elsewhere (the 3D bridge).
+  std::string solver = "auto";
   double tolerance = 1e-10;              // relative optimality tolerance of the solver
   int max_iterations = 3000;             // solver iteration limit
 };
@@ -49,7 +52,7 @@ struct Config {
 };
 
 // Allowed structural limits checked by ParseConfig (exposed for messages and tests).
-inline constexpr int kMaxComplexity = 14;
+inline constexpr int kMaxComplexity = 16;
 inline constexpr int kMaxBarsPerModule = 8;
 
 // Parses a whole config; throws ConfigError (key, value, allowed) on any bad or unknown key.

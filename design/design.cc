@@ -6,6 +6,8 @@
 
 #include "core/error.h"
 #include "design/equilibrium.h"
+#include "design/equilibrium_basis.h"
+#include "design/reduced_min_mass.h"
 
 namespace tbridge {
 
@@ -13,6 +15,40 @@ namespace {
 
 MemberKind StringKind(const Member& m) {
   return m.group == "deck" ? MemberKind::kDeckString : MemberKind::kString;
+}
+
+// The rank decision and the loads' reach: a sound basis leaves A N at rounding (entries of A
+// are direction cosines, so ~1e-12 is far above rounding and far below any real stress state).
+void CheckBasis(const EquilibriumBasis& basis) {
+  if (basis.basis_residual > 1e-9) {
+    throw ModelError("equilibrium factorisation: the self-stress basis misses equilibrium by " +
+                     std::to_string(basis.basis_residual) + " (rank decision unreliable)");
+  }
+  // Rounding of A x_p grows with the largest member force it sums, not with the node load.
+  const double force_scale = basis.particular.size() ? basis.particular.cwiseAbs().maxCoeff() : 0.0;
+  if (basis.load_residual > 1e-9 * force_scale) {
+    throw ModelError("no equilibrium: the loads excite a mechanism of the bridge (unbalanced force " +
+                     std::to_string(basis.load_residual) + " N)");
+  }
+}
+
+// design.solver: "auto" takes the direct solve wherever it applies, else Ipopt.
+SolverOutcome SolveSelfStress(const ReducedMinMassProblem& problem, const DesignConfig& config,
+                              Eigen::VectorXd& x) {
+  const bool direct = config.solver == "direct" || (config.solver == "auto" && problem.DirectApplies());
+  if (direct) {
+    if (!problem.DirectApplies()) {
+      throw ConfigError("design.solver", "direct",
+                        "\"direct\" needs at most one self-stress state loading no bar; this bridge has " +
+                            std::to_string(problem.num_self_stresses()) + " states with " +
+                            std::to_string(problem.num_active_bars()) +
+                            " bars in them: use \"auto\", \"ipopt\" or \"nlopt\"");
+    }
+    return problem.SolveDirect(x);
+  }
+  x = problem.StartingPoint();
+  const SolverOptions options{config.tolerance, config.max_iterations, false};
+  return config.solver == "nlopt" ? SolveWithNlopt(problem, options, x) : SolveWithIpopt(problem, options, x);
 }
 
 }  // namespace
@@ -36,53 +72,62 @@ const MemberSizing* FindMember(const Design& d, const std::string& name) {
   return nullptr;
 }
 
-Design RunDesign(const Config& config) {
+DesignInputs PrepareDesign(const Config& config) {
   if (config.structure) {
     throw ConfigError("structure", "(custom scene)",
                       "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
                       "or tbridge modes");
   }
-  Design d;
-  d.config = config;
-  d.topology = MakeBridge(config.bridge);
-  const Structure& s = d.topology.structure;
-  d.deck = ComputeDeck(config.bridge, config.material, config.design);
-
-  d.loads = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
-  for (int v : d.topology.deck_nodes) d.loads(1, v) = -d.deck.node_load;
+  DesignInputs in;
+  in.topology = MakeBridge(config.bridge);
+  const Structure& s = in.topology.structure;
+  in.deck = ComputeDeck(config.bridge, config.material, config.design);
+  in.loads = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
+  for (int v : in.topology.deck_nodes) in.loads(1, v) = -in.deck.node_load;
 
   const double sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
-  const double deck_min_area =
-      std::numbers::pi * config.design.deck_string_min_radius * config.design.deck_string_min_radius;
-  const double transverse_min_area = std::numbers::pi *
-                                     config.design.transverse_string_min_radius *
-                                     config.design.transverse_string_min_radius;
-  const double bar_min_area =
-      std::numbers::pi * config.design.bar_min_radius * config.design.bar_min_radius;
-
-  MinMassSettings settings;
+  auto circle = [](double r) { return std::numbers::pi * r * r; };
+  MinMassSettings& settings = in.settings;
   settings.working_stress = sigma_w;
   settings.buckling_safety_factor = config.design.buckling_safety_factor;
   settings.material = config.material;
-  settings.bar_min_area.assign(s.num_bars(), bar_min_area);
+  settings.bar_min_area.assign(s.num_bars(), circle(config.design.bar_min_radius));
   settings.string_min_tension.resize(s.num_strings());
-  std::vector<double> string_min_area(s.num_strings(), 0.0);
+  in.string_min_area.assign(s.num_strings(), 0.0);
   for (int k = 0; k < s.num_strings(); ++k) {
     // Deck strings have a minimum radius and are prestressed at the working stress.
-    if (StringKind(s.strings[k]) == MemberKind::kDeckString) string_min_area[k] = deck_min_area;
+    if (StringKind(s.strings[k]) == MemberKind::kDeckString) {
+      in.string_min_area[k] = circle(config.design.deck_string_min_radius);
+    }
     // Transverse strings (3D bridge) likewise: unloaded by symmetric vertical loads, they
     // stiffen the coupling only through this prestress.
-    if (s.strings[k].group == "transverse") string_min_area[k] = transverse_min_area;
-    settings.string_min_tension[k] = sigma_w * string_min_area[k];
+    if (s.strings[k].group == "transverse") in.string_min_area[k] = circle(config.design.transverse_string_min_radius);
+    settings.string_min_tension[k] = sigma_w * in.string_min_area[k];
   }
+  return in;
+}
 
-  MinMassProblem problem(s, d.loads, settings);
-  Eigen::VectorXd x = problem.StartingPoint();
-  SolverOptions options{config.design.tolerance, config.design.max_iterations, false};
-  d.solver = config.design.solver == "nlopt" ? SolveWithNlopt(problem, options, x)
-                                             : SolveWithIpopt(problem, options, x);
-  const Eigen::VectorXd forces = problem.MemberForces(x);
-  const Eigen::VectorXd residual = EquilibriumResidual(problem.equilibrium(), forces, d.loads);
+Design RunDesign(const Config& config) {
+  DesignInputs in = PrepareDesign(config);
+  Design d;
+  d.config = config;
+  d.topology = std::move(in.topology);
+  d.deck = in.deck;
+  d.loads = std::move(in.loads);
+  const Structure& s = d.topology.structure;
+  const MinMassSettings& settings = in.settings;
+  const double sigma_w = settings.working_stress;
+  const std::vector<double>& string_min_area = in.string_min_area;
+
+  const EquilibriumSystem eq = BuildEquilibrium(s);
+  const EquilibriumBasis basis = FactorEquilibrium(eq, FreeLoads(eq, d.loads));
+  d.self_stress_states = basis.self_stress_states();
+  CheckBasis(basis);
+  const ReducedMinMassProblem problem(s, basis, settings);
+  Eigen::VectorXd x;
+  d.solver = SolveSelfStress(problem, config.design, x);
+  const Eigen::VectorXd forces = problem.MemberForces(x, 0);
+  const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   const double load_scale = problem.ForceScale();
   if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
@@ -96,7 +141,7 @@ Design RunDesign(const Config& config) {
   }
 
   for (int b = 0; b < s.num_bars(); ++b) {
-    MemberSizing m = SizeBar(s.Length(s.bars[b]), forces[b], bar_min_area, sigma_w,
+    MemberSizing m = SizeBar(s.Length(s.bars[b]), forces[b], settings.bar_min_area[b], sigma_w,
                              config.design.buckling_safety_factor, config.material);
     m.kind = MemberKind::kBar;
     m.i = s.bars[b].i;
@@ -118,9 +163,6 @@ Design RunDesign(const Config& config) {
   d.mass.deck_beams = d.deck.beams_mass;
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
   d.mass.total = d.mass.structure + d.mass.deck_beams;
-  if (s.num_bars() + s.num_strings() <= 400) {
-    d.self_stress_states = CountSelfStresses(problem.equilibrium());
-  }
   return d;
 }
 

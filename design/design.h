@@ -35,6 +35,17 @@ struct Design {
   int self_stress_states = -1;      // n_b + n_s - rank(A); -1 when not computed (large n)
 };
 
+// What the minimum-mass problem of a bridge config is made of: the drawn bridge, its deck and
+// design loads, and the per-member floors. Throws ConfigError for bad parameters.
+struct DesignInputs {
+  BridgeTopology topology;
+  Deck deck;
+  Eigen::Matrix3Xd loads;               // 3 x n_n design loads [N]
+  MinMassSettings settings;             // sigma_w, buckling factor, tension and area floors
+  std::vector<double> string_min_area;  // per string [m^2]: deck and transverse minimum sections
+};
+DesignInputs PrepareDesign(const Config& config);
+
 // Runs the whole design. Throws ConfigError for bad parameters and ModelError when no
 // design is found (the message carries the solver's status).
 Design RunDesign(const Config& config);

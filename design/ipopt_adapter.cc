@@ -1,4 +1,4 @@
-// Thin Ipopt adapter for MinMassProblem. The only file that includes Ipopt headers.
+// Thin Ipopt adapter for an NlpProblem. The only file that includes Ipopt headers.
 #include <IpIpoptApplication.hpp>
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
@@ -10,7 +10,7 @@
 #include <mutex>
 #include <thread>
 
-#include "design/min_mass.h"
+#include "design/nlp.h"
 
 namespace tbridge {
 
@@ -19,12 +19,11 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
-class MinMassTnlp : public Ipopt::TNLP {
+class NlpTnlp : public Ipopt::TNLP {
  public:
-  MinMassTnlp(const MinMassProblem& problem, Eigen::VectorXd& x) : p_(problem), x_(x) {
+  NlpTnlp(const NlpProblem& problem, Eigen::VectorXd& x) : p_(problem), x_(x) {
     p_.VariableBounds(x_lo_, x_hi_);
     p_.ConstraintBounds(g_lo_, g_hi_);
-    hess_ = p_.HessianPattern();
   }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_h,
@@ -32,7 +31,7 @@ class MinMassTnlp : public Ipopt::TNLP {
     n = p_.num_variables();
     m = p_.num_constraints();
     nnz_jac = static_cast<Index>(p_.JacobianPattern().size());
-    nnz_h = static_cast<Index>(hess_.size());
+    nnz_h = static_cast<Index>(p_.HessianPattern().size());
     style = C_STYLE;
     return true;
   }
@@ -63,8 +62,9 @@ class MinMassTnlp : public Ipopt::TNLP {
     return true;
   }
 
-  bool eval_grad_f(Index n, const Number*, bool, Number* grad) override {
-    Eigen::Map<Eigen::VectorXd>(grad, n) = p_.ObjectiveGradient();
+  bool eval_grad_f(Index n, const Number* x, bool, Number* grad) override {
+    Eigen::Map<Eigen::VectorXd> g(grad, n);
+    p_.ObjectiveGradient(Eigen::Map<const Eigen::VectorXd>(x, n), g);
     return true;
   }
 
@@ -88,15 +88,16 @@ class MinMassTnlp : public Ipopt::TNLP {
     return true;
   }
 
-  bool eval_h(Index, const Number*, bool, Number, Index, const Number* lambda, bool, Index,
-              Index* rows, Index* cols, Number* values) override {
+  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool,
+              Index, Index* rows, Index* cols, Number* values) override {
     if (values == nullptr) {
-      for (size_t k = 0; k < hess_.size(); ++k) {
-        rows[k] = hess_[k].first;
-        cols[k] = hess_[k].second;
+      const auto& pattern = p_.HessianPattern();
+      for (size_t k = 0; k < pattern.size(); ++k) {
+        rows[k] = pattern[k].first;
+        cols[k] = pattern[k].second;
       }
     } else {
-      p_.HessianValues(lambda, values);
+      p_.HessianValues(Eigen::Map<const Eigen::VectorXd>(x, n), obj_factor, lambda, values);
     }
     return true;
   }
@@ -115,10 +116,9 @@ class MinMassTnlp : public Ipopt::TNLP {
  private:
   static double Finite(double v) { return std::isfinite(v) ? v : (v > 0 ? 2e19 : -2e19); }
 
-  const MinMassProblem& p_;
+  const NlpProblem& p_;
   Eigen::VectorXd& x_;
   Eigen::VectorXd x_lo_, x_hi_, g_lo_, g_hi_;
-  std::vector<std::pair<int, int>> hess_;
   Ipopt::SolverReturn final_status_ = Ipopt::INTERNAL_ERROR;
   double objective_ = 0;
 };
@@ -200,8 +200,8 @@ class SolverThread {
   std::thread worker_;  // last: starts once the members above exist
 };
 
-SolverOutcome SolveHere(const MinMassProblem& problem, const SolverOptions& options, Eigen::VectorXd& x) {
-  Ipopt::SmartPtr<MinMassTnlp> nlp = new MinMassTnlp(problem, x);
+SolverOutcome SolveHere(const NlpProblem& problem, const SolverOptions& options, Eigen::VectorXd& x) {
+  Ipopt::SmartPtr<NlpTnlp> nlp = new NlpTnlp(problem, x);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetIntegerValue("print_level", options.verbose ? 5 : 0);
   app->Options()->SetStringValue("sb", "yes");  // no banner
@@ -231,7 +231,7 @@ SolverOutcome SolveHere(const MinMassProblem& problem, const SolverOptions& opti
 
 }  // namespace
 
-SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
+SolverOutcome SolveWithIpopt(const NlpProblem& problem, const SolverOptions& options,
                              Eigen::VectorXd& x) {
   return SolverThread::Instance().Run([&] { return SolveHere(problem, options, x); });
 }

@@ -63,6 +63,7 @@ MinMassProblem::MinMassProblem(const Structure& s, const Eigen::Matrix3Xd& loads
     jac_pattern_.emplace_back(m + nb_ + b, bar_area_index(b));
     jac_pattern_.emplace_back(m + nb_ + b, bar_force_index(b));
   }
+  for (int b = 0; b < nb_; ++b) hess_pattern_.emplace_back(bar_area_index(b), bar_area_index(b));
 }
 
 void MinMassProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
@@ -132,13 +133,8 @@ void MinMassProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x,
   }
 }
 
-std::vector<std::pair<int, int>> MinMassProblem::HessianPattern() const {
-  std::vector<std::pair<int, int>> p;
-  for (int b = 0; b < nb_; ++b) p.emplace_back(bar_area_index(b), bar_area_index(b));
-  return p;
-}
-
-void MinMassProblem::HessianValues(const double* lambda, double* values) const {
+void MinMassProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, double,
+                                   const double* lambda, double* values) const {
   const int first_buckling = num_equalities() + nb_;
   for (int b = 0; b < nb_; ++b) values[b] = 2.0 * lambda[first_buckling + b];
 }

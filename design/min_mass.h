@@ -1,4 +1,6 @@
-// The minimum-mass problem, independent of any solver (SPEC.md §4).
+// The full minimum-mass problem, independent of any solver (SPEC.md §4): every member force
+// is a variable and node equilibrium is an equality. The design solves the same problem in the
+// self-stress coordinates (design/reduced_min_mass.h); this form is its cross-check.
 //
 // Variables (all scaled to O(1)):
 //   c_b = C_b / F_ref           bar compressions,            b = 0..n_b-1
@@ -14,13 +16,13 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <string>
 #include <utility>
 #include <vector>
 
 #include "core/material.h"
 #include "core/structure.h"
 #include "design/equilibrium.h"
+#include "design/nlp.h"
 
 namespace tbridge {
 
@@ -32,7 +34,7 @@ struct MinMassSettings {
   std::vector<double> bar_min_area;        // per bar [m^2], may be 0
 };
 
-class MinMassProblem {
+class MinMassProblem final : public NlpProblem {
  public:
   // `loads` is 3 x n_n [N]. Throws ModelError on inconsistent sizes.
   MinMassProblem(const Structure& structure, const Eigen::Matrix3Xd& loads,
@@ -40,31 +42,35 @@ class MinMassProblem {
 
   int num_bars() const { return nb_; }
   int num_strings() const { return ns_; }
-  int num_variables() const { return 2 * nb_ + ns_; }
-  int num_equalities() const { return static_cast<int>(rhs_.size()); }
-  int num_constraints() const { return num_equalities() + 2 * nb_; }
+  int num_variables() const override { return 2 * nb_ + ns_; }
+  int num_equalities() const override { return static_cast<int>(rhs_.size()); }
+  int num_constraints() const override { return num_equalities() + 2 * nb_; }
   // Index helpers into x.
   int bar_force_index(int b) const { return b; }
   int string_force_index(int k) const { return nb_ + k; }
   int bar_area_index(int b) const { return nb_ + ns_ + b; }
 
   // Bounds on x and on g(x) (equalities have lo = hi); +inf as std::numeric_limits::infinity.
-  void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const;
-  void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const;
+  void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
+  void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
   // A feasible-ish start: least-norm equilibrium solution, pushed inside the bounds.
   Eigen::VectorXd StartingPoint() const;
 
-  double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const;
-  const Eigen::VectorXd& ObjectiveGradient() const { return cost_; }  // constant
-  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const;
+  double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
+  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>&,
+                         Eigen::Ref<Eigen::VectorXd> grad) const override {
+    grad = cost_;  // constant
+  }
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const override;
 
   // Jacobian of g: fixed sparsity (row, col) and values in that order.
-  const std::vector<std::pair<int, int>>& JacobianPattern() const { return jac_pattern_; }
-  void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const;
+  const Pattern& JacobianPattern() const override { return jac_pattern_; }
+  void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override;
   // Hessian of the Lagrangian sigma f + sum lambda_i g_i: only the buckling rows contribute,
   // 2 lambda on each a_b diagonal. Pattern is the n_b diagonal entries of the a block.
-  std::vector<std::pair<int, int>> HessianPattern() const;
-  void HessianValues(const double* lambda, double* values) const;
+  const Pattern& HessianPattern() const override { return hess_pattern_; }
+  void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma, const double* lambda,
+                     double* values) const override;
 
   // Unscaled results.
   double MassScale() const { return mass_ref_; }  // kg per objective unit
@@ -84,33 +90,8 @@ class MinMassProblem {
   Eigen::VectorXd kappa_;
   Eigen::VectorXd t_min_, a_min_;
   double force_ref_ = 1, mass_ref_ = 1;
-  std::vector<std::pair<int, int>> jac_pattern_;
+  Pattern jac_pattern_, hess_pattern_;
   std::vector<double> eq_values_;  // constant equality-row values, in pattern order
 };
-
-// What a solver reports back: a value, not a getter.
-struct SolverOutcome {
-  std::string solver;       // "ipopt" | "nlopt"
-  std::string status;       // solver's own status name
-  std::string message;      // human-readable detail
-  int iterations = 0;
-  bool success = false;
-  double objective = 0;     // scaled objective at x
-};
-
-struct SolverOptions {
-  double tolerance = 1e-10;
-  int max_iterations = 3000;
-  bool verbose = false;
-};
-
-// Adapters: each is the only file that includes its solver's headers. `x` is the start on
-// entry and the solution on return. Both may be called from several threads; Ipopt solves
-// then run one at a time, all on one thread of the adapter (its sequential MUMPS is not
-// reentrant).
-SolverOutcome SolveWithIpopt(const MinMassProblem& problem, const SolverOptions& options,
-                             Eigen::VectorXd& x);
-SolverOutcome SolveWithNlopt(const MinMassProblem& problem, const SolverOptions& options,
-                             Eigen::VectorXd& x);
 
 }  // namespace tbridge

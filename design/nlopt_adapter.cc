@@ -1,16 +1,20 @@
-// Thin NLopt (SLSQP) adapter for MinMassProblem. The only file that includes NLopt headers.
-// SLSQP works on dense matrices: its cost grows with the cube of the variable count, so it
-// suits the small and medium designs; Ipopt is the default for large ones.
+// Thin NLopt (SLSQP) adapter for an NlpProblem. The only file that includes NLopt headers.
+// SLSQP works on dense matrices (the constraint gradients are m x n): its cost grows with the
+// cube of the variable count, so it suits small problems such as the self-stress form of the
+// design; Ipopt serves large ones.
 #include <nlopt.hpp>
 
-#include "design/min_mass.h"
+#include <limits>
+#include <stdexcept>
+
+#include "design/nlp.h"
 
 namespace tbridge {
 
 namespace {
 
 struct Context {
-  const MinMassProblem* problem;
+  const NlpProblem* problem;
   Eigen::VectorXd g;               // constraint values
   std::vector<double> jac_values;  // in pattern order
   int evaluations = 0;
@@ -19,13 +23,16 @@ struct Context {
 double ObjectiveFn(unsigned n, const double* x, double* grad, void* data) {
   auto* c = static_cast<Context*>(data);
   ++c->evaluations;
-  if (grad) Eigen::Map<Eigen::VectorXd>(grad, n) = c->problem->ObjectiveGradient();
+  if (grad) {
+    Eigen::Map<Eigen::VectorXd> g(grad, n);
+    c->problem->ObjectiveGradient(Eigen::Map<const Eigen::VectorXd>(x, n), g);
+  }
   return c->problem->Objective(Eigen::Map<const Eigen::VectorXd>(x, n));
 }
 
 // NLopt wants fc(x) <= 0 for inequalities and fc(x) = 0 for equalities, with a dense
-// m x n row-major gradient. `first`, `count` select the rows of g; `sign` maps g >= 0 to
-// -g <= 0; `offset` holds the equality right-hand side.
+// m x n row-major gradient. `first`, `count` select the rows of g; `sign` maps g >= lo to
+// lo - g <= 0; `offset` holds the equality right-hand side or the lower bounds.
 struct RowBlock {
   Context* context;
   int first, count;
@@ -36,7 +43,7 @@ struct RowBlock {
 void ConstraintFn(unsigned m, double* result, unsigned n, const double* x, double* grad,
                   void* data) {
   auto* block = static_cast<RowBlock*>(data);
-  const MinMassProblem& p = *block->context->problem;
+  const NlpProblem& p = *block->context->problem;
   Eigen::Map<const Eigen::VectorXd> xv(x, n);
   p.Constraints(xv, block->context->g);
   for (unsigned r = 0; r < m; ++r) {
@@ -57,7 +64,7 @@ void ConstraintFn(unsigned m, double* result, unsigned n, const double* x, doubl
 
 }  // namespace
 
-SolverOutcome SolveWithNlopt(const MinMassProblem& problem, const SolverOptions& options,
+SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& options,
                              Eigen::VectorXd& x) {
   const int n = problem.num_variables();
   const int m_eq = problem.num_equalities();
@@ -68,14 +75,21 @@ SolverOutcome SolveWithNlopt(const MinMassProblem& problem, const SolverOptions&
   problem.VariableBounds(lo, hi);
   problem.ConstraintBounds(g_lo, g_hi);
   RowBlock equalities{&context, 0, m_eq, 1.0, g_lo.head(m_eq)};
-  RowBlock inequalities{&context, m_eq, m_in, -1.0, Eigen::VectorXd::Zero(m_in)};
+  for (int r = m_eq; r < problem.num_constraints(); ++r) {
+    if (g_hi[r] != std::numeric_limits<double>::infinity() || !std::isfinite(g_lo[r])) {
+      throw std::logic_error("NLopt adapter: inequality rows must read g >= finite lower bound");
+    }
+  }
+  RowBlock inequalities{&context, m_eq, m_in, -1.0, g_lo.tail(m_in)};
 
   nlopt::opt opt(nlopt::LD_SLSQP, static_cast<unsigned>(n));
   opt.set_lower_bounds(std::vector<double>(lo.data(), lo.data() + n));
   opt.set_upper_bounds(std::vector<double>(hi.data(), hi.data() + n));
   opt.set_min_objective(ObjectiveFn, &context);
-  opt.add_equality_mconstraint(ConstraintFn, &equalities,
-                               std::vector<double>(m_eq, options.tolerance));
+  if (m_eq > 0) {
+    opt.add_equality_mconstraint(ConstraintFn, &equalities,
+                                 std::vector<double>(m_eq, options.tolerance));
+  }
   if (m_in > 0) {
     opt.add_inequality_mconstraint(ConstraintFn, &inequalities,
                                    std::vector<double>(m_in, options.tolerance));

@@ -9,8 +9,8 @@
 
 namespace tbridge::test {
 
-// The paper's planar bridge (SPEC §1): L = 12 m, F = 12000 N, beta = 10 deg, solver as given.
-inline Config PaperConfig(int n, const std::string& solver = "ipopt") {
+// The paper's planar bridge (SPEC §1): L = 12 m, F = 12000 N, beta = 10 deg, solver as given ("auto": the direct solve).
+inline Config PaperConfig(int n, const std::string& solver = "auto") {
   Config c;
   c.bridge.n = n;
   c.design.solver = solver;

@@ -73,7 +73,7 @@ TEST_CASE("absent optional keys take the paper's defaults") {
   CHECK(c.design.buckling_safety_factor == 1.0);
   CHECK(c.design.deck_string_min_radius == 0.01);
   CHECK(c.design.gravity == 9.81);
-  CHECK(c.design.solver == "ipopt");
+  CHECK(c.design.solver == "auto");
 }
 
 TEST_CASE("the resolved config parses back to itself") {
@@ -106,7 +106,7 @@ TEST_CASE("unknown keys are rejected at every level") {
 TEST_CASE("wrong types are rejected") {
   json n_text = GoodConfig();
   n_text["bridge"]["n"] = "3";
-  ExpectRejected(n_text, "bridge.n", "\"3\"", "an integer in [1, 14]");
+  ExpectRejected(n_text, "bridge.n", "\"3\"", "an integer in [1, 16]");
 
   json beta_text = GoodConfig();
   beta_text["bridge"]["beta_deg"] = "10";
@@ -114,7 +114,7 @@ TEST_CASE("wrong types are rejected") {
 
   json solver_number = GoodConfig();
   solver_number["design"]["solver"] = 3;
-  ExpectRejected(solver_number, "design.solver", "3", "one of \"ipopt\", \"nlopt\"");
+  ExpectRejected(solver_number, "design.solver", "3", "one of \"auto\", \"direct\", \"ipopt\", \"nlopt\"");
 
   json section_number = GoodConfig();
   section_number["material"] = 5;
@@ -125,7 +125,7 @@ TEST_CASE("wrong types are rejected") {
 
   json n_fraction = GoodConfig();
   n_fraction["bridge"]["n"] = 2.5;
-  ExpectRejected(n_fraction, "bridge.n", "2.5", "an integer in [1, 14]");
+  ExpectRejected(n_fraction, "bridge.n", "2.5", "an integer in [1, 16]");
 }
 
 TEST_CASE("a missing required key is named") {
@@ -138,11 +138,11 @@ TEST_CASE("a missing required key is named") {
   ExpectRejected(no_bridge, "bridge", "(missing)", "required");
 }
 
-TEST_CASE("complexity n outside [1, 14] is rejected") {
-  for (int n : {0, -1, 15, 1000}) {
+TEST_CASE("complexity n outside [1, 16] is rejected") {
+  for (int n : {0, -1, 17, 1000}) {
     json c = GoodConfig();
     c["bridge"]["n"] = n;
-    ExpectRejected(c, "bridge.n", std::to_string(n), "an integer in [1, 14]");
+    ExpectRejected(c, "bridge.n", std::to_string(n), "an integer in [1, 16]");
   }
 }
 
@@ -195,7 +195,7 @@ TEST_CASE("NaN and infinite numbers are rejected") {
   }
   json huge_n = GoodConfig();
   huge_n["bridge"]["n"] = 1e300;
-  ExpectRejected(huge_n, "bridge.n", "1e+300", "an integer in [1, 14]");
+  ExpectRejected(huge_n, "bridge.n", "1e+300", "an integer in [1, 16]");
 }
 
 TEST_CASE("NaN spelled in the file is malformed JSON naming the file") {

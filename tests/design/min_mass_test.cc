@@ -88,7 +88,7 @@ TEST_CASE("Ipopt and NLopt agree on the total mass", "[design][solvers]") {
 TEST_CASE("Designs may run on several threads at once", "[design][solvers]") {
   // Ipopt's sequential MUMPS keeps global state; unserialised concurrent solves crash it.
   // Every thread must get the single-threaded answer, bit for bit (same start, same solver).
-  const double expected = RunDesign(test::PaperConfig(4)).mass.total;
+  const double expected = RunDesign(test::PaperConfig(4, "ipopt")).mass.total;
   std::vector<double> masses(4, 0.0);
   std::vector<std::thread> threads;
   for (size_t t = 0; t < masses.size(); ++t) {

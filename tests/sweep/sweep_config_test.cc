@@ -57,8 +57,8 @@ TEST_CASE("bad sweep configs name the key, the value and what is allowed", "[swe
   CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.n") && Catch::Contains("at least one"));
 
   j = Base();
-  j["sweep"]["n"] = {1, 15};
-  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.n[1]") && Catch::Contains("[1, 14]"));
+  j["sweep"]["n"] = {1, 17};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.n[1]") && Catch::Contains("[1, 16]"));
 
   j = Base();
   j["sweep"]["n"] = {2, 2};

@@ -1,0 +1,37 @@
+// Every equilibrium solution of a pin-jointed network, from one sparse QR factorisation.
+//
+// Equilibrium is A x = -w on the free DOFs (design/equilibrium.h), with x the member forces
+// [C_bars; T_strings] in N. Every solution is
+//   x = x_p + N alpha,
+// x_p a particular solution per load case and N an orthonormal basis of the self-stresses
+// (null space of A, n_b + n_s - rank(A) columns). Both come from SuiteSparseQR's rank-revealing
+// factorisation of A^T (members x DOFs): A^T E = Q R, rank r. Then
+//   A x = -w  <=>  R^T (Q^T x) = -E^T w,
+// so x_p = Q [R11^-T (-E^T w)_1..r; 0] and N = the trailing n - r columns of Q. The cost is
+// that of one sparse QR of a tree-like matrix: linear in the members for these bridges.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "design/equilibrium.h"
+
+namespace tbridge {
+
+struct EquilibriumBasis {
+  int rank = 0;                // numerical rank of A (SuiteSparseQR's default tolerance)
+  Eigen::MatrixXd particular;  // (n_b + n_s) x n_cases: forces of each load case [N]
+  Eigen::MatrixXd self_stress; // (n_b + n_s) x (n_b + n_s - rank): orthonormal columns
+  // Largest |A x_p + w| over every case and free DOF [N]: nonzero when a load has a
+  // component the network cannot carry (a mechanism it excites).
+  double load_residual = 0;
+  // Largest |A N| entry: a check of the rank decision (a few eps for a sound basis).
+  double basis_residual = 0;
+
+  int self_stress_states() const { return static_cast<int>(self_stress.cols()); }
+};
+
+// `free_loads` is n_dof x n_cases, each column w of one load case on the free DOFs [N]
+// (FreeLoads). Throws ModelError when the factorisation fails (out of memory).
+EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads);
+
+}  // namespace tbridge

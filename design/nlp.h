@@ -1,0 +1,62 @@
+// A smooth nonlinear program as the solver adapters see it, independent of any solver:
+//   min f(x)  s.t.  x_lo <= x <= x_hi,  g_lo <= g(x) <= g_hi,
+// with a fixed sparsity pattern for the constraint Jacobian and for the lower triangle of the
+// Lagrangian's Hessian. The first num_equalities() rows of g are equalities (g_lo = g_hi);
+// every other row has g_hi = +inf. Infinite bounds are std::numeric_limits<double>::infinity().
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tbridge {
+
+class NlpProblem {
+ public:
+  using Pattern = std::vector<std::pair<int, int>>;  // (row, col) pairs
+  virtual ~NlpProblem() = default;
+
+  virtual int num_variables() const = 0;
+  virtual int num_constraints() const = 0;
+  virtual int num_equalities() const { return 0; }
+  virtual void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const = 0;
+  virtual void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const = 0;
+  virtual double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const = 0;
+  virtual void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                 Eigen::Ref<Eigen::VectorXd> grad) const = 0;
+  virtual void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x,
+                           Eigen::Ref<Eigen::VectorXd> g) const = 0;
+  virtual const Pattern& JacobianPattern() const = 0;
+  // Values in JacobianPattern() order.
+  virtual void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const = 0;
+  // Lower triangle (row >= col) of the Hessian of sigma f + sum_i lambda_i g_i.
+  virtual const Pattern& HessianPattern() const = 0;
+  virtual void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma,
+                             const double* lambda, double* values) const = 0;
+};
+
+// What a solver reports back: a value, not a getter.
+struct SolverOutcome {
+  std::string solver;   // "direct" | "ipopt" | "nlopt"
+  std::string status;   // the solver's own status name
+  std::string message;  // human-readable detail
+  int iterations = 0;
+  bool success = false;
+  double objective = 0;  // f at the returned x
+};
+
+struct SolverOptions {
+  double tolerance = 1e-10;
+  int max_iterations = 3000;
+  bool verbose = false;
+};
+
+// Adapters: each is the only file that includes its solver's headers. `x` is the start on
+// entry and the solution on return. Both may be called from several threads; Ipopt solves
+// then run one at a time, all on one thread of the adapter (its sequential MUMPS is not
+// reentrant).
+SolverOutcome SolveWithIpopt(const NlpProblem& problem, const SolverOptions& options, Eigen::VectorXd& x);
+SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& options, Eigen::VectorXd& x);
+
+}  // namespace tbridge
