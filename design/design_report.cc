@@ -1,7 +1,12 @@
 #include "design/design_report.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdarg>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <ostream>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -11,25 +16,6 @@ namespace tbridge {
 namespace {
 
 using nlohmann::json;
-
-json MemberToJson(const MemberSizing& m, const Member& topology_member) {
-  const bool bar = m.kind == MemberKind::kBar;
-  return json{{"name", m.name},
-              {"type", KindName(m.kind)},
-              {"group", topology_member.group},
-              {"nodes", {m.i + 1, m.j + 1}},
-              {"length", m.length},
-              {"force", m.force},
-              {"force_density", m.force_density},
-              {"area", m.area},
-              {"radius", m.radius},
-              {"mass", m.mass},
-              {"rest_length", m.rest_length},
-              // A bar is rigid in the model: it has no axial stiffness to report.
-              {"stiffness", bar ? json(nullptr) : json(m.stiffness)},
-              {"governed_by", m.governed_by},
-              {"stress", m.stress}};
-}
 
 // Units of every numeric field, mirroring the document's layout.
 json Units() {
@@ -80,60 +66,132 @@ int CountDeckStrings(const Design& d) {
   return count;
 }
 
+
+// The JSON number of `v`: the shortest text that reads back to the same double; null when not
+// finite (JSON has no inf or nan).
+void WriteNumber(std::ostream& os, double v) {
+  if (!std::isfinite(v)) {
+    os << "null";
+    return;
+  }
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  os.write(buffer, result.ptr - buffer);
+  // Keep a double a JSON float ("0.0", not "0") as a JSON library writes it.
+  if (std::find_if(buffer, result.ptr, [](char c) { return c == '.' || c == 'e'; }) == result.ptr) os << ".0";
+}
+
+// A JSON string; names, groups and modes are plain ASCII, but quotes, backslashes and
+// control characters are escaped all the same.
+void WriteString(std::ostream& os, const std::string& text) {
+  os << '"';
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      os << '\\' << c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      os << escaped;
+    } else {
+      os << c;
+    }
+  }
+  os << '"';
+}
+
+void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology_member) {
+  // Keys in the alphabetical order a JSON library writes them in.
+  auto number = [&os](const char* key, double v) {
+    os << ", \"" << key << "\": ";
+    WriteNumber(os, v);
+  };
+  auto text = [&os](const char* key, const std::string& v) {
+    os << ", \"" << key << "\": ";
+    WriteString(os, v);
+  };
+  os << "{\"area\": ";
+  WriteNumber(os, m.area);
+  number("force", m.force);
+  number("force_density", m.force_density);
+  text("governed_by", m.governed_by);
+  text("group", topology_member.group);
+  number("length", m.length);
+  number("mass", m.mass);
+  text("name", m.name);
+  os << ", \"nodes\": [" << m.i + 1 << ", " << m.j + 1 << "]";
+  number("radius", m.radius);
+  number("rest_length", m.rest_length);
+  // A bar is rigid in the model: it has no axial stiffness to report.
+  number("stiffness", m.kind == MemberKind::kBar ? std::numeric_limits<double>::quiet_NaN() : m.stiffness);
+  number("stress", m.stress);
+  text("type", KindName(m.kind));
+  os << "}";
+}
+
 }  // namespace
 
-nlohmann::json DesignToJson(const Design& d) {
+void WriteDesignJson(const Design& d, std::ostream& os) {
   const Structure& s = d.topology.structure;
-  json j;
-  j["config"] = ToJson(d.config);
-
+  // The small sections as JSON values; nodes and members are streamed one per line, so the
+  // memory stays that of the design itself.
   json fixed = json::array();
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (v < static_cast<int>(s.fixed.size()) && s.fixed[v]) fixed.push_back(v + 1);
   }
-  j["topology"] = {{"n", d.config.bridge.n},
-                   {"p", d.config.bridge.p},
-                   {"beta_deg", d.config.bridge.beta_deg},
-                   {"planes", d.topology.planes},
-                   {"nodes", s.num_nodes()},
-                   {"bars", s.num_bars()},
-                   {"strings", s.num_strings()},
-                   {"class", s.TensegrityClass()},
-                   {"fixed_nodes", fixed}};
-  j["deck"] = {{"section_length", d.deck.section_length},
-               {"section_mass", d.deck.section_mass},
-               {"thickness", d.deck.thickness},
-               {"node_load", d.deck.node_load},
-               {"total_load", d.deck.total_load},
-               {"beams_mass", d.deck.beams_mass}};
+  const json topology = {{"n", d.config.bridge.n},       {"p", d.config.bridge.p},
+                         {"beta_deg", d.config.bridge.beta_deg}, {"planes", d.topology.planes},
+                         {"nodes", s.num_nodes()},       {"bars", s.num_bars()},
+                         {"strings", s.num_strings()},   {"class", s.TensegrityClass()},
+                         {"fixed_nodes", fixed}};
+  const json deck = {{"section_length", d.deck.section_length}, {"section_mass", d.deck.section_mass},
+                     {"thickness", d.deck.thickness},           {"node_load", d.deck.node_load},
+                     {"total_load", d.deck.total_load},         {"beams_mass", d.deck.beams_mass}};
+  const json mass = {{"bars", d.mass.bars},
+                     {"strings", d.mass.strings},
+                     {"deck_strings", d.mass.deck_strings},
+                     {"deck_beams", d.mass.deck_beams},
+                     {"structure", d.mass.structure},
+                     {"total", d.mass.total}};
+  const json solver = {{"name", d.solver.solver}, {"status", d.solver.status}, {"iterations", d.solver.iterations}};
+  auto field = [&os](const char* key, const json& value, bool last = false) {
+    std::string text = value.dump(2);
+    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
+    os << "  \"" << key << "\": " << text << (last ? "\n" : ",\n");
+  };
 
-  json nodes = json::array();
-  for (int v = 0; v < s.num_nodes(); ++v) {
-    nodes.push_back({s.nodes(0, v), s.nodes(1, v), s.nodes(2, v)});
+  os << "{\n";
+  field("config", ToJson(d.config));
+  field("deck", deck);
+  field("equilibrium_residual_N", d.equilibrium_residual);
+  field("mass", mass);
+  os << "  \"members\": [";
+  const char* separator = "\n    ";
+  for (size_t b = 0; b < d.bars.size(); ++b) {
+    os << separator;
+    WriteMember(os, d.bars[b], s.bars[b]);
+    separator = ",\n    ";
   }
-  j["nodes"] = std::move(nodes);
-
-  json members = json::array();
-  for (size_t b = 0; b < d.bars.size(); ++b) members.push_back(MemberToJson(d.bars[b], s.bars[b]));
   for (size_t k = 0; k < d.strings.size(); ++k) {
-    members.push_back(MemberToJson(d.strings[k], s.strings[k]));
+    os << separator;
+    WriteMember(os, d.strings[k], s.strings[k]);
+    separator = ",\n    ";
   }
-  j["members"] = std::move(members);
-
-  j["mass"] = {{"bars", d.mass.bars},
-               {"strings", d.mass.strings},
-               {"deck_strings", d.mass.deck_strings},
-               {"deck_beams", d.mass.deck_beams},
-               {"structure", d.mass.structure},
-               {"total", d.mass.total}};
-  j["solver"] = {{"name", d.solver.solver},
-                 {"status", d.solver.status},
-                 {"iterations", d.solver.iterations}};
-  j["equilibrium_residual_N"] = d.equilibrium_residual;
-  j["self_stress_states"] =
-      d.self_stress_states >= 0 ? json(d.self_stress_states) : json(nullptr);
-  j["units"] = Units();
-  return j;
+  os << "\n  ],\n  \"nodes\": [";
+  separator = "\n    [";
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    os << separator;
+    for (int a = 0; a < 3; ++a) {
+      if (a) os << ", ";
+      WriteNumber(os, s.nodes(a, v));
+    }
+    separator = "],\n    [";
+  }
+  os << (s.num_nodes() ? "]\n  ],\n" : "\n  ],\n");
+  field("self_stress_states", d.self_stress_states);
+  field("solver", solver);
+  field("topology", topology);
+  field("units", Units(), true);
+  os << "}\n";
 }
 
 std::string DesignSummary(const Design& d, int max_member_rows) {

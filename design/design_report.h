@@ -2,7 +2,7 @@
 // summary for the terminal. Both read a Design and change nothing.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <iosfwd>
 #include <string>
 
 #include "design/design.h"
@@ -23,11 +23,13 @@ namespace tbridge {
 //   mass                   {bars, strings, deck_strings, deck_beams, structure, total}  [kg]
 //   solver                 {name, status, iterations}
 //   equilibrium_residual_N largest node-force imbalance over the free DOFs  [N]
-//   self_stress_states     n_b + n_s - rank(A), or null when not computed (large designs)
+//   self_stress_states     n_b + n_s - rank(A)
 //   units                  the unit of every numeric field above ("1" = dimensionless)
-// Non-finite numbers cannot occur in a Design that RunDesign returned; nlohmann writes them
-// as null if they ever do. Does not throw except std::bad_alloc.
-nlohmann::json DesignToJson(const Design& design);
+// Keys are in alphabetical order; nodes and members are written one per line as they are
+// read from the design, so no copy of the document is held. Numbers are the shortest text
+// that reads back to the same double. Non-finite numbers cannot occur in a Design that
+// RunDesign returned; they would be written as null. Stream errors are the caller's to check.
+void WriteDesignJson(const Design& design, std::ostream& os);
 
 // Multi-line text: parameters, topology counts, deck, solver, a member table in the style of
 // the paper's Tables 2-4 (r in mm, L0, k_s, m, governing mode) and the mass breakdown. At

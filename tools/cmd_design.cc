@@ -36,8 +36,7 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   const std::string out_path = parsed.Required("-o");
   // Everything that can fail runs before the output file is touched.
   const Design design = RunDesign(LoadConfig(parsed.positionals[0]));
-  const std::string text = DesignToJson(design).dump(2) + "\n";
-  WriteFileAtomically(out_path, text);
+  WriteFileAtomically(out_path, [&design](std::ostream& os) { WriteDesignJson(design, os); });
   if (!parsed.Flag("-q")) {
     std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";
   }

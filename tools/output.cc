@@ -8,6 +8,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <ostream>
+#include <streambuf>
+#include <vector>
 #include <system_error>
 
 namespace tbridge::cli {
@@ -43,9 +46,53 @@ class TempFile {
   std::string path_;
 };
 
+// An output buffer over a file descriptor: streamed results go to the file as they are made,
+// in 1 MiB writes, instead of through a string of the whole document.
+class FdStreamBuf : public std::streambuf {
+ public:
+  explicit FdStreamBuf(int fd) : fd_(fd), buffer_(1 << 20) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
+  int error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (Drain() != 0) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return Drain(); }
+
+ private:
+  int Drain() {
+    const char* data = pbase();
+    size_t left = static_cast<size_t>(pptr() - pbase());
+    while (left > 0 && error_ == 0) {
+      const ssize_t n = ::write(fd_, data, left);
+      if (n < 0) {
+        if (errno != EINTR) error_ = errno;
+        continue;
+      }
+      data += n;
+      left -= static_cast<size_t>(n);
+    }
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return error_ == 0 ? 0 : -1;
+  }
+
+  int fd_;
+  int error_ = 0;
+  std::vector<char> buffer_;
+};
+
 }  // namespace
 
 void WriteFileAtomically(const std::string& path, const std::string& content) {
+  WriteFileAtomically(path, [&content](std::ostream& os) { os.write(content.data(), static_cast<std::streamsize>(content.size())); });
+}
+
+void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   if (path.empty()) throw OutputError("output path is empty");
   const fs::path target(path);
   if (!target.has_filename()) {
@@ -82,16 +129,12 @@ void WriteFileAtomically(const std::string& path, const std::string& content) {
     throw OutputError("cannot set the mode of '" + temp.path() + "': " + Reason(errno));
   }
 
-  const char* data = content.data();
-  size_t left = content.size();
-  while (left > 0) {
-    const ssize_t n = ::write(temp.fd(), data, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw OutputError("cannot write '" + path + "': " + Reason(errno));
-    }
-    data += n;
-    left -= static_cast<size_t>(n);
+  FdStreamBuf buffer(temp.fd());
+  std::ostream stream(&buffer);
+  write(stream);
+  stream.flush();
+  if (!stream || buffer.error() != 0) {
+    throw OutputError("cannot write '" + path + "': " + Reason(buffer.error() ? buffer.error() : EIO));
   }
   // Flush to disk before the rename, so a crash cannot leave a renamed but empty file.
   if (::fsync(temp.fd()) != 0) {

@@ -1,6 +1,8 @@
 // Helpers shared by every command: atomic result files and a small, strict argument parser.
 #pragma once
 
+#include <functional>
+#include <iosfwd>
 #include <map>
 #include <optional>
 #include <set>
@@ -30,6 +32,8 @@ class OutputError : public std::runtime_error {
 // to disk, and is then renamed over `path`. Missing parent directories are created. On any
 // failure the temporary file is removed and OutputError is thrown; `path` is left untouched.
 void WriteFileAtomically(const std::string& path, const std::string& content);
+// Same, with the content streamed by `write` straight into the temporary file (large results).
+void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 // One option a command accepts. `names` are aliases, the first is the canonical one used to
 // look the value up ("-o", "--output"). Options with `value_name` take a value (next
