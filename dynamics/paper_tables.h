@@ -36,6 +36,10 @@ struct PaperReproduction {
 // Table 5: the paper's "mean angular frequency" of slack-cable bouncing is reproduced to a
 // mean 3.8 % with a +-2 % spread across dt, stabilisation and estimator: 8 % per entry.
 inline constexpr double kTable5Tolerance = 0.08;
+// Table 5, n >= 2: the bouncing is chaotic; designs that differ by 1e-10 (the exact optimum,
+// or an interior point on the self-stress or on the full problem) move n = 3, class 3 between
+// 67.7 and 69.2 rad/s, a further 2 %: 10 %.
+inline constexpr double kTable5ChaoticTolerance = 0.10;
 // Table 6, n = 1: periodic motion, reproduced to 0.3 %: 2 %.
 inline constexpr double kTable6PeriodicTolerance = 0.02;
 // Table 6, n >= 2: the paper's values scatter by 5-19 % (probably read off its charts; its two

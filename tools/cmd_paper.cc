@@ -30,7 +30,8 @@ const CommandSpec& PaperSpec() {
       "Designs the paper's bridges and runs its dynamic cases from the shipped configs, then\n"
       "prints every number of Tables 1-6 beside the printed value with its error and tolerance,\n"
       "and the peaks of the 3D runs of Sect. 7.3 (travelling load, wind)\n"
-      "(SPEC rules: Tables 1-4 to half a unit of the last printed digit, Table 5 to 8 %,\n"
+      "(SPEC rules: Tables 1-4 to half a unit of the last printed digit, Table 5 to 8 %\n"
+      "for n = 1 and 10 % for the chaotic n >= 2,\n"
       "Table 6 to 2 % for n = 1 and 25 % for n >= 2). Exits 1 if any value is out of tolerance."};
   return spec;
 }
