@@ -31,6 +31,7 @@ struct Design {
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;
   SolverOutcome solver;
+  std::string solver_form;           // "self-stress" (the reduced problem) or "full"
   double equilibrium_residual = 0;  // max |A x + w| over free DOFs [N]
   int self_stress_states = -1;      // n_b + n_s - rank(A); -1 when not computed (large n)
 };

@@ -152,7 +152,10 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"deck_beams", d.mass.deck_beams},
                      {"structure", d.mass.structure},
                      {"total", d.mass.total}};
-  const json solver = {{"name", d.solver.solver}, {"status", d.solver.status}, {"iterations", d.solver.iterations}};
+  const json solver = {{"name", d.solver.solver},
+                       {"status", d.solver.status},
+                       {"iterations", d.solver.iterations},
+                       {"problem", d.solver_form}};
   auto field = [&os](const char* key, const json& value, bool last = false) {
     std::string text = value.dump(2);
     for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
@@ -210,12 +213,10 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
               "node, F_tot = %.6g N",
               d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3,
               d.deck.node_load, d.deck.total_load));
-  std::string self_stress = d.self_stress_states >= 0 ? std::to_string(d.self_stress_states)
-                                                      : std::string("not computed");
-  line(Format("solver: %s, status %s after %d iterations; equilibrium residual %.2e N; "
-              "self-stress states: %s",
-              d.solver.solver.c_str(), d.solver.status.c_str(), d.solver.iterations,
-              d.equilibrium_residual, self_stress.c_str()));
+  line(Format("solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
+              "self-stress states: %d",
+              d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(), d.solver.iterations,
+              d.equilibrium_residual, d.self_stress_states));
   line("");
 
   line("members (force: tension for strings, compression for bars):");
