@@ -19,7 +19,9 @@ struct ScenarioResult {
 
 // Throws ConfigError when `config` has no "dynamics" section (or a bad one), ModelError when
 // the design or the run fails (see RunDesign and Simulate). A "structure" config skips the
-// design and builds its model with BuildStructureModel.
-ScenarioResult RunScenario(const Config& config);
+// design and builds its model with BuildStructureModel. `hooks` go to Simulate (progress,
+// the caller's bytes per record for the output limit); the progress stages are "design" and
+// "simulate".
+ScenarioResult RunScenario(const Config& config, const RunHooks& hooks = {});
 
 }  // namespace tbridge
