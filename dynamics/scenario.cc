@@ -6,7 +6,8 @@
 
 namespace tbridge {
 
-ScenarioResult RunScenario(const Config& config, const RunHooks& hooks) {
+ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
+                           const std::function<void(const Design&)>& on_design) {
   if (!config.dynamics) {
     throw ConfigError("dynamics", "(missing)", "a dynamic scenario needs a \"dynamics\" section");
   }
@@ -22,6 +23,7 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks) {
   }
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "design");
   r.design = RunDesign(config);
+  if (on_design) on_design(r.design);
   r.model = BuildDynamicModel(r.design, options);
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "simulate");
   r.simulation = Simulate(r.model, dc, ReportPrestrain(r.model, r.design, options), hooks);

@@ -207,11 +207,18 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   RunHooks hooks;
   hooks.progress = &progress;
   if (vtk_dir) hooks.extra_bytes_per_record = [](const DynamicModel& m) { return VtkBytesPerSample(m); };
-  const ScenarioResult scenario = RunScenario(config, hooks);
+  // Under --strict an implausible design stops before the run; otherwise its warnings are
+  // printed after the run, not across the progress line.
+  std::vector<std::string> warnings;
+  const auto check_design = [&](const Design& design) {
+    warnings = PlausibilityWarnings(design);
+    if (parsed.Flag("--strict")) ReportWarnings(warnings, true);
+  };
+  const ScenarioResult scenario = RunScenario(config, hooks, check_design);
   progress.Finish();
+  ReportWarnings(warnings, false);
   const DynamicModel& model = scenario.model;
   const SimulationResult& result = scenario.simulation;
-  if (!config.structure) ReportWarnings(PlausibilityWarnings(scenario.design), parsed.Flag("--strict"));
 
   summary_out << SummaryJson(config, model, result).dump(2) << "\n";
   if (history_out != nullptr) *history_out << HistoryCsv(result);
