@@ -3,10 +3,12 @@
 #include "core/json_reader.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -57,7 +59,50 @@ int SyncFile(const std::string& path) {
   return rc;
 }
 
+// What an interrupted process (Ctrl-C, kill) must remove: the temporaries and the folders of
+// the transactions in flight. Fixed slots of lock-free atomics, so that the signal handler
+// may read them (async-signal-safe); a transaction with more files than slots leaves the
+// rest, hidden, to chance.
+constexpr int kFileSlots = 1024, kDirSlots = 64;
+std::atomic<const char*> g_files[kFileSlots];
+std::atomic<const char*> g_dirs[kDirSlots];
+
+void Register(std::atomic<const char*>* slots, int count, const char* path) {
+  for (int k = 0; k < count; ++k) {
+    const char* expected = nullptr;
+    if (slots[k].compare_exchange_strong(expected, path)) return;
+  }
+}
+
+void Unregister(std::atomic<const char*>* slots, int count, const char* path) {
+  for (int k = 0; k < count; ++k) {
+    const char* expected = path;
+    if (slots[k].compare_exchange_strong(expected, nullptr)) return;
+  }
+}
+
+extern "C" void RemoveStagedAndDie(int signal_number) {
+  for (auto& slot : g_files) {
+    if (const char* path = slot.load()) ::unlink(path);
+  }
+  // Nested folders go deepest first; a pass per level (rmdir refuses a folder not empty).
+  for (int pass = 0; pass < 8; ++pass) {
+    for (auto& slot : g_dirs) {
+      if (const char* path = slot.load()) ::rmdir(path);
+    }
+  }
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+
 }  // namespace
+
+void InstallInterruptCleanup() {
+  struct sigaction action {};
+  action.sa_handler = RemoveStagedAndDie;
+  sigemptyset(&action.sa_mask);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
+}
 
 struct OutputTransaction::Staged {
   std::string target;    // as given, for messages
@@ -69,13 +114,18 @@ struct OutputTransaction::Staged {
 OutputTransaction::OutputTransaction() = default;
 
 OutputTransaction::~OutputTransaction() {
-  if (committed_) return;
   for (const auto& s : staged_) {
-    s->stream.close();
-    ::unlink(s->temp.c_str());
+    Unregister(g_files, kFileSlots, s->temp.c_str());
+    if (!committed_) {
+      s->stream.close();
+      ::unlink(s->temp.c_str());
+    }
   }
   // Deepest first; rmdir refuses a folder that is not empty, so nothing else is lost.
-  for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it) ::rmdir(it->c_str());
+  for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it) {
+    Unregister(g_dirs, kDirSlots, it->c_str());
+    if (!committed_) ::rmdir(it->c_str());
+  }
 }
 
 void OutputTransaction::ProtectInput(const std::string& path) { inputs_.push_back(path); }
@@ -119,6 +169,7 @@ std::ostream& OutputTransaction::Stage(const std::string& path) {
       throw OutputError("cannot create directory '" + it->string() + "' for '" + path + "': " + ec.message());
     }
     created_dirs_.push_back(it->string());
+    Register(g_dirs, kDirSlots, created_dirs_.back().c_str());
   }
   if (!fs::is_directory(dir, ec)) {
     throw OutputError("cannot write '" + path + "': '" + dir.string() + "' is not a directory");
@@ -143,6 +194,7 @@ std::ostream& OutputTransaction::Stage(const std::string& path) {
   staged->destination = destination;
   staged->temp = pattern;
   staged_.push_back(std::move(staged));  // from here on the destructor removes the temporary
+  Register(g_files, kFileSlots, staged_.back()->temp.c_str());
   if (chmod_error != 0) throw OutputError("cannot set the mode of '" + pattern + "': " + Reason(chmod_error));
   Staged& s = *staged_.back();
   s.stream.open(s.temp, std::ios::binary | std::ios::trunc);
@@ -180,6 +232,7 @@ void OutputTransaction::Commit() {
     if (::rename(s->temp.c_str(), s->destination.c_str()) != 0) {
       throw OutputError("cannot write '" + s->target + "': " + Reason(errno));
     }
+    Unregister(g_files, kFileSlots, s->temp.c_str());  // a result now, not a temporary
     written.insert(fs::path(s->target).lexically_normal());
     written.insert(s->destination.lexically_normal());
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <list>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -81,12 +82,18 @@ class OutputTransaction {
  private:
   struct Staged;
   std::vector<std::unique_ptr<Staged>> staged_;
-  std::vector<std::string> created_dirs_;  // in creation order, parents first
+  std::list<std::string> created_dirs_;  // in creation order, parents first; a list keeps
+                                         // each c_str() in place for the signal handler
   std::vector<std::string> inputs_;
   std::vector<std::string> remove_;
   std::vector<std::array<std::string, 3>> remove_patterns_;  // dir, prefix, suffix
   bool committed_ = false;
 };
+
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporaries and created
+// folders of every transaction in flight, then die of the signal as before: an interrupted
+// run leaves nothing behind either. Called once by main.
+void InstallInterruptCleanup();
 
 // One file written through a one-file OutputTransaction: readers see either the old file or
 // the whole new one, never a partial file; OutputError on failure, `path` untouched.

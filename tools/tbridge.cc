@@ -15,6 +15,7 @@
 #include "core/json_reader.h"
 #include "tbridge_version.h"  // generated at build time (tools/version.cmake)
 #include "tools/commands.h"
+#include "tools/output.h"
 
 namespace tbridge::cli {
 
@@ -129,6 +130,7 @@ int Dispatch(const std::vector<std::string>& argv) {
 int main(int argc, char** argv) {
   using namespace tbridge::cli;
   const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+  InstallInterruptCleanup();
   try {
     const int code = Dispatch(args);
     std::cout.flush();

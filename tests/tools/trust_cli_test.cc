@@ -6,7 +6,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <sys/wait.h>
+
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -340,6 +344,34 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
   const CliResult r = Run(dir, "design " + Quote(config.string()) + " -o " + Quote((dir / "out.json").string()) + " --strict -q");
   CHECK(r.code == 0);
   CHECK(r.err.empty());
+}
+
+TEST_CASE("plausibility: simulate --strict stops an implausible design before its run") {
+  const fs::path dir = FreshDir("trust_plausible_simulate");
+  // 1e6 steps would take seconds; the refusal comes after the design, before the first one.
+  const fs::path config =
+      Write(dir / "config.json", R"({"bridge": {"n": 3, "payload": 1e12}, "dynamics": {"duration": 10}})");
+  const auto start = std::chrono::steady_clock::now();
+  const CliResult r = Run(dir, "simulate " + Quote(config.string()) + " -o " + Quote((dir / "out").string()) + " --strict");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  INFO(r.err);
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("--strict") && Catch::Contains("thicker than long"));
+  CHECK(seconds < 1.5);  // the run (about 2 s at 1e6 steps) never started
+  CHECK_FALSE(fs::exists(dir / "out"));
+}
+
+TEST_CASE("an interrupted run (SIGINT) leaves no temporaries and no folder") {
+  const fs::path dir = FreshDir("trust_interrupt");
+  const fs::path config = Write(dir / "long.json", R"({"bridge": {"n": 3}, "dynamics": {"duration": 30}})");
+  // timeout sends SIGINT after a second, in the middle of a run of about 6 s.
+  const std::string command = "timeout -s INT 1 " + Quote(TBRIDGE_BINARY) + " simulate " + Quote(config.string()) +
+                              " -o " + Quote((dir / "out" / "deeper").string()) + " 2> /dev/null";
+  const int status = std::system(command.c_str());
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 124);  // timeout's code: the command was stopped by the signal
+  CHECK_FALSE(fs::exists(dir / "out"));  // neither out/ nor out/deeper/ nor a temporary
+  CHECK(Snapshot(dir).size() == 1);     // the config alone
 }
 
 TEST_CASE("did you mean: a misspelt key or option gets the nearest one") {
