@@ -346,6 +346,21 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
   CHECK(r.err.empty());
 }
 
+TEST_CASE("plausibility and progress: n = 12 on a 12 m span warns of its tiny members and deck") {
+  const fs::path dir = FreshDir("trust_n12");
+  // n = 12 on the default 12 m span: bars 0.26 mm long, a deck 7.9 um thick. Its design takes
+  // a few seconds, longer than the progress line's 1 s delay.
+  const fs::path config = Write(dir / "config.json", R"({"bridge": {"n": 12}})");
+  const CliResult r = Run(dir, "design " + Quote(config.string()) + " -o " + Quote((dir / "out.json").string()) + " -q --progress");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Catch::Contains("design elapsed "));  // no fraction: the elapsed time only
+  CHECK_THAT(r.err, Catch::Contains("members shorter than 1 mm (worst"));
+  CHECK_THAT(r.err, Catch::Contains("deck thickness 7.89e-06 m is below 1 mm"));
+  // The progress line is ended before the first warning, which starts a line of its own.
+  CHECK_THAT(r.err, Catch::Contains("\ntbridge: warning: "));
+}
+
 TEST_CASE("plausibility: simulate --strict stops an implausible design before its run") {
   const fs::path dir = FreshDir("trust_plausible_simulate");
   // 1e6 steps would take seconds; the refusal comes after the design, before the first one.
