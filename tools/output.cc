@@ -242,7 +242,10 @@ void OutputTransaction::Commit() {
   std::error_code ec;
   for (const std::string& path : remove_) {
     if (written.count(fs::path(path).lexically_normal()) != 0) continue;
-    if (fs::exists(fs::symlink_status(path, ec)) && ::unlink(path.c_str()) != 0) {
+    // Only a file or a link can be an old output; anything else under the name is not ours.
+    const fs::file_status status = fs::symlink_status(path, ec);
+    if (!fs::is_regular_file(status) && !fs::is_symlink(status)) continue;
+    if (::unlink(path.c_str()) != 0) {
       throw OutputError("cannot remove the stale output '" + path + "': " + Reason(errno));
     }
   }
@@ -257,6 +260,8 @@ void OutputTransaction::Commit() {
       const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
       if (middle.find_first_not_of("0123456789") != std::string::npos) continue;
       if (written.count(e.path().lexically_normal()) != 0) continue;
+      const fs::file_status status = e.symlink_status(ec);
+      if (!fs::is_regular_file(status) && !fs::is_symlink(status)) continue;
       if (::unlink(e.path().c_str()) != 0) {
         throw OutputError("cannot remove the stale output '" + e.path().string() + "': " + Reason(errno));
       }

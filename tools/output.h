@@ -69,10 +69,11 @@ class OutputTransaction {
   // Stage(path) << content.
   void Stage(const std::string& path, const std::string& content);
   // `path` is an output of this command that this run does not produce: Commit() removes it
-  // if it exists (a link is removed, not its target).
+  // if it is a file or a link (a link is removed, not its target); a folder or FIFO of that
+  // name is not an old output and stays.
   void RemoveAtCommit(const std::string& path);
-  // Commit() removes every entry of folder `dir` named prefix + digits + suffix that was not
-  // staged (e.g. "run_", ".vtp": the samples of a longer earlier run).
+  // Commit() removes every file or link in folder `dir` named prefix + digits + suffix that
+  // was not staged (e.g. "run_", ".vtp": the samples of a longer earlier run).
   void RemoveStaleAtCommit(const std::string& dir, const std::string& prefix, const std::string& suffix);
   // Flushes every staged file to disk, renames each over its target, then removes the stale
   // ones. Throws OutputError naming the path when a write fails; until the first rename
