@@ -102,6 +102,13 @@ DynamicsConfig ParseDynamicsConfig(JsonSection s) {
     g.Finish();
   }
   d.gravity_on_structure = s.Bool("gravity_on_structure", d.gravity_on_structure);
+  {
+    JsonSection l = s.Section("limits");
+    // Whole numbers of steps; int counters in the driver hold up to 2^31 - 1.
+    d.limits.max_steps = l.Integer("max_steps", static_cast<int>(d.limits.max_steps), 1, 2000000000);
+    d.limits.max_output_bytes = l.Number("max_output_bytes", d.limits.max_output_bytes, Range::Closed(1.0, 1e15));
+    l.Finish();
+  }
   s.Finish();
   return d;
 }
@@ -139,7 +146,8 @@ nlohmann::json ToJson(const DynamicsConfig& d) {
           {"guard",
            {{"max_bar_length_error", d.guard.max_bar_length_error},
             {"max_energy_growth", d.guard.max_energy_growth}}},
-          {"gravity_on_structure", d.gravity_on_structure}};
+          {"gravity_on_structure", d.gravity_on_structure},
+          {"limits", {{"max_steps", d.limits.max_steps}, {"max_output_bytes", d.limits.max_output_bytes}}}};
 }
 
 }  // namespace tbridge

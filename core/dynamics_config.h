@@ -72,6 +72,19 @@ struct GuardConfig {
   double max_energy_growth = 0.5;
 };
 
+// Work and output one run may take, checked before it starts (CheckRunLimits in
+// dynamics/simulation.h), so that a typo in duration or dt fails at once, naming the key,
+// instead of running for days or running out of memory.
+struct LimitsConfig {
+  // Integration steps: ceil(duration / dt) for the fixed-step integrators, accepted steps
+  // for dopri5 (counted as it runs); [1, 2e9].
+  long max_steps = 1000000000;
+  // Bytes written or held for writing [B]: history.csv (about 20 bytes per value), the VTK
+  // export when asked, and the deck samples of the frequency measurement (8 bytes each);
+  // [1, 1e15].
+  double max_output_bytes = 1e10;
+};
+
 struct DynamicsConfig {
   double duration = 1.0;              // simulated time [s]
   double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
@@ -96,6 +109,7 @@ struct DynamicsConfig {
   FrequencyConfig frequency;
   GuardConfig guard;
   bool gravity_on_structure = false;  // add m g (down) of bars and node masses to the loads
+  LimitsConfig limits;
 };
 
 // Strict parse; throws ConfigError (key path, value, allowed).

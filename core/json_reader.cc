@@ -1,7 +1,11 @@
 #include "core/json_reader.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -11,12 +15,14 @@
 
 namespace tbridge {
 
-namespace {
-std::string Num(double v) {
+std::string NumberText(double v) {
   std::ostringstream os;
   os << v;
   return os.str();
 }
+
+namespace {
+std::string Num(double v) { return NumberText(v); }
 }  // namespace
 
 bool Range::Contains(double v) const {
@@ -195,13 +201,54 @@ const nlohmann::json* JsonSection::Raw(const std::string& key) {
   return &Get(key);
 }
 
+bool JsonSection::Has(const std::string& key) const {
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
+  return object_.contains(key);
+}
+
 void JsonSection::Finish() const {
   for (auto it = object_.begin(); it != object_.end(); ++it) {
     if (std::find(read_.begin(), read_.end(), it.key()) == read_.end()) {
+      const std::string nearest = NearestKey(it.key(), known_);
       throw ConfigError(PathOf(it.key()), Show(it.value()),
-                        "unknown key (see configs/README.md for the keys allowed here)");
+                        "unknown key" + (nearest.empty() ? std::string() : ", did you mean '" + nearest + "'?") +
+                            " (see configs/README.md for the keys allowed here)");
     }
   }
+}
+
+std::string NearestKey(const std::string& key, const std::vector<std::string>& candidates) {
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  const std::string a = lower(key);
+  // Keys are short; a key of hostile length is not worth a suggestion (and a quadratic table).
+  if (a.size() > 64) return "";
+  std::string best;
+  size_t best_distance = std::max<size_t>(1, a.size() / 3) + 1;
+  for (const std::string& candidate : candidates) {
+    const std::string b = lower(candidate);
+    if (b.size() > 64 || candidate == key) continue;
+    // Optimal string alignment distance (Damerau-Levenshtein without repeated edits).
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      for (size_t j = 1; j <= b.size(); ++j) {
+        const size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+        d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+          d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+      }
+    }
+    if (d[a.size()][b.size()] < best_distance) {
+      best_distance = d[a.size()][b.size()];
+      best = candidate;
+    }
+  }
+  return best;
 }
 
 namespace {
@@ -279,8 +326,14 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& source)
 }
 
 nlohmann::json ReadJsonFile(const std::string& path) {
+  // An ifstream opens a directory without complaint and then reads nothing, which would be
+  // reported as malformed JSON.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw ConfigError(path + ": is a directory, not a JSON file (give the path of a config file)");
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path + ": cannot open file for reading");
+  if (!in) throw ConfigError(path + ": cannot open file for reading: " + std::strerror(errno));
   std::stringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw ConfigError(path + ": read error");

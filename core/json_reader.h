@@ -36,7 +36,9 @@ class JsonSection {
   // `object` is not a JSON object.
   JsonSection(const nlohmann::json& object, std::string path);
 
-  bool Has(const std::string& key) const { return object_.contains(key); }
+  // Whether `key` is present. Every key asked about is remembered as a key this section
+  // knows, so that Finish() can suggest the nearest one for a misspelt key.
+  bool Has(const std::string& key) const;
   // Finite number in `range`; `fallback` when absent (nullopt = required).
   double Number(const std::string& key, std::optional<double> fallback, Range range);
   // Integer in [lo, hi]; `fallback` when absent (nullopt = required).
@@ -60,7 +62,8 @@ class JsonSection {
   const nlohmann::json* Raw(const std::string& key);
   // Path of a child key, for messages: "dynamics.loads[2].node".
   std::string PathOf(const std::string& key) const;
-  // Throws ConfigError naming the first key that was never read.
+  // Throws ConfigError naming the first key that was never read, with "did you mean 'k'?"
+  // when a known key is within NearestKey's distance.
   void Finish() const;
 
  private:
@@ -68,12 +71,20 @@ class JsonSection {
   nlohmann::json object_;
   std::string path_;
   std::vector<std::string> read_;
+  mutable std::vector<std::string> known_;  // every key asked about, present or not
 };
+
+// The candidate closest to `key` in edit distance (insertions, deletions, substitutions and
+// swaps of neighbours, case ignored) when it is at most max(1, |key| / 3) away, else "".
+std::string NearestKey(const std::string& key, const std::vector<std::string>& candidates);
 
 // Parses JSON text; malformed input is a ConfigError naming `source` and the parser's reason.
 nlohmann::json ParseJsonText(const std::string& text, const std::string& source);
-// Reads and parses a file; unreadable files are a ConfigError naming the path.
+// Reads and parses a file; unreadable files (missing, a directory, no permission) are a
+// ConfigError naming the path and the reason.
 nlohmann::json ReadJsonFile(const std::string& path);
+// A number as messages show it (ostream's default: 6 significant digits, "inf", "nan").
+std::string NumberText(double value);
 // Short rendering of a JSON value for messages (truncated).
 std::string Show(const nlohmann::json& value);
 

@@ -1,6 +1,12 @@
 #include "design/deck.h"
 
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "core/error.h"
+#include "core/json_reader.h"
 
 namespace tbridge {
 
@@ -29,7 +35,46 @@ Deck ComputeDeck(const BridgeConfig& b, const Material& m, const DesignConfig& d
   deck.total_load = b.payload + deck.beams_mass * g;
   deck.station_load = deck.total_load / stations;
   deck.node_load = deck.station_load / b.planes;
+  CheckComputable(deck, b, m, d);
   return deck;
+}
+
+void CheckComputable(const Deck& deck, const BridgeConfig& b, const Material& m, const DesignConfig& d) {
+  const std::pair<const char*, double> derived[] = {{"deck section length L / 2^n", deck.section_length},
+                                                    {"deck beam mass m_d (eq 7)", deck.section_mass},
+                                                    {"deck thickness (eq 6)", deck.thickness},
+                                                    {"total load F_tot (eq 9)", deck.total_load},
+                                                    {"deck node load", deck.node_load}};
+  for (const auto& [what, value] : derived) {
+    if (std::isfinite(value) && value > 0 && value < kMaxComputable) continue;
+    // The input farthest from its default, in orders of magnitude, is the likeliest cause.
+    const BridgeConfig b0;
+    const Material m0;
+    const DesignConfig d0;
+    const std::tuple<const char*, double, double> inputs[] = {
+        {"bridge.span", b.span, b0.span},
+        {"bridge.payload", b.payload, b0.payload},
+        {"bridge.deck_width", b.deck_width, b0.deck_width},
+        {"material.density", m.density, m0.density},
+        {"material.yield_stress", m.yield_stress, m0.yield_stress},
+        {"design.yield_safety_factor", d.yield_safety_factor, d0.yield_safety_factor},
+        {"design.gravity", d.gravity, d0.gravity}};
+    const char* key = "bridge.span";
+    double input = b.span, farthest = -1;
+    for (const auto& [name, v, v0] : inputs) {
+      if (!(v > 0)) continue;  // gravity 0 is a weightless deck, not an extreme
+      const double orders = std::abs(std::log10(v / v0));
+      if (orders > farthest) {
+        farthest = orders;
+        key = name;
+        input = v;
+      }
+    }
+    throw ConfigError(key, NumberText(input),
+                      std::string("gives a ") + what + " of " + NumberText(value) +
+                          ", outside what can be computed (finite, > 0 and < " + NumberText(kMaxComputable) +
+                          "): bring the inputs nearer to a real bridge (configs/README.md)");
+  }
 }
 
 }  // namespace tbridge

@@ -15,7 +15,19 @@ struct Deck {
   double station_load = 0;    // F_tot / 2^n, the paper's f for a planar bridge [N]
 };
 
-// sigma_d = yield_stress / yield_safety_factor.
+// Largest magnitude a derived load, length or mass may have: the solver forms products and
+// squares of the loads, which must stay finite in double precision (about 1e308).
+inline constexpr double kMaxComputable = 1e100;
+
+// sigma_d = yield_stress / yield_safety_factor. Throws ConfigError (CheckComputable) when the
+// inputs give a deck quantity that cannot be computed.
 Deck ComputeDeck(const BridgeConfig& bridge, const Material& material, const DesignConfig& design);
+
+// Throws ConfigError when a quantity of `deck` is not finite, not positive (underflow) or not
+// below kMaxComputable. It names the input farthest from its default in orders of magnitude
+// (span, payload, deck width, density, yield stress, safety factor, gravity), its value, and
+// the quantity.
+void CheckComputable(const Deck& deck, const BridgeConfig& bridge, const Material& material,
+                     const DesignConfig& design);
 
 }  // namespace tbridge

@@ -126,8 +126,15 @@ DesignInputs PrepareDesign(const Config& config) {
   return in;
 }
 
-Design RunDesign(const Config& config) {
+Design RunDesign(const Config& config, ProgressReporter* progress) {
+  // Fractions of a whole design's time at n = 16: topology 0.2, factorisation 0.4, solve and
+  // sizing the rest (the caller's output writing comes after).
+  auto done = [progress](double fraction) {
+    if (progress) progress->Update(fraction, 1.0);
+  };
+  if (progress) progress->Stage("design");
   DesignInputs in = PrepareDesign(config);
+  done(0.2);
   Design d;
   d.config = config;
   d.topology = std::move(in.topology);
@@ -142,6 +149,7 @@ Design RunDesign(const Config& config) {
   const EquilibriumBasis basis = FactorEquilibrium(eq, FreeLoads(eq, d.loads));
   d.self_stress_states = basis.self_stress_states();
   CheckBasis(basis);
+  done(0.6);
   const ReducedMinMassProblem problem(s, basis, settings);
   const Eigen::VectorXd forces = SolveMinMass(problem, s, d.loads, settings, config.design, d.solver, d.solver_form);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
@@ -156,6 +164,7 @@ Design RunDesign(const Config& config) {
        << " iterations (equilibrium residual " << d.equilibrium_residual << " N)";
     throw ModelError(os.str());
   }
+  done(0.8);
 
   for (int b = 0; b < s.num_bars(); ++b) {
     MemberSizing m = SizeBar(s.Length(s.bars[b]), forces[b], settings.bar_min_area[b], sigma_w,
@@ -180,6 +189,7 @@ Design RunDesign(const Config& config) {
   d.mass.deck_beams = d.deck.beams_mass;
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
   d.mass.total = d.mass.structure + d.mass.deck_beams;
+  done(1.0);
   return d;
 }
 

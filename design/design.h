@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/config.h"
+#include "core/progress.h"
 #include "design/deck.h"
 #include "design/min_mass.h"
 #include "design/sizing.h"
@@ -49,7 +50,9 @@ DesignInputs PrepareDesign(const Config& config);
 
 // Runs the whole design. Throws ConfigError for bad parameters and ModelError when no
 // design is found (the message carries the solver's status).
-Design RunDesign(const Config& config);
+// `progress` (may be null) is told the fraction done at each stage: topology, equilibrium
+// factorisation, solve, sizing.
+Design RunDesign(const Config& config, ProgressReporter* progress = nullptr);
 
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include "core/error.h"
 
 namespace tbridge {
 
@@ -13,6 +16,30 @@ const char* KindName(MemberKind kind) {
     default: return "string";
   }
 }
+
+namespace {
+
+// Areas and masses are finite for any config that passed CheckComputable (design/deck.h), short
+// of a material at the edge of its range; the check keeps a NaN from reaching the output.
+void CheckFinite(const MemberSizing& s, const Material& m) {
+  if (!std::isfinite(s.area) || !std::isfinite(s.radius)) {
+    throw ConfigError("material.yield_stress", std::to_string(m.yield_stress),
+                      "with material.youngs_modulus = " + std::to_string(m.youngs_modulus) +
+                          " gives a member area of " + std::to_string(s.area) + " m^2 (force " +
+                          std::to_string(s.force) + " N), outside what can be computed");
+  }
+  if (!std::isfinite(s.stiffness)) {
+    throw ConfigError("material.youngs_modulus", std::to_string(m.youngs_modulus),
+                      "gives a string stiffness of " + std::to_string(s.stiffness) + " N/m, outside what can be computed");
+  }
+  if (!std::isfinite(s.mass)) {
+    throw ConfigError("material.density", std::to_string(m.density),
+                      "gives a member mass of " + std::to_string(s.mass) + " kg (area " + std::to_string(s.area) +
+                          " m^2), outside what can be computed");
+  }
+}
+
+}  // namespace
 
 double EulerArea(double length, double compression, double E) {
   // C = pi^2 E A^2 / (4 pi l^2)  =>  A = 2 l sqrt(C / (pi E)).
@@ -40,6 +67,7 @@ MemberSizing SizeString(double length, double tension, double min_area, double s
   s.rest_length = length / (1.0 + s.stress / m.youngs_modulus);
   s.stiffness = s.area > 0 ? m.youngs_modulus * s.area / s.rest_length : 0.0;
   s.mass = m.density * s.area * length;
+  CheckFinite(s, m);
   return s;
 }
 
@@ -65,6 +93,7 @@ MemberSizing SizeBar(double length, double compression, double min_area, double 
   b.radius = std::sqrt(b.area / std::numbers::pi);
   b.stress = b.area > 0 ? b.force / b.area : 0.0;
   b.mass = m.density * b.area * length;
+  CheckFinite(b, m);
   return b;
 }
 

@@ -33,6 +33,8 @@ MemberSizing SizeString(double length, double tension, double min_area, double w
                         const Material& material);
 
 // Solid circular bar: A = max(C / sigma_w, 2 l sqrt(SF C / (pi E)), min_area).
+// Both throw ConfigError naming the material key when the area, stiffness or mass is not
+// finite (inputs at the edge of their ranges).
 MemberSizing SizeBar(double length, double compression, double min_area, double working_stress,
                      double buckling_safety_factor, const Material& material);
 

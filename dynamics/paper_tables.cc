@@ -1,11 +1,13 @@
 #include "dynamics/paper_tables.h"
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/progress.h"
 #include "design/design.h"
 #include "dynamics/scenario.h"
 
@@ -55,21 +57,31 @@ int PerturbedClass(const nlohmann::json& delta) {
   return 0;
 }
 
+// Progress stages named after the config file: "paper_t5_n3_d1.json: simulate".
+RunHooks HooksFor(const std::string& path, ProgressReporter* progress) {
+  RunHooks hooks;
+  hooks.progress = progress;
+  hooks.stage_prefix = std::filesystem::path(path).filename().string() + ": ";
+  return hooks;
+}
+
 // Runs each distinct resolved config once: Table 6's p1 column is the Table 5 run.
 class ScenarioCache {
  public:
+  explicit ScenarioCache(ProgressReporter* progress) : progress_(progress) {}
   const SimulationSummary& Run(const std::string& path, int& runs) {
     const Config config = LoadConfig(path);
     const std::string key = ToJson(config).dump();
     auto it = cache_.find(key);
     if (it == cache_.end()) {
       ++runs;
-      it = cache_.emplace(key, RunScenario(config).simulation.summary).first;
+      it = cache_.emplace(key, RunScenario(config, HooksFor(path, progress_)).simulation.summary).first;
     }
     return it->second;
   }
 
  private:
+  ProgressReporter* progress_;
   std::map<std::string, SimulationSummary> cache_;
 };
 
@@ -133,15 +145,17 @@ std::string RowConfig(const std::string& dir, int table, int n, int cls, int lev
 
 }  // namespace
 
-PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& tables) {
+PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& tables, ProgressReporter* progress) {
   PaperReproduction out;
   out.json = nlohmann::json::object();
   if (tables.count(1) || tables.count(2) || tables.count(3) || tables.count(4)) {
+    if (progress != nullptr) progress->Stage("paper: designs n = 1..3");
     DesignTables(dir, tables, out);
   }
   if (tables.count(kSection73)) {
     for (const char* run : {"travelling", "wind"}) {
-      const ScenarioResult r = RunScenario(LoadConfig(dir + "/paper_3d_" + run + ".json"));
+      const std::string path = dir + "/paper_3d_" + run + ".json";
+      const ScenarioResult r = RunScenario(LoadConfig(path), HooksFor(path, progress));
       ++out.runs;
       const SimulationSummary& s = r.simulation.summary;
       nlohmann::json peak = nlohmann::json::object(), node = nlohmann::json::object();
@@ -162,7 +176,7 @@ PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& ta
   }
   if (!tables.count(5) && !tables.count(6)) return out;
   const nlohmann::json ref = ReadJsonFile(dir + "/reference/paper_tables_5_6.json");
-  ScenarioCache cache;
+  ScenarioCache cache(progress);
   if (tables.count(5)) {
     for (const auto& row : ref.at("table5")) {
       const int n = row.at("n");

@@ -9,6 +9,8 @@
 
 namespace tbridge {
 
+class ProgressReporter;
+
 // One compared number. Tables 1-4 use SPEC.md §5's rule (absolute: half a unit of the last
 // printed digit, radii to 0.05 mm); Tables 5-6 use SPEC.md §9's relative tolerances.
 struct PaperCheck {
@@ -53,6 +55,8 @@ inline constexpr int kSection73 = 7;
 // Runs the requested tables (1..6, and kSection73) from the configs in `configs_dir`
 // (paper_n*.json, paper_t5_*.json, paper_t6_*.json, paper_3d_*.json and reference/). Throws ConfigError when a config or the
 // reference data is missing or bad, ModelError when a design or run fails.
-PaperReproduction ReproducePaper(const std::string& configs_dir, const std::set<int>& tables);
+// `progress` (optional) is told each design and run as a stage named after its config.
+PaperReproduction ReproducePaper(const std::string& configs_dir, const std::set<int>& tables,
+                                 ProgressReporter* progress = nullptr);
 
 }  // namespace tbridge

@@ -1,25 +1,32 @@
 #include "dynamics/scenario.h"
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "dynamics/structure_model.h"
 
 namespace tbridge {
 
-ScenarioResult RunScenario(const Config& config) {
+ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
+                           const std::function<void(const Design&)>& on_design) {
   if (!config.dynamics) {
     throw ConfigError("dynamics", "(missing)", "a dynamic scenario needs a \"dynamics\" section");
   }
   const DynamicsConfig& dc = *config.dynamics;
+  CheckStepLimit(dc);  // before the design, which may take a while itself
   ScenarioResult r;
   const ModelOptions options = ModelOptionsOf(dc);
   if (config.structure) {
     r.model = BuildStructureModel(*config.structure, options);
-    r.simulation = Simulate(r.model, dc);
+    if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "simulate");
+    r.simulation = Simulate(r.model, dc, {}, hooks);
     return r;
   }
+  if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "design");
   r.design = RunDesign(config);
+  if (on_design) on_design(r.design);
   r.model = BuildDynamicModel(r.design, options);
-  r.simulation = Simulate(r.model, dc, ReportPrestrain(r.model, r.design, options));
+  if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "simulate");
+  r.simulation = Simulate(r.model, dc, ReportPrestrain(r.model, r.design, options), hooks);
   return r;
 }
 

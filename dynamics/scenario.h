@@ -2,6 +2,7 @@
 // custom scene, config -> structure model -> simulation.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/config.h"
@@ -19,7 +20,11 @@ struct ScenarioResult {
 
 // Throws ConfigError when `config` has no "dynamics" section (or a bad one), ModelError when
 // the design or the run fails (see RunDesign and Simulate). A "structure" config skips the
-// design and builds its model with BuildStructureModel.
-ScenarioResult RunScenario(const Config& config);
+// design and builds its model with BuildStructureModel. `hooks` go to Simulate (progress,
+// the caller's bytes per record for the output limit); the progress stages are "design" and
+// "simulate".
+// `on_design` (optional) sees the design before the run starts, and may throw to stop it.
+ScenarioResult RunScenario(const Config& config, const RunHooks& hooks = {},
+                           const std::function<void(const Design&)>& on_design = {});
 
 }  // namespace tbridge

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <cmath>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/progress.h"
 #include "dynamics/class1.h"
 #include "dynamics/classk.h"
 #include "dynamics/coupling.h"
@@ -369,6 +371,50 @@ Eigen::VectorXd InitialState(const DynamicModel& model, const DynamicsConfig& co
   return y;
 }
 
+RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record) {
+  RunEstimate e;
+  // As the driver counts them; a double first, since a typo can ask for more than a long holds.
+  const double steps = std::max(1.0, std::ceil(config.duration / config.dt - 1e-9));
+  e.steps = steps > 9e18 ? std::numeric_limits<long>::max() : static_cast<long>(steps);
+  const double records = config.record.nodes.empty() ? 0.0 : std::floor(steps / config.record.every) + 1;
+  e.records = records > 9e18 ? std::numeric_limits<long>::max() : static_cast<long>(records);
+  const double values = records * (1.0 + model.dim * static_cast<double>(config.record.nodes.size()));
+  // history.csv prints 12 significant digits: up to about 20 characters a value with its sign,
+  // exponent and separator; without the CSV the rows are still held (8 bytes a value).
+  e.history_bytes = values * (config.record.csv ? 20.0 : 8.0);
+  if (config.frequency.enabled && !model.deck_nodes.empty()) {
+    e.deck_bytes = (std::floor(steps / config.frequency.every) + 1) * 8.0 * static_cast<double>(model.deck_nodes.size());
+  }
+  e.extra_bytes = records * extra_bytes_per_record;
+  return e;
+}
+
+void CheckStepLimit(const DynamicsConfig& config) {
+  const double steps = std::max(1.0, std::ceil(config.duration / config.dt - 1e-9));
+  if (config.integrator != "dopri5" && steps > static_cast<double>(config.limits.max_steps)) {
+    throw ConfigError("dynamics.duration", Num(config.duration),
+                      "with dynamics.dt = " + Num(config.dt) + " s the run takes " + Num(steps) +
+                          " steps, more than dynamics.limits.max_steps = " +
+                          Num(static_cast<double>(config.limits.max_steps)) +
+                          " allows: shorten the duration, enlarge dt, or raise dynamics.limits.max_steps");
+  }
+}
+
+void CheckRunLimits(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record) {
+  CheckStepLimit(config);
+  const RunEstimate e = EstimateRun(model, config, extra_bytes_per_record);
+  const std::string duration = Num(config.duration);
+  if (e.total_bytes() > config.limits.max_output_bytes) {
+    throw ConfigError("dynamics.duration", duration,
+                      "with dynamics.dt = " + Num(config.dt) + " s the run writes or holds about " +
+                          Num(e.total_bytes()) + " bytes (history " + Num(e.history_bytes) + ", deck samples " +
+                          Num(e.deck_bytes) + ", export " + Num(e.extra_bytes) +
+                          "), more than dynamics.limits.max_output_bytes = " + Num(config.limits.max_output_bytes) +
+                          " allows: record fewer nodes or samples (dynamics.record.every, dynamics.frequency.every), "
+                          "shorten the run, or raise dynamics.limits.max_output_bytes");
+  }
+}
+
 namespace {
 
 // Integrates `config` with the engine `system` (Class1System or ClassKSystem, its adapter
@@ -377,7 +423,7 @@ template <class System, class Ode>
 SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& config,
                              const std::vector<PrestrainReport>& prestrain, const System& system,
                              const ClassKSystem* probe, SimulationResult result,
-                             std::chrono::steady_clock::time_point wall_start) {
+                             std::chrono::steady_clock::time_point wall_start, ProgressReporter* progress) {
   const int dim = model.dim;
   Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
@@ -438,6 +484,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
         for (int k = 0; k < choice.substeps; ++k) Rk4Step(ode, t_old + k * h, h, y, ws);
       }
       monitor.Accept(static_cast<int>(step), t_old, t, y.data());
+      // A lock and two stores every 1024 steps: far below the cost of the steps.
+      if (progress != nullptr && (step & 1023) == 0) progress->Update(t, config.duration);
       if (recording && step % config.record.every == 0) take_history(t, y);
       if (deck && step % config.frequency.every == 0) take_deck(y);
     }
@@ -456,8 +504,14 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
     int step = 0;
     while (t < config.duration) {
       const double t_old = t;
+      if (step >= config.limits.max_steps) {
+        throw ConfigError("dynamics.limits.max_steps", Num(static_cast<double>(config.limits.max_steps)),
+                          "dopri5 used them all before t = " + Num(t) + " s of dynamics.duration = " +
+                              Num(config.duration) + " s: raise the limit, or loosen dynamics.rtol and atol");
+      }
       dp.Step(ode, t, y, h, config.duration, ws);
       monitor.Accept(++step, t_old, t, y.data());
+      if (progress != nullptr && (step & 1023) == 0) progress->Update(t, config.duration);
       // Dense output onto the uniform grids (within rounding of the end time).
       if (recording) {
         for (; hist.next * hist.spacing <= t * (1 + 1e-12); ++hist.next) {
@@ -476,6 +530,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
     s.rejected = dp.rejected();
     s.evaluations = dp.evaluations();
   }
+  if (progress != nullptr) progress->Update(config.duration, config.duration);
   if (recording) result.history.conservativeResize(hist.rows, n_cols);
   if (deck) result.deck_vertical.conservativeResize(deck_s.rows, result.deck_vertical.cols());
 
@@ -511,7 +566,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 }  // namespace
 
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain) {
+                          const std::vector<PrestrainReport>& prestrain, const RunHooks& hooks) {
+  CheckRunLimits(model, config, hooks.extra_bytes_per_record ? hooks.extra_bytes_per_record(model) : 0.0);
   const auto wall_start = std::chrono::steady_clock::now();
   const int dim = model.dim, n_n = model.num_nodes();
 
@@ -544,11 +600,11 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   if (engine == "class1") {
     const Class1System system(model, options, timed);
     return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, probe.get(), std::move(result),
-                                                wall_start);
+                                                wall_start, hooks.progress);
   }
   const ClassKSystem system(model, options, timed);
   return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, probe.get(), std::move(result),
-                                              wall_start);
+                                              wall_start, hooks.progress);
 }
 
 }  // namespace tbridge

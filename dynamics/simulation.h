@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -119,12 +120,47 @@ struct IntegratorChoice {
 // Any other request is returned as it is, with one sub-step.
 IntegratorChoice ResolveIntegrator(const std::string& requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y);
 
+// What a run of `config` on `model` will take, known before it starts.
+struct RunEstimate {
+  long steps = 0;            // ceil(duration / dt): steps of dt (dopri5: output grid points)
+  long records = 0;          // history rows (0 when no node is recorded)
+  double history_bytes = 0;  // history.csv (about 20 bytes a value), or the rows held in memory
+  double deck_bytes = 0;     // deck samples of the frequency measurement held in memory
+  double extra_bytes = 0;    // records x the caller's bytes per record (e.g. the VTK export)
+  double total_bytes() const { return history_bytes + deck_bytes + extra_bytes; }
+};
+RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record = 0);
+
+// Throws ConfigError naming dynamics.duration (with dt and the limit key) when the run needs
+// more steps than config.limits.max_steps. Only the fixed-step integrators are checked here;
+// dopri5's count is unknown and it stops at the limit as it runs. Needs no model, so a
+// scenario checks it before the design.
+void CheckStepLimit(const DynamicsConfig& config);
+
+// CheckStepLimit, then a ConfigError naming dynamics.duration when the run writes or holds
+// more bytes than config.limits.max_output_bytes (EstimateRun, with `extra_bytes_per_record`
+// for outputs the caller writes per record).
+void CheckRunLimits(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record = 0);
+
+class ProgressReporter;
+
+// Optional company of a run.
+struct RunHooks {
+  ProgressReporter* progress = nullptr;  // told the simulated time [s] against the duration
+  std::string stage_prefix;              // put before RunScenario's stage names, e.g. "paper_n3: "
+  // Bytes the caller will write per recorded sample besides history.csv (e.g. the VTK
+  // export), counted against the output limit (CheckRunLimits); empty = none.
+  std::function<double(const DynamicModel&)> extra_bytes_per_record;
+};
+
 // Runs `config` on `model` with the engine EngineFor picks. Throws ConfigError for initial
 // conditions, loads or an engine that do not fit the model, ModelError when the run blows up:
 // NaN/Inf in the state, a bar-length error above guard.max_bar_length_error, energy growth
 // above guard.max_energy_growth, or (class k) a singular constraint matrix. The message names the step and time and suggests a smaller dt.
-// `prestrain` reports are copied into the summary.
+// `prestrain` reports are copied into the summary. Checks CheckRunLimits first; a dopri5 run
+// that needs more than limits.max_steps accepted steps stops with a ConfigError naming
+// dynamics.limits.max_steps.
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain = {});
+                          const std::vector<PrestrainReport>& prestrain = {}, const RunHooks& hooks = {});
 
 }  // namespace tbridge

@@ -124,13 +124,13 @@ Shard ParseShard(const std::string& text, const std::string& option) {
   const size_t slash = text.find('/');
   auto number = [&](const std::string& s) {
     if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) {
-      throw ConfigError(option, "'" + text + "'", allowed);
+      throw OptionError(option, "'" + text + "'", allowed);
     }
     return std::stoi(s);
   };
-  if (slash == std::string::npos) throw ConfigError(option, "'" + text + "'", allowed);
+  if (slash == std::string::npos) throw OptionError(option, "'" + text + "'", allowed);
   Shard s{number(text.substr(0, slash)), number(text.substr(slash + 1))};
-  if (s.count < 1 || s.index < 1 || s.index > s.count) throw ConfigError(option, "'" + text + "'", allowed);
+  if (s.count < 1 || s.index < 1 || s.index > s.count) throw OptionError(option, "'" + text + "'", allowed);
   return s;
 }
 

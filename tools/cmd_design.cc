@@ -1,4 +1,5 @@
-// `tbridge design CONFIG.json -o OUT.json [--quiet]`: the minimum-mass design of one config.
+// `tbridge design CONFIG.json -o OUT.json [--quiet] [--progress] [--strict]`: the minimum-mass
+// design of one config.
 
 #include <iostream>
 #include <string>
@@ -6,7 +7,9 @@
 
 #include "core/config.h"
 #include "design/design.h"
+#include "core/progress.h"
 #include "design/design_report.h"
+#include "design/plausibility.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 
@@ -19,10 +22,14 @@ const CommandSpec& DesignSpec() {
       "design",
       {"CONFIG.json"},
       {{{"-o", "--output"}, "OUT.json", "where to write the design, a JSON file", true},
-       {{"-q", "--quiet"}, "", "do not print the summary", false}},
+       {{"-q", "--quiet"}, "", "do not print the summary", false},
+       ProgressOption(),
+       StrictOption()},
       "Reads CONFIG.json (keys in configs/README.md), finds the minimum-mass design and writes\n"
       "it to OUT.json (fields in README.md). OUT.json is written only when the design\n"
-      "succeeds, and never partially."};
+      "succeeds, and never partially; a failed run leaves it as it was. Implausible results\n"
+      "(members under 1 mm, a deck under 1 mm or over span / 10, ...) are warned about on\n"
+      "stderr. Draw the design with tools/plot_sweep.py bridge OUT.json -o FIG.png."};
   return spec;
 }
 
@@ -34,9 +41,19 @@ int RunDesignCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string out_path = parsed.Required("-o");
-  // Everything that can fail runs before the output file is touched.
-  const Design design = RunDesign(LoadConfig(parsed.positionals[0]));
-  WriteFileAtomically(out_path, [&design](std::ostream& os) { WriteDesignJson(design, os); });
+  const Config config = LoadConfig(parsed.positionals[0]);
+  // Staged before the design, so an output that cannot be written fails at once; nothing
+  // replaces OUT.json before Commit().
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& json = outputs.Stage(out_path);
+  ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
+  const Design design = RunDesign(config, &progress);
+  progress.Stage("writing");
+  WriteDesignJson(design, json);
+  progress.Finish();
+  ReportWarnings(PlausibilityWarnings(design), parsed.Flag("--strict"));
+  outputs.Commit();
   if (!parsed.Flag("-q")) {
     std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";
   }

@@ -91,8 +91,12 @@ int RunMergeCommand(const std::vector<std::string>& args) {
   if (all.size() != rows.size()) {
     throw ConfigError("merge", "candidates " + missing, "missing: merge every shard of the sweep");
   }
-  WriteFileAtomically(out_dir + "/sweep.csv", SweepCsv(all));
-  WriteFileAtomically(out_dir + "/sweep.json", SweepJson(*sweep, all, std::nullopt));
+  // The pair replaces the old one together, or not at all.
+  OutputTransaction outputs;
+  for (const std::string& dir : dirs) outputs.ProtectInput(dir + "/sweep.json");
+  outputs.Stage(out_dir + "/sweep.csv", SweepCsv(all));
+  outputs.Stage(out_dir + "/sweep.json", SweepJson(*sweep, all, std::nullopt));
+  outputs.Commit();
   std::cout << "merged " << all.size() << " candidates from " << dirs.size() << " director"
             << (dirs.size() == 1 ? "y" : "ies") << " into " << out_dir << "\n";
   return 0;

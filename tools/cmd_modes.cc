@@ -12,7 +12,9 @@
 
 #include "core/config.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "design/design.h"
+#include "design/plausibility.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
@@ -32,7 +34,9 @@ const CommandSpec& ModesSpec() {
       {"CONFIG.json"},
       {{{"-o", "--output"}, "OUT.json", "where to write the modes, a JSON file", true},
        {{"-k", "--count"}, "K", "mode shapes to write, lowest first (default 6; 0 = none)", false},
-       {{"-q", "--quiet"}, "", "do not print the frequency table", false}},
+       {{"-q", "--quiet"}, "", "do not print the frequency table", false},
+       ProgressOption(),
+       StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
       "model (string masses on the bars, eq. 27, unless a \"dynamics\" section says otherwise)\n"
       "and writes every linearised natural frequency about the static equilibrium, with the bar\n"
@@ -145,16 +149,29 @@ int RunModesCommand(const std::vector<std::string>& args) {
   }
   const std::string out_path = parsed.Required("-o");
   const int shapes = ParseCount(parsed);
-  // Everything that can fail runs before the output file is touched.
   const Config config = LoadConfig(parsed.positionals[0]);
+  // Staged before the work: an unwritable OUT.json fails at once and changes only at Commit().
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& json = outputs.Stage(out_path);
+  ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
   // A "dynamics" section sets the model (string mass, prestrain, gravity); the paper's
   // model otherwise.
   const ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
+  std::optional<Design> design;
+  if (!config.structure) {
+    progress.Stage("design");
+    design = RunDesign(config);
+  }
   const DynamicModel model =
-      config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(RunDesign(config), options);
+      config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(*design, options);
+  progress.Stage("modes");
   const ModalResult result = ComputeModes(model);
+  progress.Finish();
+  if (design) ReportWarnings(PlausibilityWarnings(*design), parsed.Flag("--strict"));
   const auto symmetry = Symmetries(model, result);
-  WriteFileAtomically(out_path, ModesToJson(config, model, result, symmetry, shapes).dump(2) + "\n");
+  json << ModesToJson(config, model, result, symmetry, shapes).dump(2) << "\n";
+  outputs.Commit();
   if (!parsed.Flag("-q")) std::cout << ModesTable(result, symmetry, 20) << "wrote " << out_path << "\n";
   return 0;
 }

@@ -1,6 +1,9 @@
-// `tbridge simulate CONFIG.json -o OUTDIR [--quiet]`: a dynamic scenario (the config's
-// "dynamics" section) of the designed bridge or of the config's custom "structure". Writes OUTDIR/summary.json and, when nodes are recorded,
-// OUTDIR/history.csv; both atomically and only after the run succeeded.
+// `tbridge simulate CONFIG.json -o OUTDIR [--vtk DIR] [--quiet] [--progress] [--strict]`: a
+// dynamic scenario (the config's "dynamics" section) of the designed bridge or of the config's
+// custom "structure". Writes OUTDIR/summary.json and, when nodes are recorded and
+// record.csv is on, OUTDIR/history.csv, plus the VTK series with --vtk: all in one
+// OutputTransaction, so a failed run changes nothing and a successful one removes its own
+// stale files (an old history.csv, surplus run_<k>.vtp).
 
 #include <cstdio>
 #include <iostream>
@@ -12,6 +15,8 @@
 
 #include "core/config.h"
 #include "core/error.h"
+#include "core/progress.h"
+#include "design/plausibility.h"
 #include "dynamics/model.h"
 #include "dynamics/scenario.h"
 #include "tools/commands.h"
@@ -28,12 +33,18 @@ const CommandSpec& SimulateSpec() {
       {"CONFIG.json"},
       {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
        {{"-q", "--quiet"}, "", "do not print the summary", false},
-       {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.pvd + run_<k>.vtp)", false}},
+       {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.pvd + run_<k>.vtp)", false},
+       ProgressOption(),
+       StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
       "model and runs the scenario of its \"dynamics\" section (keys in configs/README.md). Writes OUTDIR/summary.json (the resolved\n"
       "config, frequency, stresses, slack events, bar-length error, energy balance) and\n"
-      "OUTDIR/history.csv (t, then x, y[, z] of every recorded node). A run that blows up\n"
-      "writes nothing."};
+      "OUTDIR/history.csv (t, then x, y[, z] of every recorded node). A run that fails\n"
+      "changes nothing on disk; a successful run replaces its own files in OUTDIR (and DIR) and\n"
+      "removes its stale ones (history.csv when record.csv is off), leaving other files alone.\n"
+      "Steps and output bytes are checked before the run (dynamics.limits). Look at a result\n"
+      "with tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png, or open DIR/run.pvd in\n"
+      "ParaView."};
   return spec;
 }
 
@@ -172,20 +183,55 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   }
   const std::string out_dir = parsed.Required("-o");
   const Config config = LoadConfig(parsed.positionals[0]);
-  const ScenarioResult scenario = RunScenario(config);
-  const DynamicsConfig& dc = *config.dynamics;
+  const auto vtk_dir = parsed.Value("--vtk");
+  const bool csv = config.dynamics && config.dynamics->record.csv && !config.dynamics->record.nodes.empty();
+
+  // Every output staged before the run, so a location that cannot be written fails at once;
+  // nothing in OUTDIR or DIR changes before Commit().
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& summary_out = outputs.Stage(out_dir + "/summary.json");
+  std::ostream* history_out = nullptr;
+  if (csv) {
+    history_out = &outputs.Stage(out_dir + "/history.csv");
+  } else {
+    outputs.RemoveAtCommit(out_dir + "/history.csv");  // an earlier run's, not this one's
+  }
+  std::ostream* pvd_out = nullptr;
+  if (vtk_dir) {
+    pvd_out = &outputs.Stage(*vtk_dir + "/run.pvd");
+    outputs.RemoveStaleAtCommit(*vtk_dir, "run_", ".vtp");
+  }
+
+  ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
+  RunHooks hooks;
+  hooks.progress = &progress;
+  if (vtk_dir) hooks.extra_bytes_per_record = [](const DynamicModel& m) { return VtkBytesPerSample(m); };
+  // Under --strict an implausible design stops before the run; otherwise its warnings are
+  // printed after the run, not across the progress line.
+  std::vector<std::string> warnings;
+  const auto check_design = [&](const Design& design) {
+    warnings = PlausibilityWarnings(design);
+    if (parsed.Flag("--strict")) ReportWarnings(warnings, true);
+  };
+  const ScenarioResult scenario = RunScenario(config, hooks, check_design);
+  progress.Finish();
+  ReportWarnings(warnings, false);
   const DynamicModel& model = scenario.model;
   const SimulationResult& result = scenario.simulation;
 
-  const std::string summary = SummaryJson(config, model, result).dump(2) + "\n";
-  const bool csv = dc.record.csv && !result.recorded_nodes.empty();
-  const std::string history = csv ? HistoryCsv(result) : std::string();
-  const auto vtk_dir = parsed.Value("--vtk");
-  // Built before anything is written, so a bad request leaves no partial output.
-  const auto vtk = vtk_dir ? VtkSeries(model, result) : std::map<std::string, std::string>();
-  WriteFileAtomically(out_dir + "/summary.json", summary);
-  for (const auto& [name, content] : vtk) WriteFileAtomically(*vtk_dir + "/" + name, content);
-  if (csv) WriteFileAtomically(out_dir + "/history.csv", history);
+  summary_out << SummaryJson(config, model, result).dump(2) << "\n";
+  if (history_out != nullptr) *history_out << HistoryCsv(result);
+  if (vtk_dir) {
+    for (const auto& [name, content] : VtkSeries(model, result)) {
+      if (name == "run.pvd") {
+        *pvd_out << content;
+      } else {
+        outputs.Stage(*vtk_dir + "/" + name, content);
+      }
+    }
+  }
+  outputs.Commit();
   if (!parsed.Flag("-q")) {
     const SimulationSummary& s = result.summary;
     std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator;

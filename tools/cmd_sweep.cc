@@ -4,7 +4,6 @@
 // candidates in flight; --resume reuses the stored ones of the same config (fingerprint).
 // OUTDIR/sweep.csv and sweep.json are written at the end.
 
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -17,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/progress.h"
 #include "sweep/sweep.h"
 #include "tools/commands.h"
 #include "tools/output.h"
@@ -33,7 +33,7 @@ const CommandSpec& SweepSpecOfCommand() {
        {{"-j", "--threads"}, "K", "worker threads (default: the number of cores)", false},
        {{"--shard"}, "i/N", "evaluate only the candidates with index % N == i - 1", false},
        {{"--resume"}, "", "reuse OUTDIR/candidates/*.json of the same config", false},
-       {{"--progress"}, "", "progress bar on stderr even when it is not a terminal", false},
+       ProgressOption(),
        {{"-q", "--quiet"}, "", "do not print the choice", false}},
       "Evaluates every candidate of the config's \"sweep\" grid (n x p x beta x deck prestrain):\n"
       "minimum-mass design, joint mass, first frequency and the travelling-load run where asked,\n"
@@ -53,38 +53,6 @@ int ParseThreads(const ParsedArgs& parsed) {
   }
   throw UsageError("--threads expects a whole number in [1, 1024], got '" + *text + "'");
 }
-
-std::string Clock(double seconds) {
-  const long s = std::lround(std::max(0.0, seconds));
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-  return buf;
-}
-
-// "[#######.........] 12/48  25%  elapsed 0:00:03  ETA 0:00:09", redrawn in place.
-class ProgressBar {
- public:
-  explicit ProgressBar(bool on) : on_(on), start_(std::chrono::steady_clock::now()) {}
-  void Update(int done, int total) {
-    if (!on_ || total == 0) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (first_done_ < 0) first_done_ = done;  // reused candidates cost nothing: leave them out of the rate
-    const int fresh = done - first_done_;
-    const int width = 30, filled = width * done / total;
-    std::string bar(filled, '#');
-    bar += std::string(width - filled, '.');
-    std::string eta = fresh > 0 ? Clock(elapsed / fresh * (total - done)) : "?";
-    std::fprintf(stderr, "\r[%s] %d/%d %3d%%  elapsed %s  ETA %s ", bar.c_str(), done, total, 100 * done / total,
-                 Clock(elapsed).c_str(), eta.c_str());
-    if (done == total) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
-  }
-
- private:
-  bool on_;
-  std::chrono::steady_clock::time_point start_;
-  int first_done_ = -1;
-};
 
 std::optional<CandidateRow> ReadStoredRow(const std::string& path, const std::string& fingerprint, int index) {
   std::ifstream in(path);
@@ -132,15 +100,24 @@ int RunSweepCommand(const std::vector<std::string>& args) {
     const nlohmann::json j = {{"fingerprint", fingerprint}, {"row", RowToJson(row)}};
     WriteFileAtomically(store + std::to_string(row.candidate.index) + ".json", j.dump(2) + "\n");
   };
-  ProgressBar bar(parsed.Flag("--progress") || ::isatty(STDERR_FILENO));
-  options.on_progress = [&](int done, int total) { bar.Update(done, total); };
+  // sweep.csv and sweep.json are staged first, so an output folder that cannot be written
+  // fails before the candidates run, and they replace the old pair together at the end.
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& csv_out = outputs.Stage(out_dir + "/sweep.csv");
+  std::ostream& json_out = outputs.Stage(out_dir + "/sweep.json");
+  ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
+  progress.Stage("candidates");
+  options.on_progress = [&](int done, int total) { progress.Update(done, total); };
 
   const auto start = std::chrono::steady_clock::now();
   SweepStats stats;
   const std::vector<CandidateRow> rows = RunSweep(sweep, options, &stats);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WriteFileAtomically(out_dir + "/sweep.csv", SweepCsv(rows));
-  WriteFileAtomically(out_dir + "/sweep.json", SweepJson(sweep, rows, shard));
+  progress.Finish();
+  csv_out << SweepCsv(rows);
+  json_out << SweepJson(sweep, rows, shard);
+  outputs.Commit();
 
   if (!parsed.Flag("-q")) {
     std::cout << "candidates " << rows.size() << (shard ? " (shard " + std::to_string(shard->index) + "/" +

@@ -15,7 +15,8 @@
 // A command receives the arguments after its name, returns the process exit code, and
 // reports failures by throwing: ConfigError (bad input, exit 2), ModelError (no design or
 // blown-up model, exit 3), anything else derived from std::exception (exit 4). The top-level
-// main prints "tbridge: error: <message>" on stderr for each of them.
+// main prints "tbridge: error: <message>" on stderr for each of them. The codes are listed
+// once, below, and `tbridge --help` prints kExitCodesHelp.
 #pragma once
 
 #include <string>
@@ -23,6 +24,20 @@
 #include <vector>
 
 namespace tbridge::cli {
+
+// The process exit codes of every command.
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitNotOk = 1,     // the command ran but its own check failed (paper: a value out of tolerance)
+  kExitBadInput = 2,  // config, command line, limits, --strict warnings (ConfigError)
+  kExitNoDesign = 3,  // no design found, or the model failed (ModelError)
+  kExitOther = 4,     // anything else: an output that cannot be written, out of memory, internal
+};
+
+inline constexpr const char* kExitCodesHelp =
+    "exit codes: 0 ok, 1 a check of the command failed (paper: a value out of tolerance),\n"
+    "            2 bad input (config, command line, limits, warnings under --strict),\n"
+    "            3 no design found or the model failed, 4 other error (output not writable, internal)\n";
 
 // Entry point of a command: `args` excludes the program and the command name.
 using CommandFn = int (*)(const std::vector<std::string>& args);

@@ -1,16 +1,20 @@
 #include "tools/output.h"
 
+#include "core/json_reader.h"
+
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <ostream>
-#include <streambuf>
-#include <vector>
+#include <fstream>
+#include <iostream>
+#include <set>
 #include <system_error>
 
 namespace tbridge::cli {
@@ -21,98 +25,158 @@ namespace fs = std::filesystem;
 
 std::string Reason(int error_number) { return std::strerror(error_number); }
 
-// Closes the descriptor and removes the temporary file unless Release() was called.
-class TempFile {
- public:
-  TempFile(int fd, std::string path) : fd_(fd), path_(std::move(path)) {}
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  ~TempFile() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!path_.empty()) ::unlink(path_.c_str());
+// The file a path finally names: symbolic links followed (relative ones from their folder),
+// the path itself when it is no link. At most 40 links, as the kernel allows.
+fs::path FollowLinks(const std::string& path) {
+  fs::path p(path);
+  for (int hops = 0; hops < 40; ++hops) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+    const fs::path target = fs::read_symlink(p, ec);
+    if (ec) throw OutputError("cannot read the link '" + p.string() + "': " + ec.message());
+    p = target.is_absolute() ? target : p.parent_path() / target;
   }
-  int fd() const { return fd_; }
-  const std::string& path() const { return path_; }
-  // Closes the descriptor; returns 0 or errno.
-  int Close() {
-    const int rc = ::close(fd_);
-    fd_ = -1;
-    return rc == 0 ? 0 : errno;
+  throw OutputError("cannot write '" + path + "': too many levels of symbolic links");
+}
+
+const char* KindOf(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::directory: return "a directory";
+    case fs::file_type::fifo: return "a FIFO (named pipe)";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
   }
-  void Release() { path_.clear(); }
+}
 
- private:
-  int fd_;
-  std::string path_;
-};
+// Flushes the file at `path` to disk.
+int SyncFile(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const int rc = ::fsync(fd) == 0 ? 0 : errno;
+  ::close(fd);
+  return rc;
+}
 
-// An output buffer over a file descriptor: streamed results go to the file as they are made,
-// in 1 MiB writes, instead of through a string of the whole document.
-class FdStreamBuf : public std::streambuf {
- public:
-  explicit FdStreamBuf(int fd) : fd_(fd), buffer_(1 << 20) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
-  int error() const { return error_; }
+// What an interrupted process (Ctrl-C, kill) must remove: the temporaries and the folders of
+// the transactions in flight. Fixed slots of lock-free atomics, so that the signal handler
+// may read them (async-signal-safe); a transaction with more files than slots leaves the
+// rest, hidden, to chance.
+constexpr int kFileSlots = 1024, kDirSlots = 64;
+std::atomic<const char*> g_files[kFileSlots];
+std::atomic<const char*> g_dirs[kDirSlots];
 
- protected:
-  int_type overflow(int_type c) override {
-    if (Drain() != 0) return traits_type::eof();
-    if (!traits_type::eq_int_type(c, traits_type::eof())) {
-      *pptr() = traits_type::to_char_type(c);
-      pbump(1);
+void Register(std::atomic<const char*>* slots, int count, const char* path) {
+  for (int k = 0; k < count; ++k) {
+    const char* expected = nullptr;
+    if (slots[k].compare_exchange_strong(expected, path)) return;
+  }
+}
+
+void Unregister(std::atomic<const char*>* slots, int count, const char* path) {
+  for (int k = 0; k < count; ++k) {
+    const char* expected = path;
+    if (slots[k].compare_exchange_strong(expected, nullptr)) return;
+  }
+}
+
+extern "C" void RemoveStagedAndDie(int signal_number) {
+  for (auto& slot : g_files) {
+    if (const char* path = slot.load()) ::unlink(path);
+  }
+  // Nested folders go deepest first; a pass per level (rmdir refuses a folder not empty).
+  for (int pass = 0; pass < 8; ++pass) {
+    for (auto& slot : g_dirs) {
+      if (const char* path = slot.load()) ::rmdir(path);
     }
-    return traits_type::not_eof(c);
   }
-  int sync() override { return Drain(); }
-
- private:
-  int Drain() {
-    const char* data = pbase();
-    size_t left = static_cast<size_t>(pptr() - pbase());
-    while (left > 0 && error_ == 0) {
-      const ssize_t n = ::write(fd_, data, left);
-      if (n < 0) {
-        if (errno != EINTR) error_ = errno;
-        continue;
-      }
-      data += n;
-      left -= static_cast<size_t>(n);
-    }
-    setp(buffer_.data(), buffer_.data() + buffer_.size());
-    return error_ == 0 ? 0 : -1;
-  }
-
-  int fd_;
-  int error_ = 0;
-  std::vector<char> buffer_;
-};
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
 
 }  // namespace
 
-void WriteFileAtomically(const std::string& path, const std::string& content) {
-  WriteFileAtomically(path, [&content](std::ostream& os) { os.write(content.data(), static_cast<std::streamsize>(content.size())); });
+void InstallInterruptCleanup() {
+  struct sigaction action {};
+  action.sa_handler = RemoveStagedAndDie;
+  sigemptyset(&action.sa_mask);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
 }
 
-void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+struct OutputTransaction::Staged {
+  std::string target;    // as given, for messages
+  fs::path destination;  // links followed: the path renamed over
+  std::string temp;      // the temporary sibling
+  std::ofstream stream;
+};
+
+OutputTransaction::OutputTransaction() = default;
+
+OutputTransaction::~OutputTransaction() {
+  for (const auto& s : staged_) {
+    Unregister(g_files, kFileSlots, s->temp.c_str());
+    if (!committed_) {
+      s->stream.close();
+      ::unlink(s->temp.c_str());
+    }
+  }
+  // Deepest first; rmdir refuses a folder that is not empty, so nothing else is lost.
+  for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it) {
+    Unregister(g_dirs, kDirSlots, it->c_str());
+    if (!committed_) ::rmdir(it->c_str());
+  }
+}
+
+void OutputTransaction::ProtectInput(const std::string& path) { inputs_.push_back(path); }
+
+std::ostream& OutputTransaction::Stage(const std::string& path) {
+  if (committed_) throw OutputError("internal: output '" + path + "' staged after the commit");
   if (path.empty()) throw OutputError("output path is empty");
-  const fs::path target(path);
-  if (!target.has_filename()) {
+  const fs::path destination = FollowLinks(path);
+  if (!destination.has_filename()) {
     throw OutputError("cannot write '" + path + "': the path names a directory, not a file");
   }
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) {
-    throw OutputError("cannot create directory '" + dir.string() + "' for '" + path +
-                      "': " + ec.message());
+  const fs::file_status status = fs::status(destination, ec);
+  if (fs::exists(status)) {
+    if (!fs::is_regular_file(status)) {
+      throw OutputError("cannot write '" + path + "': it is " + KindOf(status.type()) +
+                        "; results are written to regular files only");
+    }
+    for (const std::string& input : inputs_) {
+      if (fs::equivalent(destination, input, ec)) {
+        throw UsageError("output '" + path + "' is the input '" + input +
+                         "': writing it would replace the input; choose another output path");
+      }
+    }
   }
-  if (fs::is_directory(target, ec)) {
-    throw OutputError("cannot write '" + path + "': it is a directory");
+  for (const auto& s : staged_) {
+    if (s->destination.lexically_normal() == destination.lexically_normal()) {
+      throw OutputError("internal: output '" + path + "' is written twice in one run");
+    }
   }
 
-  // The temporary file lives next to the target so that rename() stays on one file system
-  // and is atomic.
+  // Missing parent folders, each recorded so that a failed run removes it again.
+  const fs::path dir = destination.has_parent_path() ? destination.parent_path() : fs::path(".");
+  std::vector<fs::path> missing;
+  for (fs::path d = dir; !d.empty() && !fs::exists(d, ec); d = d.parent_path()) {
+    missing.push_back(d);
+    if (d == d.parent_path()) break;
+  }
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (!fs::create_directory(*it, ec) && ec) {
+      throw OutputError("cannot create directory '" + it->string() + "' for '" + path + "': " + ec.message());
+    }
+    created_dirs_.push_back(it->string());
+    Register(g_dirs, kDirSlots, created_dirs_.back().c_str());
+  }
+  if (!fs::is_directory(dir, ec)) {
+    throw OutputError("cannot write '" + path + "': '" + dir.string() + "' is not a directory");
+  }
+
   std::string temp_name = ".";  // appended, not "." + name: GCC 12 warns falsely (-Wrestrict)
-  temp_name += target.filename().string();
+  temp_name += destination.filename().string();
   temp_name += ".tmp.XXXXXX";
   std::string pattern = (dir / temp_name).string();
   const int fd = ::mkstemp(pattern.data());
@@ -120,33 +184,95 @@ void WriteFileAtomically(const std::string& path, const std::function<void(std::
     throw OutputError("cannot create a temporary file in '" + dir.string() + "' for '" + path +
                       "': " + Reason(errno));
   }
-  TempFile temp(fd, pattern);
-
   // mkstemp creates the file with mode 0600; give the result the usual umask-based mode.
   const mode_t mask = ::umask(0);
   ::umask(mask);
-  if (::fchmod(temp.fd(), 0666 & ~mask) != 0) {
-    throw OutputError("cannot set the mode of '" + temp.path() + "': " + Reason(errno));
-  }
+  const int chmod_error = ::fchmod(fd, 0666 & ~mask) == 0 ? 0 : errno;
+  ::close(fd);
+  auto staged = std::make_unique<Staged>();
+  staged->target = path;
+  staged->destination = destination;
+  staged->temp = pattern;
+  staged_.push_back(std::move(staged));  // from here on the destructor removes the temporary
+  Register(g_files, kFileSlots, staged_.back()->temp.c_str());
+  if (chmod_error != 0) throw OutputError("cannot set the mode of '" + pattern + "': " + Reason(chmod_error));
+  Staged& s = *staged_.back();
+  s.stream.open(s.temp, std::ios::binary | std::ios::trunc);
+  if (!s.stream) throw OutputError("cannot open '" + s.temp + "' for '" + path + "'");
+  return s.stream;
+}
 
-  FdStreamBuf buffer(temp.fd());
-  std::ostream stream(&buffer);
-  write(stream);
-  stream.flush();
-  if (!stream || buffer.error() != 0) {
-    throw OutputError("cannot write '" + path + "': " + Reason(buffer.error() ? buffer.error() : EIO));
+void OutputTransaction::Stage(const std::string& path, const std::string& content) {
+  std::ostream& out = Stage(path);
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+}
+
+void OutputTransaction::RemoveAtCommit(const std::string& path) { remove_.push_back(path); }
+
+void OutputTransaction::RemoveStaleAtCommit(const std::string& dir, const std::string& prefix,
+                                            const std::string& suffix) {
+  remove_patterns_.push_back({dir, prefix, suffix});
+}
+
+void OutputTransaction::Commit() {
+  if (committed_) throw OutputError("internal: outputs committed twice");
+  // 1. Every file complete and on disk before any of them replaces an old one.
+  for (const auto& s : staged_) {
+    s->stream.flush();
+    const bool ok = static_cast<bool>(s->stream);
+    s->stream.close();
+    if (!ok || s->stream.fail()) throw OutputError("cannot write '" + s->target + "': write failed (disk full?)");
+    if (const int err = SyncFile(s->temp); err != 0) {
+      throw OutputError("cannot write '" + s->target + "': " + Reason(err));
+    }
   }
-  // Flush to disk before the rename, so a crash cannot leave a renamed but empty file.
-  if (::fsync(temp.fd()) != 0) {
-    throw OutputError("cannot write '" + path + "': " + Reason(errno));
+  // 2. Into place. Each rename is atomic; they run only once every file is ready.
+  std::set<fs::path> written;
+  for (const auto& s : staged_) {
+    if (::rename(s->temp.c_str(), s->destination.c_str()) != 0) {
+      throw OutputError("cannot write '" + s->target + "': " + Reason(errno));
+    }
+    Unregister(g_files, kFileSlots, s->temp.c_str());  // a result now, not a temporary
+    written.insert(fs::path(s->target).lexically_normal());
+    written.insert(s->destination.lexically_normal());
   }
-  if (const int err = temp.Close(); err != 0) {
-    throw OutputError("cannot write '" + path + "': " + Reason(err));
+  committed_ = true;
+  // 3. The command's own stale outputs. A failure here leaves an old file beside the new ones,
+  // which must not pass unnoticed: it is an error.
+  std::error_code ec;
+  for (const std::string& path : remove_) {
+    if (written.count(fs::path(path).lexically_normal()) != 0) continue;
+    // Only a file or a link can be an old output; anything else under the name is not ours.
+    const fs::file_status status = fs::symlink_status(path, ec);
+    if (!fs::is_regular_file(status) && !fs::is_symlink(status)) continue;
+    if (::unlink(path.c_str()) != 0) {
+      throw OutputError("cannot remove the stale output '" + path + "': " + Reason(errno));
+    }
   }
-  if (::rename(temp.path().c_str(), path.c_str()) != 0) {
-    throw OutputError("cannot write '" + path + "': " + Reason(errno));
+  for (const auto& [dir, prefix, suffix] : remove_patterns_) {
+    if (!fs::is_directory(dir, ec)) continue;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+          name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) {
+        continue;
+      }
+      const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+      if (middle.find_first_not_of("0123456789") != std::string::npos) continue;
+      if (written.count(e.path().lexically_normal()) != 0) continue;
+      const fs::file_status status = e.symlink_status(ec);
+      if (!fs::is_regular_file(status) && !fs::is_symlink(status)) continue;
+      if (::unlink(e.path().c_str()) != 0) {
+        throw OutputError("cannot remove the stale output '" + e.path().string() + "': " + Reason(errno));
+      }
+    }
   }
-  temp.Release();
+}
+
+void WriteFileAtomically(const std::string& path, const std::string& content) {
+  OutputTransaction transaction;
+  transaction.Stage(path, content);
+  transaction.Commit();
 }
 
 std::optional<std::string> ParsedArgs::Value(const std::string& name) const {
@@ -211,7 +337,13 @@ ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& sp
       }
     }
     const OptionSpec* option = FindOption(spec, name);
-    if (option == nullptr) throw UsageError("unknown option '" + name + "'" + Hint(spec));
+    if (option == nullptr) {
+      std::vector<std::string> names;
+      for (const OptionSpec& o : spec.options) names.insert(names.end(), o.names.begin(), o.names.end());
+      const std::string nearest = NearestKey(name, names);
+      throw UsageError("unknown option '" + Printable(name) + "'" +
+                       (nearest.empty() ? "" : ", did you mean '" + nearest + "'?") + Hint(spec));
+    }
     const std::string& canonical = option->names.front();
     if (out.values.count(canonical) != 0 || out.flags.count(canonical) != 0) {
       throw UsageError("option '" + name + "' given twice" + Hint(spec));
@@ -279,6 +411,24 @@ std::string Usage(const CommandSpec& spec) {
          "show this help\n";
   }
   return s;
+}
+
+OptionSpec ProgressOption() {
+  return {{"--progress"}, "", "progress line with an ETA on stderr even when it is not a terminal", false};
+}
+
+OptionSpec StrictOption() {
+  return {{"--strict"}, "", "treat plausibility warnings as errors (exit 2; thresholds in configs/README.md)", false};
+}
+
+void ReportWarnings(const std::vector<std::string>& warnings, bool strict) {
+  if (warnings.empty()) return;
+  if (strict) {
+    std::string all;
+    for (const std::string& w : warnings) all += (all.empty() ? "" : "; ") + w;
+    throw ConfigError("implausible result under --strict: " + all);
+  }
+  for (const std::string& w : warnings) std::cerr << "tbridge: warning: " << w << "\n";
 }
 
 }  // namespace tbridge::cli

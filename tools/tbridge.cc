@@ -1,8 +1,7 @@
 // The `tbridge` command-line tool: dispatches to the self-registered commands of
 // tools/cmd_*.cc and turns every error into a message on stderr and an exit code.
 //
-// Exit codes: 0 success, 1 a command's own "not ok" result, 2 bad input (config or command
-// line), 3 no design / model failure, 4 any other error (I/O, internal).
+// Exit codes: tools/commands.h (ExitCode), printed by `tbridge --help`.
 
 #include <algorithm>
 #include <exception>
@@ -13,7 +12,10 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/json_reader.h"
+#include "tbridge_version.h"  // generated at build time (tools/version.cmake)
 #include "tools/commands.h"
+#include "tools/output.h"
 
 namespace tbridge::cli {
 
@@ -74,7 +76,14 @@ void PrintUsage(std::ostream& os) {
   for (const Command& c : commands) {
     os << "  " << c.name << std::string(width - c.name.size() + 2, ' ') << c.help << "\n";
   }
-  os << "\nexit codes: 0 ok, 2 bad input, 3 no design or model failure, 4 other error\n";
+  os << "\nlooking at results:\n"
+        "  tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png   a simulate run (shapes, deck histories)\n"
+        "  tools/plot_sweep.py mass|frequency|feasible OUTDIR -o FIG.png   a sweep's trade-offs\n"
+        "  tools/plot_sweep.py bridge DESIGN.json -o FIG.png          a design\n"
+        "  tbridge simulate CONFIG.json -o OUTDIR --vtk DIR            DIR/run.pvd for ParaView\n"
+        "\nA failed run leaves its output files and folders as they were. Progress (--progress or a\n"
+        "terminal) and warnings go to stderr; --strict makes warnings errors.\n\n"
+     << kExitCodesHelp << "\ntbridge --version   the version and git revision\n";
 }
 
 int Fail(const std::string& message, int code) {
@@ -86,19 +95,29 @@ int Dispatch(const std::vector<std::string>& argv) {
   if (!RegistrationProblems().empty()) {
     std::string all;
     for (const std::string& p : RegistrationProblems()) all += (all.empty() ? "" : "; ") + p;
-    return Fail("internal: " + all, 4);
+    return Fail("internal: " + all, kExitOther);
   }
   if (argv.empty() || argv[0] == "--help" || argv[0] == "-h" || argv[0] == "help") {
     PrintUsage(std::cout);
-    return 0;
+    return kExitOk;
+  }
+  if (argv[0] == "--version" || argv[0] == "version") {
+    std::cout << "tbridge " << TBRIDGE_VERSION << " (git " << TBRIDGE_REVISION << ")\n";
+    return kExitOk;
   }
   const Command* command = FindCommand(argv[0]);
   if (command == nullptr) {
     std::string names;
-    for (const Command& c : RegisteredCommands()) names += (names.empty() ? "" : ", ") + c.name;
-    return Fail("unknown command '" + argv[0] + "' (commands: " + names +
+    std::vector<std::string> list;
+    for (const Command& c : RegisteredCommands()) {
+      names += (names.empty() ? "" : ", ") + c.name;
+      list.push_back(c.name);
+    }
+    const std::string nearest = NearestKey(argv[0], list);
+    return Fail("unknown command '" + tbridge::Printable(argv[0]) + "'" +
+                    (nearest.empty() ? "" : ", did you mean '" + nearest + "'?") + " (commands: " + names +
                     "; see 'tbridge --help')",
-                2);
+                kExitBadInput);
   }
   const std::vector<std::string> args(argv.begin() + 1, argv.end());
   return command->run(args);
@@ -109,21 +128,24 @@ int Dispatch(const std::vector<std::string>& argv) {
 }  // namespace tbridge::cli
 
 int main(int argc, char** argv) {
+  using namespace tbridge::cli;
   const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + argc);
+  InstallInterruptCleanup();
   try {
-    const int code = tbridge::cli::Dispatch(args);
+    const int code = Dispatch(args);
     std::cout.flush();
-    if (!std::cout) return tbridge::cli::Fail("cannot write to standard output", 4);
+    if (!std::cout) return Fail("cannot write to standard output", kExitOther);
     return code;
   } catch (const tbridge::ConfigError& e) {
-    return tbridge::cli::Fail(e.what(), 2);
+    return Fail(e.what(), kExitBadInput);
   } catch (const tbridge::ModelError& e) {
-    return tbridge::cli::Fail(e.what(), 3);
+    return Fail(e.what(), kExitNoDesign);
   } catch (const std::bad_alloc&) {
-    return tbridge::cli::Fail("out of memory", 4);
+    // The limits checked before a run (dynamics.limits) keep configs from getting here.
+    return Fail("out of memory", kExitOther);
   } catch (const std::exception& e) {
-    return tbridge::cli::Fail(e.what(), 4);
+    return Fail(e.what(), kExitOther);
   } catch (...) {
-    return tbridge::cli::Fail("unexpected error of unknown type", 4);
+    return Fail("unexpected error of unknown type", kExitOther);
   }
 }

@@ -19,4 +19,8 @@ namespace tbridge::cli {
 std::map<std::string, std::string> VtkSeries(const DynamicModel& model,
                                              const SimulationResult& result);
 
+// Upper estimate of the bytes one sample of the export takes [B] (its .vtp file and its line
+// in run.pvd), for the output limit checked before a run (dynamics.limits.max_output_bytes).
+double VtkBytesPerSample(const DynamicModel& model);
+
 }  // namespace tbridge::cli
