@@ -1,4 +1,5 @@
-// Design time against complexity n = 1..12 (p = 1, buckling check on), per solver.
+// In-process design time against complexity n = 1..16 (p = 1, buckling check on), per solver
+// ("auto": the direct solve). bench/design_process.py times the whole process.
 // Usage: bench_design [max_n] [solver] [repeats]
 #include <algorithm>
 #include <chrono>
@@ -10,8 +11,8 @@
 #include "design/design.h"
 
 int main(int argc, char** argv) {
-  const int max_n = argc > 1 ? std::atoi(argv[1]) : 12;
-  const std::string solver = argc > 2 ? argv[2] : "ipopt";
+  const int max_n = argc > 1 ? std::atoi(argv[1]) : 16;
+  const std::string solver = argc > 2 ? argv[2] : "auto";
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
   std::printf("%3s %6s %7s %9s %10s %12s %12s\n", "n", "bars", "strings", "iters", "mass_kg",
               "best_ms", "median_ms");

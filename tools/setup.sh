@@ -16,6 +16,7 @@ packages=(
   catch2               # unit tests (Catch2 v2)
   python3
   python3-matplotlib   # figures from the outputs
+  time                 # GNU time: peak memory of whole-process benchmarks
 )
 
 say() { echo "setup: $*"; }
