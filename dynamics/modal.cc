@@ -343,7 +343,7 @@ void SparseModes(const DynamicModel& model, const LinearisedSystem& sys, const M
     Spectra::SymGEigsSolver<StiffnessOp, CholeskyOp, Spectra::GEigsMode::Cholesky> top(stiffness_op, cholesky_op, 1,
                                                                                       std::min(n_red, 20));
     top.init();
-    top.compute(Spectra::SortRule::LargestAlge, 1000, options.tolerance);
+    top.compute(Spectra::SortRule::LargestAlge, 1000, options.highest_tolerance);
     if (top.info() != Spectra::CompInfo::Successful) {
       throw ModelError("modal analysis: the sparse eigensolver did not converge to the highest mode");
     }
