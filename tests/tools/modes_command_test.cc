@@ -36,9 +36,34 @@ TEST_CASE("tbridge modes writes the n = 1 frequencies, shapes and RK4 step", "[t
   CHECK(j["mode_shapes"][0]["displacements"].size() == 4u);  // every node, pinned ones at 0
   CHECK(j["config"]["bridge"]["n"] == 1);
   CHECK(j["stable"] == true);
+  CHECK(j["all_modes"] == true);  // 4 free DOFs: every mode by default
   // A bad count is a usage error (exit 2) and leaves the earlier file alone.
   CHECK(RunModes("'" + config + "' -o '" + out.string() + "' --count -3") == 2);
   CHECK(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tbridge modes --modes keeps the lowest modes and the RK4 step", "[tools][modes]") {
+  const fs::path dir = fs::temp_directory_path() / "tbridge_modes_count_test";
+  fs::remove_all(dir);
+  const fs::path all = dir / "all.json", lowest = dir / "lowest.json";
+  const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json";
+  REQUIRE(RunModes("'" + config + "' -o '" + all.string() + "' -q") == 0);
+  REQUIRE(RunModes("'" + config + "' -o '" + lowest.string() + "' --modes 3 -q") == 0);
+  const nlohmann::json j_all = nlohmann::json::parse(std::ifstream(all));
+  const nlohmann::json j_low = nlohmann::json::parse(std::ifstream(lowest));
+  REQUIRE(j_all.at("modes").size() == 21u);  // 28 free DOFs minus 7 bar lengths
+  REQUIRE(j_low.at("modes").size() == 3u);
+  CHECK(j_low["all_modes"] == false);
+  for (int k = 0; k < 3; ++k) {
+    // The same dense solve, truncated: identical numbers.
+    CHECK(j_low["modes"][k]["omega_rad_s"] == j_all["modes"][k]["omega_rad_s"]);
+    CHECK(j_low["modes"][k]["symmetry"] == j_all["modes"][k]["symmetry"]);
+  }
+  CHECK(j_low["rk4_stable_dt_s"] == j_all["rk4_stable_dt_s"]);  // from the highest mode in both
+  CHECK(j_low["mode_shapes"].size() == 3u);  // --count 6 by default, but only 3 modes
+  // A bad mode count is a usage error (exit 2).
+  CHECK(RunModes("'" + config + "' -o '" + lowest.string() + "' --modes x") == 2);
   fs::remove_all(dir);
 }
 
