@@ -25,8 +25,12 @@
 //   operators apply unchanged (including the Cholesky mode for the highest mode, which the
 //   saddle point would need a projected operator for), the factorised system is n_dof - n_b
 //   instead of n_dof + n_b, and the basis is orthonormal as in the dense path, so both paths
-//   normalise shapes alike. The basis per bar group is a small dense QR; bridges have groups
-//   of one bar (class 1) or a few (the 3D bridge), where it costs O(members).
+//   normalise shapes alike. Measured at planar n = 12 (16380 DOFs, 4095 bars; Eigen's
+//   SparseLU, COLAMD): the reduced LU (12285 rows) takes 35-45 ms, fills 0.29 M entries and
+//   solves 100 times in 45-50 ms; the saddle point's (20475 rows) 75-145 ms, 0.51 M entries
+//   and 80-130 ms. The basis per bar group is a small dense QR; bridges have groups of one bar
+//   (class 1) or a few (the 3D bridge), where it costs O(members). A structure whose bars all
+//   hang together would make it one dense QR of that group, O(n_dof^3).
 //
 // Bar forces. The model's string tensions follow from its positions and rest lengths; the bar
 // force densities are the minimum-norm least-squares solution of node equilibrium under those
