@@ -29,7 +29,7 @@
 //   SparseLU, COLAMD): the reduced LU (12285 rows) takes 35-45 ms, fills 0.29 M entries and
 //   solves 100 times in 45-50 ms; the saddle point's (20475 rows) 75-145 ms, 0.51 M entries
 //   and 80-130 ms. The basis per bar group is a small dense QR; bridges have groups of one bar
-//   (class 1) or a few (the 3D bridge), where it costs O(members). A structure whose bars all
+//   (class 1), p bars (planar p) or two (the 3D bridge), where it costs O(members). A structure whose bars all
 //   hang together would make it one dense QR of that group, O(n_dof^3).
 //
 // Bar forces. The model's string tensions follow from its positions and rest lengths; the bar

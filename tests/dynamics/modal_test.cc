@@ -284,15 +284,15 @@ TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
   CHECK_THROWS_AS(ComputeModes(m), ModelError);
   CHECK_THROWS_AS(Rk4StableStep(ModalResult{}), ModelError);
 }
-// Bridges whose bars share nodes or number several per module: p = 2 and p = 3 planar
-// (n = 2) and the 3D bridge of configs/paper_3d.json (class 2). Designed once per process.
+// Bridges whose bars share nodes: planar p = 2 (n = 2 and 4) and p = 3 (n = 2), and the 3D
+// bridge of configs/paper_3d.json (class 2). Designed once per process.
 const std::vector<std::pair<std::string, DynamicModel>>& ClassKModels() {
   static const std::vector<std::pair<std::string, DynamicModel>> models = [] {
     std::vector<std::pair<std::string, DynamicModel>> out;
-    for (const int p : {2, 3}) {
-      Config c = test::PaperConfig(2);
+    for (const auto& [n, p] : {std::pair{2, 2}, std::pair{4, 2}, std::pair{2, 3}}) {
+      Config c = test::PaperConfig(n);
       c.bridge.p = p;
-      out.emplace_back("planar n = 2, p = " + std::to_string(p), ModelOf(RunDesign(c)));
+      out.emplace_back("planar n = " + std::to_string(n) + ", p = " + std::to_string(p), ModelOf(RunDesign(c)));
     }
     const Config three_d = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_3d.json");
     out.emplace_back("3D, planes = 2", ModelOf(RunDesign(three_d)));
