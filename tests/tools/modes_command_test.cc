@@ -67,4 +67,30 @@ TEST_CASE("tbridge modes --modes keeps the lowest modes and the RK4 step", "[too
   fs::remove_all(dir);
 }
 
+TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default", "[tools][modes]") {
+  const fs::path dir = fs::temp_directory_path() / "tbridge_modes_large_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  nlohmann::json config = nlohmann::json::parse(std::ifstream(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json"));
+  config["bridge"]["n"] = 8;  // 1020 free DOFs, past the 600 of every mode
+  const std::string config_path = (dir / "n8.json").string();
+  const fs::path out = dir / "modes.json";
+  std::ofstream(config_path) << config.dump();
+  REQUIRE(RunModes("'" + config_path + "' -o '" + out.string() + "' -q") == 0);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out));
+  CHECK(j["all_modes"] == false);
+  REQUIRE(j["modes"].size() == 20u);
+  CHECK(j["model"]["free_dofs"] == 1020);
+  // The lowest linearised frequency keeps falling slowly with n (71.6 rad/s at n = 6, README):
+  // 71.0 rad/s at n = 8, to the 0.1 rad/s printed there.
+  CHECK(j["modes"][0]["omega_rad_s"].get<double>() == Approx(71.0).margin(0.05));
+  CHECK(j["modes"][0]["symmetry"] == "symmetric");
+  for (size_t k = 1; k < j["modes"].size(); ++k) {
+    CHECK(j["modes"][k]["omega_rad_s"].get<double>() >= j["modes"][k - 1]["omega_rad_s"].get<double>());
+  }
+  // The RK4 limit from the highest mode: omega_max 4.0e5 rad/s at n = 8 (BENCHMARKS.md), dt 7.0e-6 s.
+  CHECK(j["rk4_stable_dt_s"].get<double>() == Approx(7.02e-6).margin(0.005e-6));
+  fs::remove_all(dir);
+}
+
 }  // namespace
