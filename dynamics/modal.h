@@ -19,7 +19,9 @@
 //   for class 1), so Z, Z^T K Z and Z^T M Z stay sparse; the lowest modes by Spectra's
 //   shift-invert Lanczos (SymGEigsShiftSolver, one sparse LU of Z^T (K - sigma M) Z) and the
 //   highest by its Cholesky-mode Lanczos (one sparse Cholesky of Z^T M Z). Memory O(n_dof)
-//   and time about linear in n_dof (BENCHMARKS.md) when the bar groups stay small.
+//   when the bar groups stay small, time a little above linear (the restarts grow slowly with
+//   n): the lowest six modes of planar n = 10 / 11 / 12 in about 35 / 85 / 230 ms and 5 / 10 /
+//   18 MB (bench/bench_modal.cc).
 //   Why a null-space basis rather than the saddle-point operator [K - sigma M, C^T; C, 0]:
 //   the reduced pencil is symmetric with a positive definite mass, so Spectra's stock
 //   operators apply unchanged (including the Cholesky mode for the highest mode, which the
@@ -29,8 +31,8 @@
 //   SparseLU, COLAMD): the reduced LU (12285 rows) takes 35-45 ms, fills 0.29 M entries and
 //   solves 100 times in 45-50 ms; the saddle point's (20475 rows) 75-145 ms, 0.51 M entries
 //   and 80-130 ms. The basis per bar group is a small dense QR; bridges have groups of one bar
-//   (class 1), p bars (planar p) or two (the 3D bridge), where it costs O(members). A structure whose bars all
-//   hang together would make it one dense QR of that group, O(n_dof^3).
+//   (class 1), p bars (planar p) or two (the 3D bridge), where it costs O(members). A
+//   structure whose bars all hang together would make it one dense QR, O(n_dof^3).
 //
 // Bar forces. The model's string tensions follow from its positions and rest lengths; the bar
 // force densities are the minimum-norm least-squares solution of node equilibrium under those

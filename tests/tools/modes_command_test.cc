@@ -71,7 +71,8 @@ TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default"
   const fs::path dir = fs::temp_directory_path() / "tbridge_modes_large_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  nlohmann::json config = nlohmann::json::parse(std::ifstream(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json"));
+  const std::string base = std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json";
+  nlohmann::json config = nlohmann::json::parse(std::ifstream(base));
   config["bridge"]["n"] = 8;  // 1020 free DOFs, past the 600 of every mode
   const std::string config_path = (dir / "n8.json").string();
   const fs::path out = dir / "modes.json";
