@@ -1,6 +1,6 @@
-// `tbridge modes CONFIG.json -o OUT.json [--count K] [--quiet]`: the linearised vibration
-// modes of a designed bridge, or of a custom "structure", about its static equilibrium
-// (dynamics/modal.h).
+// `tbridge modes CONFIG.json -o OUT.json [--modes K] [--count K] [--quiet]`: the linearised
+// vibration modes of a designed bridge, or of a custom "structure", about its static
+// equilibrium (dynamics/modal.h).
 
 #include <cstdio>
 #include <iostream>
@@ -27,47 +27,74 @@ namespace tbridge::cli {
 namespace {
 
 constexpr int kDefaultShapes = 6;
+// Without --modes: every mode (dense, O(n_dof^3)) up to this many free DOFs, where it takes
+// well under a second (planar n = 7, 508 DOFs: about 0.1 s); beyond, the lowest
+// kDefaultLowestModes by the sparse solver (about linear in n_dof).
+constexpr int kAllModesMaxDofs = 600;
+constexpr int kDefaultLowestModes = 20;
 
 const CommandSpec& ModesSpec() {
   static const CommandSpec spec{
       "modes",
       {"CONFIG.json"},
       {{{"-o", "--output"}, "OUT.json", "where to write the modes, a JSON file", true},
+       {{"-m", "--modes"}, "K",
+        "modes to compute, lowest first (0 = all; default all up to 600 free DOFs, else the lowest 20)", false},
        {{"-k", "--count"}, "K", "mode shapes to write, lowest first (default 6; 0 = none)", false},
        {{"-q", "--quiet"}, "", "do not print the frequency table", false},
        ProgressOption(),
        StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
       "model (string masses on the bars, eq. 27, unless a \"dynamics\" section says otherwise)\n"
-      "and writes every linearised natural frequency about the static equilibrium, with the bar\n"
+      "and writes its linearised natural frequencies about the static equilibrium, with the bar\n"
       "lengths held, to OUT.json (a structure out of equilibrium is linearised where it stands\n"
       "and its force imbalance reported as equilibrium_residual_N):\n"
       "omega [rad/s], f [Hz], T [s], the symmetry about mid-span, the shapes of the first K\n"
-      "modes and the largest stable RK4 step."};
+      "modes and the largest stable RK4 step (from the highest mode, computed in any case).\n"
+      "Every mode is computed densely up to 600 free DOFs (planar n <= 7); larger models get\n"
+      "the lowest 20 by a sparse Lanczos solver unless --modes says otherwise (all_modes in\n"
+      "OUT.json says which). --modes 0 asks for every mode whatever the size: O(n_dof^3)."};
   return spec;
 }
 
-int ParseCount(const ParsedArgs& parsed) {
-  const std::optional<std::string> text = parsed.Value("-k");
-  if (!text) return kDefaultShapes;
+// The whole number >= 0 given to option `name` (canonical short name, long name for messages),
+// or `fallback` when absent.
+int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name,
+                     int fallback) {
+  const std::optional<std::string> text = parsed.Value(name);
+  if (!text) return fallback;
   try {
     size_t used = 0;
     const int count = std::stoi(*text, &used);
     if (used == text->size() && count >= 0) return count;
   } catch (const std::exception&) {
   }
-  throw UsageError("--count expects a whole number >= 0, got '" + *text + "'");
+  throw UsageError(long_name + " expects a whole number >= 0, got '" + *text + "'");
+}
+
+// Which modes to compute: --modes K, else all of a small model and the lowest
+// kDefaultLowestModes of a large one.
+ModalOptions ModalOptionsOf(const ParsedArgs& parsed, const DynamicModel& model) {
+  int free_nodes = 0;
+  for (const bool fixed : model.fixed) free_nodes += fixed ? 0 : 1;
+  const int fallback = free_nodes * model.dim <= kAllModesMaxDofs ? 0 : kDefaultLowestModes;
+  ModalOptions options;
+  options.count = ParseWholeNumber(parsed, "-m", "--modes", fallback);
+  return options;
 }
 
 // Symmetry of every mode, or nothing when the structure is not mirror-symmetric about
-// mid-span (then no node has a partner and ClassifySymmetry throws).
+// mid-span (then some node has no partner and MirrorNodes throws). The mirror map is found
+// once for all modes.
 std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model, const ModalResult& modes) {
   std::vector<std::optional<SymmetryReport>> out(modes.modes.size());
+  std::vector<int> mirror;
   try {
-    for (size_t k = 0; k < modes.modes.size(); ++k) out[k] = ClassifySymmetry(model.positions, modes.modes[k].shape);
+    mirror = MirrorNodes(model.positions);
   } catch (const ModelError&) {
-    std::fill(out.begin(), out.end(), std::nullopt);
+    return out;
   }
+  for (size_t k = 0; k < modes.modes.size(); ++k) out[k] = ClassifySymmetry(mirror, modes.modes[k].shape);
   return out;
 }
 
@@ -107,7 +134,10 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
                   {"bar_constraints", result.constraints},
                   {"slack_strings", result.slack_strings},
                   {"equilibrium_residual_N", result.equilibrium_residual}};
+  // With only the lowest modes, "stable" speaks for those (the sparse solver finds unstable
+  // modes near zero first).
   out["stable"] = stable;
+  out["all_modes"] = result.all_modes;
   out["rk4_stable_dt_s"] = result.modes.empty() ? nlohmann::json(nullptr) : nlohmann::json(Rk4StableStep(result));
   out["modes"] = modes;
   out["mode_shapes"] = shape_list;
@@ -123,7 +153,8 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
 std::string ModesTable(const ModalResult& result, const std::vector<std::optional<SymmetryReport>>& symmetry,
                        int max_rows) {
   std::ostringstream out;
-  out << result.modes.size() << " modes (" << result.free_dofs << " free DOFs, " << result.constraints
+  if (!result.all_modes) out << "lowest " << result.modes.size() << " of ";
+  out << result.total_modes << " modes (" << result.free_dofs << " free DOFs, " << result.constraints
       << " bar lengths held)\n";
   out << "  mode   omega [rad/s]      f [Hz]       T [s]  symmetry\n";
   char line[160];
@@ -148,7 +179,7 @@ int RunModesCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string out_path = parsed.Required("-o");
-  const int shapes = ParseCount(parsed);
+  const int shapes = ParseWholeNumber(parsed, "-k", "--count", kDefaultShapes);
   const Config config = LoadConfig(parsed.positionals[0]);
   // Staged before the work: an unwritable OUT.json fails at once and changes only at Commit().
   OutputTransaction outputs;
@@ -160,13 +191,12 @@ int RunModesCommand(const std::vector<std::string>& args) {
   const ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
   std::optional<Design> design;
   if (!config.structure) {
-    progress.Stage("design");
-    design = RunDesign(config);
+    design = RunDesign(config, &progress);
   }
   const DynamicModel model =
       config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(*design, options);
   progress.Stage("modes");
-  const ModalResult result = ComputeModes(model);
+  const ModalResult result = ComputeModes(model, ModalOptionsOf(parsed, model));
   progress.Finish();
   if (design) ReportWarnings(PlausibilityWarnings(*design), parsed.Flag("--strict"));
   const auto symmetry = Symmetries(model, result);

@@ -12,6 +12,7 @@ packages=(
   coinor-libipopt-dev  # default minimum-mass solver
   libnlopt-cxx-dev     # second minimum-mass solver
   libsuitesparse-dev   # CHOLMOD, sparse factorisations in the dynamics
+  libspectra-dev       # sparse Lanczos eigensolvers (lowest modes of large models)
   nlohmann-json3-dev   # JSON configs and outputs
   catch2               # unit tests (Catch2 v2)
   python3

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/config.h"
@@ -52,6 +53,16 @@ Eigen::VectorXd FreeForce(const DynamicModel& model, const Eigen::Matrix3Xd& pos
   Eigen::VectorXd out(sys.dof_node.size());
   for (size_t r = 0; r < sys.dof_node.size(); ++r) out(r) = f(sys.dof_axis[r], sys.dof_node[r]);
   return out;
+}
+
+// The mode shapes of `r` as columns over the free DOFs of `sys` (n_dof x modes).
+Eigen::MatrixXd ShapeMatrix(const LinearisedSystem& sys, const ModalResult& r) {
+  const int n_dof = static_cast<int>(sys.dof_node.size());
+  Eigen::MatrixXd phi(n_dof, r.modes.size());
+  for (size_t k = 0; k < r.modes.size(); ++k) {
+    for (int d = 0; d < n_dof; ++d) phi(d, k) = r.modes[k].shape(sys.dof_axis[d], sys.dof_node[d]);
+  }
+  return phi;
 }
 
 // The SPEC §9 numbers come from an independent re-implementation (printed to 4 digits); the
@@ -187,7 +198,8 @@ TEST_CASE("The tangent stiffness is the derivative of the node forces", "[dynami
   // Prestrained, so that geometric and material terms are both large.
   const DynamicModel m = ModelOf(test::PaperDesign(2), 0.95);
   const LinearisedSystem sys = Linearise(m);
-  const int n_dof = static_cast<int>(sys.stiffness.rows());
+  const Eigen::MatrixXd stiffness = sys.stiffness;
+  const int n_dof = static_cast<int>(stiffness.rows());
   Eigen::MatrixXd fd(n_dof, n_dof);
   const double h = 1e-6;  // [m]; central differences: truncation ~h^2, round-off ~1e-16 F/h
   for (int c = 0; c < n_dof; ++c) {
@@ -196,10 +208,10 @@ TEST_CASE("The tangent stiffness is the derivative of the node forces", "[dynami
     minus(sys.dof_axis[c], sys.dof_node[c]) -= h;
     fd.col(c) = -(FreeForce(m, plus, sys) - FreeForce(m, minus, sys)) / (2 * h);
   }
-  const double scale = sys.stiffness.cwiseAbs().maxCoeff();
-  INFO("max |K - K_fd| = " << (sys.stiffness - fd).cwiseAbs().maxCoeff() << " of " << scale);
-  CHECK((sys.stiffness - fd).cwiseAbs().maxCoeff() < 1e-7 * scale);
-  CHECK((sys.stiffness - sys.stiffness.transpose()).cwiseAbs().maxCoeff() <= 1e-14 * scale);
+  const double scale = stiffness.cwiseAbs().maxCoeff();
+  INFO("max |K - K_fd| = " << (stiffness - fd).cwiseAbs().maxCoeff() << " of " << scale);
+  CHECK((stiffness - fd).cwiseAbs().maxCoeff() < 1e-7 * scale);
+  CHECK((stiffness - stiffness.transpose()).cwiseAbs().maxCoeff() <= 1e-14 * scale);
   // At equilibrium the force vanishes once the bars push (N, loads ~ 1e4 N).
   CHECK(FreeForce(m, m.positions, sys).cwiseAbs().maxCoeff() < 1e-6);
 }
@@ -221,26 +233,25 @@ TEST_CASE("Modal mass sums to the bar and node masses", "[dynamics][modal]") {
 TEST_CASE("Mode shapes are M-orthonormal and keep the bar lengths", "[dynamics][modal]") {
   const DynamicModel m = ModelOf(test::PaperDesign(3));
   const LinearisedSystem sys = Linearise(m);
+  const Eigen::MatrixXd mass = sys.mass, stiffness = sys.stiffness, constraints = sys.constraints;
   const ModalResult r = ComputeModes(m);
-  const int n_dof = static_cast<int>(sys.mass.rows());
-  Eigen::MatrixXd phi(n_dof, r.modes.size());
-  for (size_t k = 0; k < r.modes.size(); ++k) {
-    for (int d = 0; d < n_dof; ++d) phi(d, k) = r.modes[k].shape(sys.dof_axis[d], sys.dof_node[d]);
+  const Eigen::MatrixXd phi = ShapeMatrix(sys, r);
+  for (const Mode& mode : r.modes) {
     // Sign convention: the largest component is positive.
-    CHECK(r.modes[k].shape.maxCoeff() >= -r.modes[k].shape.minCoeff());
+    CHECK(mode.shape.maxCoeff() >= -mode.shape.minCoeff());
   }
   const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(phi.cols(), phi.cols());
-  const Eigen::MatrixXd gram = phi.transpose() * sys.mass * phi;
+  const Eigen::MatrixXd gram = phi.transpose() * mass * phi;
   INFO("max |Phi^T M Phi - I| = " << (gram - identity).cwiseAbs().maxCoeff());
   CHECK((gram - identity).cwiseAbs().maxCoeff() < 1e-10);  // dense LAPACK-grade round-off
-  Eigen::MatrixXd modal_k = phi.transpose() * sys.stiffness * phi;
+  Eigen::MatrixXd modal_k = phi.transpose() * stiffness * phi;
   for (size_t k = 0; k < r.modes.size(); ++k) {
     CHECK(modal_k(k, k) == Approx(r.modes[k].omega_squared).epsilon(1e-9));
     modal_k(k, k) = 0;
   }
   CHECK(modal_k.cwiseAbs().maxCoeff() < 1e-9 * r.modes.back().omega_squared);
   // Bar lengths held to first order: G phi = 0 relative to |G| |phi|.
-  CHECK((sys.constraints * phi).cwiseAbs().maxCoeff() < 1e-12 * sys.constraints.norm() * phi.norm());
+  CHECK((constraints * phi).cwiseAbs().maxCoeff() < 1e-12 * constraints.norm() * phi.norm());
 }
 
 TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]") {
@@ -258,7 +269,7 @@ TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]"
   CHECK(loose.string_tension(slack) == 0);
   // Without that string the loads are no longer balanced (N): the imbalance is reported.
   CHECK(loose.equilibrium_residual > 100);
-  CHECK((taut.stiffness - loose.stiffness).cwiseAbs().maxCoeff() > 1e6);
+  CHECK(Eigen::MatrixXd(taut.stiffness - loose.stiffness).cwiseAbs().maxCoeff() > 1e6);
 }
 
 TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
@@ -272,6 +283,151 @@ TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
   m.strings[0].j = 99;
   CHECK_THROWS_AS(ComputeModes(m), ModelError);
   CHECK_THROWS_AS(Rk4StableStep(ModalResult{}), ModelError);
+}
+// Bridges whose bars share nodes: planar p = 2 (n = 2 and 4) and p = 3 (n = 2), and the 3D
+// bridge of configs/paper_3d.json (class 2). Designed once per process.
+const std::vector<std::pair<std::string, DynamicModel>>& ClassKModels() {
+  static const std::vector<std::pair<std::string, DynamicModel>> models = [] {
+    std::vector<std::pair<std::string, DynamicModel>> out;
+    for (const auto& [n, p] : {std::pair{2, 2}, std::pair{4, 2}, std::pair{2, 3}}) {
+      Config c = test::PaperConfig(n);
+      c.bridge.p = p;
+      out.emplace_back("planar n = " + std::to_string(n) + ", p = " + std::to_string(p), ModelOf(RunDesign(c)));
+    }
+    const Config three_d = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_3d.json");
+    out.emplace_back("3D, planes = 2", ModelOf(RunDesign(three_d)));
+    return out;
+  }();
+  return models;
+}
+
+// The lowest `count` modes of the sparse solver against every mode of the dense one.
+void CheckSparseAgainstDense(const DynamicModel& m, int count) {
+  ModalOptions dense_options;
+  dense_options.solver = ModalSolver::kDense;
+  const ModalResult dense = ComputeModes(m, dense_options);
+  ModalOptions sparse_options;
+  sparse_options.solver = ModalSolver::kSparse;
+  sparse_options.count = count;
+  const ModalResult sparse = ComputeModes(m, sparse_options);
+  REQUIRE(sparse.solver == "sparse");
+  REQUIRE(static_cast<int>(sparse.modes.size()) == count);
+  CHECK_FALSE(sparse.all_modes);
+  CHECK(dense.all_modes);
+  CHECK(sparse.total_modes == dense.total_modes);
+  CHECK(sparse.constraints == dense.constraints);
+  const LinearisedSystem sys = Linearise(m);
+  const Eigen::MatrixXd phi_dense = ShapeMatrix(sys, dense), phi_sparse = ShapeMatrix(sys, sparse);
+  // M-inner products of each sparse shape with every dense shape (both M-normalised).
+  const Eigen::MatrixXd overlap = phi_sparse.transpose() * sys.mass * phi_dense;
+  for (int k = 0; k < count; ++k) {
+    const double w2 = dense.modes[k].omega_squared;
+    INFO("mode " << k + 1 << ": sparse " << sparse.modes[k].omega_rad_s << ", dense " << dense.modes[k].omega_rad_s
+                 << " rad/s");
+    // 1e-8 relative: both are converged eigenvalues of the same pencil (Lanczos residual
+    // 1e-10 of the shifted-inverse eigenvalue; the dense solve's error is round-off times
+    // omega_max^2, below 1e-10 of omega_min^2 up to n = 6).
+    CHECK(std::abs(sparse.modes[k].omega_rad_s - dense.modes[k].omega_rad_s) <=
+          1e-8 * std::abs(dense.modes[k].omega_rad_s));
+    // The shape lies in the span of the dense shapes of the same frequency (the mode itself,
+    // or a degenerate pair, taken as within 1e-6 of omega^2): what is captured there is 1 up
+    // to the square of the shapes' 1e-5-or-better angular error, hence 1e-8.
+    double captured = 0;
+    for (size_t j = 0; j < dense.modes.size(); ++j) {
+      if (std::abs(dense.modes[j].omega_squared - w2) <= 1e-6 * std::abs(w2)) captured += overlap(k, j) * overlap(k, j);
+    }
+    CHECK(captured >= 1 - 1e-8);
+    CHECK(captured <= 1 + 1e-8);
+  }
+  // The highest mode (for the RK4 step) by the Cholesky-mode Lanczos to a Ritz residual of
+  // 1e-6 (ModalOptions::highest_tolerance), which bounds the error of omega^2 and so of omega.
+  CHECK(std::abs(sparse.highest_omega_rad_s - dense.highest_omega_rad_s) <= 1e-6 * dense.highest_omega_rad_s);
+  CHECK(Rk4StableStep(sparse) == Approx(Rk4StableStep(dense)).epsilon(1e-6));
+}
+
+TEST_CASE("Sparse lowest modes agree with the dense modes", "[dynamics][modal]") {
+  for (int n = 1; n <= 6; ++n) {
+    INFO("planar p = 1, n = " << n);
+    const DynamicModel m = ModelOf(test::PaperDesign(n));
+    // n = 1 has three modes: Lanczos needs a basis larger than the count, so one.
+    CheckSparseAgainstDense(m, n == 1 ? 1 : 6);
+  }
+  for (const auto& [name, m] : ClassKModels()) {
+    INFO(name);
+    CheckSparseAgainstDense(m, 6);
+  }
+  // Prestrained deck strings: geometric and material stiffness both large.
+  INFO("planar n = 4, deck prestrain 0.95");
+  CheckSparseAgainstDense(ModelOf(test::PaperDesign(4), 0.95), 6);
+}
+
+TEST_CASE("The sparse solver keeps the README's n = 3 frequencies", "[dynamics][modal]") {
+  ModalOptions options;
+  options.solver = ModalSolver::kSparse;
+  options.count = 3;
+  const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(3)), options);
+  // README (printed to 0.1 rad/s, 1 rad/s for the highest): half a unit of the last digit.
+  CHECK(r.modes[0].omega_rad_s == Approx(77.2).margin(0.05));
+  CHECK(r.modes[1].omega_rad_s == Approx(81.7).margin(0.05));
+  CHECK(r.modes[2].omega_rad_s == Approx(166.8).margin(0.05));
+  CHECK(r.highest_omega_rad_s == Approx(10019).margin(0.5));
+  // A count the Lanczos basis cannot exceed is served densely.
+  options.count = r.total_modes - 1;
+  const ModalResult most = ComputeModes(ModelOf(test::PaperDesign(3)), options);
+  CHECK(most.solver == "dense");
+  CHECK(static_cast<int>(most.modes.size()) == r.total_modes - 1);
+  CHECK_FALSE(most.all_modes);
+}
+
+TEST_CASE("Bar force densities by bar group match one global least-squares solve", "[dynamics][modal]") {
+  for (const auto& [name, m] : ClassKModels()) {
+    INFO(name);
+    const LinearisedSystem sys = Linearise(m);
+    LinearisedSystem no_bars = sys;
+    no_bars.bar_force_density.setZero();
+    const Eigen::VectorXd f = FreeForce(m, m.positions, no_bars);
+    const Eigen::MatrixXd gt = Eigen::MatrixXd(sys.constraints).transpose();
+    const Eigen::VectorXd global = gt.completeOrthogonalDecomposition().solve(-f);
+    // Same minimum-norm solution; round-off of two QRs of a well-conditioned G^T.
+    CHECK((global - sys.bar_force_density).cwiseAbs().maxCoeff() <= 1e-9 * global.cwiseAbs().maxCoeff());
+    CHECK(sys.equilibrium_residual < 1e-6);  // N, as for the planar designs above
+  }
+}
+
+TEST_CASE("The mirror map pairs the nodes about mid-span", "[dynamics][modal]") {
+  for (const auto& [name, m] : ClassKModels()) {
+    INFO(name);
+    const std::vector<int> mirror = MirrorNodes(m.positions);
+    const double mid = 0.5 * (m.positions.row(0).minCoeff() + m.positions.row(0).maxCoeff());
+    for (int a = 0; a < m.num_nodes(); ++a) {
+      CHECK(mirror[mirror[a]] == a);  // an involution
+      // Node positions are the topology's, mirror-exact to round-off (m).
+      CHECK(std::abs(m.positions(0, mirror[a]) + m.positions(0, a) - 2 * mid) < 1e-9);
+      CHECK(std::abs(m.positions(1, mirror[a]) - m.positions(1, a)) < 1e-9);
+      CHECK(std::abs(m.positions(2, mirror[a]) - m.positions(2, a)) < 1e-9);
+    }
+  }
+  Eigen::Matrix3Xd lopsided = Eigen::Matrix3Xd::Zero(3, 3);
+  lopsided(0, 1) = 1.0;
+  lopsided(0, 2) = 3.0;  // nothing at x = 2 mirrors x = 1
+  CHECK_THROWS_WITH(MirrorNodes(lopsided), Catch::Contains("node 2 has no mirror node"));
+}
+
+TEST_CASE("The sparse solver rejects a free motion without mass", "[dynamics][modal]") {
+  DynamicModel m = ModelOf(test::PaperDesign(3));
+  m.bars[0].mass = 0;  // its two nodes move without mass
+  ModalOptions options;
+  options.solver = ModalSolver::kSparse;
+  options.count = 2;
+  CHECK_THROWS_WITH(ComputeModes(m, options), Catch::Contains("mass matrix is singular"));
+  options.count = -1;
+  CHECK_THROWS_AS(ComputeModes(m, options), ModelError);
+  // Without the highest mode there is no RK4 step to give.
+  options.count = 2;
+  options.highest = false;
+  const ModalResult lowest_only = ComputeModes(ModelOf(test::PaperDesign(3)), options);
+  CHECK(lowest_only.highest_omega_rad_s == 0);
+  CHECK_THROWS_AS(Rk4StableStep(lowest_only), ModelError);
 }
 }  // namespace
 }  // namespace tbridge

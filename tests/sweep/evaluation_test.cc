@@ -1,4 +1,4 @@
-// One candidate's evaluation: the Lanczos first frequency against the dense modes, the deck
+// One candidate's evaluation: the sparse first frequency against the dense modes, the deck
 // strings grown for an allowed prestress, and the travelling-load run.
 
 #include <catch2/catch.hpp>
@@ -22,7 +22,7 @@ Config Planar(int n) {
   return c;
 }
 
-TEST_CASE("Lanczos finds the dense lowest frequency", "[sweep]") {
+TEST_CASE("The sparse solver finds the dense lowest frequency", "[sweep]") {
   for (const int n : {3, 5}) {
     const Design d = RunDesign(Planar(n));
     for (const double ratio : {1.0, 0.95}) {
@@ -34,8 +34,8 @@ TEST_CASE("Lanczos finds the dense lowest frequency", "[sweep]") {
       force_sparse.dense_max_dofs = 0;
       const FirstFrequency f = LowestFrequency(model, force_sparse);
       INFO("n = " << n << ", prestrain " << ratio);
-      CHECK(f.method == "lanczos");
-      CHECK(f.lanczos_steps > 1);
+      CHECK(f.method == "sparse");
+      CHECK(f.iterations >= 1);
       // 1e-8 relative: both are converged eigenvalues of the same constrained problem; the
       // Ritz tolerance is 1e-10 and the shift perturbs nothing.
       CHECK(f.omega_rad_s == Approx(dense).epsilon(1e-8));

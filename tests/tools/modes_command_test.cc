@@ -36,9 +36,61 @@ TEST_CASE("tbridge modes writes the n = 1 frequencies, shapes and RK4 step", "[t
   CHECK(j["mode_shapes"][0]["displacements"].size() == 4u);  // every node, pinned ones at 0
   CHECK(j["config"]["bridge"]["n"] == 1);
   CHECK(j["stable"] == true);
+  CHECK(j["all_modes"] == true);  // 4 free DOFs: every mode by default
   // A bad count is a usage error (exit 2) and leaves the earlier file alone.
   CHECK(RunModes("'" + config + "' -o '" + out.string() + "' --count -3") == 2);
   CHECK(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tbridge modes --modes keeps the lowest modes and the RK4 step", "[tools][modes]") {
+  const fs::path dir = fs::temp_directory_path() / "tbridge_modes_count_test";
+  fs::remove_all(dir);
+  const fs::path all = dir / "all.json", lowest = dir / "lowest.json";
+  const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json";
+  REQUIRE(RunModes("'" + config + "' -o '" + all.string() + "' -q") == 0);
+  REQUIRE(RunModes("'" + config + "' -o '" + lowest.string() + "' --modes 3 -q") == 0);
+  const nlohmann::json j_all = nlohmann::json::parse(std::ifstream(all));
+  const nlohmann::json j_low = nlohmann::json::parse(std::ifstream(lowest));
+  REQUIRE(j_all.at("modes").size() == 21u);  // 28 free DOFs minus 7 bar lengths
+  REQUIRE(j_low.at("modes").size() == 3u);
+  CHECK(j_low["all_modes"] == false);
+  for (int k = 0; k < 3; ++k) {
+    // The same dense solve, truncated: identical numbers.
+    CHECK(j_low["modes"][k]["omega_rad_s"] == j_all["modes"][k]["omega_rad_s"]);
+    CHECK(j_low["modes"][k]["symmetry"] == j_all["modes"][k]["symmetry"]);
+  }
+  CHECK(j_low["rk4_stable_dt_s"] == j_all["rk4_stable_dt_s"]);  // from the highest mode in both
+  CHECK(j_low["mode_shapes"].size() == 3u);  // --count 6 by default, but only 3 modes
+  // A bad mode count is a usage error (exit 2).
+  CHECK(RunModes("'" + config + "' -o '" + lowest.string() + "' --modes x") == 2);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default", "[tools][modes]") {
+  const fs::path dir = fs::temp_directory_path() / "tbridge_modes_large_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string base = std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json";
+  nlohmann::json config = nlohmann::json::parse(std::ifstream(base));
+  config["bridge"]["n"] = 8;  // 1020 free DOFs, past the 600 of every mode
+  const std::string config_path = (dir / "n8.json").string();
+  const fs::path out = dir / "modes.json";
+  std::ofstream(config_path) << config.dump();
+  REQUIRE(RunModes("'" + config_path + "' -o '" + out.string() + "' -q") == 0);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out));
+  CHECK(j["all_modes"] == false);
+  REQUIRE(j["modes"].size() == 20u);
+  CHECK(j["model"]["free_dofs"] == 1020);
+  // The lowest linearised frequency keeps falling slowly with n (71.6 rad/s at n = 6, README):
+  // 71.0 rad/s at n = 8, to the 0.1 rad/s printed there.
+  CHECK(j["modes"][0]["omega_rad_s"].get<double>() == Approx(71.0).margin(0.05));
+  CHECK(j["modes"][0]["symmetry"] == "symmetric");
+  for (size_t k = 1; k < j["modes"].size(); ++k) {
+    CHECK(j["modes"][k]["omega_rad_s"].get<double>() >= j["modes"][k - 1]["omega_rad_s"].get<double>());
+  }
+  // The RK4 limit from the highest mode: omega_max 4.0e5 rad/s at n = 8 (BENCHMARKS.md), dt 7.0e-6 s.
+  CHECK(j["rk4_stable_dt_s"].get<double>() == Approx(7.02e-6).margin(0.005e-6));
   fs::remove_all(dir);
 }
 
