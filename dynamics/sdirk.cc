@@ -1,5 +1,6 @@
 #include "dynamics/sdirk.h"
 
+#include <Eigen/KLUSupport>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -27,6 +28,8 @@ constexpr double kC[3] = {kGamma, 0.5 * (1.0 + kGamma), 1.0};
 }
 
 }  // namespace
+
+struct Sdirk3::NewtonFactor : Eigen::KLU<Eigen::SparseMatrix<double>> {};
 
 Sdirk3::~Sdirk3() = default;
 
@@ -71,7 +74,7 @@ Sdirk3::Sdirk3(const AccelerationCoupling& coupling, int size, const SdirkOption
       }
     }
   }
-  lu_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
+  lu_ = std::make_unique<NewtonFactor>();
   lu_->analyzePattern(matrix_);
 
   for (Eigen::VectorXd* v : {&y0_, &dy_, &dy_pert_, &y_pert_, &stage_}) *v = Eigen::VectorXd::Zero(2 * c_);
@@ -112,7 +115,7 @@ void Sdirk3::Refresh(OdeSystem& system, double t, double h, const Eigen::VectorX
     }
   }
   lu_->factorize(matrix_);
-  if (lu_->info() != Eigen::Success) Fail(t, h, "the Newton matrix is singular (" + lu_->lastErrorMessage() + ")");
+  if (lu_->info() != Eigen::Success) Fail(t, h, "the Newton matrix is singular");
   factor_h_ = h;
   ++stats_.jacobians;
 }
