@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -151,6 +152,13 @@ std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions&
       todo.push_back(k);
     }
   }
+  // Largest bridges first: a candidate's cost grows about as 2^n (members) times the steps
+  // its run needs, so taking them first leaves the short ones to fill the threads at the end
+  // instead of one long run alone on one thread. Rows keep their grid order whatever the
+  // evaluation order.
+  std::stable_sort(todo.begin(), todo.end(), [&mine](size_t a, size_t b) {
+    return std::tie(mine[a].n, mine[a].p) > std::tie(mine[b].n, mine[b].p);
+  });
   std::mutex mutex;
   std::atomic<size_t> next{0};
   std::atomic<bool> stop{false};
