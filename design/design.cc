@@ -33,7 +33,7 @@ void CheckBasis(const EquilibriumBasis& basis) {
 }
 
 // design.solver: "auto" takes the direct solve wherever it applies, else Ipopt. An iterative
-// solve takes the self-stress form while its Jacobian is no denser than the full problem's:
+// solve takes the self-stress form while its Jacobian is no larger than the full problem's:
 // with many self-stresses (the 3D bridge at n >= 5: 2042 of them at n = 8) the orthonormal
 // basis fills every active row, and the full problem's sparse equilibrium rows are cheaper.
 // Returns the member forces [C; T] in N; `form` says which problem was solved.
@@ -59,7 +59,12 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
     return config.solver == "nlopt" ? SolveWithNlopt(nlp, options, x) : SolveWithIpopt(nlp, options, x);
   };
   const MinMassProblem full(s, loads, settings);
-  if (problem.JacobianPattern().size() > full.JacobianPattern().size()) {
+  // NLopt's SLSQP holds the Jacobian dense (rows x variables): there the smaller dense size
+  // decides, and Ipopt's sparse factorisation counts the non-zeros.
+  auto dense = [](const NlpProblem& p) { return static_cast<double>(p.num_constraints()) * p.num_variables(); };
+  const bool take_full = config.solver == "nlopt" ? dense(problem) > dense(full)
+                                                 : problem.JacobianPattern().size() > full.JacobianPattern().size();
+  if (take_full) {
     form = "full";
     x = full.StartingPoint();
     outcome = solve(full);
