@@ -8,6 +8,7 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/reduced_min_mass.h"
+#include "design/solvers.h"
 
 namespace tbridge {
 
@@ -54,10 +55,20 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
     outcome = problem.SolveDirect(x);
     return problem.MemberForces(x, 0);
   }
+  // "auto" takes the first iterative solver built in (Ipopt before NLopt).
+  std::string name = config.solver;
+  if (name == "auto") {
+    const std::vector<std::string> built = BuiltInIterativeSolvers();
+    if (built.empty()) {
+      throw ConfigError("design.solver", "\"auto\"",
+                        "this bridge has " + std::to_string(problem.num_self_stresses()) +
+                            " self-stress states and needs an iterative solver, but this build has neither "
+                            "Ipopt nor NLopt (rebuild with -DTBRIDGE_WITH_IPOPT=ON or -DTBRIDGE_WITH_NLOPT=ON)");
+    }
+    name = built.front();
+  }
   const SolverOptions options{config.tolerance, config.max_iterations, false};
-  auto solve = [&](const NlpProblem& nlp) {
-    return config.solver == "nlopt" ? SolveWithNlopt(nlp, options, x) : SolveWithIpopt(nlp, options, x);
-  };
+  auto solve = [&](const NlpProblem& nlp) { return SolveNlp(name, nlp, options, x); };
   const MinMassProblem full(s, loads, settings);
   if (problem.JacobianPattern().size() > full.JacobianPattern().size()) {
     form = "full";
@@ -97,6 +108,7 @@ DesignInputs PrepareDesign(const Config& config) {
                       "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
                       "or tbridge modes");
   }
+  RequireSolverBuiltIn(config.design.solver);  // before any work: the build decides what it accepts
   DesignInputs in;
   in.topology = MakeBridge(config.bridge);
   const Structure& s = in.topology.structure;

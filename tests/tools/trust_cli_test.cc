@@ -20,6 +20,7 @@
 #include "cli_support.h"
 #include "core/config.h"
 #include "design/design.h"
+#include "design/solvers.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 
@@ -314,6 +315,12 @@ TEST_CASE("defect 7: the exit codes are listed once, with 1; --version names the
   const CliResult version = Run(dir, "--version");
   CHECK(version.code == 0);
   CHECK_THAT(version.out, Catch::StartsWith("tbridge 0.") && Catch::Contains("(git "));
+  // The solvers the build has (CMake options TBRIDGE_WITH_IPOPT/NLOPT), each named iff built in.
+  CHECK_THAT(version.out, Catch::Contains("design solvers built in: auto, direct"));
+  for (const char* solver : {"ipopt", "nlopt"}) {
+    INFO(solver);
+    CHECK((version.out.find(solver) != std::string::npos) == SolverBuiltIn(solver));
+  }
 }
 
 TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses them and writes nothing") {
