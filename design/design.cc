@@ -83,6 +83,18 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
 
 }  // namespace
 
+void RequireStable(const Design& d) {
+  const StabilityVerdict& v = d.stability;
+  if (v.stable) return;
+  std::ostringstream os;
+  os << "the design is unstable: its tangent stiffness on the " << v.reduced_dofs
+     << " motions that keep the bar lengths has " << v.negative_pivots << " negative and " << v.zero_pivots
+     << " zero pivots (smallest " << v.min_pivot
+     << " N/m), so the compressed bars can swing away from equilibrium under the design load; more string "
+        "prestress holds them (design.deck_string_min_radius, design.transverse_string_min_radius)";
+  throw ModelError(os.str());
+}
+
 Eigen::VectorXd MemberForces(const Design& d) {
   Eigen::VectorXd x(d.bars.size() + d.strings.size());
   for (size_t b = 0; b < d.bars.size(); ++b) x[b] = d.bars[b].force;
@@ -198,6 +210,13 @@ Design RunDesign(const Config& config, ProgressReporter* progress) {
     (m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
     d.strings.push_back(m);
   }
+  // Stability with the bars held: sparse and roughly linear, so it runs at every n; the dense
+  // critical load factor only where it costs well under a second (n <= 6).
+  std::vector<double> string_stiffness(d.strings.size());
+  for (size_t k = 0; k < d.strings.size(); ++k) string_stiffness[k] = d.strings[k].stiffness;
+  d.stability = AssessStability(s, forces, string_stiffness, config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, forces, d.loads);
+  d.reactions.array() += 0.0;  // -0 (a fixed node's untouched axis) reads as 0 in the outputs
   d.mass.deck_beams = d.deck.beams_mass;
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
   d.mass.total = d.mass.structure + d.mass.deck_beams;

@@ -1,5 +1,6 @@
 // Independent checks of the minimum-mass design: closed forms, equilibrium, the Euler formula
 // and a second solver.
+#include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -37,6 +38,32 @@ TEST_CASE("Support reactions carry what the deck nodes do not", "[design][equili
   CHECK(std::abs(R.row(0).sum()) <= 1e-9 * applied);
   // SPEC §3: the supports take F_tot minus what the 2^n - 1 deck nodes carry.
   CHECK(applied + d.deck.station_load == Approx(d.deck.total_load).epsilon(1e-12));
+}
+
+TEST_CASE("The design's reactions balance the applied loads", "[design][equilibrium]") {
+  // The product's reactions (Design::reactions, in the JSON and the summary) against global
+  // equilibrium: forces and moments about the origin sum to zero with the applied loads, to
+  // 1e-9 of the total load (the solution satisfies node equilibrium to ~1e-12 relative).
+  for (const Config& config : {test::PaperConfig(3), test::PaperConfig(7)}) {
+    const Design d = RunDesign(config);
+    const Structure& s = d.topology.structure;
+    const double total = d.loads.cwiseAbs().sum();
+    Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+    for (int v = 0; v < s.num_nodes(); ++v) {
+      const Eigen::Vector3d f = d.loads.col(v) + d.reactions.col(v);
+      if (!s.fixed[v]) CHECK(d.reactions.col(v).isZero(0.0));
+      force += f;
+      moment += s.nodes.col(v).cross(f);
+    }
+    INFO("n = " << config.bridge.n << ": net force " << force.transpose() << " N, net moment " << moment.transpose());
+    CHECK(force.norm() <= 1e-9 * total);
+    CHECK(moment.norm() <= 1e-9 * total * config.bridge.span);
+    // A symmetric bridge: each support carries half of what the 2^n - 1 loaded deck nodes do.
+    const double half = 0.5 * ((1 << config.bridge.n) - 1) * d.deck.node_load;
+    for (int v = 0; v < s.num_nodes(); ++v) {
+      if (s.fixed[v]) CHECK(d.reactions(1, v) == Approx(half).epsilon(1e-9));
+    }
+  }
 }
 
 TEST_CASE("Closed forms: V string of n = 1 and bar forces 2^v2(k) f", "[design][closed-form]") {
