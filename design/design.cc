@@ -120,6 +120,7 @@ DesignInputs PrepareDesign(const Config& config) {
                       "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
                       "or tbridge modes");
   }
+  Validate(config);                            // a config built in code gets the parse's checks
   RequireSolverBuiltIn(config.design.solver);  // before any work: the build decides what it accepts
   DesignInputs in;
   in.topology = MakeBridge(config.bridge);
