@@ -51,6 +51,21 @@ TEST_CASE("Lanczos finds the dense lowest frequency", "[sweep]") {
   CHECK(LowestFrequency(small).omega_rad_s == Approx(81.7).margin(0.05));
 }
 
+TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "[sweep][stability]") {
+  // Without deck-string prestress every bar of the planar bridge is an inverted pendulum
+  // (docs/topology.md); tbridge design refuses it, and so does the sweep.
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"design", {{"deck_string_min_radius", 0.0}}},
+               {"sweep", {{"n", {2}}}}};
+  const SweepSpec spec = ParseSweepSpec(root);
+  const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
+  REQUIRE(grid.size() == 1);
+  const CandidateRow row = EvaluateCandidate(spec, grid[0]);
+  CHECK_FALSE(row.ok);
+  CHECK_FALSE(row.feasible);
+  CHECK_THAT(row.note, Catch::Contains("unstable"));
+}
+
 TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass", "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", {{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}}}};
   const SweepSpec spec = ParseSweepSpec(root);
