@@ -23,14 +23,16 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 
 // The tangent stiffness split into its material part K_m (string axial terms) and geometric
 // part K_g (string q (I - u u^T), bar -lambda I), and the bar-length constraint rows C, all
-// on the free DOFs. K_T = K_m + K_g at the given member forces.
+// on the free DOFs. K = K_m + K_g at the given member forces; K_m and K_g are kept apart only
+// when `split` asks (the critical load factor needs them), else both go straight into K.
 struct Tangent {
   std::vector<int> dof;  // first free DOF of each node, -1 when fixed
   int ndof = 0;
-  SparseMatrix Km, Kg, C;
+  SparseMatrix K, Km, Kg, C;
 };
 
-Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const std::vector<double>& k_string) {
+Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const std::vector<double>& k_string,
+                        bool split) {
   const int nb = s.num_bars();
   const int ns = s.num_strings();
   if (forces.size() != nb + ns || static_cast<int>(k_string.size()) != ns) {
@@ -49,8 +51,9 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const
   }
   Triplets km, kg, c;
   const size_t block = static_cast<size_t>(4 * dim * dim);  // four dim x dim blocks per member
-  km.reserve(block * ns);
-  kg.reserve(block * (ns + nb));
+  Triplets& material = split ? km : kg;  // one list when K_m is not wanted on its own
+  if (split) km.reserve(block * ns);
+  kg.reserve(block * ((split ? ns : 2 * ns) + nb));
   c.reserve(static_cast<size_t>(2 * dim * nb));
   auto add = [&](Triplets& out, const Member& m, const Eigen::Matrix3d& G) {
     for (const auto& [a, b, sign] : {std::tuple{m.i, m.i, 1.0}, std::tuple{m.j, m.j, 1.0},
@@ -75,7 +78,7 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const
     const Eigen::Vector3d u = unit(m);
     const Eigen::Matrix3d uu = u * u.transpose();
     add(kg, m, (forces[nb + k] / s.Length(m)) * (I - uu));
-    add(km, m, k_string[k] * uu);
+    add(material, m, k_string[k] * uu);
   }
   for (int b = 0; b < nb; ++b) {
     const Member& m = s.bars[b];
@@ -91,8 +94,13 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const
     m.setFromTriplets(triplets.begin(), triplets.end());
     return m;
   };
-  t.Km = build(t.ndof, t.ndof, km);
-  t.Kg = build(t.ndof, t.ndof, kg);
+  if (split) {
+    t.Km = build(t.ndof, t.ndof, km);
+    t.Kg = build(t.ndof, t.ndof, kg);
+    t.K = t.Km + t.Kg;
+  } else {
+    t.K = build(t.ndof, t.ndof, kg);  // duplicate entries are summed
+  }
   t.C = build(nb, t.ndof, c);
   return t;
 }
@@ -193,7 +201,7 @@ std::optional<double> CriticalFactor(const Eigen::MatrixXd& Km, const Eigen::Mat
 StabilityVerdict AssessStability(const Structure& s, const Eigen::VectorXd& forces,
                                  const std::vector<double>& k_string, bool critical_load_factor,
                                  double relative_tolerance) {
-  const Tangent t = AssembleTangent(s, forces, k_string);
+  const Tangent t = AssembleTangent(s, forces, k_string, critical_load_factor);
   const SparseMatrix Z = SparseNullSpace(s, t);
   StabilityVerdict v;
   v.free_dofs = t.ndof;
@@ -202,15 +210,18 @@ StabilityVerdict AssessStability(const Structure& s, const Eigen::VectorXd& forc
     v.stable = true;  // nothing can move
     return v;
   }
-  const SparseMatrix Kr = SparseMatrix(Z.transpose() * (t.Km + t.Kg) * Z);
+  const SparseMatrix Kr = SparseMatrix(Z.transpose() * t.K * Z);
   // Why this and not the saddle point [K C^T; C 0]: its inertia needs a pivoting symmetric
   // indefinite factorisation (Bunch-Kaufman), which neither Eigen's sparse module nor
   // CHOLMOD's LDL^T offers (neither pivots, and the zero block stalls them). Z^T K Z is
   // congruent to a diagonal through any unpivoted LDL^T that completes, so the signs of its
-  // pivots are its inertia. Measured (bench/bench_stability, two shared cores under load):
-  // the paper's planar bridge at n = 14 (65532 free DOFs, 49149 reduced) takes 0.9 s against
-  // 0.6 s for the rest of the design, doubling per level like the design itself (n = 13:
-  // 0.4 s, n = 15: 1.9 s); the assembly of the member blocks dominates, not the factorisation.
+  // pivots are its inertia. Measured (bench/bench_stability, two shared cores): the paper's
+  // planar bridge at n = 14 (65532 free DOFs, 49149 reduced) takes 45 ms against 370 ms for
+  // the rest of the design, doubling per level up to n = 14 (n = 13: 22 ms); at n = 15 and
+  // 16 it takes 0.37 s and 1.1 s, where assembling the member blocks (0.6 s at n = 16) and
+  // the product Z^T K Z (0.4 s) leave the caches, against 0.2 s for the LDL^T. Assembling
+  // K_r member by member in the cluster coordinates instead was 4x slower (small
+  // dynamic-size products per member).
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(Kr);
   const double scale = Kr.diagonal().cwiseAbs().maxCoeff();
   if (ldlt.info() != Eigen::Success) {
@@ -237,7 +248,7 @@ StabilityVerdict AssessStability(const Structure& s, const Eigen::VectorXd& forc
 
 StabilityReport CheckStability(const Structure& s, const Eigen::VectorXd& forces,
                                const std::vector<double>& k_string, double relative_tolerance) {
-  const Tangent t = AssembleTangent(s, forces, k_string);
+  const Tangent t = AssembleTangent(s, forces, k_string, false);
   StabilityReport r;
   r.free_dofs = t.ndof;
   // Null space of all of C at once (no clusters): the dense cross-check of SparseNullSpace.
@@ -247,8 +258,7 @@ StabilityReport CheckStability(const Structure& s, const Eigen::VectorXd& forces
     r.positive_definite = true;  // nothing can move
     return r;
   }
-  const Eigen::MatrixXd K = Eigen::MatrixXd(t.Km) + Eigen::MatrixXd(t.Kg);
-  const Eigen::MatrixXd Kr = N.transpose() * K * N;
+  const Eigen::MatrixXd Kr = N.transpose() * Eigen::MatrixXd(t.K) * N;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (Kr + Kr.transpose()));
   r.eigenvalues = eig.eigenvalues();
   r.min_eigenvalue = r.eigenvalues[0];
