@@ -31,15 +31,28 @@ bool Range::Contains(double v) const {
   return true;
 }
 
-std::string Range::Describe() const {
+std::string Range::Interval() const {
   const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
-  if (has_lo && has_hi) {
-    return std::string("a number in ") + (lo_open ? "(" : "[") + Num(lo) + ", " + Num(hi) +
-           (hi_open ? ")" : "]");
-  }
-  if (has_lo) return std::string("a number ") + (lo_open ? "> " : ">= ") + Num(lo);
-  if (has_hi) return std::string("a number ") + (hi_open ? "< " : "<= ") + Num(hi);
-  return "a finite number";
+  if (has_lo && has_hi) return std::string(lo_open ? "(" : "[") + Num(lo) + ", " + Num(hi) + (hi_open ? ")" : "]");
+  if (has_lo) return std::string(lo_open ? "> " : ">= ") + Num(lo);
+  if (has_hi) return std::string(hi_open ? "< " : "<= ") + Num(hi);
+  return "";
+}
+
+std::string Range::Describe() const {
+  const std::string interval = Interval();
+  if (interval.empty()) return "a finite number";
+  return std::string(interval[0] == '(' || interval[0] == '[' ? "a number in " : "a number ") + interval;
+}
+
+std::string IntegerRangeText(int lo, int hi) {
+  return "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+}
+
+std::string ChoiceText(const std::vector<std::string>& allowed) {
+  std::string list;
+  for (const std::string& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+  return list;
 }
 
 std::string Show(const nlohmann::json& value) {
@@ -79,7 +92,7 @@ double JsonSection::Number(const std::string& key, std::optional<double> fallbac
 }
 
 int JsonSection::Integer(const std::string& key, std::optional<int> fallback, int lo, int hi) {
-  const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const std::string allowed = IntegerRangeText(lo, hi);
   if (!Has(key)) {
     if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: " + allowed);
     return *fallback;
@@ -105,8 +118,7 @@ bool JsonSection::Bool(const std::string& key, std::optional<bool> fallback) {
 
 std::string JsonSection::Choice(const std::string& key, std::optional<std::string> fallback,
                                 const std::vector<std::string>& allowed) {
-  std::string list;
-  for (const std::string& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+  const std::string list = ChoiceText(allowed);
   if (!Has(key)) {
     if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: one of " + list);
     return *fallback;
@@ -156,7 +168,7 @@ std::vector<double> JsonSection::Numbers(const std::string& key,
 
 std::vector<int> JsonSection::Integers(const std::string& key,
                                        std::optional<std::vector<int>> fallback, int lo, int hi) {
-  const std::string allowed = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const std::string allowed = IntegerRangeText(lo, hi);
   if (!Has(key)) {
     if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: a list of integers");
     return *fallback;

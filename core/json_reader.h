@@ -27,8 +27,16 @@ struct Range {
   static Range Closed(double a, double b) { return {a, b, false, false}; }
   static Range Open(double a, double b) { return {a, b, true, true}; }
   bool Contains(double v) const;
+  // "(0, 90)", "[1, 1000]", "> 0", ">= 0", "< 1"; "" when unbounded.
+  std::string Interval() const;
+  // "a number in (0, 90)", "a number > 0", "a finite number": what messages say is allowed.
   std::string Describe() const;
 };
+
+// "an integer in [lo, hi]", as messages and the README say it.
+std::string IntegerRangeText(int lo, int hi);
+// "\"a\", \"b\", \"c\"": the allowed values of a choice, quoted.
+std::string ChoiceText(const std::vector<std::string>& allowed);
 
 class JsonSection {
  public:

@@ -8,6 +8,7 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/reduced_min_mass.h"
+#include "design/solvers.h"
 
 namespace tbridge {
 
@@ -54,10 +55,20 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
     outcome = problem.SolveDirect(x);
     return problem.MemberForces(x, 0);
   }
+  // "auto" takes the first iterative solver built in (Ipopt before NLopt).
+  std::string name = config.solver;
+  if (name == "auto") {
+    const std::vector<std::string> built = BuiltInIterativeSolvers();
+    if (built.empty()) {
+      throw ConfigError("design.solver", "\"auto\"",
+                        "this bridge has " + std::to_string(problem.num_self_stresses()) +
+                            " self-stress states and needs an iterative solver, but this build has neither "
+                            "Ipopt nor NLopt (rebuild with -DTBRIDGE_WITH_IPOPT=ON or -DTBRIDGE_WITH_NLOPT=ON)");
+    }
+    name = built.front();
+  }
   const SolverOptions options{config.tolerance, config.max_iterations, false};
-  auto solve = [&](const NlpProblem& nlp) {
-    return config.solver == "nlopt" ? SolveWithNlopt(nlp, options, x) : SolveWithIpopt(nlp, options, x);
-  };
+  auto solve = [&](const NlpProblem& nlp) { return SolveNlp(name, nlp, options, x); };
   const MinMassProblem full(s, loads, settings);
   // NLopt's SLSQP holds the Jacobian dense (rows x variables): there the smaller dense size
   // decides, and Ipopt's sparse factorisation counts the non-zeros.
@@ -76,6 +87,18 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
 }
 
 }  // namespace
+
+void RequireStable(const Design& d) {
+  const StabilityVerdict& v = d.stability;
+  if (v.stable) return;
+  std::ostringstream os;
+  os << "the design is unstable: its tangent stiffness on the " << v.reduced_dofs
+     << " motions that keep the bar lengths has " << v.negative_pivots << " negative and " << v.zero_pivots
+     << " zero pivots (smallest " << v.min_pivot
+     << " N/m), so the compressed bars can swing away from equilibrium under the design load; more string "
+        "prestress holds them (design.deck_string_min_radius, design.transverse_string_min_radius)";
+  throw ModelError(os.str());
+}
 
 Eigen::VectorXd MemberForces(const Design& d) {
   Eigen::VectorXd x(d.bars.size() + d.strings.size());
@@ -102,6 +125,8 @@ DesignInputs PrepareDesign(const Config& config) {
                       "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
                       "or tbridge modes");
   }
+  Validate(config);                            // a config built in code gets the parse's checks
+  RequireSolverBuiltIn(config.design.solver);  // before any work: the build decides what it accepts
   DesignInputs in;
   in.topology = MakeBridge(config.bridge);
   const Structure& s = in.topology.structure;
@@ -191,6 +216,13 @@ Design RunDesign(const Config& config, ProgressReporter* progress) {
     (m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
     d.strings.push_back(m);
   }
+  // Stability with the bars held: sparse and roughly linear, so it runs at every n; the dense
+  // critical load factor only where it costs well under a second (n <= 6).
+  std::vector<double> string_stiffness(d.strings.size());
+  for (size_t k = 0; k < d.strings.size(); ++k) string_stiffness[k] = d.strings[k].stiffness;
+  d.stability = AssessStability(s, forces, string_stiffness, config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, forces, d.loads);
+  d.reactions.array() += 0.0;  // -0 (a fixed node's untouched axis) reads as 0 in the outputs
   d.mass.deck_beams = d.deck.beams_mass;
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
   d.mass.total = d.mass.structure + d.mass.deck_beams;

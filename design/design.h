@@ -10,6 +10,7 @@
 #include "design/deck.h"
 #include "design/min_mass.h"
 #include "design/sizing.h"
+#include "design/stability.h"
 #include "design/topology.h"
 
 namespace tbridge {
@@ -35,6 +36,12 @@ struct Design {
   std::string solver_form;           // "self-stress" (the reduced problem) or "full"
   double equilibrium_residual = 0;  // max |A x + w| over free DOFs [N]
   int self_stress_states = -1;      // n_b + n_s - rank(A); -1 when not computed (large n)
+  // Static stability at the design state (design/stability.h); the critical load factor is
+  // computed for n <= 6.
+  StabilityVerdict stability;
+  // 3 x n_n support reactions [N], zero at free nodes: with the applied loads they balance
+  // the whole structure (SupportReactions, design/equilibrium.h).
+  Eigen::Matrix3Xd reactions;
 };
 
 // What the minimum-mass problem of a bridge config is made of: the drawn bridge, its deck and
@@ -53,6 +60,10 @@ DesignInputs PrepareDesign(const Config& config);
 // `progress` (may be null) is told the fraction done at each stage: topology, equilibrium
 // factorisation, solve, sizing.
 Design RunDesign(const Config& config, ProgressReporter* progress = nullptr);
+
+// Throws ModelError, saying why, when the design's stability verdict is not stable: a
+// structure that buckles under its own design load is no design.
+void RequireStable(const Design& design);
 
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);

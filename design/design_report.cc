@@ -36,7 +36,10 @@ json Units() {
                 {"deck_beams", "kg"}, {"structure", "kg"}, {"total", "kg"}}},
       {"solver", {{"iterations", "1"}}},
       {"equilibrium_residual_N", "N"},
-      {"self_stress_states", "1"}};
+      {"self_stress_states", "1"},
+      {"stability", {{"negative_pivots", "1"}, {"zero_pivots", "1"}, {"free_dofs", "1"}, {"reduced_dofs", "1"},
+                     {"min_pivot", "N/m"}, {"critical_load_factor", "1"}}},
+      {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}}};
 }
 
 // printf into a std::string; the attribute lets the compiler check every format string.
@@ -128,6 +131,31 @@ void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology
   os << "}";
 }
 
+json StabilityJson(const StabilityVerdict& v) {
+  json out = {{"stable", v.stable},
+              {"method", v.method},
+              {"negative_pivots", v.negative_pivots},
+              {"zero_pivots", v.zero_pivots},
+              {"free_dofs", v.free_dofs},
+              {"reduced_dofs", v.reduced_dofs},
+              {"min_pivot", v.min_pivot}};
+  // null: not computed (n > 6), or no positive factor exists.
+  out["critical_load_factor"] = v.critical_load_factor ? json(*v.critical_load_factor) : json(nullptr);
+  out["critical_load_factor_computed"] = v.critical_load_factor_computed;
+  return out;
+}
+
+// One entry per fixed node: {node (1-based), force [x, y, z]}.
+json ReactionsJson(const Design& d) {
+  const Structure& s = d.topology.structure;
+  json out = json::array();
+  for (int v = 0; v < s.num_nodes() && v < d.reactions.cols(); ++v) {
+    if (!s.fixed[v]) continue;
+    out.push_back({{"node", v + 1}, {"force", {d.reactions(0, v), d.reactions(1, v), d.reactions(2, v)}}});
+  }
+  return out;
+}
+
 }  // namespace
 
 void WriteDesignJson(const Design& d, std::ostream& os) {
@@ -190,8 +218,10 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
     separator = "],\n    [";
   }
   os << (s.num_nodes() ? "]\n  ],\n" : "\n  ],\n");
+  field("reactions", ReactionsJson(d));
   field("self_stress_states", d.self_stress_states);
   field("solver", solver);
+  field("stability", StabilityJson(d.stability));
   field("topology", topology);
   field("units", Units(), true);
   os << "}\n";
@@ -217,6 +247,22 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
               "self-stress states: %d",
               d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(), d.solver.iterations,
               d.equilibrium_residual, d.self_stress_states));
+  const StabilityVerdict& v = d.stability;
+  std::string critical = "not computed (n > 6)";
+  if (v.critical_load_factor_computed) {
+    critical = v.critical_load_factor ? Format("%.4g", *v.critical_load_factor) : std::string("none (no softening)");
+  }
+  line(Format("stability: %s (LDL^T of the %d x %d stiffness on the motions that keep bar lengths: %d negative, "
+              "%d zero pivots); critical load factor %s",
+              v.stable ? "stable" : "UNSTABLE", v.reduced_dofs, v.reduced_dofs, v.negative_pivots, v.zero_pivots,
+              critical.c_str()));
+  std::string reactions;
+  for (int n = 0; n < s.num_nodes() && n < d.reactions.cols(); ++n) {
+    if (!s.fixed[n]) continue;
+    reactions += Format("%s node %d (%.6g, %.6g, %.6g)", reactions.empty() ? "" : ";", n + 1, d.reactions(0, n),
+                        d.reactions(1, n), d.reactions(2, n));
+  }
+  line(reactions.size() < 400 ? "support reactions [N]:" + reactions : "support reactions: in the JSON output");
   line("");
 
   line("members (force: tension for strings, compression for bars):");

@@ -24,6 +24,10 @@ namespace tbridge {
 //   solver                 {name, status, iterations}
 //   equilibrium_residual_N largest node-force imbalance over the free DOFs  [N]
 //   self_stress_states     n_b + n_s - rank(A)
+//   stability              {stable, method, negative_pivots, zero_pivots, free_dofs, reduced_dofs,
+//                           min_pivot [N/m], critical_load_factor (null: none or not computed),
+//                           critical_load_factor_computed} (design/stability.h)
+//   reactions              [{node (1-based), force [x, y, z] [N]}, ...], one per fixed node
 //   units                  the unit of every numeric field above ("1" = dimensionless)
 // Keys are in alphabetical order; nodes and members are written one per line as they are
 // read from the design, so no copy of the document is held. Numbers are the shortest text

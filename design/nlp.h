@@ -52,7 +52,9 @@ struct SolverOptions {
   bool verbose = false;
 };
 
-// Adapters: each is the only file that includes its solver's headers. `x` is the start on
+// Adapters: each is the only file that includes its solver's headers, and each is its own
+// library (tbridge_ipopt, tbridge_nlopt), present only when built in: call them through
+// SolveNlp (design/solvers.h), which knows which are. `x` is the start on
 // entry and the solution on return. Both may be called from several threads; Ipopt solves
 // then run one at a time, all on one thread of the adapter (its sequential MUMPS is not
 // reentrant).

@@ -1,7 +1,6 @@
 #include "dynamics/coupling.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace tbridge {
 
@@ -13,16 +12,9 @@ long AccelerationCoupling::entries() const {
 
 AccelerationCoupling CouplingOf(const DynamicModel& model) {
   const int n_n = model.num_nodes();
-  // Bar-connected components by union-find.
-  std::vector<int> parent(n_n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
-  for (const DynamicBar& b : model.bars) parent[find(b.i)] = find(b.j);
+  const std::vector<int> component = ComponentOf(n_n, model.bars);
   std::vector<std::vector<int>> members(n_n);
-  for (int a = 0; a < n_n; ++a) members[find(a)].push_back(a);
+  for (int a = 0; a < n_n; ++a) members[component[a]].push_back(a);
   std::vector<std::vector<int>> neighbours(n_n);
   for (const DynamicString& s : model.strings) {
     neighbours[s.i].push_back(s.j);
@@ -33,7 +25,7 @@ AccelerationCoupling CouplingOf(const DynamicModel& model) {
   c.depends_on.resize(n_n);
   for (int a = 0; a < n_n; ++a) {
     std::vector<int>& d = c.depends_on[a];
-    for (const int m : members[find(a)]) {
+    for (const int m : members[component[a]]) {
       d.push_back(m);
       d.insert(d.end(), neighbours[m].begin(), neighbours[m].end());
     }

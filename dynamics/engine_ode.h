@@ -32,15 +32,13 @@ class EngineOde final : public OdeSystem {
   void Derivative(double t, const double* y, double* dy) override {
     system_.Derivative(hold_loads_ ? load_time_ : t, y, dy, ws_);
   }
-  // Evaluates the timed loads at `t` for every stage until released. A fixed-step driver holds
+  // Evaluates the timed loads at `t` for every stage from now on. A fixed-step driver holds
   // them at each step's midpoint, so that a load switching on a step boundary is constant
   // within every step (a switch inside the stages of one step would cost O(dt) in energy).
   void HoldLoadsAt(double t) {
     hold_loads_ = true;
     load_time_ = t;
   }
-  void ReleaseLoads() { hold_loads_ = false; }
-  const Workspace& workspace() const { return ws_; }
 
  private:
   const System& system_;

@@ -188,14 +188,17 @@ FrequencyEstimate MeanPeriodFromCrossings(const Eigen::VectorXd& signal, double 
 
 FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt, double duration,
                                 const SpectrumOptions& options) {
+  return DominantFrequency(DeckSignal(deck_vertical, dt, duration), dt, options);
+}
+
+Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration) {
   if (deck_vertical.size() == 0) throw std::invalid_argument("deck frequency: no samples");
   if (!(duration > 0)) throw std::invalid_argument("deck frequency: duration must be > 0");
   if (!(dt > 0)) throw std::invalid_argument("deck frequency: dt must be > 0");
   // Rows 0..last have t = k dt <= duration (with a relative slack for round-off in k dt).
   const Eigen::Index last = std::min<Eigen::Index>(
       deck_vertical.rows() - 1, static_cast<Eigen::Index>(std::floor(duration / dt * (1 + 1e-12))));
-  const Eigen::VectorXd summed = deck_vertical.topRows(last + 1).rowwise().sum();
-  return DominantFrequency(summed, dt, options);
+  return deck_vertical.topRows(last + 1).rowwise().sum();
 }
 
 }  // namespace tbridge

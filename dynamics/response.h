@@ -71,5 +71,10 @@ FrequencyEstimate MeanPeriodFromCrossings(const Eigen::VectorXd& signal, double 
 // for an empty matrix, duration <= 0, or as DominantFrequency.
 FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt, double duration = 1.0,
                                 const SpectrumOptions& options = {});
+// The signal DeckFrequency measures: the rows with t <= duration, summed across the nodes.
+// `simulate` also passes it to MeanPeriodFromCrossings, the second estimate in its summary:
+// where the motion is periodic the two agree, where strings go slack they part. Throws
+// std::invalid_argument for an empty matrix, dt <= 0 or duration <= 0.
+Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration);
 
 }  // namespace tbridge

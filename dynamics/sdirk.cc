@@ -224,7 +224,7 @@ bool Sdirk3::Attempt(OdeSystem& system, double t, double h, Eigen::VectorXd& y) 
   const auto x0 = y0_.head(c_);
   const auto v0 = y0_.tail(c_);
   bool fresh = false;
-  if (options_.refresh_every_step || factor_h_ != h) {
+  if (factor_h_ != h) {
     Refresh(system, t, h, y0_);
     fresh = true;
   }

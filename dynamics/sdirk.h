@@ -48,7 +48,6 @@ struct SdirkOptions {
   int fast_iterations = 6;      // this many without converging triggers a refresh
   double max_contraction = 0.5; // ||dV_k+1|| / ||dV_k|| above this triggers a refresh
   int max_refreshes = 4;        // re-linearisations within one stage (slack kinks)
-  bool refresh_every_step = false;
   // When Newton fails even with a fresh Jacobian (a slack kink inside the step can leave no
   // contraction), the step is done as two halves, recursively, at most this many times deep
   // (h / 2^k); only then does Step throw. Rare: the default step sizes rarely need it.

@@ -553,6 +553,12 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
       try {
         s.frequency = DeckFrequency(result.deck_vertical, result.deck_sample_dt, config.duration);
         s.has_frequency = true;
+        try {
+          s.crossing_frequency = MeanPeriodFromCrossings(
+              DeckSignal(result.deck_vertical, result.deck_sample_dt, config.duration), result.deck_sample_dt);
+        } catch (const std::invalid_argument&) {
+          // fewer than three crossings: a record shorter than a period; the spectral estimate stands alone
+        }
       } catch (const std::invalid_argument& e) {
         s.frequency_note = std::string("no deck frequency: ") + e.what();
       }

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,9 @@ struct SimulationSummary {
   bool has_frequency = false;
   FrequencyEstimate frequency;     // deck measurement of SPEC.md §9
   std::string frequency_note;      // why there is none, when has_frequency is false
+  // Mean period from the crossings of the same deck signal (MeanPeriodFromCrossings), when
+  // it has at least three crossings; empty otherwise.
+  std::optional<FrequencyEstimate> crossing_frequency;
 };
 
 struct SimulationResult {

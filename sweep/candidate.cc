@@ -105,6 +105,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   row.candidate = candidate;
   try {
     Design design = RunDesign(CandidateConfig(spec, candidate));
+    RequireStable(design);  // as tbridge design: an unstable candidate is no design (its note says why)
     const Material& mat = design.config.material;
     row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
     ModelOptions options;

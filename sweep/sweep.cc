@@ -192,70 +192,76 @@ std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions&
   return rows;
 }
 
+namespace {
+
+// Every field of a sweep.json row, listed once: the group it sits in ("" at the top, or
+// "mass_kg"), its key and the member that holds it. RowToJson and RowFromJson both walk this
+// list, so a field added here is written, read back and merged without a second line.
+template <class Row, class Visit>
+void RowFields(Row& r, Visit&& v) {  // Row: CandidateRow or const CandidateRow
+  auto& c = r.candidate;
+  v("", "index", c.index);
+  v("", "n", c.n);
+  v("", "p", c.p);
+  v("", "beta_deg", c.beta_deg);
+  v("", "deck_prestrain", c.deck_prestrain);
+  v("", "ok", r.ok);
+  v("", "note", r.note);
+  v("mass_kg", "bars", r.bars);
+  v("mass_kg", "strings", r.strings);
+  v("mass_kg", "deck_strings", r.deck_strings);
+  v("mass_kg", "deck_beams", r.deck_beams);
+  v("mass_kg", "structure", r.structure);
+  v("mass_kg", "total", r.total);
+  v("mass_kg", "joints", r.joint_mass);
+  v("mass_kg", "objective", r.objective);
+  v("", "free_nodes", r.free_nodes);
+  v("", "deck_string_area_factor", r.deck_string_area_factor);
+  v("", "prestress_pa", r.prestress);
+  v("", "allowed_stress_pa", r.allowed_stress);
+  v("", "first_frequency_rad_s", r.first_frequency_rad_s);
+  v("", "peak_deck_displacement_m", r.peak_deck_displacement);
+  v("", "peak_stress_ratio", r.peak_stress_ratio);
+  v("", "slack_strings", r.slack_strings);
+  v("", "peak_bar_capacity_ratio", r.peak_bar_capacity_ratio);
+  v("", "run_integrator", r.run_integrator);
+  v("", "feasible", r.feasible);
+  v("", "violated", r.violated);
+}
+
+template <typename T>
+nlohmann::json RowValue(const T& v) {
+  return nlohmann::json(v);
+}
+template <typename T>
+nlohmann::json RowValue(const std::optional<T>& v) {
+  return Opt(v);
+}
+template <typename T>
+void ReadRowValue(const nlohmann::json& j, const char* key, T& v) {
+  v = j.at(key).get<T>();
+}
+template <typename T>
+void ReadRowValue(const nlohmann::json& j, const char* key, std::optional<T>& v) {
+  v = GetOpt<T>(j, key);
+}
+
+}  // namespace
+
 nlohmann::json RowToJson(const CandidateRow& r) {
-  const Candidate& c = r.candidate;
-  return {{"index", c.index},
-          {"n", c.n},
-          {"p", c.p},
-          {"beta_deg", c.beta_deg},
-          {"deck_prestrain", c.deck_prestrain},
-          {"ok", r.ok},
-          {"note", r.note},
-          {"mass_kg",
-           {{"bars", r.bars},
-            {"strings", r.strings},
-            {"deck_strings", r.deck_strings},
-            {"deck_beams", r.deck_beams},
-            {"structure", r.structure},
-            {"total", r.total},
-            {"joints", r.joint_mass},
-            {"objective", r.objective}}},
-          {"free_nodes", r.free_nodes},
-          {"deck_string_area_factor", r.deck_string_area_factor},
-          {"prestress_pa", r.prestress},
-          {"allowed_stress_pa", r.allowed_stress},
-          {"first_frequency_rad_s", Opt(r.first_frequency_rad_s)},
-          {"peak_deck_displacement_m", Opt(r.peak_deck_displacement)},
-          {"peak_stress_ratio", Opt(r.peak_stress_ratio)},
-          {"slack_strings", Opt(r.slack_strings)},
-          {"peak_bar_capacity_ratio", Opt(r.peak_bar_capacity_ratio)},
-          {"run_integrator", Opt(r.run_integrator)},
-          {"feasible", r.feasible},
-          {"violated", r.violated}};
+  nlohmann::json j = nlohmann::json::object();
+  RowFields(r, [&j](const char* group, const char* key, const auto& field) {
+    (*group ? j[group] : j)[key] = RowValue(field);
+  });
+  return j;
 }
 
 CandidateRow RowFromJson(const nlohmann::json& j) {
   try {
     CandidateRow r;
-    Candidate& c = r.candidate;
-    c.index = j.at("index").get<int>();
-    c.n = j.at("n").get<int>();
-    c.p = j.at("p").get<int>();
-    c.beta_deg = j.at("beta_deg").get<double>();
-    c.deck_prestrain = j.at("deck_prestrain").get<double>();
-    r.ok = j.at("ok").get<bool>();
-    r.note = j.at("note").get<std::string>();
-    const nlohmann::json& m = j.at("mass_kg");
-    r.bars = m.at("bars").get<double>();
-    r.strings = m.at("strings").get<double>();
-    r.deck_strings = m.at("deck_strings").get<double>();
-    r.deck_beams = m.at("deck_beams").get<double>();
-    r.structure = m.at("structure").get<double>();
-    r.total = m.at("total").get<double>();
-    r.joint_mass = m.at("joints").get<double>();
-    r.objective = m.at("objective").get<double>();
-    r.free_nodes = j.at("free_nodes").get<int>();
-    r.deck_string_area_factor = j.at("deck_string_area_factor").get<double>();
-    r.prestress = j.at("prestress_pa").get<double>();
-    r.allowed_stress = j.at("allowed_stress_pa").get<double>();
-    r.first_frequency_rad_s = GetOpt<double>(j, "first_frequency_rad_s");
-    r.peak_deck_displacement = GetOpt<double>(j, "peak_deck_displacement_m");
-    r.peak_stress_ratio = GetOpt<double>(j, "peak_stress_ratio");
-    r.slack_strings = GetOpt<int>(j, "slack_strings");
-    r.peak_bar_capacity_ratio = GetOpt<double>(j, "peak_bar_capacity_ratio");
-    r.run_integrator = GetOpt<std::string>(j, "run_integrator");
-    r.feasible = j.at("feasible").get<bool>();
-    r.violated = j.at("violated").get<std::vector<std::string>>();
+    RowFields(r, [&j](const char* group, const char* key, auto& field) {
+      ReadRowValue(*group ? j.at(group) : j, key, field);
+    });
     return r;
   } catch (const nlohmann::json::exception& e) {
     throw ConfigError("sweep row", Show(j), std::string("malformed: ") + e.what());

@@ -29,7 +29,8 @@ const CommandSpec& DesignSpec() {
       "it to OUT.json (fields in README.md). OUT.json is written only when the design\n"
       "succeeds, and never partially; a failed run leaves it as it was. Implausible results\n"
       "(members under 1 mm, a deck under 1 mm or over span / 10, ...) are warned about on\n"
-      "stderr. Draw the design with tools/plot_sweep.py bridge OUT.json -o FIG.png."};
+      "stderr. A design that is not statically stable (README.md, \"Reading a design\") is\n"
+      "refused with exit 3. Draw the design with tools/plot_sweep.py bridge OUT.json -o FIG.png."};
   return spec;
 }
 
@@ -49,6 +50,7 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
   const Design design = RunDesign(config, &progress);
+  RequireStable(design);  // an unstable design is no design: exit 3, nothing written
   progress.Stage("writing");
   WriteDesignJson(design, json);
   progress.Finish();

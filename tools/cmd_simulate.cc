@@ -98,6 +98,14 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                       {"frequency_hz", s.frequency.frequency_hz},
                       {"omega_rad_s", s.frequency.omega_rad_s},
                       {"amplitude_m", s.frequency.amplitude}};
+    // A second estimate of the same signal: agrees with the spectral peak for periodic motion.
+    j["frequency"]["crossings"] =
+        s.crossing_frequency
+            ? nlohmann::json{{"method", "mean spacing of the mean-level crossings"},
+                             {"period_s", s.crossing_frequency->period_s},
+                             {"omega_rad_s", s.crossing_frequency->omega_rad_s},
+                             {"cycles", s.crossing_frequency->cycles}}
+            : nlohmann::json(nullptr);
   } else if (!s.frequency_note.empty()) {
     j["frequency"] = {{"note", s.frequency_note}};
   }

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "design/solvers.h"
 #include "tbridge_version.h"  // generated at build time (tools/version.cmake)
 #include "tools/commands.h"
 #include "tools/output.h"
@@ -65,6 +66,13 @@ const std::vector<std::string>& RegistrationProblems() { return TheRegistry().pr
 
 namespace {
 
+// "auto, direct, ipopt, nlopt", or fewer when a solver was left out of the build.
+std::string SolverList() {
+  std::string list;
+  for (const std::string& s : BuiltInSolvers()) list += (list.empty() ? "" : ", ") + s;
+  return list;
+}
+
 void PrintUsage(std::ostream& os) {
   os << "tbridge: minimum-mass tensegrity bridges and their dynamics\n\n"
         "usage: tbridge COMMAND [ARGS...]\n"
@@ -83,7 +91,8 @@ void PrintUsage(std::ostream& os) {
         "  tbridge simulate CONFIG.json -o OUTDIR --vtk DIR            DIR/run.pvd for ParaView\n"
         "\nA failed run leaves its output files and folders as they were. Progress (--progress or a\n"
         "terminal) and warnings go to stderr; --strict makes warnings errors.\n\n"
-     << kExitCodesHelp << "\ntbridge --version   the version and git revision\n";
+     << kExitCodesHelp << "\ntbridge --version   the version, git revision and design solvers built in\n"
+     << "design.solver values this build accepts: " << SolverList() << "\n";
 }
 
 int Fail(const std::string& message, int code) {
@@ -102,7 +111,8 @@ int Dispatch(const std::vector<std::string>& argv) {
     return kExitOk;
   }
   if (argv[0] == "--version" || argv[0] == "version") {
-    std::cout << "tbridge " << TBRIDGE_VERSION << " (git " << TBRIDGE_REVISION << ")\n";
+    std::cout << "tbridge " << TBRIDGE_VERSION << " (git " << TBRIDGE_REVISION << ")\n"
+              << "design solvers built in: " << SolverList() << "\n";
     return kExitOk;
   }
   const Command* command = FindCommand(argv[0]);

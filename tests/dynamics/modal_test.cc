@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <numbers>
 #include <string>
@@ -65,23 +66,31 @@ Eigen::MatrixXd ShapeMatrix(const LinearisedSystem& sys, const ModalResult& r) {
   return phi;
 }
 
-// The SPEC §9 numbers come from an independent re-implementation (printed to 4 digits); the
-// tolerance of 1 % is the acceptance bound, our values agree to the printed digits.
-constexpr double kSpecFrequencyTol = 0.01;
+// The SPEC §9 numbers come from an independent re-implementation; they are scored in their
+// printed digits (SPEC §5's rule): |computed - printed| <= half a unit of the last printed
+// digit, so "100.8" allows 0.05 rad/s and "2286" 0.5 rad/s, plus 1e-6 relative for the
+// two implementations' own last digits: ours gives 166.84993 for the printed "166.9", a
+// value on the rounding boundary that a 4e-7 relative difference tips either way.
+void CheckPrinted(double computed, const std::string& printed) {
+  const size_t dot = printed.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(printed.size() - dot - 1);
+  INFO("computed " << std::setprecision(10) << computed << " rad/s, printed " << printed);
+  CHECK(std::abs(computed - std::stod(printed)) <= 0.5 * std::pow(10.0, -decimals) + 1e-6 * std::abs(computed));
+}
 
 TEST_CASE("Linearised frequencies of the designed bridges match SPEC 9", "[dynamics][modal]") {
-  const std::map<int, std::vector<double>> lowest = {
-      {1, {100.8, 663.7, 2286}}, {2, {81.7, 82.7, 229.3}}, {3, {77.2, 81.7, 166.9}}};
-  const std::map<int, double> highest = {{1, 2286}, {2, 5087}, {3, 10019}};
+  const std::map<int, std::vector<std::string>> lowest = {
+      {1, {"100.8", "663.7", "2286"}}, {2, {"81.7", "82.7", "229.3"}}, {3, {"77.2", "81.7", "166.9"}}};
+  const std::map<int, std::string> highest = {{1, "2286"}, {2, "5087"}, {3, "10019"}};
   for (const auto& [n, expected] : lowest) {
     const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(n)));
     INFO("n = " << n);
     REQUIRE(r.modes.size() >= 3);
     for (size_t k = 0; k < expected.size(); ++k) {
       INFO("mode " << k + 1 << ": " << r.modes[k].omega_rad_s << " rad/s");
-      CHECK(r.modes[k].omega_rad_s == Approx(expected[k]).epsilon(kSpecFrequencyTol));
+      CheckPrinted(r.modes[k].omega_rad_s, expected[k]);
     }
-    CHECK(r.modes.back().omega_rad_s == Approx(highest.at(n)).epsilon(kSpecFrequencyTol));
+    CheckPrinted(r.modes.back().omega_rad_s, highest.at(n));
     // Loads are balanced by the design forces to the solver tolerance (N, loads ~ 1e4 N).
     CHECK(r.equilibrium_residual < 1e-6);
     CHECK(r.slack_strings == 0);
@@ -90,10 +99,8 @@ TEST_CASE("Linearised frequencies of the designed bridges match SPEC 9", "[dynam
 
 TEST_CASE("Further n = 3 linearised frequencies match SPEC 9", "[dynamics][modal]") {
   const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(3)));
-  const std::vector<double> expected = {77.2, 81.7, 166.9, 173.8, 253.9};
-  for (size_t k = 0; k < expected.size(); ++k) {
-    CHECK(r.modes[k].omega_rad_s == Approx(expected[k]).epsilon(kSpecFrequencyTol));
-  }
+  const std::vector<std::string> expected = {"77.2", "81.7", "166.9", "173.8", "253.9"};
+  for (size_t k = 0; k < expected.size(); ++k) CheckPrinted(r.modes[k].omega_rad_s, expected[k]);
   CHECK(r.free_dofs == 28);    // 14 free nodes x 2
   CHECK(r.constraints == 7);   // one per bar
   CHECK(r.modes.size() == 21u);
@@ -101,13 +108,13 @@ TEST_CASE("Further n = 3 linearised frequencies match SPEC 9", "[dynamics][modal
 
 TEST_CASE("Prestrained deck strings raise the fundamental as in SPEC 9", "[dynamics][modal]") {
   // {n, p, lowest omega [rad/s]}; same independent source and bound as above.
-  const std::vector<std::tuple<int, double, double>> cases = {
-      {1, 0.95, 134.6}, {1, 0.90, 164.3}, {2, 0.95, 142.5},
-      {2, 0.90, 186.5}, {3, 0.95, 155.2}, {3, 0.90, 208.5}};
+  const std::vector<std::tuple<int, double, std::string>> cases = {
+      {1, 0.95, "134.6"}, {1, 0.90, "164.3"}, {2, 0.95, "142.5"},
+      {2, 0.90, "186.5"}, {3, 0.95, "155.2"}, {3, 0.90, "208.5"}};
   for (const auto& [n, p, omega] : cases) {
     const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(n), p));
     INFO("n = " << n << ", p = " << p << ": " << r.modes.front().omega_rad_s << " rad/s");
-    CHECK(r.modes.front().omega_rad_s == Approx(omega).epsilon(kSpecFrequencyTol));
+    CheckPrinted(r.modes.front().omega_rad_s, omega);
     // The deck-chain prestress is a self-stress: the loads stay balanced (N).
     CHECK(r.equilibrium_residual < 1e-6);
   }

@@ -34,7 +34,6 @@ TEST_CASE("Tables 5 and 6 reproduce within SPEC §9's tolerances", "[paper][tabl
       CHECK(std::abs(omega / paper - 1.0) <= tolerance);
       // The period is the same measurement: its frequency 2 pi / T lies in the same band.
       CHECK(std::abs(paper_T / T - 1.0) <= tolerance);
-      CHECK(omega * T == Approx(2 * M_PI).epsilon(1e-12));
     }
   }
 
@@ -83,9 +82,22 @@ TEST_CASE("Tables 5 and 6 reproduce within SPEC §9's tolerances", "[paper][tabl
     }
   }
 
-  SECTION("Table 6's design column reuses the Table 5 runs") {
-    // 6 Table 5 runs + 12 prestrained runs: identical resolved configs run once.
-    CHECK(Tables56().runs == 18);
+  SECTION("Table 6's design column is Table 5") {
+    // SPEC §9: the p1 column is the design state (rest/stretched 0.99967), identical to
+    // Table 5: the same n and perturbed bars must give the same frequency, bit for bit (one
+    // deterministic run of one resolved config). Rows are read from each table separately.
+    const auto& t5 = Tables56().json.at("table5");
+    int matched = 0;
+    for (const auto& row : Tables56().json.at("table6")) {
+      if (!row.at("prestrain").is_string()) continue;
+      for (const auto& five : t5) {
+        if (five.at("n") != row.at("n") || five.at("delta") != row.at("delta")) continue;
+        INFO("n = " << row.at("n") << ", delta " << row.at("delta").dump());
+        CHECK(row.at("omega_rad_s").get<double>() == five.at("omega_rad_s").get<double>());
+        ++matched;
+      }
+    }
+    CHECK(matched == 6);  // every Table 5 row has its design-state twin in Table 6
   }
 }
 

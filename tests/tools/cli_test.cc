@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli_support.h"
+#include "design/solvers.h"
 
 namespace {
 
@@ -107,6 +108,7 @@ TEST_CASE("an unreadable config exits 2 and names the file") {
 
 TEST_CASE("a design the solver cannot finish exits 3 with its status and writes nothing") {
   // One Ipopt iteration cannot converge on the 3D bridge's 26 self-stresses (it needs about 20).
+  if (!tbridge::SolverBuiltIn("ipopt")) return;  // a build without Ipopt
   ExpectCleanFailure("no_design",
                      R"({"bridge": {"n": 2, "planes": 2, "beta_deg": 20}, "design": {"solver": "ipopt", "max_iterations": 1}})", 3,
                      {"no minimum-mass design", "Maximum_Iterations_Exceeded"});
@@ -223,6 +225,28 @@ TEST_CASE("the default config gives the paper's n = 3 design") {
   CHECK(d.at("solver").at("status") == "Solve_Succeeded");
   // The summary on stdout shows eq. (49) to the printed digits.
   CHECK(r.out.find("132.357") != std::string::npos);
+
+  // Stability: the reduced stiffness of n = 3 has 3 n_b = 21 motions that keep the 7 bar
+  // lengths (28 free DOFs less 7 constraints), all with positive pivots.
+  const json& stability = d.at("stability");
+  CHECK(stability.at("stable") == true);
+  CHECK(stability.at("reduced_dofs") == 21);
+  CHECK(stability.at("negative_pivots") == 0);
+  CHECK(stability.at("critical_load_factor").get<double>() > 1);
+  CHECK_THAT(r.out, Catch::Contains("stability: stable"));
+  // Reactions: the two supports (nodes 15 and 16) each carry half of the 7 deck loads of
+  // f = 2383.23 N (SPEC §3; printed to 6 digits, so 0.5e-2 N per load).
+  REQUIRE(d.at("reactions").size() == 2);
+  for (const json& reaction : d.at("reactions")) {
+    CHECK(reaction.at("force")[1].get<double>() == Approx(3.5 * 2383.23).margin(3.5 * 0.005));
+  }
+}
+
+TEST_CASE("an unstable design exits 3, says why and writes nothing") {
+  // Without deck-string prestress each bar of the planar bridge is an inverted pendulum on
+  // its V (docs/topology.md): the reduced stiffness has negative pivots.
+  ExpectCleanFailure("unstable", R"({"bridge": {"n": 2}, "design": {"deck_string_min_radius": 0}})", 3,
+                     {"unstable", "negative", "design.deck_string_min_radius"});
 }
 
 TEST_CASE("the quiet flag prints nothing on success") {

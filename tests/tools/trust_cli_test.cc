@@ -20,6 +20,7 @@
 #include "cli_support.h"
 #include "core/config.h"
 #include "design/design.h"
+#include "design/solvers.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 
@@ -314,6 +315,12 @@ TEST_CASE("defect 7: the exit codes are listed once, with 1; --version names the
   const CliResult version = Run(dir, "--version");
   CHECK(version.code == 0);
   CHECK_THAT(version.out, Catch::StartsWith("tbridge 0.") && Catch::Contains("(git "));
+  // The solvers the build has (CMake options TBRIDGE_WITH_IPOPT/NLOPT), each named iff built in.
+  CHECK_THAT(version.out, Catch::Contains("design solvers built in: auto, direct"));
+  for (const char* solver : {"ipopt", "nlopt"}) {
+    INFO(solver);
+    CHECK((version.out.find(solver) != std::string::npos) == SolverBuiltIn(solver));
+  }
 }
 
 TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses them and writes nothing") {
@@ -321,9 +328,11 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
   const std::pair<const char*, const char*> cases[] = {
       // 1e-6 m span: members of 1e-8 m, masses that print as 0.000 kg
       {R"({"bridge": {"n": 3, "span": 1e-6}})", "shorter than 1 mm"},
-      // 1e12 N payload: 48 m thick bars 0.13 m long, a 36.9 m deck on a 12 m span
-      {R"({"bridge": {"n": 3, "payload": 1e12}})", "thicker than long"},
-      {R"({"bridge": {"n": 3, "payload": 1e12}})", "exceeds span / 10"}};
+      // 1.1e9 N payload: 1.6 m thick bars 0.13 m long, a 1.22 m deck on a 12 m span. The
+      // deck strings at their 1 m maximum radius keep the prestress (2.2e8 N) strong enough
+      // for the bars to stand: the design is stable, only implausible.
+      {R"({"bridge": {"n": 3, "payload": 1.1e9}, "design": {"deck_string_min_radius": 1.0}})", "thicker than long"},
+      {R"({"bridge": {"n": 3, "payload": 1.1e9}, "design": {"deck_string_min_radius": 1.0}})", "exceeds span / 10"}};
   for (const auto& [text, warning] : cases) {
     const fs::path config = Write(dir / "config.json", text);
     const fs::path out = dir / "out.json";
@@ -337,6 +346,18 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
     const CliResult strict = Run(dir, "design " + Quote(config.string()) + " -o " + Quote(out.string()) + " --strict");
     CHECK(strict.code == 2);
     CHECK_THAT(strict.err, Catch::Contains("--strict") && Catch::Contains(warning));
+    CHECK_FALSE(fs::exists(out));
+  }
+  // A 1e12 N payload with the 10 mm deck strings: their 2.2e4 N prestress cannot hold bars
+  // loaded by 1e12 N upright (as with no deck prestress at all), so the design is refused as
+  // unstable before any plausibility check: exit 3, nothing written.
+  {
+    const fs::path config = Write(dir / "config.json", R"({"bridge": {"n": 3, "payload": 1e12}})");
+    const fs::path out = dir / "out.json";
+    fs::remove(out);
+    const CliResult r = Run(dir, "design " + Quote(config.string()) + " -o " + Quote(out.string()) + " -q");
+    CHECK(r.code == 3);
+    CHECK_THAT(r.err, Catch::Contains("unstable"));
     CHECK_FALSE(fs::exists(out));
   }
   // The paper's n = 3 design is plausible: no warning.
