@@ -1,6 +1,8 @@
 #include "design/design.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <numbers>
 #include <sstream>
 
@@ -38,22 +40,25 @@ void CheckBasis(const EquilibriumBasis& basis) {
 // with many self-stresses (the 3D bridge at n >= 5: 2042 of them at n = 8) the orthonormal
 // basis fills every active row, and the full problem's sparse equilibrium rows are cheaper.
 // Returns the member forces [C; T] in N; `form` says which problem was solved.
-Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structure& s, const Eigen::Matrix3Xd& loads,
-                             const MinMassSettings& settings, const DesignConfig& config, SolverOutcome& outcome,
-                             std::string& form) {
-  const bool direct = config.solver == "direct" || (config.solver == "auto" && problem.DirectApplies());
+// `problem` is null when the self-stress basis was too large to form (the 3D bridge at n >= 10):
+// then only the full problem is left.
+Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem* problem, int states, const Structure& s,
+                             const Eigen::Matrix3Xd& loads, const MinMassSettings& settings, const DesignConfig& config,
+                             SolverOutcome& outcome, std::string& form) {
+  const bool applies = problem && problem->DirectApplies();
+  const bool direct = config.solver == "direct" || (config.solver == "auto" && applies);
   form = "self-stress";
   Eigen::VectorXd x;
   if (direct) {
-    if (!problem.DirectApplies()) {
+    if (!applies) {
       throw ConfigError("design.solver", "direct",
                         "\"direct\" needs at most one self-stress state loading no bar; this bridge has " +
-                            std::to_string(problem.num_self_stresses()) + " states with " +
-                            std::to_string(problem.num_active_bars()) +
-                            " bars in them: use \"auto\", \"ipopt\" or \"nlopt\"");
+                            std::to_string(states) + " states" +
+                            (problem ? " with " + std::to_string(problem->num_active_bars()) + " bars in them" : "") +
+                            ": use \"auto\", \"ipopt\" or \"nlopt\"");
     }
-    outcome = problem.SolveDirect(x);
-    return problem.MemberForces(x, 0);
+    outcome = problem->SolveDirect(x);
+    return problem->MemberForces(x, 0);
   }
   // "auto" takes the first iterative solver built in (Ipopt before NLopt).
   std::string name = config.solver;
@@ -61,7 +66,7 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
     const std::vector<std::string> built = BuiltInIterativeSolvers();
     if (built.empty()) {
       throw ConfigError("design.solver", "\"auto\"",
-                        "this bridge has " + std::to_string(problem.num_self_stresses()) +
+                        "this bridge has " + std::to_string(states) +
                             " self-stress states and needs an iterative solver, but this build has neither "
                             "Ipopt nor NLopt (rebuild with -DTBRIDGE_WITH_IPOPT=ON or -DTBRIDGE_WITH_NLOPT=ON)");
     }
@@ -73,17 +78,18 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem& problem, const Structu
   // NLopt's SLSQP holds the Jacobian dense (rows x variables): there the smaller dense size
   // decides, and Ipopt's sparse factorisation counts the non-zeros.
   auto dense = [](const NlpProblem& p) { return static_cast<double>(p.num_constraints()) * p.num_variables(); };
-  const bool take_full = config.solver == "nlopt" ? dense(problem) > dense(full)
-                                                 : problem.JacobianPattern().size() > full.JacobianPattern().size();
+  const bool take_full = !problem || (config.solver == "nlopt" ? dense(*problem) > dense(full)
+                                                              : problem->JacobianPattern().size() >
+                                                                    full.JacobianPattern().size());
   if (take_full) {
     form = "full";
     x = full.StartingPoint();
     outcome = solve(full);
     return full.MemberForces(x);
   }
-  x = problem.StartingPoint();
-  outcome = solve(problem);
-  return problem.MemberForces(x, 0);
+  x = problem->StartingPoint();
+  outcome = solve(*problem);
+  return problem->MemberForces(x, 0);
 }
 
 }  // namespace
@@ -180,11 +186,16 @@ Design RunDesign(const Config& config, ProgressReporter* progress) {
   d.self_stress_states = basis.self_stress_states();
   CheckBasis(basis);
   done(0.6);
-  const ReducedMinMassProblem problem(s, basis, settings);
-  const Eigen::VectorXd forces = SolveMinMass(problem, s, d.loads, settings, config.design, d.solver, d.solver_form);
+  std::optional<ReducedMinMassProblem> problem;
+  if (basis.basis_formed) problem.emplace(s, basis, settings);
+  const Eigen::VectorXd forces = SolveMinMass(problem ? &*problem : nullptr, basis.self_stress_states(), s, d.loads,
+                                              settings, config.design, d.solver, d.solver_form);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
-  const double load_scale = problem.ForceScale();
+  // The force scale of the problem: its largest particular force or prestress floor.
+  double load_scale = basis.particular.size() ? basis.particular.cwiseAbs().maxCoeff() : 0.0;
+  for (const double t : settings.string_min_tension) load_scale = std::max(load_scale, t);
+  if (!(load_scale > 0)) load_scale = 1.0;
   if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
       d.equilibrium_residual > 1e-6 * load_scale || forces.minCoeff() < -1e-6 * load_scale) {
     std::ostringstream os;

@@ -67,13 +67,15 @@ Eigen::MatrixXd TakeDense(cholmod_dense* d, cholmod_common* cc, const char* what
 
 }  // namespace
 
-EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads) {
+EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads,
+                                   double max_basis_entries) {
   const Eigen::Index n = eq.A.cols(), m = eq.A.rows(), cases = free_loads.cols();
   if (free_loads.rows() != m) throw ModelError("equilibrium factorisation: load rows differ from the DOFs");
   EquilibriumBasis out;
   if (m == 0) {  // nothing free: every member force is a self-stress
     out.particular = Eigen::MatrixXd::Zero(n, cases);
     out.self_stress = Eigen::MatrixXd::Identity(n, n);
+    out.states = static_cast<int>(n);
     return out;
   }
   Common common;
@@ -98,14 +100,20 @@ EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::Mat
   out.particular = TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, qr.get(), &y_view, cc), cc, "Q x");
 
   const Eigen::Index s = n - out.rank;
+  out.states = static_cast<int>(s);
+  const Eigen::MatrixXd residual = eq.A * out.particular + free_loads;
+  out.load_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
+  if (static_cast<double>(n) * static_cast<double>(s) > max_basis_entries) {
+    out.basis_formed = false;
+    out.self_stress = Eigen::MatrixXd(n, 0);
+    return out;
+  }
   Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, s);
   for (Eigen::Index k = 0; k < s; ++k) unit(out.rank + k, k) = 1.0;
   cholmod_dense unit_view = DenseView(unit);
   out.self_stress = s > 0 ? TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, qr.get(), &unit_view, cc), cc, "Q e")
                           : Eigen::MatrixXd(n, 0);
 
-  const Eigen::MatrixXd residual = eq.A * out.particular + free_loads;
-  out.load_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   const Eigen::MatrixXd an = eq.A * out.self_stress;
   out.basis_residual = an.size() ? an.cwiseAbs().maxCoeff() : 0.0;
   return out;

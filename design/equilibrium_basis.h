@@ -19,6 +19,10 @@ namespace tbridge {
 
 struct EquilibriumBasis {
   int rank = 0;                // numerical rank of A (SuiteSparseQR's default tolerance)
+  int states = 0;              // n_b + n_s - rank: the number of self-stresses
+  // False when the basis was not formed because members x states exceeded the limit given to
+  // FactorEquilibrium (self_stress is then members x 0; `states` still counts them).
+  bool basis_formed = true;
   Eigen::MatrixXd particular;  // (n_b + n_s) x n_cases: forces of each load case [N]
   Eigen::MatrixXd self_stress; // (n_b + n_s) x (n_b + n_s - rank): orthonormal columns
   // Largest |A x_p + w| over every case and free DOF [N]: nonzero when a load has a
@@ -27,11 +31,16 @@ struct EquilibriumBasis {
   // Largest |A N| entry: a check of the rank decision (a few eps for a sound basis).
   double basis_residual = 0;
 
-  int self_stress_states() const { return static_cast<int>(self_stress.cols()); }
+  int self_stress_states() const { return states; }
 };
 
 // `free_loads` is n_dof x n_cases, each column w of one load case on the free DOFs [N]
-// (FreeLoads). Throws ModelError when the factorisation fails (out of memory).
-EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads);
+// (FreeLoads). The basis is dense (members x states): it is formed only while that has at most
+// `max_basis_entries` entries. The default, 2^20 (8 MB), admits every planar bridge (one state
+// at any n) and the 3D bridge up to n = 6; beyond, its thousands of states would only feed a
+// self-stress form that the full sparse problem beats (a whole 3D n = 8 design: 4.1 s and
+// 308 MB with the basis formed, 1.6 s and 33 MB without).
+EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads,
+                                   double max_basis_entries = 1048576.0);
 
 }  // namespace tbridge

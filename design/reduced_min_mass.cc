@@ -24,8 +24,10 @@ constexpr double kFloorTolerance = 1e-9;
 
 ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const EquilibriumBasis& basis,
                                              MinMassSettings settings)
-    : nb_(s.num_bars()), ns_(s.num_strings()), s_(basis.self_stress_states()), settings_(std::move(settings)) {
+    : nb_(s.num_bars()), ns_(s.num_strings()), s_(static_cast<int>(basis.self_stress.cols())),
+      settings_(std::move(settings)) {
   const int members = nb_ + ns_;
+  if (!basis.basis_formed) throw ModelError("min-mass: the self-stress basis was not formed (too large)");
   if (basis.particular.rows() != members || basis.self_stress.rows() != members || basis.particular.cols() < 1) {
     throw ModelError("min-mass: the equilibrium basis does not match the structure");
   }

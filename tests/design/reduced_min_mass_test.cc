@@ -76,6 +76,28 @@ TEST_CASE("One self-stress for p = 1 at every complexity up to 16", "[design][se
   }
 }
 
+TEST_CASE("A self-stress basis too large to form is counted and not formed", "[design][self-stress]") {
+  // The 3D bridge has 2^(n+3) - 6 self-stresses (10, 26, 58, ... : the dense count above for
+  // n <= 5); past the entry limit the count stays and the design takes the full problem.
+  const DesignInputs in = PrepareDesign(Variant(2, 1, 2));
+  const EquilibriumSystem eq = BuildEquilibrium(in.topology.structure);
+  const EquilibriumBasis counted = FactorEquilibrium(eq, FreeLoads(eq, in.loads), /*max_basis_entries=*/0.0);
+  CHECK_FALSE(counted.basis_formed);
+  CHECK(counted.self_stress_states() == 26);
+  CHECK(counted.self_stress.cols() == 0);
+  const double scale = counted.particular.cwiseAbs().maxCoeff();
+  CHECK((eq.A * counted.particular + FreeLoads(eq, in.loads)).cwiseAbs().maxCoeff() <= 1e-12 * scale);
+  CHECK_THROWS_AS(ReducedMinMassProblem(in.topology.structure, counted, in.settings), ModelError);
+
+  if (!test::HaveSolvers({"ipopt"})) return;
+  const Design d = RunDesign(Variant(8, 1, 2));  // 5102 members x 2042 states: over the limit
+  CHECK(d.self_stress_states == (1 << 11) - 6);
+  CHECK(d.solver_form == "full");
+  // Equilibrium to 1e-9 of the largest node load, as every design.
+  const Eigen::VectorXd r = EquilibriumResidual(BuildEquilibrium(d.topology.structure), MemberForces(d), d.loads);
+  CHECK(r.cwiseAbs().maxCoeff() <= 1e-9 * d.deck.node_load);
+}
+
 struct Optimum {
   double mass = 0;        // structure mass [kg]
   Eigen::VectorXd forces;  // [C; T] in N
