@@ -1,6 +1,5 @@
 #include "design/design.h"
 
-#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <numbers>
@@ -192,10 +191,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress) {
                                               settings, config.design, d.solver, d.solver_form);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
-  // The force scale of the problem: its largest particular force or prestress floor.
-  double load_scale = basis.particular.size() ? basis.particular.cwiseAbs().maxCoeff() : 0.0;
-  for (const double t : settings.string_min_tension) load_scale = std::max(load_scale, t);
-  if (!(load_scale > 0)) load_scale = 1.0;
+  const double load_scale = SelfStressForceScale(basis, settings);
   if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
       d.equilibrium_residual > 1e-6 * load_scale || forces.minCoeff() < -1e-6 * load_scale) {
     std::ostringstream os;

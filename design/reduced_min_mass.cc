@@ -22,6 +22,12 @@ constexpr double kFloorTolerance = 1e-9;
 
 }  // namespace
 
+double SelfStressForceScale(const EquilibriumBasis& basis, const MinMassSettings& settings) {
+  double scale = basis.particular.size() ? basis.particular.cwiseAbs().maxCoeff() : 0.0;
+  for (const double t : settings.string_min_tension) scale = std::max(scale, t);
+  return scale > 0 ? scale : 1.0;
+}
+
 ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const EquilibriumBasis& basis,
                                              MinMassSettings settings)
     : nb_(s.num_bars()), ns_(s.num_strings()), s_(static_cast<int>(basis.self_stress.cols())),
@@ -39,9 +45,7 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
   const double sigma_w = settings_.working_stress;
   const double E = settings_.material.youngs_modulus;
 
-  force_ref_ = basis.particular.size() ? basis.particular.cwiseAbs().maxCoeff() : 0.0;
-  for (double t : settings_.string_min_tension) force_ref_ = std::max(force_ref_, t);
-  if (!(force_ref_ > 0)) force_ref_ = 1.0;
+  force_ref_ = SelfStressForceScale(basis, settings_);
   const Eigen::Vector3d extent = s.nodes.rowwise().maxCoeff() - s.nodes.rowwise().minCoeff();
   const double length_ref = std::max(extent.norm(), 1e-300);
   mass_ref_ = settings_.material.density * length_ref * force_ref_ / sigma_w;
@@ -99,7 +103,7 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
 
   // Rows: per case, per active member: floor, then envelope, then buckling.
   std::vector<double> lo_rows;
-  std::vector<int> hess_of_active(active_.size(), -1);
+  hess_of_active_.assign(active_.size(), -1);
   for (int c = 0; c < cases; ++c) {
     for (int i = 0; i < num_active(); ++i) {
       const Active& a = active_[i];
@@ -112,10 +116,9 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
         if (kind > 0) jac_pattern_.emplace_back(r, a.envelope);
         for (const auto& [k, v] : a.row) jac_pattern_.emplace_back(r, k);
       }
-      if (a.bar && hess_of_active[i] < 0) {
-        hess_of_active[i] = static_cast<int>(hess_pattern_.size());
+      if (a.bar && hess_of_active_[i] < 0) {
+        hess_of_active_[i] = static_cast<int>(hess_pattern_.size());
         hess_pattern_.emplace_back(a.envelope, a.envelope);
-        hess_bar_.push_back(i);
       }
     }
   }
@@ -192,10 +195,8 @@ void ReducedMinMassProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd
                                           const double* lambda, double* values) const {
   // Only the buckling rows are nonlinear: d^2(e^2)/de^2 = 2 on the bar's envelope variable.
   std::fill(values, values + hess_pattern_.size(), 0.0);
-  std::vector<int> entry_of_active(active_.size(), -1);
-  for (size_t h = 0; h < hess_bar_.size(); ++h) entry_of_active[hess_bar_[h]] = static_cast<int>(h);
   for (size_t r = 0; r < rows_.size(); ++r) {
-    if (rows_[r].kind == 2) values[entry_of_active[rows_[r].active]] += 2.0 * lambda[r];
+    if (rows_[r].kind == 2) values[hess_of_active_[rows_[r].active]] += 2.0 * lambda[r];
   }
 }
 

@@ -35,6 +35,10 @@
 
 namespace tbridge {
 
+// The force scale F_ref of the problem [N]: its largest particular force or tension floor (1 N
+// when both are zero). Scaled forces are O(1), and the design's equilibrium checks use it too.
+double SelfStressForceScale(const EquilibriumBasis& basis, const MinMassSettings& settings);
+
 class ReducedMinMassProblem final : public NlpProblem {
  public:
   // `basis` holds the particular solutions of every load case and the self-stresses of
@@ -101,7 +105,7 @@ class ReducedMinMassProblem final : public NlpProblem {
   double constant_ = 0;  // objective of the fixed members (and of priced string tensions)
   double force_ref_ = 1, mass_ref_ = 1;
   Pattern jac_pattern_, hess_pattern_;
-  std::vector<int> hess_bar_;  // active index of each Hessian entry
+  std::vector<int> hess_of_active_;  // Hessian entry of each active member's envelope, -1 for strings
 };
 
 }  // namespace tbridge
