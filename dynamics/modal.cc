@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/structure.h"
 
 namespace tbridge {
 namespace {
@@ -85,7 +86,7 @@ void AddPairBlock(const Eigen::Matrix3d& k, int i, int j, const std::vector<int>
   }
 }
 
-// Bars joined at free nodes, with the free DOFs (ascending) they touch. Different groups touch
+// Bars joined at nodes, with the free DOFs (ascending) they touch. Different groups touch
 // different DOFs, so their constraint rows, their least-squares bar forces and their null
 // spaces are independent. A bar with both ends pinned touches no DOF and is in no group.
 struct BarGroup {
@@ -94,30 +95,17 @@ struct BarGroup {
 };
 
 std::vector<BarGroup> GroupBars(const DynamicModel& model, const std::vector<int>& first_dof) {
+  // The bar-connected clusters of core/structure.h, as the stability check finds them (bars
+  // meeting at a pinned node share a group: their rows touch different DOFs, so the group's
+  // null space is still the product of theirs).
   const int n_b = static_cast<int>(model.bars.size());
-  std::vector<int> parent(n_b);
-  for (int k = 0; k < n_b; ++k) parent[k] = k;
-  auto root = [&](int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
-  std::vector<int> bar_at(model.num_nodes(), -1);
-  for (int k = 0; k < n_b; ++k) {
-    for (const int end : {model.bars[k].i, model.bars[k].j}) {
-      if (first_dof[end] < 0) continue;
-      if (bar_at[end] < 0) {
-        bar_at[end] = k;
-      } else {
-        parent[root(k)] = root(bar_at[end]);
-      }
-    }
-  }
+  const std::vector<int> component = ComponentOf(model.num_nodes(), model.bars);
   std::vector<BarGroup> groups;
-  std::vector<int> group_of_root(n_b, -1);
+  std::vector<int> group_of_root(model.num_nodes(), -1);
   for (int k = 0; k < n_b; ++k) {
     const DynamicBar& bar = model.bars[k];
     if (first_dof[bar.i] < 0 && first_dof[bar.j] < 0) continue;
-    int& g = group_of_root[root(k)];
+    int& g = group_of_root[component[bar.i]];
     if (g < 0) {
       g = static_cast<int>(groups.size());
       groups.emplace_back();
