@@ -1,7 +1,7 @@
 // Plain config structs with the paper's defaults (SI units), and their strict JSON parsing.
-// The keys of `bridge`, `material` and `design` are described once, in core/config_fields.h:
-// name, unit, range and meaning; the parse, the echo, Validate() and the README's key tables
-// all come from there.
+// Every key is described once (core/config_fields.h and the files it includes): name, unit,
+// range and meaning; the parse, the echo, Validate() and the README's key tables all come
+// from there.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
@@ -61,9 +61,8 @@ inline constexpr int kMaxBarsPerModule = 8;
 Config ParseConfig(const nlohmann::json& root);
 Config LoadConfig(const std::string& path);
 // Checks a config built in code as ParseConfig checks a file: every described key of
-// `bridge`, `material` and `design` in its range, and the rules across keys. Throws
-// ConfigError naming the key path, the value and what is allowed. (The `dynamics` and
-// `structure` sections are checked by their parsers only.)
+// `bridge`, `material` and `design` (or `structure`) and of `dynamics` in its range, and the
+// rules across keys. Throws ConfigError naming the key path, the value and what is allowed.
 void Validate(const Config& config);
 // The resolved config, every default filled in, for echoing into outputs.
 nlohmann::json ToJson(const Config& config);

@@ -2,14 +2,10 @@
 // allowed range and what it controls; its default is the struct member's initial value
 // (core/config.h, core/material.h). From this one description come the strict parse, the
 // echo into every output, Validate() for configs built in code and the key tables of
-// configs/README.md (ConfigKeyTable; tests/core/config_fields_test.cc holds the README to it).
-// Adding a key to one of these sections is one line here and the struct member.
-//
-// A visitor V is called once per key, in the order the keys are parsed and listed:
-//   v.Number(key, field, range)                  field: double
-//   v.Integer(key, field, lo, hi)                field: int, in [lo, hi]
-//   v.Choice(key, field, allowed)                field: std::string, one of `allowed`
-// with `field` a (const) reference into the config and `key` a KeyInfo.
+// configs/README.md (core/config_visitors.h; tests/core/config_fields_test.cc holds the README
+// to it). The `dynamics` and `structure` sections are described the same way in
+// core/dynamics_fields.h and core/structure_fields.h.
+// Adding a key is one line of description and the struct member.
 #pragma once
 
 #include <string>
@@ -17,24 +13,12 @@
 #include <vector>
 
 #include "core/config.h"
+#include "core/config_visitors.h"
+#include "core/dynamics_fields.h"
 #include "core/json_reader.h"
+#include "core/structure_fields.h"
 
 namespace tbridge {
-
-struct KeyInfo {
-  const char* name;
-  const char* unit;  // "–" for a pure number
-  const char* what;  // what it controls, as the README's table shows it (Markdown)
-  bool required = false;  // no default: the key must be given
-};
-
-// One section: its key in the config, the README heading after the key, and the rules
-// across its keys (checked by Validate and the pipeline, stated here once for the README).
-struct SectionInfo {
-  const char* name;
-  const char* title;
-  const char* rules;  // "" when none
-};
 
 inline const SectionInfo kBridgeSection{"bridge", "geometry and load",
                                         "`p` must be 1 when `planes` = 2 (the 3D bridge couples two p = 1 planes)."};
@@ -136,13 +120,14 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
             d.max_iterations, 1, 1000000);
 }
 
-// The README's text of one section: "## `name`: title", the rules across its keys when it
-// has any, and its key table.
+// The README's text of one section: SectionHeading, a blank line, then SectionBody: the rules
+// across its keys when it has any, and its key table.
 std::string ConfigSectionText(const SectionInfo& section);
 
-// The Markdown key table of one section ("bridge", "material" or "design"): header, then one
-// row per key: | `key` | unit | default | allowed | what it controls |, defaults taken from
-// a default-constructed config. Throws std::invalid_argument for another name.
+// The Markdown key table of one section ("bridge", "material", "design", "dynamics" or
+// "structure"): header, then one row per key: | `key` | unit | default | allowed | what it
+// controls |, defaults taken from a default-constructed config. Throws
+// std::invalid_argument for another name.
 std::string ConfigKeyTable(const std::string& section);
 
 }  // namespace tbridge

@@ -1,6 +1,6 @@
 // Config of a dynamic scenario (the "dynamics" section). Plain data with defaults, SI units.
-// Every key, its unit, default and range is listed in configs/README.md; ParseDynamicsConfig
-// enforces them and throws ConfigError naming the key path, the value and what is allowed.
+// Every key is described once in core/dynamics_fields.h: unit, range and meaning, from which
+// the parse, the echo, Validate() and the README's key table come.
 #pragma once
 
 #include <array>
@@ -112,7 +112,7 @@ struct DynamicsConfig {
   LimitsConfig limits;
 };
 
-// Strict parse; throws ConfigError (key path, value, allowed).
+// Strict parse, then CheckDynamicsRules; throws ConfigError (key path, value, allowed).
 DynamicsConfig ParseDynamicsConfig(JsonSection section);
 nlohmann::json ToJson(const DynamicsConfig& config);
 

@@ -45,7 +45,7 @@ std::string Range::Describe() const {
   return std::string(interval[0] == '(' || interval[0] == '[' ? "a number in " : "a number ") + interval;
 }
 
-std::string IntegerRangeText(int lo, int hi) {
+std::string IntegerRangeText(long long lo, long long hi) {
   return "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
 }
 
@@ -92,6 +92,11 @@ double JsonSection::Number(const std::string& key, std::optional<double> fallbac
 }
 
 int JsonSection::Integer(const std::string& key, std::optional<int> fallback, int lo, int hi) {
+  return static_cast<int>(Integer64(key, fallback, lo, hi));
+}
+
+long long JsonSection::Integer64(const std::string& key, std::optional<long long> fallback,
+                                 long long lo, long long hi) {
   const std::string allowed = IntegerRangeText(lo, hi);
   if (!Has(key)) {
     if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: " + allowed);
@@ -103,7 +108,7 @@ int JsonSection::Integer(const std::string& key, std::optional<int> fallback, in
   if (!std::isfinite(d) || d != std::floor(d) || d < lo || d > hi) {
     throw ConfigError(PathOf(key), Show(v), "must be " + allowed);
   }
-  return static_cast<int>(d);
+  return static_cast<long long>(d);
 }
 
 bool JsonSection::Bool(const std::string& key, std::optional<bool> fallback) {

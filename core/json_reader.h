@@ -34,7 +34,7 @@ struct Range {
 };
 
 // "an integer in [lo, hi]", as messages and the README say it.
-std::string IntegerRangeText(int lo, int hi);
+std::string IntegerRangeText(long long lo, long long hi);
 // "\"a\", \"b\", \"c\"": the allowed values of a choice, quoted.
 std::string ChoiceText(const std::vector<std::string>& allowed);
 
@@ -51,6 +51,9 @@ class JsonSection {
   double Number(const std::string& key, std::optional<double> fallback, Range range);
   // Integer in [lo, hi]; `fallback` when absent (nullopt = required).
   int Integer(const std::string& key, std::optional<int> fallback, int lo, int hi);
+  // The same for counts beyond int (dynamics.limits.max_steps).
+  long long Integer64(const std::string& key, std::optional<long long> fallback, long long lo,
+                      long long hi);
   bool Bool(const std::string& key, std::optional<bool> fallback);
   // One of `allowed`; `fallback` when absent (nullopt = required).
   std::string Choice(const std::string& key, std::optional<std::string> fallback,

@@ -1,8 +1,8 @@
 // Config of a custom tensegrity scene (the "structure" section): nodes, supports, bars,
 // strings, node masses and constant loads given directly, for `tbridge simulate` and `modes`
 // without a design. Plain data, SI units, node numbers 1-based as in every message and output.
-// Every key, its unit, default and range is listed in configs/README.md; ParseStructureConfig
-// enforces them and throws ConfigError naming the key path, the value and what is allowed.
+// Every key is described once in core/structure_fields.h: unit, range and meaning, from which
+// the parse, the echo, Validate() and the README's key table come.
 #pragma once
 
 #include <array>
@@ -63,7 +63,7 @@ struct StructureConfig {
   double Length(const std::array<int, 2>& ends) const;
 };
 
-// Strict parse; throws ConfigError (key path, value, allowed).
+// Strict parse, then CheckStructureRules; throws ConfigError (key path, value, allowed).
 StructureConfig ParseStructureConfig(JsonSection section);
 nlohmann::json ToJson(const StructureConfig& config);
 

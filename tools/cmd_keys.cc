@@ -1,5 +1,5 @@
-// `tbridge keys`: the key tables of the config sections described once in
-// core/config_fields.h, as configs/README.md shows them (tests/core/config_fields_test.cc
+// `tbridge keys`: the key tables of the config sections described once (core/config_fields.h
+// and the files it includes), as configs/README.md shows them (tests/core/config_fields_test.cc
 // fails when the README differs).
 
 #include <iostream>
@@ -20,8 +20,9 @@ const CommandSpec& KeysSpec() {
       {},
       {},
       "Prints the Markdown key tables (key, unit, default, allowed, what it controls) of the\n"
-      "config sections bridge, material and design, each after its heading and rules, as\n"
-      "configs/README.md has them."};
+      "config sections bridge, material, design, dynamics and structure, each after its\n"
+      "heading and rules, as configs/README.md has them (the README keeps paragraphs of its own\n"
+      "between a heading and its rules)."};
   return spec;
 }
 
@@ -32,7 +33,8 @@ int RunKeysCommand(const std::vector<std::string>& args) {
     std::cout << Usage(spec);
     return 0;
   }
-  for (const SectionInfo* section : {&kBridgeSection, &kMaterialSection, &kDesignSection}) {
+  for (const SectionInfo* section : {&kBridgeSection, &kMaterialSection, &kDesignSection,
+                                     &kDynamicsSection, &kStructureSection}) {
     std::cout << ConfigSectionText(*section) << "\n";
   }
   return 0;

@@ -1,21 +1,13 @@
-// The one description of the bridge, material and design keys (core/config_fields.h) against
-// what the parse accepts, what the echo writes, what Validate() refuses and what
-// configs/README.md documents.
+// The one description of each core config section (core/config_fields.h, dynamics_fields.h,
+// structure_fields.h) against what the parse accepts, what the echo writes, what Validate()
+// refuses and what configs/README.md documents.
 #include "core/config_fields.h"
 
 #include <catch2/catch.hpp>
-#include <cmath>
-#include <fstream>
-#include <functional>
-#include <map>
 #include <nlohmann/json.hpp>
-#include <regex>
-#include <set>
-#include <sstream>
 #include <string>
-#include <type_traits>
-#include <vector>
 
+#include "config_fields_support.h"
 #include "core/config.h"
 #include "core/error.h"
 
@@ -23,135 +15,90 @@ namespace tbridge {
 namespace {
 
 using nlohmann::json;
+using test::CheckDescribedSection;
+using test::DescribedSection;
 
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+// A dynamics section with every key and one element in each list.
+json FullDynamics() {
+  return json::parse(
+      R"({"duration": 0.5, "dt": 1e-4, "integrator": "rk4", "engine": "classk", "rtol": 1e-6,
+    "atol": 1e-9, "string_mass": "nodes", "damping_c": 2, "stabilisation": {"enabled": true, "omega_rad_s": 50,
+    "zeta": 0.5}, "prestrain": [{"group": "deck", "ratio": 0.95}], "perturbation": {"bar_class": 1, "delta": 0.01},
+    "initial": [{"node": 2, "displacement": [0, 0.01, 0], "velocity": [0, 0, 0.1]}],
+    "loads": [{"t_start": 0, "t_end": 0.1, "node": 3, "force": [0, -10, 0]}],
+    "record": {"nodes": [2, 3], "every": 5, "csv": false, "bar_forces": true},
+    "frequency": {"enabled": false, "every": 20}, "guard": {"max_bar_length_error": 0.01, "max_energy_growth": 2},
+    "gravity_on_structure": true, "limits": {"max_steps": 300000000, "max_output_bytes": 1e9}})");
 }
 
-// The keys of one Markdown table in the README: the first column of each row after the
-// heading `## `section``, read from the README text itself (not from the description).
-std::vector<std::string> ReadmeKeys(const std::string& readme, const std::string& section) {
-  const size_t start = readme.find("## `" + section + "`");
-  REQUIRE(start != std::string::npos);
-  const size_t end = readme.find("\n## ", start + 1);
-  const std::string part = readme.substr(start, end - start);
-  std::vector<std::string> keys;
-  const std::regex row(R"(\n\| `([a-z_]+)` \|)");
-  for (std::sregex_iterator it(part.begin(), part.end(), row), stop; it != stop; ++it) keys.push_back((*it)[1]);
-  return keys;
+// A planar scene with every key; strings[0] gives rest_length_m and area_m2, strings[1]
+// rest_ratio.
+json FullStructure() {
+  return json::parse(
+      R"({"dim": 2, "nodes": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], "pinned": [1],
+    "node_masses": [{"node": 3, "mass_kg": 0.5}], "bars": [{"nodes": [1, 3], "mass_kg": 1}],
+    "strings": [{"nodes": [1, 2], "stiffness_n_m": 100, "damping_n_s_m": 1, "rest_length_m": 0.9,
+                 "mass_kg": 0.1, "area_m2": 1e-4},
+                {"nodes": [2, 3], "stiffness_n_m": 50, "rest_ratio": 0.95}],
+    "loads": [{"node": 3, "force_n": [0, -10, 0]}], "deck_nodes": [2, 3], "allowed_stress_pa": 1e8,
+    "gravity_m_s2": 9.80665})");
 }
 
-// For each described key: its name, and a value just outside its allowed range (or not
-// allowed at all) together with a setter that puts that value into a config built in code.
-struct OutOfRange {
-  std::string name;
-  json bad_json;
-  std::function<void(Config&)> set_bad;
-};
+// A config of bridge n = 3 with `section` set to `j`.
+json WithSection(const std::string& section, const json& j) {
+  json root = {{"bridge", {{"n", 3}}}};
+  root[section] = j;
+  return root;
+}
 
-// Puts `value` into the one field named `target`.
-template <class T>
-struct Setter {
-  const std::string& target;
-  const T& value;
-  void Number(const KeyInfo& k, double& f, Range) { Put(k, f); }
-  void Integer(const KeyInfo& k, int& f, int, int) { Put(k, f); }
-  void Choice(const KeyInfo& k, std::string& f, const std::vector<std::string>&) { Put(k, f); }
-  template <class F>
-  void Put(const KeyInfo& k, F& f) {
-    if constexpr (std::is_convertible_v<T, F>) {
-      if (target == k.name) f = static_cast<F>(value);
-    }
-  }
-};
-
-template <class Section>
-struct Collect {
-  std::string section;
-  Section Config::*member;
-  std::vector<OutOfRange> keys;
-  void Number(const KeyInfo& key, double&, Range range) {
-    // Above the upper end, or below the lower one when unbounded above (every range here has
-    // one finite end); open ends are themselves outside.
-    const double bad = std::isfinite(range.hi) ? (range.hi_open ? range.hi : std::nextafter(range.hi, 1e300))
-                                               : (range.lo_open ? range.lo : std::nextafter(range.lo, -1e300));
-    Add(key, bad);
-  }
-  void Integer(const KeyInfo& key, int&, int, int hi) { Add(key, hi + 1); }
-  void Choice(const KeyInfo& key, std::string&, const std::vector<std::string>&) { Add(key, std::string("cplex")); }
-  template <class T>
-  void Add(const KeyInfo& key, T bad) {
-    const std::string name = key.name;
-    Section Config::*m = member;
-    auto set = [m, name, bad](Config& c) {
-      Setter<T> setter{name, bad};
-      DescribeFields(c.*m, setter);
-    };
-    keys.push_back({section + "." + name, json(bad), set});
-  }
-};
-
-template <class Section>
-std::vector<OutOfRange> KeysOf(const std::string& section, Section Config::*member) {
-  Config c;
-  Collect<Section> collect{section, member, {}};
-  DescribeFields(c.*member, collect);
-  return collect.keys;
+template <class S>
+DescribedSection<S> CoreSection(const SectionInfo& info, S Config::*member, S full) {
+  const std::string name = info.name;
+  return {info, ConfigSectionText(info), full,
+          [name, member](const json& j) { return ParseConfig(WithSection(name, j)).*member; },
+          [member](const S& s) {
+            Config c;
+            c.bridge.n = 3;
+            c.*member = s;
+            Validate(c);
+          }};
 }
 
 TEST_CASE("parse, echo, Validate and the README agree on every described key", "[config][fields]") {
-  const std::string readme = ReadFile(std::string(TBRIDGE_SOURCE_DIR) + "/configs/README.md");
-  std::vector<std::pair<std::string, std::vector<OutOfRange>>> sections = {
-      {"bridge", KeysOf("bridge", &Config::bridge)},
-      {"material", KeysOf("material", &Config::material)},
-      {"design", KeysOf("design", &Config::design)}};
-  const json echo = ToJson(ParseConfig(json::parse(R"({"bridge": {"n": 3}})")));
-  // The echo reads back to itself: the parse accepts every key the echo writes, at its value.
-  CHECK(ToJson(ParseConfig(echo)) == echo);
-  for (const auto& [section, keys] : sections) {
-    INFO("section " << section);
-    // The README's table, as written there, is the table the description gives.
-    const SectionInfo& info = section == "bridge" ? kBridgeSection : section == "material" ? kMaterialSection
-                                                                                          : kDesignSection;
-    CHECK(readme.find(ConfigSectionText(info)) != std::string::npos);
-    // Its keys, read from the README's own rows, are the echo's keys, in the same order as
-    // the description (the echo is a JSON object: compared as sets).
-    std::vector<std::string> described;
-    for (const OutOfRange& k : keys) described.push_back(k.name.substr(section.size() + 1));
-    CHECK(ReadmeKeys(readme, section) == described);
-    std::set<std::string> echoed;
-    for (const auto& [key, value] : echo.at(section).items()) echoed.insert(key);
-    CHECK(echoed == std::set<std::string>(described.begin(), described.end()));
-    for (const OutOfRange& k : keys) {
-      INFO("key " << k.name << " = " << k.bad_json.dump());
-      const std::string key = k.name.substr(section.size() + 1);
-      // Out of range in a file: the parse names the key.
-      json bad = {{"bridge", {{"n", 3}}}};
-      bad[section][key] = k.bad_json;
-      try {
-        ParseConfig(bad);
-        FAIL("the parse accepted " << k.bad_json.dump());
-      } catch (const ConfigError& e) {
-        CHECK(e.key() == k.name);
-      }
-      // Out of range in code: Validate names the same key.
-      Config c;
-      c.bridge.n = 3;
-      k.set_bad(c);
-      try {
-        Validate(c);
-        FAIL("Validate accepted " << k.bad_json.dump());
-      } catch (const ConfigError& e) {
-        CHECK(e.key() == k.name);
-      }
-    }
-  }
+  const std::string readme = test::ReadmeText();
+  BridgeConfig bridge;
+  bridge.n = 3;
+  CheckDescribedSection(CoreSection(kBridgeSection, &Config::bridge, bridge), readme);
+  CheckDescribedSection(CoreSection(kMaterialSection, &Config::material, Material{}), readme);
+  CheckDescribedSection(CoreSection(kDesignSection, &Config::design, DesignConfig{}), readme);
+  CheckDescribedSection(
+      DescribedSection<DynamicsConfig>{
+          kDynamicsSection, ConfigSectionText(kDynamicsSection),
+          *ParseConfig(WithSection("dynamics", FullDynamics())).dynamics,
+          [](const json& j) { return *ParseConfig(WithSection("dynamics", j)).dynamics; },
+          [](const DynamicsConfig& d) {
+            Config c;
+            c.bridge.n = 3;
+            c.dynamics = d;
+            Validate(c);
+          }},
+      readme);
+  CheckDescribedSection(DescribedSection<StructureConfig>{
+                            kStructureSection, ConfigSectionText(kStructureSection),
+                            *ParseConfig(json{{"structure", FullStructure()}}).structure,
+                            [](const json& j) {
+                              return *ParseConfig(json{{"structure", j}}).structure;
+                            },
+                            [](const StructureConfig& s) {
+                              Config c;
+                              c.structure = s;
+                              Validate(c);
+                            }},
+                        readme);
 }
 
-TEST_CASE("Validate: a default config passes, the rule across bridge keys holds in code too", "[config][fields]") {
+TEST_CASE("Validate: a default config passes, the rules across keys hold in code too",
+          "[config][fields]") {
   Config c;
   CHECK_NOTHROW(Validate(c));
   c.bridge.planes = 2;
@@ -162,6 +109,51 @@ TEST_CASE("Validate: a default config passes, the rule across bridge keys holds 
   } catch (const ConfigError& e) {
     CHECK(e.key() == "bridge.p");
     CHECK_THAT(e.what(), Catch::Contains("planes = 2"));
+  }
+
+  // Each rule of dynamics and structure: the parse and Validate give the same message.
+  struct Rule {
+    json root;
+    std::function<void(Config&)> break_it;
+  };
+  const json dynamics = WithSection("dynamics", FullDynamics());
+  const json scene = {{"structure", FullStructure()}};
+  auto with = [](json root, const std::string& where, const json& value) {
+    root[json::json_pointer(where)] = value;
+    return root;
+  };
+  const std::vector<Rule> rules = {
+      {with(dynamics, "/dynamics/dt", 1.0), [](Config& k) { k.dynamics->dt = 1.0; }},
+      {with(dynamics, "/dynamics/loads/0/t_end", 0),
+       [](Config& k) { k.dynamics->loads[0].t_end = 0; }},
+      {with(dynamics, "/dynamics/prestrain/1", json{{"group", "deck"}, {"ratio", 0.9}}),
+       [](Config& k) {
+         k.dynamics->prestrain.push_back({"deck", 0.9});
+       }},
+      {with(scene, "/structure/nodes/2", json{0, 0, 0}),
+       [](Config& k) {
+         k.structure->nodes[2] = {0, 0, 0};
+       }},
+      {with(scene, "/structure/nodes/3/2", 0.5), [](Config& k) { k.structure->nodes[3][2] = 0.5; }},
+      {with(scene, "/structure/strings/1/nodes", json{2, 1}),
+       [](Config& k) {
+         k.structure->strings[1].nodes = {2, 1};
+       }},
+      {with(scene, "/structure/strings/1/rest_length_m", 1),
+       [](Config& k) { k.structure->strings[1].rest_length_m = 1; }},
+      {with(scene, "/structure/deck_nodes", json{1}),
+       [](Config& k) { k.structure->deck_nodes = {1}; }},
+      {with(scene, "/structure/pinned", json{1, 1}),
+       [](Config& k) {
+         k.structure->pinned = {1, 1};
+       }},
+  };
+  for (const Rule& rule : rules) {
+    const std::string parsed = test::ErrorOf([&] { ParseConfig(rule.root); }).what();
+    INFO("parse: " << parsed);
+    Config k = ParseConfig(rule.root.contains("structure") ? scene : dynamics);
+    rule.break_it(k);
+    CHECK(std::string(test::ErrorOf([&] { Validate(k); }).what()) == parsed);
   }
 }
 
