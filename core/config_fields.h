@@ -4,7 +4,7 @@
 // echo into every output, Validate() for configs built in code and the key tables of
 // configs/README.md (core/config_visitors.h; tests/core/config_fields_test.cc holds the README
 // to it). The `dynamics` and `structure` sections are described the same way in
-// core/dynamics_fields.h and core/structure_fields.h.
+// core/dynamics_fields.h and core/structure_fields.h, `sweep` in sweep/sweep_fields.h.
 // Adding a key is one line of description and the struct member.
 #pragma once
 

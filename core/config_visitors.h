@@ -1,8 +1,8 @@
 // The visitors that turn one description of a config section into its strict parse, its
 // echo, Validate() for configs built in code and its README key table. A section is described
 // by a `DescribeFields(section_struct, visitor)` overload (core/config_fields.h,
-// core/dynamics_fields.h, core/structure_fields.h) that calls the visitor once per key, in
-// the order the keys are parsed and listed. The protocol, with
+// core/dynamics_fields.h, core/structure_fields.h, sweep/sweep_fields.h) that calls the
+// visitor once per key, in the order the keys are parsed and listed. The protocol, with
 // `field` a (const) reference into the config and `key` a KeyInfo:
 //   v.Number(key, double, range)                  finite, in `range`
 //   v.Integer(key, I, lo, hi)                     I = int or long, in [lo, hi]

@@ -1,6 +1,7 @@
 // The "sweep" section of a config: the candidate grid of the outer loop, the objective's
 // joint-mass term, the optional static and dynamic constraints and the travelling-load run.
-// Every key, its unit, default and range is listed in configs/README.md under "sweep".
+// Every key is described once in sweep/sweep_fields.h: unit, range and meaning, from which
+// the parse, the echo, Validate() and the README's key table come.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>
@@ -50,13 +51,20 @@ struct TravellingLoadConfig {
   double damping_c = 0;      // c of every string [N s/m], [0, 1e9]
 };
 
+// What to compute even when no constraint needs it.
+struct SweepReport {
+  bool first_frequency = false;
+  bool travelling_load = false;
+};
+
 struct SweepConfig {
   std::vector<int> n;                // complexities, each in [1, kMaxComplexity]; non-empty
-  std::vector<int> p;                // bars per module, each in [1, kMaxBarsPerModule]
-  std::vector<double> beta_deg;      // aspect angles [deg], each in (0, 90)
+  std::vector<int> p{1};             // bars per module, each in [1, kMaxBarsPerModule]
+  std::vector<double>
+      beta_deg;  // aspect angles [deg], each in (0, 90); parse default: bridge.beta_deg
   // Rest / stretched length of the deck strings; 1.0 = the design state (prestressed at
   // sigma_w by the minimum radius), each in (0, 1].
-  std::vector<double> deck_prestrain;
+  std::vector<double> deck_prestrain{1.0};
   // "grow_area": a prestrain ratio r < 1 asks for the deck-string tension E A0 (1/r - 1) of
   // the design area A0; the area grows to tension / sigma_w (never shrinks) so the prestress
   // stays allowed, and the mass shows it. "keep_area": A0 is kept, rest length = r x length
@@ -65,10 +73,11 @@ struct SweepConfig {
   JointMassConfig joint_mass;
   SweepConstraints constraints;
   TravellingLoadConfig travelling_load;
-  bool report_first_frequency = false;  // compute it even without the constraint
-  bool report_travelling_load = false;  // run the travelling load even without a constraint
+  SweepReport report;
 
-  bool NeedsModes() const { return report_first_frequency || constraints.min_first_frequency_rad_s.has_value(); }
+  bool NeedsModes() const {
+    return report.first_frequency || constraints.min_first_frequency_rad_s.has_value();
+  }
   bool NeedsRun() const;
   int size() const {
     return static_cast<int>(n.size() * p.size() * beta_deg.size() * deck_prestrain.size());
@@ -86,6 +95,9 @@ struct SweepSpec {
 // of range, a "dynamics" section, p > 1 with planes = 2.
 SweepSpec ParseSweepSpec(const nlohmann::json& root);
 SweepSpec LoadSweepSpec(const std::string& path);
+// Checks a spec built in code as ParseSweepSpec checks a file: Validate(base), every sweep key
+// in its range and the rules across keys. Throws ConfigError naming the key path.
+void Validate(const SweepSpec& spec);
 // Resolved spec with every default filled in, echoed into the outputs.
 nlohmann::json ToJson(const SweepSpec& spec);
 

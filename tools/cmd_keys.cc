@@ -1,12 +1,13 @@
 // `tbridge keys`: the key tables of the config sections described once (core/config_fields.h
-// and the files it includes), as configs/README.md shows them (tests/core/config_fields_test.cc
-// fails when the README differs).
+// and sweep/sweep_fields.h), as configs/README.md shows them (tests/core/config_fields_test.cc
+// and tests/sweep/sweep_fields_test.cc fail when the README differs).
 
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "core/config_fields.h"
+#include "sweep/sweep_fields.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 
@@ -20,7 +21,7 @@ const CommandSpec& KeysSpec() {
       {},
       {},
       "Prints the Markdown key tables (key, unit, default, allowed, what it controls) of the\n"
-      "config sections bridge, material, design, dynamics and structure, each after its\n"
+      "config sections bridge, material, design, dynamics, structure and sweep, each after its\n"
       "heading and rules, as configs/README.md has them (the README keeps paragraphs of its own\n"
       "between a heading and its rules)."};
   return spec;
@@ -37,6 +38,7 @@ int RunKeysCommand(const std::vector<std::string>& args) {
                                      &kDynamicsSection, &kStructureSection}) {
     std::cout << ConfigSectionText(*section) << "\n";
   }
+  std::cout << SweepSectionText() << "\n";
   return 0;
 }
 
