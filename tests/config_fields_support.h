@@ -148,9 +148,15 @@ struct SetKey {
 
 // "loads[0].t_start" as a JSON pointer, "/loads/0/t_start".
 inline nlohmann::json::json_pointer PointerOf(const std::string& path) {
-  return nlohmann::json::json_pointer(
-      "/" + std::regex_replace(std::regex_replace(path, std::regex(R"(\[)"), "/"),
-                               std::regex(R"(\]\.?|\.)"), "/"));
+  std::string pointer = "/";
+  for (const char c : path) {
+    if (c == '.' || c == '[') {
+      pointer += '/';
+    } else if (c != ']') {
+      pointer += c;
+    }
+  }
+  return nlohmann::json::json_pointer(pointer);
 }
 
 // Whether the echo `j` has the README row `row` ("loads[].t_start": in some element).
