@@ -1,7 +1,5 @@
 #include "core/config.h"
 
-#include <algorithm>
-#include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 

@@ -1,6 +1,5 @@
 #include "sweep/sweep_config.h"
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
