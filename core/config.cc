@@ -1,5 +1,6 @@
 #include "core/config.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -18,7 +19,29 @@ void CheckBridgeRules(const BridgeConfig& b) {
   }
 }
 
+// loads: the rules across keys (kLoadsSection.rules).
+void CheckLoadsRules(const LoadsConfig& l) {
+  const auto& c = l.cases;
+  if (c.size() > 1 && std::find(c.begin(), c.end(), "paper") != c.end()) {
+    throw ConfigError("loads.cases", "[\"paper\", ...]",
+                      "\"paper\" stands alone: it is the paper's one unfactored case, which replaces the others");
+  }
+  if (c.empty()) throw ConfigError("loads.cases", "[]", "must list at least one case");
+  if (l.gamma_g_inf > l.gamma_g_sup) {
+    throw ConfigError("loads.gamma_g_inf", NumberText(l.gamma_g_inf),
+                      "must not exceed loads.gamma_g_sup = " + NumberText(l.gamma_g_sup));
+  }
+}
+
 }  // namespace
+
+void ApplyPaperSwitches(Config& c) {
+  c.design.self_weight = false;
+  c.design.yield_safety_factor = 10.0;
+  c.design.buckling_safety_factor = 1.0;
+  c.design.bar_resistance = "euler";
+  c.loads.cases = {"paper"};
+}
 
 Config ParseConfig(const nlohmann::json& root) {
   JsonSection top(root, "");
@@ -29,7 +52,7 @@ Config ParseConfig(const nlohmann::json& root) {
                         "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
                         "not both");
     }
-    for (const char* section : {"material", "design"}) {
+    for (const char* section : {"material", "design", "loads"}) {
       if (top.Has(section)) {
         throw ConfigError(section, "(section)",
                           "not allowed with \"structure\": a custom scene gives its masses, stiffnesses and rest "
@@ -44,6 +67,7 @@ Config ParseConfig(const nlohmann::json& root) {
     c.bridge = ParseSection<BridgeConfig>(top.Section("bridge"), CheckBridgeRules);
     c.material = ParseSection<Material>(top.Section("material"));
     c.design = ParseSection<DesignConfig>(top.Section("design"));
+    c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
   }
   if (top.Has("dynamics")) c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
   top.Finish();
@@ -62,6 +86,7 @@ nlohmann::json ToJson(const Config& c) {
   j["bridge"] = EchoFields(c.bridge);
   j["material"] = EchoFields(c.material);
   j["design"] = EchoFields(c.design);
+  j["loads"] = EchoFields(c.loads);
   if (c.dynamics) j["dynamics"] = ToJson(*c.dynamics);
   return j;
 }
@@ -75,6 +100,8 @@ void Validate(const Config& c) {
     CheckBridgeRules(c.bridge);
     ValidateFields(c.material, kMaterialSection.name);
     ValidateFields(c.design, kDesignSection.name);
+    ValidateFields(c.loads, kLoadsSection.name);
+    CheckLoadsRules(c.loads);
   }
   if (c.dynamics) {
     ValidateFields(*c.dynamics, kDynamicsSection.name);
@@ -90,6 +117,7 @@ std::string ConfigKeyTable(const std::string& section) {
   if (section == kBridgeSection.name) return KeyTableOf(BridgeConfig{});
   if (section == kMaterialSection.name) return KeyTableOf(Material{});
   if (section == kDesignSection.name) return KeyTableOf(DesignConfig{});
+  if (section == kLoadsSection.name) return KeyTableOf(LoadsConfig{});
   if (section == kDynamicsSection.name) return KeyTableOf(DynamicsConfig{});
   if (section == kStructureSection.name) return KeyTableOf(StructureConfig{});
   throw std::invalid_argument("ConfigKeyTable: no described section '" + section + "'");

@@ -1,4 +1,4 @@
-// Plain config structs with the paper's defaults (SI units), and their strict JSON parsing.
+// Plain config structs with engineering defaults (SI units), and their strict JSON parsing.
 // Every key is described once (core/config_fields.h and the files it includes): name, unit,
 // range and meaning; the parse, the echo, Validate() and the README's key tables all come
 // from there.
@@ -7,6 +7,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/dynamics_config.h"
 #include "core/material.h"
@@ -24,9 +25,11 @@ struct BridgeConfig {
   int planes = 1;           // 1 = planar bridge, 2 = 3D bridge of two coupled planes
 };
 
+// The defaults are an engineer's (EN 1993-2's recommended partial factors for steel bridges,
+// a column curve for the bars, self-weight in the loads); ApplyPaperSwitches sets the paper's.
 struct DesignConfig {
-  double yield_safety_factor = 10.0;     // sigma_w = yield_stress / this, for members and deck
-  double buckling_safety_factor = 1.0;   // multiplies the bar force in the Euler check
+  double yield_safety_factor = 1.1;      // gamma_M: sigma_w = yield_stress / this (members, deck)
+  double buckling_safety_factor = 1.1;   // gamma_M1 on a bar's buckling resistance
   double deck_string_min_radius = 0.01;  // [m]; deck strings are prestressed at sigma_w
   // [m], [0, 1]; strings of group "transverse" (3D bridge) are prestressed at sigma_w. They
   // carry nothing under symmetric vertical loads, so without this floor min mass would
@@ -40,6 +43,34 @@ struct DesignConfig {
   std::string solver = "auto";
   double tolerance = 1e-10;              // relative optimality tolerance of the solver
   int max_iterations = 3000;             // solver iteration limit
+  // Members' own weight in the permanent load, iterated with the sizing to a fixed point.
+  bool self_weight = true;
+  // "column_curve": N <= chi(lambda) A f_y / gamma_M1 (EN 1993-1-1 6.3.1.2); "euler": the
+  // paper's A >= 2 l sqrt(SF C / (pi E)) with SF = buckling_safety_factor.
+  std::string bar_resistance = "column_curve";
+  double imperfection_factor = 0.49;     // alpha of the column curve (curve c: solid sections)
+};
+
+// The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each
+// factor configurable. Characteristic actions: permanent G (deck beams, members' self-weight,
+// superimposed dead load), payload Q (bridge.payload over the full span and per metre over
+// each half), a travelling point load Q_t, transverse wind W (3D bridge) and the paper's
+// travelling load (eqs 50-51). Prestress is not factored.
+struct LoadsConfig {
+  // Which actions enter the design: "paper" (the paper's one case: deck and payload at the
+  // drawn geometry, unfactored) or any of "permanent", "payload", "travelling",
+  // "paper_travelling", "wind".
+  std::vector<std::string> cases{"permanent", "payload", "travelling", "paper_travelling", "wind"};
+  double superimposed_dead_n_per_m = 0.0;  // surfacing, railings [N/m], on the deck
+  double travelling_load_n = 10000.0;      // Q_t [N]: EN 1991-2 5.3.2.2 Q_fwk for footbridges
+  double travelling_speed_m_s = 1.5;       // v [m/s]: walking pace
+  double wind_n_per_m = 1200.0;            // transverse line load on the deck [N/m] (3D)
+  double gamma_g_sup = 1.35;               // unfavourable permanent
+  double gamma_g_inf = 1.0;                // favourable permanent
+  double gamma_q = 1.5;                    // payload and travelling load
+  double gamma_w = 1.5;                    // wind
+  double psi0_wind = 0.3;                  // wind accompanying traffic (EN 1990 A2, footbridges)
+  double deflection_limit = 500.0;         // serviceability: deflection <= span / this
 };
 
 // A config describes either a designed bridge ("bridge", with "material" and "design") or a
@@ -49,6 +80,7 @@ struct Config {
   BridgeConfig bridge;
   Material material;
   DesignConfig design;
+  LoadsConfig loads;
   std::optional<StructureConfig> structure;  // present when the file has a "structure" section
   std::optional<DynamicsConfig> dynamics;    // present when the file has a "dynamics" section
 };
@@ -61,9 +93,12 @@ inline constexpr int kMaxBarsPerModule = 8;
 Config ParseConfig(const nlohmann::json& root);
 Config LoadConfig(const std::string& path);
 // Checks a config built in code as ParseConfig checks a file: every described key of
-// `bridge`, `material` and `design` (or `structure`) and of `dynamics` in its range, and the
+// `bridge`, `material`, `design` and `loads` (or `structure`) and of `dynamics` in its range, and the
 // rules across keys. Throws ConfigError naming the key path, the value and what is allowed.
 void Validate(const Config& config);
+// The paper's switches (SPEC.md): its one unfactored load case, no self-weight, yield factor
+// 10, plain Euler buckling with factor 1. The paper's configs write them out.
+void ApplyPaperSwitches(Config& config);
 // The resolved config, every default filled in, for echoing into outputs.
 nlohmann::json ToJson(const Config& config);
 

@@ -24,6 +24,10 @@ inline const SectionInfo kBridgeSection{"bridge", "geometry and load",
                                         "`p` must be 1 when `planes` = 2 (the 3D bridge couples two p = 1 planes)."};
 inline const SectionInfo kMaterialSection{"material", "one material for bars, strings and deck beams", ""};
 inline const SectionInfo kDesignSection{"design", "minimum-mass problem and sizing", ""};
+inline const SectionInfo kLoadsSection{
+    "loads", "actions and their combinations",
+    "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the others); "
+    "`gamma_g_inf` <= `gamma_g_sup`."};
 
 template <class B, class V>
 void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, BridgeConfig> {
@@ -69,11 +73,16 @@ void DescribeFields(M& m, V& v) requires std::is_same_v<std::remove_const_t<M>, 
 template <class D, class V>
 void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, DesignConfig> {
   v.Number(KeyInfo{"yield_safety_factor", "–",
-                   "sigma_w = sigma_yield / this, for members and deck. Strings: A = T/sigma_w. Bars: A ≥ C/sigma_w. "
-                   "Deck: sigma_d = sigma_w in eq. 7"},
+                   "gamma_M: sigma_w = sigma_yield / this, for members and deck. Strings: A ≥ T/sigma_w. Bars: A ≥ "
+                   "C/sigma_w. Deck: sigma_d = sigma_w in eq. 7. The default 1.1 is EN 1993-2's recommended "
+                   "gamma_M1 for steel bridges, applied to the strings too because a string that yields loses the "
+                   "prestress the bridge's stability rests on; the loads carry their own factors (`loads`). The "
+                   "paper's runs use 10, which stands in for the loads it did not check"},
            d.yield_safety_factor, Range::Closed(1, 1000));
   v.Number(KeyInfo{"buckling_safety_factor", "–",
-                   "SF in the Euler check of a solid circular pinned–pinned bar: A ≥ 2·l·sqrt(SF·C/(pi·E))"},
+                   "the factor on a bar's buckling resistance: gamma_M1 in N ≤ chi·A·sigma_yield/gamma_M1 "
+                   "(`bar_resistance` = `\"column_curve\"`, default 1.1 after EN 1993-2), or SF in the paper's "
+                   "Euler check A ≥ 2·l·sqrt(SF·C/(pi·E)) (`\"euler\"`, the paper's 1)"},
            d.buckling_safety_factor, Range::Closed(1, 1000));
   v.Number(KeyInfo{"deck_string_min_radius", "m",
                    "minimum radius of the deck strings. They are prestressed at sigma_w, so their tension is at least "
@@ -118,6 +127,63 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                     "solver iteration limit (Ipopt `max_iter`; NLopt maximum evaluations). Reaching it is an error "
                     "(exit 3) naming the solver's status, never a silent answer"},
             d.max_iterations, 1, 1000000);
+  v.Bool(KeyInfo{"self_weight", "–",
+                 "the members' own weight (half of each at each end node) in the permanent load, iterated with the "
+                 "sizing until the mass changes by less than 1e-12 of itself. The paper leaves it out (false)"},
+         d.self_weight);
+  v.Choice(KeyInfo{"bar_resistance", "–",
+                   "`\"column_curve\"`: a bar of a solid circular section resists chi(lambda)·A·sigma_yield / "
+                   "`buckling_safety_factor` with the EN 1993-1-1 6.3.1.2 curve (Phi = 0.5[1 + alpha(lambda − 0.2) + "
+                   "lambda²], chi = 1/(Phi + sqrt(Phi² − lambda²)) ≤ 1, lambda = sqrt(A·sigma_yield/N_cr)) and A·sigma_w "
+                   "in yield. `\"euler\"`: the paper's bare Euler load. Either way the 3D bridge's program prices "
+                   "bars by Euler and the bars are then sized by this rule"},
+           d.bar_resistance, {"column_curve", "euler"});
+  v.Number(KeyInfo{"imperfection_factor", "–",
+                   "alpha of the column curve: 0.49 (curve c, solid sections), 0.34 (b), 0.21 (a), 0.76 (d)"},
+           d.imperfection_factor, Range::Closed(0.0, 2.0));
+}
+
+template <class L, class V>
+void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, LoadsConfig> {
+  v.Choices(KeyInfo{"cases", "–",
+                    "the actions the design is checked and sized for. `\"permanent\"`: G = deck beams + members' "
+                    "self-weight (`design.self_weight`) + `superimposed_dead_n_per_m`. `\"payload\"`: "
+                    "`bridge.payload` over the full span, and the same load per metre over each half span. "
+                    "`\"travelling\"`: Q_t at each deck node in turn (the lever rule puts its extremes there). "
+                    "`\"paper_travelling\"`: the paper's eqs 50–51, the deck node load f at each inner deck node "
+                    "on top of the payload. `\"wind\"`: `wind_n_per_m` across the deck (3D bridge only; ignored, "
+                    "and said so, for a planar bridge). Each enters the ultimate combinations (gamma_G G + gamma_Q Q, "
+                    "and with favourable G) and the serviceability ones (G + Q). `\"paper\"`: the paper's one "
+                    "unfactored case, deck load plus payload at the drawn geometry"},
+            l.cases, {"paper", "permanent", "payload", "travelling", "paper_travelling", "wind"});
+  v.Number(KeyInfo{"superimposed_dead_n_per_m", "N/m", "surfacing and railings, part of G, spread over the deck"},
+           l.superimposed_dead_n_per_m, Range::Closed(0.0, 1e8));
+  v.Number(KeyInfo{"travelling_load_n", "N",
+                   "Q_t, the travelling point load. 10 kN is EN 1991-2 5.3.2.2's Q_fwk for footbridges; a road "
+                   "bridge takes 300 kN (one axle of Load Model 1's tandem, EN 1991-2 4.3.2)"},
+           l.travelling_load_n, Range::Closed(0.0, 1e9));
+  v.Number(KeyInfo{"travelling_speed_m_s", "m/s",
+                   "v of the travelling load in the dynamic check: 1.5 m/s is walking pace; a road bridge takes "
+                   "its traffic speed (22 m/s = 80 km/h)"},
+           l.travelling_speed_m_s, Range{0.0, 1000.0, true, false});
+  v.Number(KeyInfo{"wind_n_per_m", "N/m",
+                   "W, transverse wind on the 3D bridge's deck per metre of span: 1200 N/m is a peak velocity "
+                   "pressure of 0.9 kPa on 1 m of exposed depth with a force coefficient of 1.3 (EN 1991-1-4 8.3)"},
+           l.wind_n_per_m, Range::Closed(0.0, 1e8));
+  v.Number(KeyInfo{"gamma_g_sup", "–", "gamma_G,sup, unfavourable permanent action (EN 1990 A2, set B)"},
+           l.gamma_g_sup, Range::Closed(0.0, 10.0));
+  v.Number(KeyInfo{"gamma_g_inf", "–", "gamma_G,inf, favourable permanent action; the no-slack check uses it"},
+           l.gamma_g_inf, Range::Closed(0.0, 10.0));
+  v.Number(KeyInfo{"gamma_q", "–", "gamma_Q on the payload and the travelling loads"}, l.gamma_q,
+           Range::Closed(0.0, 10.0));
+  v.Number(KeyInfo{"gamma_w", "–", "gamma_Q on wind"}, l.gamma_w, Range::Closed(0.0, 10.0));
+  v.Number(KeyInfo{"psi0_wind", "–",
+                   "psi_0 of wind accompanying traffic (EN 1990 A2 table A2.2: 0.3 for footbridges, 0.6 road)"},
+           l.psi0_wind, Range::Closed(0.0, 1.0));
+  v.Number(KeyInfo{"deflection_limit", "–",
+                   "serviceability: the largest deflection from the permanent state, under any serviceability "
+                   "case, must not exceed span / this"},
+           l.deflection_limit, Range{0.0, 1e6, true, false});
 }
 
 // The README's text of one section: SectionHeading, a blank line, then SectionBody: the rules

@@ -78,13 +78,64 @@ void TableVisitor::Row(const KeyInfo& key, const std::string& fallback,
           (key.allowed ? key.allowed : allowed) + " | " + key.what + " |\n";
 }
 
+namespace {
+
+// `"a"`, `"b"` or `"c"` (with `last` before the last one).
+std::string QuotedList(const std::vector<std::string>& values, const char* last) {
+  std::string list;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    list += (k == 0 ? "" : k + 1 == values.size() ? last : ", ") + ("`\"" + values[k] + "\"`");
+  }
+  return list;
+}
+
+}  // namespace
+
 void TableVisitor::Choice(const KeyInfo& key, const std::string& field,
                           const std::vector<std::string>& allowed) {
-  std::string list;
-  for (std::size_t k = 0; k < allowed.size(); ++k) {
-    list += (k == 0 ? "" : k + 1 == allowed.size() ? " or " : ", ") + ("`\"" + allowed[k] + "\"`");
+  Row(key, "`\"" + field + "\"`", QuotedList(allowed, " or "));
+}
+
+void TableVisitor::Choices(const KeyInfo& key, const std::vector<std::string>& field,
+                           const std::vector<std::string>& allowed) {
+  std::string fallback = "[";
+  fallback += QuotedList(field, ", ");
+  fallback += ']';
+  std::string text = "list of ";
+  text += QuotedList(allowed, " and ");
+  text += ", each at most once";
+  Row(key, fallback, text);
+}
+
+void ValidateVisitor::CheckChoices(const std::string& path, const std::vector<std::string>& list,
+                                   const std::vector<std::string>& allowed) {
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    if (std::find(allowed.begin(), allowed.end(), list[k]) == allowed.end()) {
+      throw ConfigError(Item(path, k), "\"" + Printable(list[k]) + "\"", "must be one of " + ChoiceText(allowed));
+    }
+    if (std::find(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(k), list[k]) !=
+        list.begin() + static_cast<std::ptrdiff_t>(k)) {
+      throw ConfigError(Item(path, k), "\"" + Printable(list[k]) + "\"", "each value at most once");
+    }
   }
-  Row(key, "`\"" + field + "\"`", list);
+}
+
+void ParseVisitor::Choices(const KeyInfo& key, std::vector<std::string>& field,
+                           const std::vector<std::string>& allowed) {
+  const std::string path = s.PathOf(key.name);
+  const nlohmann::json* raw = s.Raw(key.name);
+  if (raw == nullptr) {
+    if (key.required) throw ConfigError(path, "(missing)", "required: a list of " + ChoiceText(allowed));
+    return;
+  }
+  if (!raw->is_array()) throw ConfigError(path, Show(*raw), "must be a list of " + ChoiceText(allowed));
+  field.clear();
+  for (std::size_t k = 0; k < raw->size(); ++k) {
+    const nlohmann::json& e = (*raw)[k];
+    if (!e.is_string()) throw ConfigError(ValidateVisitor::Item(path, k), Show(e), "must be one of " + ChoiceText(allowed));
+    field.push_back(e.get<std::string>());
+  }
+  ValidateVisitor::CheckChoices(path, field, allowed);
 }
 
 void TableVisitor::Integers(const KeyInfo& key, const std::vector<int>& field, int lo, int hi) {

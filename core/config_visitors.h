@@ -8,6 +8,7 @@
 //   v.Integer(key, I, lo, hi)                     I = int or long, in [lo, hi]
 //   v.Bool(key, bool)
 //   v.Choice(key, std::string, allowed)           one of `allowed`
+//   v.Choices(key, std::vector<std::string>, allowed)  each one of `allowed`, none twice
 //   v.OptionalNumber(key, std::optional<double>, range, absent)
 //                                                 absent = off; Absent::kNull also reads and
 //                                                 echoes null as off, kOmitted leaves it out
@@ -89,6 +90,7 @@ struct ParseVisitor {
   void Choice(const KeyInfo& key, std::string& field, const std::vector<std::string>& allowed) {
     field = s.Choice(key.name, Fallback(key, field), allowed);
   }
+  void Choices(const KeyInfo& key, std::vector<std::string>& field, const std::vector<std::string>& allowed);
   void OptionalNumber(const KeyInfo& key, std::optional<double>& field, Range range,
                       Absent absent) {
     if (!s.Has(key.name)) return;
@@ -143,6 +145,9 @@ struct EchoVisitor {
   }
   void Bool(const KeyInfo& key, bool field) { Put(key, field); }
   void Choice(const KeyInfo& key, const std::string& field, const std::vector<std::string>&) {
+    Put(key, field);
+  }
+  void Choices(const KeyInfo& key, const std::vector<std::string>& field, const std::vector<std::string>&) {
     Put(key, field);
   }
   void OptionalNumber(const KeyInfo& key, const std::optional<double>& field, Range,
@@ -214,6 +219,13 @@ struct ValidateVisitor {
                         "must be one of " + ChoiceText(allowed));
     }
   }
+  void Choices(const KeyInfo& key, const std::vector<std::string>& field,
+               const std::vector<std::string>& allowed) const {
+    CheckChoices(Path(key), field, allowed);
+  }
+  // Each of `list` one of `allowed`, and none twice (a repeated case would be checked twice).
+  static void CheckChoices(const std::string& path, const std::vector<std::string>& list,
+                           const std::vector<std::string>& allowed);
   void OptionalNumber(const KeyInfo& key, const std::optional<double>& field, Range range,
                       Absent) const {
     if (field) CheckNumber(Path(key), *field, range);
@@ -264,6 +276,8 @@ struct TableVisitor {
   void Bool(const KeyInfo& key, bool field) { Row(key, field ? "true" : "false", "true or false"); }
   void Choice(const KeyInfo& key, const std::string& field,
               const std::vector<std::string>& allowed);
+  void Choices(const KeyInfo& key, const std::vector<std::string>& field,
+               const std::vector<std::string>& allowed);
   void OptionalNumber(const KeyInfo& key, const std::optional<double>& field, Range range,
                       Absent absent) {
     Row(key,

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "design/equilibrium.h"
+#include "design/case_envelope.h"
 #include "design/equilibrium_basis.h"
 #include "design/reduced_min_mass.h"
 #include "design/solvers.h"
@@ -41,13 +42,25 @@ void CheckBasis(const EquilibriumBasis& basis) {
 // Returns the member forces [C; T] in N; `form` says which problem was solved.
 // `problem` is null when the self-stress basis was too large to form (the 3D bridge at n >= 10):
 // then only the full problem is left.
-Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem* problem, int states, const Structure& s,
-                             const Eigen::Matrix3Xd& loads, const MinMassSettings& settings, const DesignConfig& config,
-                             SolverOutcome& outcome, std::string& form) {
+struct MinMassSolution {
+  Eigen::MatrixXd forces;  // members x columns of the problem [N]: [C; T]
+  Eigen::VectorXd alpha;   // self-stress coefficients [N]; empty when the full problem was solved
+};
+
+MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, const Structure& s,
+                             const Eigen::Matrix3Xd* single_loads, const MinMassSettings& settings,
+                             const DesignConfig& config, SolverOutcome& outcome, std::string& form) {
   const bool applies = problem && problem->DirectApplies();
   const bool direct = config.solver == "direct" || (config.solver == "auto" && applies);
   form = "self-stress";
   Eigen::VectorXd x;
+  MinMassSolution out;
+  auto reduced_forces = [&]() {
+    out.forces.resize(s.num_bars() + s.num_strings(), problem->num_cases());
+    for (int c = 0; c < problem->num_cases(); ++c) out.forces.col(c) = problem->MemberForces(x, c);
+    out.alpha = x.head(problem->num_self_stresses()) * problem->ForceScale();
+    return out;
+  };
   if (direct) {
     if (!applies) {
       throw ConfigError("design.solver", "direct",
@@ -57,7 +70,7 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem* problem, int states, c
                             ": use \"auto\", \"ipopt\" or \"nlopt\"");
     }
     outcome = problem->SolveDirect(x);
-    return problem->MemberForces(x, 0);
+    return reduced_forces();
   }
   // "auto" takes the first iterative solver built in (Ipopt before NLopt).
   std::string name = config.solver;
@@ -73,25 +86,70 @@ Eigen::VectorXd SolveMinMass(const ReducedMinMassProblem* problem, int states, c
   }
   const SolverOptions options{config.tolerance, config.max_iterations, false};
   auto solve = [&](const NlpProblem& nlp) { return SolveNlp(name, nlp, options, x); };
-  const MinMassProblem full(s, loads, settings);
-  // NLopt's SLSQP holds the Jacobian dense (rows x variables): there the smaller dense size
-  // decides, and Ipopt's sparse factorisation counts the non-zeros.
-  auto dense = [](const NlpProblem& p) { return static_cast<double>(p.num_constraints()) * p.num_variables(); };
-  const bool take_full = !problem || (config.solver == "nlopt" ? dense(*problem) > dense(full)
-                                                              : problem->JacobianPattern().size() >
-                                                                    full.JacobianPattern().size());
-  if (take_full) {
-    form = "full";
-    x = full.StartingPoint();
-    outcome = solve(full);
-    return full.MemberForces(x);
+  // The full problem holds one load case; several cases need the self-stress form.
+  if (single_loads == nullptr && problem == nullptr) {
+    throw ModelError("this bridge has " + std::to_string(states) +
+                     " self-stress states, too many for the several load cases of loads.cases to share one "
+                     "self-stress form; design it for one case (loads.cases [\"paper\"]) or at a lower n");
+  }
+  if (single_loads) {
+    const MinMassProblem full(s, *single_loads, settings);
+    // NLopt's SLSQP holds the Jacobian dense (rows x variables): there the smaller dense size
+    // decides, and Ipopt's sparse factorisation counts the non-zeros.
+    auto dense = [](const NlpProblem& p) { return static_cast<double>(p.num_constraints()) * p.num_variables(); };
+    const bool take_full = !problem || (config.solver == "nlopt" ? dense(*problem) > dense(full)
+                                                                : problem->JacobianPattern().size() >
+                                                                      full.JacobianPattern().size());
+    if (take_full) {
+      form = "full";
+      x = full.StartingPoint();
+      outcome = solve(full);
+      out.forces = full.MemberForces(x);
+      return out;
+    }
   }
   x = problem->StartingPoint();
   outcome = solve(*problem);
-  return problem->MemberForces(x, 0);
+  return reduced_forces();
 }
 
 }  // namespace
+
+Verdict DesignVerdict(const Design& d) {
+  Verdict v;
+  const MemberSizing* worst = nullptr;
+  for (const auto* list : {&d.bars, &d.strings}) {
+    for (const MemberSizing& m : *list) {
+      if (worst == nullptr || m.utilisation > worst->utilisation) worst = &m;
+    }
+  }
+  std::vector<std::string> fails;
+  if (worst) {
+    v.utilisation_max = worst->utilisation;
+    v.governing = "member " + worst->name + " (" + worst->mode + ", " + worst->governing_case + ")";
+    if (worst->utilisation > 1.0 + 1e-9) {
+      std::ostringstream os;
+      os << "utilisation " << worst->utilisation << " > 1 in " << v.governing;
+      fails.push_back(os.str());
+    }
+  }
+  if (!d.stability.stable) fails.push_back("unstable");
+  if (d.statics.done && !d.statics.all_converged) fails.push_back("a static case found no equilibrium");
+  if (d.statics.done && d.statics.deflection_max_m > d.statics.deflection_limit_m) {
+    std::ostringstream os;
+    os << "deflection " << d.statics.deflection_max_m << " m > span / " << d.config.loads.deflection_limit << " = "
+       << d.statics.deflection_limit_m << " m (" << d.statics.deflection_case << ")";
+    fails.push_back(os.str());
+  }
+  if (d.unchecked_cases) fails.push_back("some asked-for cases were not checked (notes)");
+  if (!d.statics.done) fails.push_back("static cases not solved");
+  v.pass = fails.empty();
+  std::ostringstream os;
+  os << (v.pass ? "PASS: " : "FAIL: ") << "utilisation_max " << v.utilisation_max << " (" << v.governing << ")";
+  for (const std::string& f : fails) os << "; " << f;
+  v.summary = os.str();
+  return v;
+}
 
 void RequireStable(const Design& d) {
   const StabilityVerdict& v = d.stability;
@@ -161,7 +219,47 @@ DesignInputs PrepareDesign(const Config& config) {
   return in;
 }
 
-Design RunDesign(const Config& config, ProgressReporter* progress) {
+BarRule BarRuleOf(const Config& c) {
+  BarRule r;
+  r.column_curve = c.design.bar_resistance == "column_curve";
+  r.yield_stress = c.material.yield_stress;
+  r.yield_factor = c.design.yield_safety_factor;
+  r.buckling_factor = c.design.buckling_safety_factor;
+  r.imperfection = c.design.imperfection_factor;
+  return r;
+}
+
+namespace {
+
+// Utilisation of a sized member under its largest and smallest force, and the mode that
+// governs it: strings yield (or go slack below zero), bars yield or buckle.
+void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& rule, double sigma_w, double E) {
+  if (m.kind == MemberKind::kBar) {
+    const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
+    const double u_yield = cap.yield > 0 ? largest / cap.yield : 0.0;
+    const double u_buckling = cap.buckling > 0 ? largest / cap.buckling : 0.0;
+    m.utilisation = std::max(u_yield, u_buckling);
+    m.mode = u_buckling > u_yield ? "buckling" : "yield";
+    if (smallest < 0) m.mode = "tension", m.utilisation = std::max(m.utilisation, 1.0 + (-smallest) / std::max(largest, 1.0));
+  } else {
+    m.utilisation = m.area > 0 ? largest / (m.area * sigma_w) : 0.0;
+    m.mode = "yield";
+    if (smallest < 0) m.mode = "slack";
+  }
+}
+
+// The permanent action's factors: deck dead load, and the members' weight when it is on.
+LoadCase PermanentCase(const Config& c) {
+  LoadCase g;
+  g.name = "permanent";
+  g.factor[kDeckDead] = 1.0;
+  g.factor[kSelfWeight] = c.design.self_weight ? 1.0 : 0.0;
+  return g;
+}
+
+}  // namespace
+
+Design RunDesign(const Config& config, ProgressReporter* progress, const std::vector<double>* area_floor) {
   // Fractions of a whole design's time at n = 16: topology 0.2, factorisation 0.4, solve and
   // sizing the rest (the caller's output writing comes after).
   auto done = [progress](double fraction) {
@@ -174,26 +272,134 @@ Design RunDesign(const Config& config, ProgressReporter* progress) {
   d.config = config;
   d.topology = std::move(in.topology);
   d.deck = in.deck;
-  d.loads = std::move(in.loads);
   const Structure& s = d.topology.structure;
+  const int nb = s.num_bars(), members = nb + s.num_strings();
+  if (area_floor && static_cast<int>(area_floor->size()) != members) throw ModelError("RunDesign: area floors do not match the members");
+  auto floor = [area_floor](int j) { return area_floor ? (*area_floor)[j] : 0.0; };
+  for (int b = 0; b < nb; ++b) in.settings.bar_min_area[b] = std::max(in.settings.bar_min_area[b], floor(b));
   const MinMassSettings& settings = in.settings;
   const double sigma_w = settings.working_stress;
-  const std::vector<double>& string_min_area = in.string_min_area;
+  const BarRule rule = BarRuleOf(config);
+
+  d.actions = MakeActions(config, d.topology, d.deck);
+  d.cases = MakeLoadCases(config, d.deck, d.notes);
+  const bool paper = d.cases.size() == 1 && d.cases[0].name == "paper";
+  bool travels = false;
+  for (const LoadCase& c : d.cases) travels = travels || c.station_load != 0;
+  // A travelling family costs one equilibrium solve per deck station, each linear in the
+  // members: 0.6 s at n = 10, 9.5 s at n = 12, 310 s at n = 14. Beyond 2^23 station-members
+  // (n = 10 on a planar bridge) the families are left out, and the design says so.
+  const double station_members = static_cast<double>(d.actions.station_nodes.size()) * members;
+  if (travels && station_members > 8388608.0) {
+    std::erase_if(d.cases, [](const LoadCase& c) { return c.station_load != 0; });
+    d.notes.push_back("loads.cases: the travelling loads are not checked: " +
+                      std::to_string(d.actions.station_nodes.size()) + " deck stations x " + std::to_string(members) +
+                      " members exceed the 2^23 station-members a design solves for them (n <= 10 on a planar "
+                      "bridge)");
+    d.unchecked_cases = true;
+    travels = false;
+    if (d.cases.empty()) throw ModelError("loads.cases: only travelling loads were asked for, and they are too costly to check at this n");
+  }
+  const bool single = d.cases.size() == 1 && !travels;
 
   const EquilibriumSystem eq = BuildEquilibrium(s);
-  const EquilibriumBasis basis = FactorEquilibrium(eq, FreeLoads(eq, d.loads));
-  d.self_stress_states = basis.self_stress_states();
-  CheckBasis(basis);
+  const EquilibriumSolver solver(eq);
+  d.self_stress_states = solver.states();
+  StationInfluence influence;
+  if (travels) influence = InfluenceOfStations(solver, eq, d.actions);
+  EquilibriumBasis basis;
+  basis.rank = solver.rank();
+  basis.states = solver.states();
+  basis.basis_formed = static_cast<double>(members) * basis.states <= 1048576.0;
+  basis.self_stress = basis.basis_formed ? solver.SelfStresses() : Eigen::MatrixXd(members, 0);
+  if (basis.self_stress.size()) basis.basis_residual = (eq.A * basis.self_stress).cwiseAbs().maxCoeff();
   done(0.6);
-  std::optional<ReducedMinMassProblem> problem;
-  if (basis.basis_formed) problem.emplace(s, basis, settings);
-  const Eigen::VectorXd forces = SolveMinMass(problem ? &*problem : nullptr, basis.self_stress_states(), s, d.loads,
-                                              settings, config.design, d.solver, d.solver_form);
-  const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
+
+  // The reference state: the drawn geometry is in equilibrium under it (the paper's design
+  // load; else the permanent load G with the prestress).
+  const LoadCase reference = paper ? d.cases[0] : PermanentCase(config);
+  std::vector<double> mass(members, 0.0);
+  const double g = config.design.gravity;
+  Eigen::MatrixXd base_forces;
+  CaseEnvelope env;
+  MinMassSolution solution;
+  Eigen::VectorXd reference_forces;
+  double previous_total = -1;
+  for (d.self_weight_iterations = 1;; ++d.self_weight_iterations) {
+    d.actions.base[kSelfWeight] = SelfWeightLoads(s, mass, g);
+    Eigen::MatrixXd w(eq.A.rows(), kNumBaseActions);
+    for (int a = 0; a < kNumBaseActions; ++a) w.col(a) = FreeLoads(eq, d.actions.base[a]);
+    base_forces = solver.Particular(w);
+    basis.load_residual = std::max(influence.load_residual, (eq.A * base_forces + w).cwiseAbs().maxCoeff());
+    env = EnvelopeOf(d.cases, base_forces, travels ? &influence : nullptr);
+    Eigen::VectorXd f(kNumBaseActions);
+    for (int a = 0; a < kNumBaseActions; ++a) f[a] = d.cases[0].factor[a];
+    if (single) {
+      basis.particular = base_forces * f;
+    } else {
+      basis.particular.resize(members, 2);
+      for (int j = 0; j < members; ++j) basis.particular(j, 0) = env.uls_max[j].force, basis.particular(j, 1) = env.min[j].force;
+    }
+    CheckBasis(basis);
+    std::optional<ReducedMinMassProblem> problem;
+    if (basis.basis_formed) problem.emplace(s, basis, settings);
+    const Eigen::Matrix3Xd single_loads = d.actions.Loads(d.cases[0]);
+    solution = SolveMinMass(problem ? &*problem : nullptr, basis.states, s, single ? &single_loads : nullptr, settings,
+                            config.design, d.solver, d.solver_form);
+    for (int a = 0; a < kNumBaseActions; ++a) f[a] = reference.factor[a];
+    reference_forces = single ? Eigen::VectorXd(solution.forces.col(0)) : Eigen::VectorXd(base_forces * f);
+    if (!single && solution.alpha.size()) reference_forces += basis.self_stress * solution.alpha;
+
+    // Size every member for its largest force; rest lengths from the reference state.
+    const Eigen::VectorXd largest = solution.forces.col(0);
+    d.bars.clear();
+    d.strings.clear();
+    double total = 0;
+    for (int b = 0; b < nb; ++b) {
+      MemberSizing m = SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, config.material);
+      if (floor(b) > 0 && m.area == floor(b)) m.governed_by = "resized";
+      m.kind = MemberKind::kBar;
+      m.i = s.bars[b].i;
+      m.j = s.bars[b].j;
+      m.name = Structure::Name(s.bars[b]);
+      m.reference_force = reference_forces[b];
+      mass[b] = m.mass;
+      total += m.mass;
+      d.bars.push_back(m);
+    }
+    for (int k = 0; k < s.num_strings(); ++k) {
+      MemberSizing m = SizeString(s.Length(s.strings[k]), largest[nb + k], reference_forces[nb + k],
+                                  std::max(in.string_min_area[k], floor(nb + k)), sigma_w, config.material);
+      if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k)) m.governed_by = "resized";
+      m.kind = StringKind(s.strings[k]);
+      m.i = s.strings[k].i;
+      m.j = s.strings[k].j;
+      m.name = Structure::Name(s.strings[k]);
+      mass[nb + k] = m.mass;
+      total += m.mass;
+      d.strings.push_back(m);
+    }
+    // The self-weight fixed point: each pass adds the weight of the last sizing. The weight
+    // is a fraction of the load well below 1 for any bridge that can stand, so the mass
+    // converges geometrically; 1e-12 is a few hundred rounding steps of a sum of masses.
+    if (!config.design.self_weight || std::abs(total - previous_total) <= 1e-12 * total) break;
+    if (d.self_weight_iterations >= 200 || !std::isfinite(total)) {
+      throw ModelError("self-weight: the member mass did not settle in 200 sizings (" + std::to_string(previous_total) +
+                       " kg, then " + std::to_string(total) +
+                       " kg): the members cannot carry their own weight at this span and material");
+    }
+    previous_total = total;
+  }
+  done(0.8);
+
+  // Equilibrium of the reference state, and no member past its floor in any case.
+  const Eigen::Matrix3Xd reference_loads = d.actions.Loads(reference);
+  const Eigen::VectorXd residual = EquilibriumResidual(eq, reference_forces, reference_loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   const double load_scale = SelfStressForceScale(basis, settings);
-  if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
-      d.equilibrium_residual > 1e-6 * load_scale || forces.minCoeff() < -1e-6 * load_scale) {
+  const double smallest = solution.forces.col(solution.forces.cols() - 1).minCoeff();
+  if (!d.solver.success || !std::isfinite(d.equilibrium_residual) || d.equilibrium_residual > 1e-6 * load_scale ||
+      smallest < -1e-6 * load_scale) {
     std::ostringstream os;
     os << "no minimum-mass design found for n = " << config.bridge.n << ", p = " << config.bridge.p
        << ", beta = " << config.bridge.beta_deg << " deg: solver " << d.solver.solver
@@ -201,34 +407,28 @@ Design RunDesign(const Config& config, ProgressReporter* progress) {
        << " iterations (equilibrium residual " << d.equilibrium_residual << " N)";
     throw ModelError(os.str());
   }
-  done(0.8);
 
-  for (int b = 0; b < s.num_bars(); ++b) {
-    MemberSizing m = SizeBar(s.Length(s.bars[b]), forces[b], settings.bar_min_area[b], sigma_w,
-                             config.design.buckling_safety_factor, config.material);
-    m.kind = MemberKind::kBar;
-    m.i = s.bars[b].i;
-    m.j = s.bars[b].j;
-    m.name = Structure::Name(s.bars[b]);
-    d.mass.bars += m.mass;
-    d.bars.push_back(m);
+  // Utilisation of every member under its largest (ultimate) and smallest force of any case.
+  const Eigen::VectorXd& largest = solution.forces.col(0);
+  const Eigen::VectorXd& least = solution.forces.col(solution.forces.cols() - 1);
+  for (int j = 0; j < members; ++j) {
+    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    Utilise(m, largest[j], least[j], rule, sigma_w, config.material.youngs_modulus);
+    m.force_min = least[j];
+    m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
+    if (m.mode == "slack" || m.mode == "tension") m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
+    (m.kind == MemberKind::kBar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) +=
+        m.mass;
   }
-  for (int k = 0; k < s.num_strings(); ++k) {
-    MemberSizing m = SizeString(s.Length(s.strings[k]), forces[s.num_bars() + k],
-                                string_min_area[k], sigma_w, config.material);
-    m.kind = StringKind(s.strings[k]);
-    m.i = s.strings[k].i;
-    m.j = s.strings[k].j;
-    m.name = Structure::Name(s.strings[k]);
-    (m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
-    d.strings.push_back(m);
-  }
+  d.alpha = solution.alpha;
+  d.reference_forces = reference_forces;
+  d.loads = reference_loads;
   // Stability with the bars held: sparse and roughly linear, so it runs at every n; the dense
   // critical load factor only where it costs well under a second (n <= 6).
   std::vector<double> string_stiffness(d.strings.size());
   for (size_t k = 0; k < d.strings.size(); ++k) string_stiffness[k] = d.strings[k].stiffness;
-  d.stability = AssessStability(s, forces, string_stiffness, config.bridge.n <= 6);
-  d.reactions = SupportReactions(s, forces, d.loads);
+  d.stability = AssessStability(s, reference_forces, string_stiffness, config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, reference_forces, reference_loads);
   d.reactions.array() += 0.0;  // -0 (a fixed node's untouched axis) reads as 0 in the outputs
   d.mass.deck_beams = d.deck.beams_mass;
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;

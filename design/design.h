@@ -8,10 +8,12 @@
 #include "core/config.h"
 #include "core/progress.h"
 #include "design/deck.h"
+#include "design/load_cases.h"
 #include "design/min_mass.h"
 #include "design/sizing.h"
 #include "design/stability.h"
 #include "design/topology.h"
+#include "design/verification.h"
 
 namespace tbridge {
 
@@ -28,7 +30,20 @@ struct Design {
   Config config;             // resolved
   BridgeTopology topology;
   Deck deck;
-  Eigen::Matrix3Xd loads;    // 3 x n_n applied node loads [N] (deck loads, downward)
+  // 3 x n_n node loads of the reference state [N]: the drawn geometry is in equilibrium under
+  // them with the member forces of `reference_forces`. The paper's design load (deck and
+  // payload) with its switches; else the permanent load G (deck beams, superimposed dead load
+  // and, with design.self_weight, the members' weight).
+  Eigen::Matrix3Xd loads;
+  Actions actions;                 // characteristic base actions and deck stations
+  std::vector<LoadCase> cases;     // the load cases sized and checked for
+  std::vector<std::string> notes;  // cases left out, and why
+  Eigen::VectorXd reference_forces;  // [C; T] of the reference state [N]
+  Eigen::VectorXd alpha;             // self-stress coefficients [N]; empty when not computed
+  int self_weight_iterations = 0;    // sizings of the self-weight fixed point
+  bool unchecked_cases = false;      // some asked-for cases were left out (notes say which)
+  StaticCheck statics;               // the nonlinear static check, when it was run (verify/)
+  Resizing resizing;                 // the verification's resizing, when it was run (verify/)
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;
@@ -49,7 +64,9 @@ struct Design {
 struct DesignInputs {
   BridgeTopology topology;
   Deck deck;
-  Eigen::Matrix3Xd loads;               // 3 x n_n design loads [N]
+  // The paper's one design load, deck and payload at the deck nodes [N] (3 x n_n): the load of
+  // a one-case design, and of the solver cross-checks.
+  Eigen::Matrix3Xd loads;
   MinMassSettings settings;             // sigma_w, buckling factor, tension and area floors
   std::vector<double> string_min_area;  // per string [m^2]: deck and transverse minimum sections
 };
@@ -59,7 +76,25 @@ DesignInputs PrepareDesign(const Config& config);
 // design is found (the message carries the solver's status).
 // `progress` (may be null) is told the fraction done at each stage: topology, equilibrium
 // factorisation, solve, sizing.
-Design RunDesign(const Config& config, ProgressReporter* progress = nullptr);
+// `area_floor` (may be null) gives each member [bars; strings] an area it may not go below
+// [m^2]: the verification's resizing (verify/verified_design.h). A member held there reports
+// `governed_by` = "resized".
+Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
+                 const std::vector<double>* area_floor = nullptr);
+
+// The design's one pass/fail line: every member's utilisation at most 1 (1e-9 allows for the
+// rounding of a member sized exactly to its resistance), stable, every static case solved and
+// within the deflection limit, and no asked-for check left out.
+struct Verdict {
+  bool pass = false;
+  double utilisation_max = 0;
+  std::string governing;  // "member 3-5 (buckling, uls_payload_full)"
+  std::string summary;    // "PASS: ..." or "FAIL: ..., ..."
+};
+Verdict DesignVerdict(const Design& design);
+
+// The bar rule of a config: the column curve or the paper's Euler check, with its factors.
+BarRule BarRuleOf(const Config& config);
 
 // Throws ModelError, saying why, when the design's stability verdict is not stable: a
 // structure that buckles under its own design load is no design.

@@ -28,7 +28,8 @@ json Units() {
       {"deck", {{"section_length", "m"}, {"section_mass", "kg"}, {"thickness", "m"},
                 {"node_load", "N"}, {"total_load", "N"}, {"beams_mass", "kg"}}},
       {"nodes", "m"},
-      {"members", {{"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"},
+      {"members", {{"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"}, {"force_min", "N"},
+                   {"reference_force", "N"}, {"utilisation", "1"},
                    {"force_density", "N/m"}, {"area", "m^2"}, {"radius", "m"},
                    {"mass", "kg"}, {"rest_length", "m"}, {"stiffness", "N/m"},
                    {"stress", "Pa"}}},
@@ -39,7 +40,10 @@ json Units() {
       {"self_stress_states", "1"},
       {"stability", {{"negative_pivots", "1"}, {"zero_pivots", "1"}, {"free_dofs", "1"}, {"reduced_dofs", "1"},
                      {"min_pivot", "N/m"}, {"critical_load_factor", "1"}}},
-      {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}}};
+      {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}},
+      {"deflection_max", {{"deflection", "m"}, {"limit", "m"}, {"node", "1 (1-based node number)"}}},
+      {"utilisation_max", "1"},
+      {"self_weight_iterations", "1"}};
 }
 
 // printf into a std::string; the attribute lets the compiler check every format string.
@@ -116,18 +120,23 @@ void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology
   WriteNumber(os, m.area);
   number("force", m.force);
   number("force_density", m.force_density);
+  number("force_min", m.force_min);
   text("governed_by", m.governed_by);
+  text("governing_case", m.governing_case);
   text("group", topology_member.group);
   number("length", m.length);
   number("mass", m.mass);
+  text("mode", m.mode);
   text("name", m.name);
   os << ", \"nodes\": [" << m.i + 1 << ", " << m.j + 1 << "]";
   number("radius", m.radius);
+  number("reference_force", m.reference_force);
   number("rest_length", m.rest_length);
   // A bar is rigid in the model: it has no axial stiffness to report.
   number("stiffness", m.kind == MemberKind::kBar ? std::numeric_limits<double>::quiet_NaN() : m.stiffness);
   number("stress", m.stress);
   text("type", KindName(m.kind));
+  number("utilisation", m.utilisation);
   os << "}";
 }
 
@@ -145,15 +154,50 @@ json StabilityJson(const StabilityVerdict& v) {
   return out;
 }
 
-// One entry per fixed node: {node (1-based), force [x, y, z]}.
+// One entry per case and fixed node: {case, node (1-based), force [x, y, z]}; first the
+// reference state's, then each statically solved case's.
 json ReactionsJson(const Design& d) {
   const Structure& s = d.topology.structure;
   json out = json::array();
-  for (int v = 0; v < s.num_nodes() && v < d.reactions.cols(); ++v) {
-    if (!s.fixed[v]) continue;
-    out.push_back({{"node", v + 1}, {"force", {d.reactions(0, v), d.reactions(1, v), d.reactions(2, v)}}});
+  auto add = [&](const std::string& label, const Eigen::Matrix3Xd& r) {
+    for (int v = 0; v < s.num_nodes() && v < r.cols(); ++v) {
+      if (!s.fixed[v]) continue;
+      out.push_back({{"case", label}, {"node", v + 1}, {"force", {r(0, v) + 0.0, r(1, v) + 0.0, r(2, v) + 0.0}}});
+    }
+  };
+  add("reference", d.reactions);
+  for (const CaseResponse& c : d.statics.cases) {
+    if (c.converged) add(c.label, c.reactions);
   }
   return out;
+}
+
+// Per statically solved case: its largest deck deflection from the drawn geometry.
+json DeflectionsJson(const Design& d) {
+  json out = json::array();
+  for (const CaseResponse& c : d.statics.cases) {
+    json e = {{"case", c.label}, {"converged", c.converged}, {"slack_strings", c.slack_strings}};
+    e["deflection"] = c.converged ? json(c.deflection_m) : json(nullptr);
+    e["node"] = c.deflection_node >= 0 ? json(c.deflection_node + 1) : json(nullptr);
+    if (!c.converged) e["message"] = c.message;
+    out.push_back(e);
+  }
+  return out;
+}
+
+// The cases sized and checked for, the notes on those left out, and the verdict.
+json CasesJson(const Design& d) {
+  json out = json::array();
+  for (const LoadCase& c : d.cases) {
+    out.push_back({{"name", c.name}, {"limit_state", LimitStateName(c.state)}, {"combination", c.combination},
+                   {"travelling", c.station_load != 0}});
+  }
+  return out;
+}
+
+json VerdictJson(const Design& d) {
+  const Verdict v = DesignVerdict(d);
+  return {{"pass", v.pass}, {"summary", v.summary}, {"notes", d.notes}};
 }
 
 }  // namespace
@@ -191,8 +235,10 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   };
 
   os << "{\n";
+  field("cases", CasesJson(d));
   field("config", ToJson(d.config));
   field("deck", deck);
+  field("deflection_max", DeflectionsJson(d));
   field("equilibrium_residual_N", d.equilibrium_residual);
   field("mass", mass);
   os << "  \"members\": [";
@@ -219,11 +265,18 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   }
   os << (s.num_nodes() ? "]\n  ],\n" : "\n  ],\n");
   field("reactions", ReactionsJson(d));
+  field("resizing", {{"iterations", d.resizing.iterations},
+                     {"converged", d.resizing.converged},
+                     {"structure_mass_kg", d.resizing.structure_mass_kg},
+                     {"why", d.resizing.why}});
+  field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);
   field("solver", solver);
   field("stability", StabilityJson(d.stability));
   field("topology", topology);
-  field("units", Units(), true);
+  field("units", Units());
+  field("utilisation_max", DesignVerdict(d).utilisation_max);
+  field("verdict", VerdictJson(d), true);
   os << "}\n";
 }
 
@@ -262,12 +315,32 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     reactions += Format("%s node %d (%.6g, %.6g, %.6g)", reactions.empty() ? "" : ";", n + 1, d.reactions(0, n),
                         d.reactions(1, n), d.reactions(2, n));
   }
-  line(reactions.size() < 400 ? "support reactions [N]:" + reactions : "support reactions: in the JSON output");
+  line(reactions.size() < 400 ? "support reactions [N], reference state:" + reactions
+                              : "support reactions: in the JSON output");
+  line(Format("load cases: %zu (%s)%s", d.cases.size(), d.config.design.self_weight ? "self-weight in G" : "no self-weight",
+              d.self_weight_iterations > 1 ? Format(", self-weight fixed point in %d sizings", d.self_weight_iterations).c_str()
+                                           : ""));
+  for (const std::string& note : d.notes) line("  note: " + note);
+  if (d.statics.done) {
+    double worst_balance = 0;
+    for (const CaseResponse& c : d.statics.cases) worst_balance = std::max(worst_balance, c.balance);
+    line(Format("static check: %zu nonlinear solves (travelling loads at %d stations per family); largest "
+                "deflection %.4g m (%s), limit span / %g = %.4g m; reactions balance the loads to %.1e",
+                d.statics.cases.size(), d.statics.stations_per_family, d.statics.deflection_max_m,
+                d.statics.deflection_case.empty() ? "no serviceability case" : d.statics.deflection_case.c_str(),
+                d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
+  }
+  if (d.resizing.iterations > 1) {
+    line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg%s", d.resizing.iterations,
+                d.resizing.structure_mass_kg.front(), d.resizing.structure_mass_kg.back(),
+                d.resizing.converged ? "" : " (did not converge)"));
+  }
+  line(DesignVerdict(d).summary);
   line("");
 
   line("members (force: tension for strings, compression for bars):");
-  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %s", "name", "type", "s [m]",
-              "force [N]", "r [mm]", "L0 [m]", "k_s [N/m]", "m [kg]", "governed by"));
+  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %-11s %6s  %s", "name", "type", "s [m]", "force [N]", "r [mm]",
+              "L0 [m]", "k_s [N/m]", "m [kg]", "governed by", "util.", "governing case (mode)"));
   std::vector<const MemberSizing*> rows;
   for (const MemberSizing& m : d.bars) rows.push_back(&m);
   for (const MemberSizing& m : d.strings) rows.push_back(&m);
@@ -275,10 +348,10 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   for (size_t k = 0; k < shown; ++k) {
     const MemberSizing& m = *rows[k];
     const bool bar = m.kind == MemberKind::kBar;
-    line(Format("  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %s", m.name.c_str(),
-                KindName(m.kind), m.length, m.force, m.radius * 1e3,
-                bar ? "-" : Format("%.4f", m.rest_length).c_str(),
-                bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, m.governed_by.c_str()));
+    line(Format("  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %-11s %6.3f  %s (%s)", m.name.c_str(),
+                KindName(m.kind), m.length, m.force, m.radius * 1e3, bar ? "-" : Format("%.4f", m.rest_length).c_str(),
+                bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, m.governed_by.c_str(), m.utilisation,
+                m.governing_case.c_str(), m.mode.c_str()));
   }
   if (shown < rows.size()) {
     line(Format("  ... %zu more members omitted (all are in the JSON output)",

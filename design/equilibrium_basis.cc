@@ -67,56 +67,87 @@ Eigen::MatrixXd TakeDense(cholmod_dense* d, cholmod_common* cc, const char* what
 
 }  // namespace
 
-EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads,
-                                   double max_basis_entries) {
-  const Eigen::Index n = eq.A.cols(), m = eq.A.rows(), cases = free_loads.cols();
-  if (free_loads.rows() != m) throw ModelError("equilibrium factorisation: load rows differ from the DOFs");
-  EquilibriumBasis out;
-  if (m == 0) {  // nothing free: every member force is a self-stress
-    out.particular = Eigen::MatrixXd::Zero(n, cases);
-    out.self_stress = Eigen::MatrixXd::Identity(n, n);
-    out.states = static_cast<int>(n);
-    return out;
-  }
-  Common common;
-  cholmod_common* cc = common.get();
-  LongSparse at = eq.A.transpose();
-  at.makeCompressed();
-  cholmod_sparse at_view = SparseView(at);
+struct EquilibriumSolver::Impl {
   using Factor = SuiteSparseQR_factorization<double>;
-  auto release = [cc](Factor* f) { SuiteSparseQR_free<double>(&f, cc); };
-  std::unique_ptr<Factor, decltype(release)> qr(
-      SuiteSparseQR_factorize<double>(SPQR_ORDERING_DEFAULT, SPQR_DEFAULT_TOL, &at_view, cc), release);
-  if (!qr) throw ModelError("equilibrium factorisation: sparse QR failed (status " + std::to_string(cc->status) + ")");
-  out.rank = static_cast<int>(qr->rank);
+  Common common;
+  LongSparse at;
+  Factor* qr = nullptr;
+  Eigen::Index members = 0, dofs = 0;
+  int rank = 0;
+  ~Impl() {
+    if (qr) SuiteSparseQR_free<double>(&qr, common.get());
+  }
+};
 
+EquilibriumSolver::EquilibriumSolver(const EquilibriumSystem& eq) : impl_(std::make_unique<Impl>()) {
+  Impl& d = *impl_;
+  d.members = eq.A.cols();
+  d.dofs = eq.A.rows();
+  if (d.dofs == 0) return;  // nothing free: every member force is a self-stress
+  cholmod_common* cc = d.common.get();
+  d.at = eq.A.transpose();
+  d.at.makeCompressed();
+  cholmod_sparse at_view = SparseView(d.at);
+  d.qr = SuiteSparseQR_factorize<double>(SPQR_ORDERING_DEFAULT, SPQR_DEFAULT_TOL, &at_view, cc);
+  if (!d.qr) throw ModelError("equilibrium factorisation: sparse QR failed (status " + std::to_string(cc->status) + ")");
+  d.rank = static_cast<int>(d.qr->rank);
+}
+
+EquilibriumSolver::~EquilibriumSolver() = default;
+
+int EquilibriumSolver::rank() const { return impl_->rank; }
+int EquilibriumSolver::states() const { return static_cast<int>(impl_->members) - impl_->rank; }
+
+Eigen::MatrixXd EquilibriumSolver::Particular(const Eigen::MatrixXd& free_loads) const {
+  Impl& d = *impl_;
+  if (free_loads.rows() != d.dofs) throw ModelError("equilibrium factorisation: load rows differ from the DOFs");
+  if (d.dofs == 0 || free_loads.cols() == 0) return Eigen::MatrixXd::Zero(d.members, free_loads.cols());
+  cholmod_common* cc = d.common.get();
   // y = R^-T (E^T (-w)), zero past the rank; x_p = Q y.
   Eigen::MatrixXd rhs = -free_loads;
   cholmod_dense rhs_view = DenseView(rhs);
-  Eigen::MatrixXd y = TakeDense(SuiteSparseQR_solve<double>(SPQR_RTX_EQUALS_ETB, qr.get(), &rhs_view, cc), cc,
+  Eigen::MatrixXd y = TakeDense(SuiteSparseQR_solve<double>(SPQR_RTX_EQUALS_ETB, d.qr, &rhs_view, cc), cc,
                                 "the triangular solve");
-  y.bottomRows(n - out.rank).setZero();
+  y.bottomRows(d.members - d.rank).setZero();
   cholmod_dense y_view = DenseView(y);
-  out.particular = TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, qr.get(), &y_view, cc), cc, "Q x");
+  return TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, d.qr, &y_view, cc), cc, "Q x");
+}
 
-  const Eigen::Index s = n - out.rank;
-  out.states = static_cast<int>(s);
+Eigen::MatrixXd EquilibriumSolver::SelfStresses() const {
+  Impl& d = *impl_;
+  const Eigen::Index s = d.members - d.rank;
+  if (d.dofs == 0) return Eigen::MatrixXd::Identity(d.members, d.members);
+  if (s == 0) return Eigen::MatrixXd(d.members, 0);
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(d.members, s);
+  for (Eigen::Index k = 0; k < s; ++k) unit(d.rank + k, k) = 1.0;
+  cholmod_dense unit_view = DenseView(unit);
+  return TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, d.qr, &unit_view, d.common.get()), d.common.get(), "Q e");
+}
+
+EquilibriumBasis FactorEquilibrium(const EquilibriumSolver& solver, const EquilibriumSystem& eq,
+                                   const Eigen::MatrixXd& free_loads, double max_basis_entries) {
+  EquilibriumBasis out;
+  out.rank = solver.rank();
+  out.states = solver.states();
+  out.particular = solver.Particular(free_loads);
   const Eigen::MatrixXd residual = eq.A * out.particular + free_loads;
   out.load_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
-  if (static_cast<double>(n) * static_cast<double>(s) > max_basis_entries) {
+  const Eigen::Index n = eq.A.cols();
+  if (static_cast<double>(n) * static_cast<double>(out.states) > max_basis_entries) {
     out.basis_formed = false;
     out.self_stress = Eigen::MatrixXd(n, 0);
     return out;
   }
-  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, s);
-  for (Eigen::Index k = 0; k < s; ++k) unit(out.rank + k, k) = 1.0;
-  cholmod_dense unit_view = DenseView(unit);
-  out.self_stress = s > 0 ? TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, qr.get(), &unit_view, cc), cc, "Q e")
-                          : Eigen::MatrixXd(n, 0);
-
+  out.self_stress = solver.SelfStresses();
   const Eigen::MatrixXd an = eq.A * out.self_stress;
   out.basis_residual = an.size() ? an.cwiseAbs().maxCoeff() : 0.0;
   return out;
+}
+
+EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads,
+                                   double max_basis_entries) {
+  const EquilibriumSolver solver(eq);
+  return FactorEquilibrium(solver, eq, free_loads, max_basis_entries);
 }
 
 }  // namespace tbridge

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 
 #include "design/equilibrium.h"
 
@@ -34,6 +35,28 @@ struct EquilibriumBasis {
   int self_stress_states() const { return states; }
 };
 
+// One sparse QR of A^T, kept for solving further load cases (influence lines, the self-weight
+// fixed point) without refactorising.
+class EquilibriumSolver {
+ public:
+  // Throws ModelError when the factorisation fails.
+  explicit EquilibriumSolver(const EquilibriumSystem& eq);
+  ~EquilibriumSolver();
+  EquilibriumSolver(const EquilibriumSolver&) = delete;
+  EquilibriumSolver& operator=(const EquilibriumSolver&) = delete;
+
+  int rank() const;
+  int states() const;  // n_b + n_s - rank
+  // The particular solution (members x cases) of each column of `free_loads` (n_dof x cases).
+  Eigen::MatrixXd Particular(const Eigen::MatrixXd& free_loads) const;
+  // The orthonormal self-stress basis (members x states).
+  Eigen::MatrixXd SelfStresses() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 // `free_loads` is n_dof x n_cases, each column w of one load case on the free DOFs [N]
 // (FreeLoads). The basis is dense (members x states): it is formed only while that has at most
 // `max_basis_entries` entries. The default, 2^20 (8 MB), admits every planar bridge (one state
@@ -42,5 +65,8 @@ struct EquilibriumBasis {
 // 308 MB with the basis formed, 1.6 s and 33 MB without).
 EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::MatrixXd& free_loads,
                                    double max_basis_entries = 1048576.0);
+// The same from a factorisation already made.
+EquilibriumBasis FactorEquilibrium(const EquilibriumSolver& solver, const EquilibriumSystem& eq,
+                                   const Eigen::MatrixXd& free_loads, double max_basis_entries = 1048576.0);
 
 }  // namespace tbridge

@@ -46,8 +46,8 @@ double EulerArea(double length, double compression, double E) {
   return 2.0 * length * std::sqrt(std::max(compression, 0.0) / (std::numbers::pi * E));
 }
 
-MemberSizing SizeString(double length, double tension, double min_area, double sigma_w,
-                        const Material& m) {
+MemberSizing SizeString(double length, double tension, double reference_tension, double min_area,
+                        double sigma_w, const Material& m) {
   MemberSizing s;
   s.length = length;
   s.force = std::max(tension, 0.0);
@@ -64,22 +64,65 @@ MemberSizing SizeString(double length, double tension, double min_area, double s
   }
   s.radius = std::sqrt(s.area / std::numbers::pi);
   s.stress = s.area > 0 ? s.force / s.area : 0.0;
-  s.rest_length = length / (1.0 + s.stress / m.youngs_modulus);
+  s.reference_force = std::max(reference_tension, 0.0);
+  s.rest_length = length / (1.0 + (s.area > 0 ? s.reference_force / s.area : 0.0) / m.youngs_modulus);
   s.stiffness = s.area > 0 ? m.youngs_modulus * s.area / s.rest_length : 0.0;
   s.mass = m.density * s.area * length;
   CheckFinite(s, m);
   return s;
 }
 
-MemberSizing SizeBar(double length, double compression, double min_area, double sigma_w,
-                     double buckling_sf, const Material& m) {
+double ColumnCurveChi(double lambda, double alpha) {
+  const double phi = 0.5 * (1.0 + alpha * (lambda - 0.2) + lambda * lambda);
+  return std::min(1.0, 1.0 / (phi + std::sqrt(std::max(phi * phi - lambda * lambda, 0.0))));
+}
+
+BarCapacity BarResistance(double area, double length, const BarRule& rule, double E) {
+  BarCapacity c;
+  c.yield = area * rule.yield_stress / rule.yield_factor;
+  // N_cr = pi^2 E I / l^2 with I = A^2 / (4 pi).
+  const double n_cr = std::numbers::pi * E * area * area / (4.0 * length * length);
+  if (!rule.column_curve) {
+    c.buckling = n_cr / rule.buckling_factor;
+  } else {
+    const double lambda = n_cr > 0 ? std::sqrt(area * rule.yield_stress / n_cr) : 0.0;
+    c.buckling = ColumnCurveChi(lambda, rule.imperfection) * area * rule.yield_stress / rule.buckling_factor;
+  }
+  return c;
+}
+
+namespace {
+
+// Least area whose column-curve resistance reaches `compression`: the resistance grows
+// monotonically with the area, so bisection in log(area) from the squat bound (chi = 1).
+double ColumnCurveArea(double length, double compression, const BarRule& rule, double E) {
+  double lo = compression * rule.buckling_factor / rule.yield_stress;  // chi = 1: a lower bound
+  if (!(lo > 0)) return 0.0;
+  auto carries = [&](double a) { return BarResistance(a, length, rule, E).buckling >= compression; };
+  double hi = lo;
+  for (int k = 0; k < 2100 && !carries(hi); ++k) hi *= 2.0;  // bounded: a non-finite area ends it
+  if (hi == lo) return lo;
+  lo = hi / 2.0;
+  // 60 halvings of a factor-2 bracket leave it 1e-18 wide relative: below rounding.
+  for (int k = 0; k < 60 && hi > lo * (1 + 1e-15); ++k) {
+    const double mid = std::sqrt(lo * hi);
+    (carries(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
+MemberSizing SizeBar(double length, double compression, double min_area, const BarRule& rule, const Material& m) {
   MemberSizing b;
   b.length = length;
   b.rest_length = length;
   b.force = std::max(compression, 0.0);
   b.force_density = b.force / length;
-  const double yield_area = b.force / sigma_w;
-  const double buckling_area = EulerArea(length, buckling_sf * b.force, m.youngs_modulus);
+  const double yield_area = b.force * rule.yield_factor / rule.yield_stress;
+  const double buckling_area = rule.column_curve
+                                   ? ColumnCurveArea(length, b.force, rule, m.youngs_modulus)
+                                   : EulerArea(length, rule.buckling_factor * b.force, m.youngs_modulus);
   b.area = yield_area;
   b.governed_by = "yield";
   if (buckling_area > b.area) {

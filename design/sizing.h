@@ -25,18 +25,46 @@ struct MemberSizing {
   double stress = 0;        // force / area [Pa]
   std::string governed_by;  // bars: "yield" | "buckling" | "min_radius"; strings: "yield" |
                             // "min_radius"
+  // The force of the reference state (design/design.h), which sets the rest length [N].
+  double reference_force = 0;
+  double force_min = 0;       // smallest force over every case [N]; < 0: slack or in tension
+  double utilisation = 0;     // largest force / resistance over every case (and the dynamic check)
+  std::string governing_case; // the case of that largest utilisation
+  std::string mode;           // "yield" | "buckling" | "slack" | "tension" | "dynamic"
 };
 
-// String working at `working_stress`, or at the minimum area when that is larger (the extra
-// tension of a prestressed minimum string is part of `tension`).
-MemberSizing SizeString(double length, double tension, double min_area, double working_stress,
-                        const Material& material);
+// String working at `working_stress` under `tension`, or at the minimum area when that is
+// larger (the extra tension of a prestressed minimum string is part of `tension`); its rest
+// length makes it carry `reference_tension` at `length`.
+MemberSizing SizeString(double length, double tension, double reference_tension, double min_area,
+                        double working_stress, const Material& material);
 
-// Solid circular bar: A = max(C / sigma_w, 2 l sqrt(SF C / (pi E)), min_area).
-// Both throw ConfigError naming the material key when the area, stiffness or mass is not
-// finite (inputs at the edge of their ranges).
-MemberSizing SizeBar(double length, double compression, double min_area, double working_stress,
-                     double buckling_safety_factor, const Material& material);
+// How a solid circular pinned-pinned bar resists compression.
+struct BarRule {
+  bool column_curve = false;   // true: EN 1993-1-1 6.3.1.2; false: the paper's bare Euler load
+  double yield_stress = 0;     // f_y [Pa]
+  double yield_factor = 1;     // gamma_M0: yield resistance A f_y / gamma_M0
+  double buckling_factor = 1;  // gamma_M1 (column curve) or SF (Euler) on the buckling resistance
+  double imperfection = 0.49;  // alpha of the column curve
+};
+
+// chi(lambda) of EN 1993-1-1 eq 6.49: Phi = 0.5 [1 + alpha (lambda - 0.2) + lambda^2],
+// chi = 1 / (Phi + sqrt(Phi^2 - lambda^2)), at most 1.
+double ColumnCurveChi(double slenderness, double alpha);
+
+// The two resistances of a bar of `area` and `length` [N].
+struct BarCapacity {
+  double yield = 0;     // A f_y / gamma_M0
+  double buckling = 0;  // chi A f_y / gamma_M1, or pi E A^2 / (4 l^2) / SF (Euler)
+};
+BarCapacity BarResistance(double area, double length, const BarRule& rule, double youngs_modulus);
+
+// Solid circular bar: the least area whose resistances both carry `compression`, at least
+// `min_area`; governed_by says which bound it. Both sizers throw ConfigError naming the
+// material key when the area, stiffness or mass is not finite (inputs at the edge of their
+// ranges).
+MemberSizing SizeBar(double length, double compression, double min_area, const BarRule& rule,
+                     const Material& material);
 
 // Area of the Euler-critical solid circular bar: P_cr = pi^2 E I / l^2 with I = A^2/(4 pi).
 double EulerArea(double length, double compression, double youngs_modulus);

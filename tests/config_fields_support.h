@@ -78,6 +78,9 @@ struct CollectKeys {
   void Choice(const KeyInfo& key, const std::string&, const std::vector<std::string>&) {
     Add(key, "cplex", "");
   }
+  void Choices(const KeyInfo& key, const std::vector<std::string>&, const std::vector<std::string>&) {
+    Add(key, {"cplex"}, "[0]");
+  }
   void OptionalNumber(const KeyInfo& key, const std::optional<double>&, Range range, Absent) {
     Add(key, OutsideOf(range), "");
   }
@@ -126,6 +129,7 @@ struct SetKey {
   }
   void Bool(const KeyInfo&, bool&) {}
   void Choice(const KeyInfo& key, std::string& f, const std::vector<std::string>&) { Put(key, f); }
+  void Choices(const KeyInfo& key, std::vector<std::string>& f, const std::vector<std::string>&) { Put(key, f); }
   void OptionalNumber(const KeyInfo& key, std::optional<double>& f, Range, Absent) {
     if (prefix + key.name == target) f = value.get<double>();
   }

@@ -3,6 +3,7 @@
 
 #include <initializer_list>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/config.h"
@@ -23,9 +24,22 @@ inline bool HaveSolvers(std::initializer_list<const char*> names) {
 // The paper's planar bridge (SPEC §1): L = 12 m, F = 12000 N, beta = 10 deg, solver as given ("auto": the direct solve).
 inline Config PaperConfig(int n, const std::string& solver = "auto") {
   Config c;
+  ApplyPaperSwitches(c);
   c.bridge.n = n;
   c.design.solver = solver;
   return c;
+}
+
+// `root` (a config or sweep file as JSON) with the paper's switches (ApplyPaperSwitches)
+// written into its design and loads sections.
+inline nlohmann::json WithPaperSwitches(nlohmann::json root) {
+  nlohmann::json& design = root["design"];
+  if (!design.contains("yield_safety_factor")) design["yield_safety_factor"] = 10.0;
+  if (!design.contains("buckling_safety_factor")) design["buckling_safety_factor"] = 1.0;
+  design["self_weight"] = false;
+  design["bar_resistance"] = "euler";
+  root["loads"] = {{"cases", {"paper"}}};
+  return root;
 }
 
 // The paper's design for complexity n with default settings, computed once per process.

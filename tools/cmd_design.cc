@@ -12,6 +12,7 @@
 #include "design/plausibility.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 
@@ -49,8 +50,8 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
-  const Design design = RunDesign(config, &progress);
-  RequireStable(design);  // an unstable design is no design: exit 3, nothing written
+  // An unstable design is no design: exit 3, nothing written.
+  const Design design = DesignAndVerify(config, &progress);
   progress.Stage("writing");
   WriteDesignJson(design, json);
   progress.Finish();

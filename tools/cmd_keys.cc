@@ -21,7 +21,7 @@ const CommandSpec& KeysSpec() {
       {},
       {},
       "Prints the Markdown key tables (key, unit, default, allowed, what it controls) of the\n"
-      "config sections bridge, material, design, dynamics, structure and sweep, each after its\n"
+      "config sections bridge, material, design, loads, dynamics, structure and sweep, each after its\n"
       "heading and rules, as configs/README.md has them (the README keeps paragraphs of its own\n"
       "between a heading and its rules)."};
   return spec;
@@ -34,7 +34,7 @@ int RunKeysCommand(const std::vector<std::string>& args) {
     std::cout << Usage(spec);
     return 0;
   }
-  for (const SectionInfo* section : {&kBridgeSection, &kMaterialSection, &kDesignSection,
+  for (const SectionInfo* section : {&kBridgeSection, &kMaterialSection, &kDesignSection, &kLoadsSection,
                                      &kDynamicsSection, &kStructureSection}) {
     std::cout << ConfigSectionText(*section) << "\n";
   }

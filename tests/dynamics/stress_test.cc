@@ -42,6 +42,7 @@ void Describe(const std::string& what, const SimulationSummary& s) {
 
 TEST_CASE("1e6 RK4 steps: bar lengths and energy stay bounded", "[stress]") {
   Config c;
+  ApplyPaperSwitches(c);
   c.bridge.n = 1;
   const DynamicModel m = BuildDynamicModel(RunDesign(c));
   // The paper's n = 1 run (periodic slack bouncing) for 10 s at dt = 1e-5: 1e6 steps, 85
@@ -68,6 +69,7 @@ TEST_CASE("slack chatter: thousands of slack crossings, no spurious energy gain"
   // Low prestress (deck strings at their stretched length: no deck prestress) and a large
   // push (0.2 m) on n = 3: strings go slack and re-tension thousands of times.
   Config c;
+  ApplyPaperSwitches(c);
   c.bridge.n = 3;
   ModelOptions o;
   o.prestrain = {{"deck", 1.0}};
@@ -84,6 +86,7 @@ TEST_CASE("slack chatter: thousands of slack crossings, no spurious energy gain"
 
 TEST_CASE("extreme prestrain p = 0.9 runs at its own stable step", "[stress]") {
   Config c;
+  ApplyPaperSwitches(c);
   c.bridge.n = 2;
   ModelOptions o;
   o.prestrain = {{"deck", 0.9}};
@@ -113,6 +116,7 @@ void CheckBehavesLikeAnyRun(const Config& c, const std::string& label) {
 TEST_CASE("extreme geometry: beta = 1 and 80 degrees", "[stress]") {
   for (const double beta : {1.0, 80.0}) {
     Config c;
+    ApplyPaperSwitches(c);
     c.bridge.n = 3;
     c.bridge.beta_deg = beta;
     CheckBehavesLikeAnyRun(c, "beta = " + std::to_string(beta));
@@ -122,6 +126,7 @@ TEST_CASE("extreme geometry: beta = 1 and 80 degrees", "[stress]") {
 TEST_CASE("very heavy and very light loads", "[stress]") {
   for (const double payload : {1.2e2, 1.2e7}) {
     Config c;
+    ApplyPaperSwitches(c);
     c.bridge.n = 3;
     c.bridge.payload = payload;
     CheckBehavesLikeAnyRun(c, "payload " + std::to_string(payload) + " N");
@@ -130,6 +135,7 @@ TEST_CASE("very heavy and very light loads", "[stress]") {
 
 TEST_CASE("n = 12: design and a short run with the automatic integrator", "[stress]") {
   Config c;
+  ApplyPaperSwitches(c);
   c.bridge.n = 12;
   const DynamicModel m = BuildDynamicModel(RunDesign(c));
   // From the design state, under the design loads: 1e-4 s is ~250x RK4's limit here (more
@@ -148,6 +154,7 @@ TEST_CASE("n = 12: design and a short run with the automatic integrator", "[stre
 
 TEST_CASE("a step too large stops with the step, the time and a safe dt", "[stress]") {
   Config c;
+  ApplyPaperSwitches(c);
   c.bridge.n = 3;
   const DynamicModel m = BuildDynamicModel(RunDesign(c));
   const double limit = Rk4Limit(m);  // 2.8e-4 s (SPEC.md §9)

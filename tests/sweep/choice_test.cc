@@ -8,6 +8,7 @@
 
 #include "design/design.h"
 #include "sweep/sweep.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
@@ -17,7 +18,7 @@ using nlohmann::json;
 SweepSpec Spec(const std::string& sweep_json) {
   json root = {{"bridge", {{"beta_deg", 10}}}};
   root["sweep"] = json::parse(sweep_json);
-  return ParseSweepSpec(root);
+  return ParseSweepSpec(test::WithPaperSwitches(root));
 }
 
 std::vector<CandidateRow> RunAll(const SweepSpec& spec) {

@@ -13,17 +13,14 @@
 #include "sweep/candidate.h"
 #include "sweep/first_frequency.h"
 #include "sweep/travelling_load.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
 
 using nlohmann::json;
 
-Config Planar(int n) {
-  Config c;
-  c.bridge.n = n;
-  return c;
-}
+Config Planar(int n) { return test::PaperConfig(n); }
 
 TEST_CASE("The sparse solver finds the dense lowest frequency", "[sweep]") {
   for (const int n : {3, 5}) {
@@ -57,7 +54,7 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "
   json root = {{"bridge", {{"beta_deg", 10}}},
                {"design", {{"deck_string_min_radius", 0.0}}},
                {"sweep", {{"n", {2}}}}};
-  const SweepSpec spec = ParseSweepSpec(root);
+  const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
   REQUIRE(grid.size() == 1);
   const CandidateRow row = EvaluateCandidate(spec, grid[0]);
@@ -68,7 +65,7 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "
 
 TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass", "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", {{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}}}};
-  const SweepSpec spec = ParseSweepSpec(root);
+  const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
   REQUIRE(grid.size() == 3);
   const CandidateRow design = EvaluateCandidate(spec, grid[0]);
@@ -91,7 +88,7 @@ TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and 
   // keep_area: the paper's experiment; the implied stress is far past the allowed one.
   root["sweep"]["prestrain_sizing"] = "keep_area";
   root["sweep"]["constraints"] = {{"prestress_within_allowed", true}};
-  const SweepSpec keep = ParseSweepSpec(root);
+  const SweepSpec keep = ParseSweepSpec(test::WithPaperSwitches(root));
   const CandidateRow kept = EvaluateCandidate(keep, grid[1]);
   CHECK(kept.deck_string_area_factor == 1.0);
   CHECK(kept.deck_strings == design.deck_strings);

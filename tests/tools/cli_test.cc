@@ -165,11 +165,11 @@ TEST_CASE("help lists the design command and exits 0") {
   CHECK(r.out.find("-o, --output OUT.json") != std::string::npos);
 }
 
-TEST_CASE("the default config gives the paper's n = 3 design") {
+TEST_CASE("the paper's n = 3 config gives the paper's n = 3 design") {
   const fs::path dir = FreshDir("good");
   // A parent directory that does not exist yet: the command creates it.
   const fs::path out = dir / "nested" / "OUT.json";
-  const Result r = Run(dir, "design " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") +
+  const Result r = Run(dir, "design " + Quote(TBRIDGE_SOURCE_DIR "/configs/paper_n3.json") +
                                 " -o " + Quote(out.string()));
   INFO("stderr: " << r.err);
   REQUIRE(r.exited);
@@ -236,16 +236,22 @@ TEST_CASE("the default config gives the paper's n = 3 design") {
   CHECK_THAT(r.out, Catch::Contains("stability: stable"));
   // Reactions: the two supports (nodes 15 and 16) each carry half of the 7 deck loads of
   // f = 2383.23 N (SPEC §3; printed to 6 digits, so 0.5e-2 N per load).
-  REQUIRE(d.at("reactions").size() == 2);
+  // Listed for the reference state and again for the paper's one case, solved statically.
+  REQUIRE(d.at("reactions").size() == 4);
   for (const json& reaction : d.at("reactions")) {
     CHECK(reaction.at("force")[1].get<double>() == Approx(3.5 * 2383.23).margin(3.5 * 0.005));
   }
+  // The paper's design state is its reference: the static solve of its one case starts in
+  // equilibrium and stays there (deflection at rounding: 1e-12 m is a thousandth of a micron).
+  REQUIRE(d.at("deflection_max").size() == 1);
+  CHECK(d.at("deflection_max")[0].at("deflection").get<double>() < 1e-12);
+  CHECK(d.at("verdict").at("pass") == true);
 }
 
 TEST_CASE("an unstable design exits 3, says why and writes nothing") {
   // Without deck-string prestress each bar of the planar bridge is an inverted pendulum on
   // its V (docs/topology.md): the reduced stiffness has negative pivots.
-  ExpectCleanFailure("unstable", R"({"bridge": {"n": 2}, "design": {"deck_string_min_radius": 0}})", 3,
+  ExpectCleanFailure("unstable", R"({"bridge": {"n": 2}, "design": {"deck_string_min_radius": 0}, "loads": {"cases": ["paper"]}})", 3,
                      {"unstable", "negative", "design.deck_string_min_radius"});
 }
 

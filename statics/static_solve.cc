@@ -1,0 +1,228 @@
+#include "statics/static_solve.h"
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+
+namespace tbridge {
+
+namespace {
+
+// The free coordinates: dim per free node, x-y only for a planar structure.
+struct DofMap {
+  int dim = 3;
+  std::vector<int> first;  // per node, its first unknown or -1 (fixed)
+  int count = 0;
+};
+
+DofMap MapDofs(const Structure& s) {
+  DofMap m;
+  m.dim = s.dim();
+  m.first.assign(s.num_nodes(), -1);
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (!s.fixed[v]) m.first[v] = m.count, m.count += m.dim;
+  }
+  return m;
+}
+
+double Tension(double k, double rest, double length) { return length > rest ? k * (length - rest) : 0.0; }
+
+// Adds `force` on node v to the residual (free coordinates only).
+void AddForce(const DofMap& map, int v, const Eigen::Vector3d& force, Eigen::VectorXd& r) {
+  if (map.first[v] < 0) return;
+  for (int a = 0; a < map.dim; ++a) r[map.first[v] + a] += force[a];
+}
+
+// Residual of equilibrium at the free coordinates and of the bar constraints.
+void Residual(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x, const Eigen::VectorXd& lambda,
+              const Eigen::Matrix3Xd& loads, Eigen::VectorXd& r, Eigen::VectorXd& g) {
+  const Structure& s = m.structure;
+  r.setZero(map.count);
+  for (int v = 0; v < s.num_nodes(); ++v) AddForce(map, v, loads.col(v), r);
+  for (int k = 0; k < s.num_strings(); ++k) {
+    const Member& e = s.strings[k];
+    const Eigen::Vector3d d = x.col(e.j) - x.col(e.i);
+    const double len = d.norm();
+    const double t = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
+    AddForce(map, e.i, t / len * d, r);
+    AddForce(map, e.j, -t / len * d, r);
+  }
+  g.resize(s.num_bars());
+  for (int b = 0; b < s.num_bars(); ++b) {
+    const Member& e = s.bars[b];
+    const Eigen::Vector3d d = x.col(e.j) - x.col(e.i);
+    AddForce(map, e.i, -2.0 * lambda[b] * d, r);
+    AddForce(map, e.j, 2.0 * lambda[b] * d, r);
+    const double l = s.Length(e);
+    g[b] = d.squaredNorm() - l * l;
+  }
+}
+
+// The saddle-point matrix [dR/dx  C^T; C  0] at (x, lambda).
+Eigen::SparseMatrix<double> Jacobian(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x,
+                                     const Eigen::VectorXd& lambda) {
+  const Structure& s = m.structure;
+  const int n = map.count, dim = map.dim;
+  std::vector<Eigen::Triplet<double>> t;
+  // Block [[B, -B], [-B, B]] between nodes i and j.
+  auto pair_block = [&](int i, int j, const Eigen::Matrix3d& B) {
+    const int ends[2] = {i, j};
+    for (int p = 0; p < 2; ++p) {
+      for (int q = 0; q < 2; ++q) {
+        if (map.first[ends[p]] < 0 || map.first[ends[q]] < 0) continue;
+        const double sign = p == q ? 1.0 : -1.0;
+        for (int a = 0; a < dim; ++a) {
+          for (int c = 0; c < dim; ++c) t.emplace_back(map.first[ends[p]] + a, map.first[ends[q]] + c, sign * B(a, c));
+        }
+      }
+    }
+  };
+  for (int k = 0; k < s.num_strings(); ++k) {
+    const Member& e = s.strings[k];
+    const Eigen::Vector3d d = x.col(e.j) - x.col(e.i);
+    const double len = d.norm();
+    if (len <= m.string_rest_length[k]) continue;  // slack: no stiffness
+    const Eigen::Vector3d u = d / len;
+    const double tension = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
+    const Eigen::Matrix3d K = m.string_stiffness[k] * u * u.transpose() +
+                              tension / len * (Eigen::Matrix3d::Identity() - u * u.transpose());
+    pair_block(e.i, e.j, -K);  // dR/dx of a string is minus its tangent stiffness
+  }
+  for (int b = 0; b < s.num_bars(); ++b) {
+    const Member& e = s.bars[b];
+    pair_block(e.i, e.j, 2.0 * lambda[b] * Eigen::Matrix3d::Identity());
+    const Eigen::Vector3d d = x.col(e.j) - x.col(e.i);
+    const int row = n + b;
+    for (int a = 0; a < dim; ++a) {
+      if (map.first[e.j] >= 0) {
+        t.emplace_back(row, map.first[e.j] + a, 2.0 * d[a]);
+        t.emplace_back(map.first[e.j] + a, row, 2.0 * d[a]);
+      }
+      if (map.first[e.i] >= 0) {
+        t.emplace_back(row, map.first[e.i] + a, -2.0 * d[a]);
+        t.emplace_back(map.first[e.i] + a, row, -2.0 * d[a]);
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> J(n + s.num_bars(), n + s.num_bars());
+  J.setFromTriplets(t.begin(), t.end());
+  return J;
+}
+
+}  // namespace
+
+StaticState StateAt(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const Eigen::VectorXd& bar_compression,
+                    const Eigen::Matrix3Xd& loads) {
+  const Structure& s = m.structure;
+  StaticState out;
+  out.nodes = nodes;
+  out.bar_compression = bar_compression;
+  out.string_tension.resize(s.num_strings());
+  // Net force of the members and loads on every node; at a fixed node the reaction cancels it.
+  Eigen::Matrix3Xd net = loads;
+  for (int k = 0; k < s.num_strings(); ++k) {
+    const Member& e = s.strings[k];
+    const Eigen::Vector3d d = nodes.col(e.j) - nodes.col(e.i);
+    const double len = d.norm();
+    const double t = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
+    out.string_tension[k] = t;
+    net.col(e.i) += t / len * d;
+    net.col(e.j) -= t / len * d;
+  }
+  for (int b = 0; b < s.num_bars(); ++b) {
+    const Member& e = s.bars[b];
+    const Eigen::Vector3d d = nodes.col(e.j) - nodes.col(e.i);
+    const double len = d.norm();
+    net.col(e.i) -= bar_compression[b] / len * d;
+    net.col(e.j) += bar_compression[b] / len * d;
+  }
+  out.reactions = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (s.fixed[v]) out.reactions.col(v) = -net.col(v);
+  }
+  return out;
+}
+
+StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
+                         const Eigen::Matrix3Xd& loads) {
+  const Structure& s = m.structure;
+  const DofMap map = MapDofs(s);
+  const int nb = s.num_bars();
+  Eigen::Matrix3Xd x = start.nodes;
+  Eigen::VectorXd lambda(nb);
+  for (int b = 0; b < nb; ++b) lambda[b] = start.bar_compression[b] / (2.0 * s.Length(s.bars[b]));
+  // Tolerances: forces to 1e-10 of the largest load or member force (a few hundred rounding
+  // steps of the sums at a node); bar lengths to 1e-12 relative.
+  double force_scale = std::max(loads.cwiseAbs().maxCoeff(), start_loads.cwiseAbs().maxCoeff());
+  if (start.bar_compression.size()) force_scale = std::max(force_scale, start.bar_compression.cwiseAbs().maxCoeff());
+  if (start.string_tension.size()) force_scale = std::max(force_scale, start.string_tension.cwiseAbs().maxCoeff());
+  force_scale = std::max(force_scale, 1e-300);
+  double min_bar = 1e300;
+  for (const Member& e : s.bars) min_bar = std::min(min_bar, s.Length(e));
+  StaticResult out;
+  Eigen::VectorXd r, g, rhs(map.count + nb), step;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  double done = 0, dt = 1.0;
+  auto converged = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& gg) {
+    const double rmax = rr.size() ? rr.cwiseAbs().maxCoeff() : 0.0;
+    double gmax = 0;
+    for (int b = 0; b < nb; ++b) gmax = std::max(gmax, std::abs(gg[b]) / std::pow(s.Length(s.bars[b]), 2));
+    return rmax <= 1e-10 * force_scale && gmax <= 1e-12;
+  };
+  while (done < 1.0) {
+    const double target = std::min(1.0, done + dt);
+    const Eigen::Matrix3Xd f = start_loads + target * (loads - start_loads);
+    const Eigen::Matrix3Xd x0 = x;
+    const Eigen::VectorXd lambda0 = lambda;
+    bool ok = false;
+    for (int it = 0; it < 40; ++it) {
+      Residual(m, map, x, lambda, f, r, g);
+      if (converged(r, g)) {
+        ok = true;
+        break;
+      }
+      ++out.newton_iterations;
+      lu.compute(Jacobian(m, map, x, lambda));
+      if (lu.info() != Eigen::Success) break;
+      rhs << -r, -g;
+      step = lu.solve(rhs);
+      if (!step.allFinite()) break;
+      // Limit a step to a tenth of the shortest bar, so a slack switch cannot throw the
+      // structure across a configuration.
+      double largest = 0;
+      for (int v = 0; v < s.num_nodes(); ++v) {
+        if (map.first[v] >= 0) largest = std::max(largest, step.segment(map.first[v], map.dim).norm());
+      }
+      const double scale = largest > 0.1 * min_bar ? 0.1 * min_bar / largest : 1.0;
+      for (int v = 0; v < s.num_nodes(); ++v) {
+        if (map.first[v] >= 0) x.col(v).head(map.dim) += scale * step.segment(map.first[v], map.dim);
+      }
+      lambda += scale * step.tail(nb);
+    }
+    ++out.load_steps;
+    if (ok) {
+      done = target;
+      dt = std::min(1.0, 2.0 * dt);
+      continue;
+    }
+    x = x0;
+    lambda = lambda0;
+    dt *= 0.5;
+    if (dt < 1e-4) {
+      out.message = "Newton did not converge below a load step of 1e-4 of the load (at " + std::to_string(done) +
+                    " of it): the structure has no nearby equilibrium (a mechanism, or strings slack)";
+      break;
+    }
+  }
+  out.converged = done >= 1.0;
+  Eigen::VectorXd compression(nb);
+  for (int b = 0; b < nb; ++b) compression[b] = 2.0 * lambda[b] * s.Length(s.bars[b]);
+  out.state = StateAt(m, x, compression, loads);
+  Residual(m, map, x, lambda, loads, r, g);
+  out.residual = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
+  for (int k = 0; k < s.num_strings(); ++k) out.slack_strings += out.state.string_tension[k] == 0.0;
+  return out;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,44 @@
+#include "verify/verified_design.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "verify/static_check.h"
+
+namespace tbridge {
+
+Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
+  Resizing record;
+  std::vector<double> floor;
+  for (record.iterations = 1;; ++record.iterations) {
+    Design d = RunDesign(config, record.iterations == 1 ? progress : nullptr, floor.empty() ? nullptr : &floor);
+    RequireStable(d);
+    d.statics = CheckStatics(d);
+    record.structure_mass_kg.push_back(d.mass.structure);
+    const Verdict verdict = DesignVerdict(d);
+    record.converged = verdict.pass;
+    const bool stop = record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
+    if (verdict.pass || stop) {
+      if (!verdict.pass) record.why = verdict.summary;
+      d.resizing = record;
+      return d;
+    }
+    const int nb = static_cast<int>(d.bars.size());
+    if (floor.empty()) floor.assign(d.bars.size() + d.strings.size(), 0.0);
+    // Stiffness: slack in service or too much deflection stiffens every string alike.
+    bool slack = false;
+    for (const MemberSizing& m : d.strings) slack = slack || (m.mode == "slack" && m.utilisation > 1.0 + 1e-9);
+    const double excess = d.statics.deflection_max_m / d.statics.deflection_limit_m;
+    const double stiffen = std::max(excess > 1.0 ? excess : 1.0, slack ? 1.1 : 1.0);
+    for (int j = 0; j < static_cast<int>(floor.size()); ++j) {
+      const MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+      double grow = 1.0;
+      if (m.utilisation > 1.0 + 1e-9 && m.mode != "slack") grow = m.mode == "buckling" ? std::sqrt(m.utilisation) : m.utilisation;
+      if (j >= nb) grow = std::max(grow, stiffen);
+      // 1e-6 above the need, so a member sized exactly to it is not left a rounding short.
+      if (grow > 1.0) floor[j] = std::max(floor[j], m.area * grow * (1.0 + 1e-6));
+    }
+  }
+}
+
+}  // namespace tbridge

@@ -1,0 +1,23 @@
+// A design that holds under its own checks: the minimum-mass design, its static check
+// (verify/static_check.h), and a fully-stressed resizing of what fails, repeated.
+//
+// Each pass designs with per-member area floors (RunDesign's `area_floor`), so the self-weight
+// fixed point, the prestress and the rest lengths are recomputed with the new sizes. A member
+// that fails in yield grows by its utilisation, one that buckles by its square root (Euler's
+// load grows with A^2); slack strings or a deflection past its limit stiffen every string by
+// the deflection's excess (at least 10 %). Floors only rise, so no member shrinks while it
+// fails. The loop ends when the verdict passes or after `max_iterations`, saying why not.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/progress.h"
+#include "design/design.h"
+
+namespace tbridge {
+
+// The last design, with its static check and its `resizing` record.
+Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 30);
+
+}  // namespace tbridge
