@@ -41,6 +41,10 @@ void ApplyPaperSwitches(Config& c) {
   c.design.buckling_safety_factor = 1.0;
   c.design.bar_resistance = "euler";
   c.loads.cases = {"paper"};
+  if (c.dynamics) {
+    c.dynamics->deck_inertia = false;
+    c.dynamics->gravity_on_structure = false;
+  }
 }
 
 Config ParseConfig(const nlohmann::json& root) {
@@ -69,7 +73,14 @@ Config ParseConfig(const nlohmann::json& root) {
     c.design = ParseSection<DesignConfig>(top.Section("design"));
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
   }
-  if (top.Has("dynamics")) c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
+  if (top.Has("dynamics")) {
+    c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
+    // For a designed bridge the structure's weight in a run follows the design's, unless set.
+    const nlohmann::json& dynamics = root.at("dynamics");
+    if (!c.structure && dynamics.is_object() && !dynamics.contains("gravity_on_structure")) {
+      c.dynamics->gravity_on_structure = c.design.self_weight;
+    }
+  }
   top.Finish();
   return c;
 }

@@ -97,7 +97,8 @@ Config LoadConfig(const std::string& path);
 // rules across keys. Throws ConfigError naming the key path, the value and what is allowed.
 void Validate(const Config& config);
 // The paper's switches (SPEC.md): its one unfactored load case, no self-weight, yield factor
-// 10, plain Euler buckling with factor 1. The paper's configs write them out.
+// 10, plain Euler buckling with factor 1, and in a run no deck inertia and no structure
+// weight. The paper's configs write them out.
 void ApplyPaperSwitches(Config& config);
 // The resolved config, every default filled in, for echoing into outputs.
 nlohmann::json ToJson(const Config& config);

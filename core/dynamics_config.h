@@ -109,6 +109,7 @@ struct DynamicsConfig {
   FrequencyConfig frequency;
   GuardConfig guard;
   bool gravity_on_structure = false;  // add m g (down) of bars and node masses to the loads
+  bool deck_inertia = true;           // deck beams (and payload) as masses at the deck nodes
   LimitsConfig limits;
 };
 

@@ -166,8 +166,15 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
   v.Section("guard", d.guard);
   v.Bool(
       KeyInfo{"gravity_on_structure", "–",
-              "add the weight of bars and node masses to the loads (the paper's runs have none)"},
+              "add the weight of bars and node masses to the loads (the paper's runs have none). For a "
+              "designed bridge it follows `design.self_weight` unless given; the run then starts from the "
+              "static equilibrium under the loads it applies (the members' weight lumped as the dynamic model "
+              "lumps its masses)"},
       d.gravity_on_structure);
+  v.Bool(KeyInfo{"deck_inertia", "–",
+                 "a designed bridge's deck beams (and the payload, where the run's loads carry its weight) are "
+                 "masses at the deck nodes, not only loads. The paper's Table 5–6 runs leave them out (false)"},
+         d.deck_inertia);
   v.Section("limits", d.limits);
 }
 

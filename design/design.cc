@@ -147,6 +147,8 @@ Verdict DesignVerdict(const Design& d) {
   std::ostringstream os;
   os << (v.pass ? "PASS: " : "FAIL: ") << "utilisation_max " << v.utilisation_max << " (" << v.governing << ")";
   for (const std::string& f : fails) os << "; " << f;
+  // A skipped dynamic check is said, never silent; it does not fail the static checks.
+  if (!d.dynamics.done) os << "; dynamic check " << (d.dynamics.note.empty() ? "not run" : d.dynamics.note);
   v.summary = os.str();
   return v;
 }
@@ -423,6 +425,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   d.alpha = solution.alpha;
   d.reference_forces = reference_forces;
   d.loads = reference_loads;
+  d.reference = reference;
   // Stability with the bars held: sparse and roughly linear, so it runs at every n; the dense
   // critical load factor only where it costs well under a second (n <= 6).
   std::vector<double> string_stiffness(d.strings.size());

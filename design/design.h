@@ -35,6 +35,7 @@ struct Design {
   // payload) with its switches; else the permanent load G (deck beams, superimposed dead load
   // and, with design.self_weight, the members' weight).
   Eigen::Matrix3Xd loads;
+  LoadCase reference;              // the factors of `loads` on the base actions
   Actions actions;                 // characteristic base actions and deck stations
   std::vector<LoadCase> cases;     // the load cases sized and checked for
   std::vector<std::string> notes;  // cases left out, and why
@@ -44,6 +45,7 @@ struct Design {
   bool unchecked_cases = false;      // some asked-for cases were left out (notes say which)
   StaticCheck statics;               // the nonlinear static check, when it was run (verify/)
   Resizing resizing;                 // the verification's resizing, when it was run (verify/)
+  DynamicCheck dynamics;             // the dynamic check, when it was run (verify/)
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;

@@ -195,6 +195,18 @@ json CasesJson(const Design& d) {
   return out;
 }
 
+json DynamicsJson(const Design& d) {
+  const DynamicCheck& c = d.dynamics;
+  json groups = json::array();
+  for (const GroupAmplification& g : c.groups) {
+    groups.push_back({{"group", g.group}, {"static_peak", g.static_peak}, {"dynamic_peak", g.dynamic_peak},
+                      {"amplification", g.amplification}});
+  }
+  return {{"done", c.done}, {"note", c.note}, {"scenario", "paper_travelling (eqs 50-51) at service level"},
+          {"integrator", c.integrator}, {"dt", c.dt}, {"steps", c.steps}, {"duration", c.duration},
+          {"peak_deck_displacement", c.peak_deck_displacement}, {"amplification", groups}};
+}
+
 json VerdictJson(const Design& d) {
   const Verdict v = DesignVerdict(d);
   return {{"pass", v.pass}, {"summary", v.summary}, {"notes", d.notes}};
@@ -239,6 +251,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("config", ToJson(d.config));
   field("deck", deck);
   field("deflection_max", DeflectionsJson(d));
+  field("dynamic_check", DynamicsJson(d));
   field("equilibrium_residual_N", d.equilibrium_residual);
   field("mass", mass);
   os << "  \"members\": [";
@@ -334,6 +347,16 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg%s", d.resizing.iterations,
                 d.resizing.structure_mass_kg.front(), d.resizing.structure_mass_kg.back(),
                 d.resizing.converged ? "" : " (did not converge)"));
+  }
+  if (d.dynamics.done) {
+    std::string amp;
+    for (const GroupAmplification& g : d.dynamics.groups) amp += Format(" %s %.3g", g.group.c_str(), g.amplification);
+    line(Format("dynamic check: the paper's travelling load, %s at dt = %.3g s, %ld steps; peak deck displacement "
+                "%.4g m; dynamic amplification per group:%s",
+                d.dynamics.integrator.c_str(), d.dynamics.dt, d.dynamics.steps, d.dynamics.peak_deck_displacement,
+                amp.c_str()));
+  } else if (!d.dynamics.note.empty()) {
+    line("dynamic check: " + d.dynamics.note);
   }
   line(DesignVerdict(d).summary);
   line("");

@@ -32,6 +32,25 @@ struct StaticCheck {
   bool all_converged = true;
 };
 
+// The dynamic check (verify/dynamic_check.h): the paper's travelling load run at service level.
+struct GroupAmplification {
+  std::string group;          // member group ("deck", "substructure", "vertical", ...)
+  double static_peak = 0;     // largest force of the group's members over the static stations [N]
+  double dynamic_peak = 0;    // largest in the run [N]
+  double amplification = 0;   // the largest dynamic / static ratio of a member of the group
+};
+
+struct DynamicCheck {
+  bool done = false;
+  std::string note;        // why it was skipped, when not done
+  std::string integrator;  // as resolved
+  double dt = 0;           // [s]
+  long steps = 0;
+  double duration = 0;     // [s]
+  double peak_deck_displacement = 0;  // [m], from the run's start (static equilibrium)
+  std::vector<GroupAmplification> groups;
+};
+
 // The resizing loop's record (verify/verified_design.h).
 struct Resizing {
   int iterations = 0;                     // designs run

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "design/static_model.h"
 
 namespace tbridge {
 
@@ -60,8 +61,36 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     m.strings.push_back(ds);
   }
   ShareStringMass(m, options.string_mass);
-  if (options.gravity_on_structure) AddStructureWeight(m);
+  if (options.deck_inertia) AddDeckInertia(m, design, design.reference.factor[kPayloadFull]);
+  if (options.gravity_on_structure) {
+    // The design's own lumping of the members' weight gives way to the model's.
+    if (design.reference.factor[kSelfWeight] != 0) m.loads -= design.reference.factor[kSelfWeight] * design.actions.base[kSelfWeight];
+    AddStructureWeight(m);
+    SettleAtEquilibrium(m, design);
+  }
   return m;
+}
+
+void AddDeckInertia(DynamicModel& m, const Design& d, double payload_factor) {
+  const BridgeConfig& b = d.config.bridge;
+  const double g = d.config.design.gravity;
+  const double planes = b.planes;
+  // Per deck node: one beam of each plane's share, and the load per metre over one section.
+  double per_node = d.deck.section_mass / planes;
+  if (g > 0) {
+    per_node += d.config.loads.superimposed_dead_n_per_m * d.deck.section_length / g / planes;
+    per_node += payload_factor * b.payload / b.span * d.deck.section_length / g / planes;
+  }
+  for (int v : d.topology.deck_nodes) m.node_mass(v) += per_node;
+}
+
+void SettleAtEquilibrium(DynamicModel& m, const Design& d) {
+  if ((m.loads - d.loads).cwiseAbs().maxCoeff() == 0.0) return;
+  const StaticModel statics = StaticModelOf(d);
+  const StaticState start = ReferenceState(statics, d);
+  const StaticResult r = SolveStatic(statics, start, d.loads, m.loads);
+  if (!r.converged) throw ModelError("the run's initial static equilibrium: " + r.message);
+  m.positions = r.state.nodes;
 }
 
 void ShareStringMass(DynamicModel& m, StringMassMode mode) {

@@ -64,6 +64,7 @@ struct ModelOptions {
   double damping = 0;                      // c for every string [N s/m], >= 0
   std::vector<StringPrestrain> prestrain;  // at most one entry per group
   bool gravity_on_structure = false;       // add -m g (y) of bars and node masses to the loads
+  bool deck_inertia = false;               // deck beams (and payload in the loads) as deck-node masses
 };
 
 // What a prestrain implies (SPEC.md §7): the stress E (s - L0) / L0 at the design length s.
@@ -99,6 +100,15 @@ void ShareStringMass(DynamicModel& model, StringMassMode mode);
 // Adds the weight -m g (along y, g = model.gravity) of the bars (half at each end) and the
 // node masses to model.loads.
 void AddStructureWeight(DynamicModel& model);
+
+// Adds the deck beams' mass (and the superimposed dead load's) at the deck nodes of a designed
+// bridge, and `payload_factor` times the payload's: mass, not weight, which the loads carry.
+void AddDeckInertia(DynamicModel& model, const Design& design, double payload_factor);
+
+// Moves `model.positions` to the static equilibrium under `model.loads` (statics/), from the
+// design's reference state; throws ModelError when there is none. A no-op when the loads are
+// the design's own.
+void SettleAtEquilibrium(DynamicModel& model, const Design& design);
 
 // The implied stress of each prestrained group of `options` in `model` (built with them).
 std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const Design& design,

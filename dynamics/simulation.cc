@@ -44,6 +44,8 @@ class Monitor {
     taut_.resize(model.strings.size());
     ever_slack_.assign(model.strings.size(), 0);
     summary_.slack.per_string.assign(model.strings.size(), 0);
+    summary_.peak_string_tension.assign(model.strings.size(), 0.0);
+    summary_.min_string_strain.assign(model.strings.size(), std::numeric_limits<double>::infinity());
     if (probe_) {
       probe_ws_ = std::make_unique<ClassKWorkspace>(*probe_);
       probe_dy_.resize(probe_->state_size());
@@ -161,6 +163,7 @@ class Monitor {
       }
       const double len = std::sqrt(len2);
       const bool taut = len >= s.rest_length;
+      summary_.min_string_strain[k] = std::min(summary_.min_string_strain[k], (len - s.rest_length) / s.rest_length);
       double tension = 0;
       if (taut) {
         const double stretch = len - s.rest_length;
@@ -182,6 +185,7 @@ class Monitor {
         ++summary_.slack.per_string[k];
         ++summary_.slack.total;
       }
+      summary_.peak_string_tension[k] = std::max(summary_.peak_string_tension[k], tension);
       if (k < model_.string_area.size() && model_.string_area[k] > 0) {
         const double stress = tension / model_.string_area[k];
         if (stress > summary_.max_string_stress) {
@@ -283,6 +287,7 @@ ModelOptions ModelOptionsOf(const DynamicsConfig& c) {
   o.damping = c.damping_c;
   for (const PrestrainConfig& p : c.prestrain) o.prestrain.push_back({p.group, p.ratio});
   o.gravity_on_structure = c.gravity_on_structure;
+  o.deck_inertia = c.deck_inertia;
   return o;
 }
 

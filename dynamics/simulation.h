@@ -80,6 +80,9 @@ struct SimulationSummary {
   // come from the class-k multipliers (the class-1 closed form on a class-1 model) with the
   // loads of the step just taken: one extra right-hand side and sparse solve per step.
   std::vector<double> peak_bar_compression, peak_bar_tension;
+  // Per model string, at the start and after the accepted steps: the largest tension [N] and
+  // the smallest strain (s - L0) / L0 (negative: slack that deep).
+  std::vector<double> peak_string_tension, min_string_strain;
   std::vector<PrestrainReport> prestrain;
   bool has_frequency = false;
   FrequencyEstimate frequency;     // deck measurement of SPEC.md §9

@@ -186,9 +186,11 @@ int RunModesCommand(const std::vector<std::string>& args) {
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
-  // A "dynamics" section sets the model (string mass, prestrain, gravity); the paper's
-  // model otherwise.
-  const ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
+  // A "dynamics" section sets the model (string mass, prestrain, gravity, deck inertia);
+  // otherwise the paper's model, with the deck's inertia unless the config keeps the paper's
+  // switches (its one load case).
+  ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
+  if (!config.dynamics && !config.structure) options.deck_inertia = config.loads.cases != std::vector<std::string>{"paper"};
   std::optional<Design> design;
   if (!config.structure) {
     design = RunDesign(config, &progress);

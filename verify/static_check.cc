@@ -4,18 +4,9 @@
 #include <cmath>
 
 #include "design/case_envelope.h"
+#include "design/static_model.h"
 
 namespace tbridge {
-
-StaticModel StaticModelOf(const Design& d) {
-  StaticModel m;
-  m.structure = d.topology.structure;
-  for (const MemberSizing& s : d.strings) {
-    m.string_stiffness.push_back(s.stiffness);
-    m.string_rest_length.push_back(s.rest_length);
-  }
-  return m;
-}
 
 namespace {
 
@@ -47,8 +38,7 @@ StaticCheck CheckStatics(Design& d, int max_stations) {
   const Structure& s = d.topology.structure;
   const StaticModel model = StaticModelOf(d);
   const int nb = s.num_bars();
-  Eigen::VectorXd compression = d.reference_forces.head(nb);
-  const StaticState start = StateAt(model, s.nodes, compression, d.loads);
+  const StaticState start = ReferenceState(model, d);
   const BarRule rule = BarRuleOf(d.config);
   const double E = d.config.material.youngs_modulus;
   const double sigma_w = d.config.material.yield_stress / d.config.design.yield_safety_factor;

@@ -14,9 +14,6 @@
 
 namespace tbridge {
 
-// The static model of a design: its structure with each string's stiffness and rest length.
-StaticModel StaticModelOf(const Design& design);
-
 // Solves every case (travelling families at up to `max_stations` evenly spaced stations) and
 // raises each member's utilisation where a nonlinear force exceeds the linear one: bars and
 // strings under the ultimate cases, slack strings under the serviceability cases (mode

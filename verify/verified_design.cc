@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 
 namespace tbridge {
@@ -14,10 +15,14 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     Design d = RunDesign(config, record.iterations == 1 ? progress : nullptr, floor.empty() ? nullptr : &floor);
     RequireStable(d);
     d.statics = CheckStatics(d);
+    d.dynamics = CheckDynamics(d);
     record.structure_mass_kg.push_back(d.mass.structure);
     const Verdict verdict = DesignVerdict(d);
     record.converged = verdict.pass;
-    const bool stop = record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
+    // The paper's design is the paper's: with its switches the checks report, and resize nothing.
+    const bool paper = config.loads.cases == std::vector<std::string>{"paper"};
+    const bool stop =
+        paper || record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
     if (verdict.pass || stop) {
       if (!verdict.pass) record.why = verdict.summary;
       d.resizing = record;
@@ -28,6 +33,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     // Stiffness: slack in service or too much deflection stiffens every string alike.
     bool slack = false;
     for (const MemberSizing& m : d.strings) slack = slack || (m.mode == "slack" && m.utilisation > 1.0 + 1e-9);
+    // The dynamic demand grows a member like a static one (by its utilisation, conservatively).
     const double excess = d.statics.deflection_max_m / d.statics.deflection_limit_m;
     const double stiffen = std::max(excess > 1.0 ? excess : 1.0, slack ? 1.1 : 1.0);
     for (int j = 0; j < static_cast<int>(floor.size()); ++j) {

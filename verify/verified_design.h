@@ -7,6 +7,8 @@
 // load grows with A^2); slack strings or a deflection past its limit stiffen every string by
 // the deflection's excess (at least 10 %). Floors only rise, so no member shrinks while it
 // fails. The loop ends when the verdict passes or after `max_iterations`, saying why not.
+// With the paper's switches (loads.cases ["paper"]) the design is the paper's: it is checked
+// and reported, not resized.
 #pragma once
 
 #include <string>
