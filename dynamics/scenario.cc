@@ -7,7 +7,8 @@
 namespace tbridge {
 
 ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
-                           const std::function<void(const Design&)>& on_design) {
+                           const std::function<void(const Design&)>& on_design,
+                           const std::function<Design(const Config&)>& make_design) {
   if (!config.dynamics) {
     throw ConfigError("dynamics", "(missing)", "a dynamic scenario needs a \"dynamics\" section");
   }
@@ -22,7 +23,7 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
     return r;
   }
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "design");
-  r.design = RunDesign(config);
+  r.design = make_design ? make_design(config) : RunDesign(config);
   if (on_design) on_design(r.design);
   r.model = BuildDynamicModel(r.design, options);
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "simulate");

@@ -24,7 +24,10 @@ struct ScenarioResult {
 // the caller's bytes per record for the output limit); the progress stages are "design" and
 // "simulate".
 // `on_design` (optional) sees the design before the run starts, and may throw to stop it.
+// `make_design` (optional) designs a bridge config in place of RunDesign: the verified design
+// of tbridge simulate, so that it runs the bridge tbridge design writes.
 ScenarioResult RunScenario(const Config& config, const RunHooks& hooks = {},
-                           const std::function<void(const Design&)>& on_design = {});
+                           const std::function<void(const Design&)>& on_design = {},
+                           const std::function<Design(const Config&)>& make_design = {});
 
 }  // namespace tbridge

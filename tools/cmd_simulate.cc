@@ -21,6 +21,7 @@
 #include "dynamics/scenario.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "verify/verified_design.h"
 #include "tools/vtk_export.h"
 
 namespace tbridge::cli {
@@ -222,7 +223,12 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     warnings = PlausibilityWarnings(design);
     if (parsed.Flag("--strict")) ReportWarnings(warnings, true);
   };
-  const ScenarioResult scenario = RunScenario(config, hooks, check_design);
+  // The bridge tbridge design writes: verified and resized (the paper's configs keep the
+  // paper's design, which needs no check to be simulated).
+  const bool paper = config.loads.cases == std::vector<std::string>{"paper"};
+  const auto verified = [](const Config& c) { return DesignAndVerify(c); };
+  const ScenarioResult scenario =
+      RunScenario(config, hooks, check_design, paper ? std::function<Design(const Config&)>{} : verified);
   progress.Finish();
   ReportWarnings(warnings, false);
   const DynamicModel& model = scenario.model;

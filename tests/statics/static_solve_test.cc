@@ -10,6 +10,7 @@
 
 #include "core/config.h"
 #include "test_support.h"
+#include "design/static_model.h"
 #include "verify/static_check.h"
 
 namespace tbridge {

@@ -10,6 +10,7 @@
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "test_support.h"
+#include "design/static_model.h"
 #include "verify/static_check.h"
 
 namespace tbridge {

@@ -1,0 +1,62 @@
+// The deck's inertia in the dynamic model against the one-degree-of-freedom closed form of the
+// n = 1 bridge.
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "design/design.h"
+#include "dynamics/modal.h"
+#include "dynamics/model.h"
+
+namespace tbridge {
+namespace {
+
+// The n = 1 bridge's symmetric mode: its one vertical bar (deck node on top, the cable node
+// below) translates vertically. Horizontal translation and rotation are antisymmetric.
+double SymmetricOmega(const DynamicModel& model) {
+  for (const Mode& m : ComputeModes(model).modes) {
+    if (ClassifySymmetry(model.positions, m.shape).symmetry == ModeSymmetry::kSymmetric) return m.omega_rad_s;
+  }
+  FAIL("no symmetric mode");
+  return 0;
+}
+
+TEST_CASE("n = 1 with deck inertia: the vertical mode against its one-degree-of-freedom closed form",
+          "[dynamics][modal][inertia]") {
+  Config config;  // the engineering defaults: the reference state is the permanent load
+  config.bridge.n = 1;
+  const Design d = RunDesign(config);
+  const Structure& s = d.topology.structure;
+  REQUIRE(s.num_bars() == 1);
+  const Material& mat = d.config.material;
+
+  // Stiffness of a vertical translation u of both bar ends: each string gives its axial
+  // stiffness times sin^2 of its slope plus its tension over its length times cos^2 (the
+  // geometric stiffness across it). The bar, rigid, adds nothing.
+  double stiffness = 0, string_mass_on_bar = 0;
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    const MemberSizing& m = d.strings[k];
+    const Eigen::Vector3d e = (s.nodes.col(m.j) - s.nodes.col(m.i)) / m.length;
+    const double sin2 = e.y() * e.y();
+    stiffness += m.stiffness * sin2 + m.reference_force / m.length * (1.0 - sin2);
+    // Each string's half at its free end rides on the bar (dynamics.string_mass "bars").
+    string_mass_on_bar += 0.5 * mat.density * m.area * m.rest_length;
+  }
+  const double bare_mass = d.bars[0].mass + string_mass_on_bar;
+  // The deck beam (m_d) at the deck node; no payload mass: the permanent state carries none.
+  const double deck_mass = d.deck.section_mass;
+
+  ModelOptions with;
+  with.deck_inertia = true;
+  ModelOptions without;
+  // 1e-9: the modal solve linearises the same model exactly; the residue is the eigensolver's
+  // and the rounding of the stiffness sums.
+  CHECK(SymmetricOmega(BuildDynamicModel(d, with)) ==
+        Approx(std::sqrt(stiffness / (bare_mass + deck_mass))).epsilon(1e-9));
+  CHECK(SymmetricOmega(BuildDynamicModel(d, without)) == Approx(std::sqrt(stiffness / bare_mass)).epsilon(1e-9));
+  // The deck beam is the heavier part by far (26 kg against a few kg of members at 12 m).
+  CHECK(deck_mass > 3 * bare_mass);
+}
+
+}  // namespace
+}  // namespace tbridge
