@@ -4,6 +4,10 @@ the config, design, write the JSON), on the paper's model and switches (no self-
 design, one load case, no dynamic check).
 
 Usage: bench/design_process.py [--tbridge build/tbridge] [--max-n 16] [--repeats 3] [--max-n-3d 8]
+       bench/design_process.py --verified [--max-n 6]
+
+--verified measures instead the engineering default (configs/default.json's settings at each n):
+every load case, self-weight, the static and dynamic checks and the resizing loop.
 
 Each run is a fresh process; wall time is the best of `repeats`, peak memory the largest
 resident set of tbridge as GNU time reports it (`/usr/bin/time -f %M`, Debian package "time").
@@ -23,13 +27,13 @@ import time
 def paper_config(n, planes):
     """The paper's bridge (SPEC §1) at complexity n; planes = 2 is its 3D bridge (Sect. 7.3)."""
     design = {"yield_safety_factor": 10, "buckling_safety_factor": 1, "deck_string_min_radius": 0.01,
-              "gravity": 9.81, "solver": "auto"}
+              "gravity": 9.81, "solver": "auto", "self_weight": False, "bar_resistance": "euler"}
     bridge = {"n": n, "p": 1, "beta_deg": 10.0 if planes == 1 else 20.0, "span": 12.0, "payload": 12000.0,
               "deck_width": 1.5, "planes": planes}
     if planes == 2:
         design["transverse_string_min_radius"] = 0.005
     return {"bridge": bridge, "material": {"density": 7862, "yield_stress": 6.9e8, "youngs_modulus": 2.06e11},
-            "design": design}
+            "design": design, "loads": {"cases": ["paper"]}}
 
 
 def run_once(tbridge, config_path, out_path):
@@ -43,18 +47,30 @@ def run_once(tbridge, config_path, out_path):
         return wall, int(report.read().split()[-1]) / 1024.0  # %M is in KiB
 
 
-def measure(tbridge, n, planes, repeats, workdir):
+def measure(tbridge, n, planes, repeats, workdir, verified=False):
     config_path = os.path.join(workdir, f"config_{planes}_{n}.json")
     out_path = os.path.join(workdir, f"design_{planes}_{n}.json")
     with open(config_path, "w") as f:
-        json.dump(paper_config(n, planes), f)
+        json.dump({"bridge": {"n": n, "planes": planes}} if verified else paper_config(n, planes), f)
     runs = [run_once(tbridge, config_path, out_path) for _ in range(repeats)]
     with open(out_path) as f:
         d = json.load(f)
     members = d["topology"]["bars"] + d["topology"]["strings"]
     return {"n": n, "members": members, "wall_s": min(r[0] for r in runs), "rss_mb": max(r[1] for r in runs),
             "solver": f'{d["solver"]["name"]} ({d["solver"]["problem"]})', "states": d["self_stress_states"],
-            "mass": d["mass"]["total"], "bytes": os.path.getsize(out_path)}
+            "mass": d["mass"]["total"], "bytes": os.path.getsize(out_path), "verdict": d["verdict"]["summary"],
+            "designs": d["resizing"]["iterations"], "dynamic": d["dynamic_check"]["steps"] if d["dynamic_check"]["done"]
+            else d["dynamic_check"]["note"], "structure": d["mass"]["structure"]}
+
+
+def verified_table(args, workdir):
+    rows = [measure(args.tbridge, n, 1, args.repeats, workdir, verified=True) for n in range(1, args.max_n + 1)]
+    print(f"Machine: {' '.join(os.uname())}; {os.cpu_count()} cores\n")
+    print("| n | members | designs | structure [kg] | dynamic check (RK4 steps) | wall [s] | peak RSS [MB] | verdict |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        print(f'| {r["n"]} | {r["members"]} | {r["designs"]} | {r["structure"]:.1f} | {r["dynamic"]} | '
+              f'{r["wall_s"]:.2f} | {r["rss_mb"]:.1f} | {r["verdict"][:60]} |')
 
 
 def main():
@@ -63,7 +79,12 @@ def main():
     parser.add_argument("--max-n", type=int, default=16)
     parser.add_argument("--max-n-3d", type=int, default=8)
     parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--verified", action="store_true")
     args = parser.parse_args()
+    if args.verified:
+        with tempfile.TemporaryDirectory() as workdir:
+            verified_table(args, workdir)
+        return
     with tempfile.TemporaryDirectory() as workdir:
         planar = [measure(args.tbridge, n, 1, args.repeats, workdir) for n in range(1, args.max_n + 1)]
         spatial = [measure(args.tbridge, n, 2, args.repeats, workdir) for n in range(1, args.max_n_3d + 1)]

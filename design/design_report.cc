@@ -386,7 +386,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   line(Format("  bars                         %12.3f", d.mass.bars));
   line(Format("  strings (non-deck)           %12.3f", d.mass.strings));
   line(Format("  bars + strings (eq. 49)      %12.3f", d.mass.bars + d.mass.strings));
-  line(Format("  deck strings (min radius)    %12.3f", d.mass.deck_strings));
+  line(Format("  deck strings                 %12.3f", d.mass.deck_strings));
   line(Format("  structure                    %12.3f", d.mass.structure));
   line(Format("  deck beams                   %12.3f", d.mass.deck_beams));
   line(Format("  total                        %12.3f", d.mass.total));

@@ -82,8 +82,13 @@ Eigen::SparseMatrix<double> Jacobian(const StaticModel& m, const DofMap& map, co
     const Member& e = s.strings[k];
     const Eigen::Vector3d d = x.col(e.j) - x.col(e.i);
     const double len = d.norm();
-    if (len <= m.string_rest_length[k]) continue;  // slack: no stiffness
     const Eigen::Vector3d u = d / len;
+    if (len <= m.string_rest_length[k]) {
+      // Slack: no force. A 1e-6 share of its axial stiffness keeps the Newton matrix regular
+      // while a string chatters across its rest length (the residual stays exact).
+      pair_block(e.i, e.j, Eigen::Matrix3d(-1e-6 * m.string_stiffness[k] * u * u.transpose()));
+      continue;
+    }
     const double tension = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
     const Eigen::Matrix3d K = m.string_stiffness[k] * u * u.transpose() +
                               tension / len * (Eigen::Matrix3d::Identity() - u * u.transpose());

@@ -44,7 +44,7 @@ DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
   if (run.duration / run.dt * members > max_member_steps) {
     std::ostringstream os;
     os << "skipped: " << run.duration / run.dt << " RK4 steps of " << members << " members exceed the "
-       << max_member_steps << " member-steps the check allows (about a minute)";
+       << max_member_steps << " member-steps the check allows";
     out.note = os.str();
     return out;
   }
