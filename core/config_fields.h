@@ -163,8 +163,9 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "bridge takes 300 kN (one axle of Load Model 1's tandem, EN 1991-2 4.3.2)"},
            l.travelling_load_n, Range::Closed(0.0, 1e9));
   v.Number(KeyInfo{"travelling_speed_m_s", "m/s",
-                   "v of the travelling load in the dynamic check: 1.5 m/s is walking pace; a road bridge takes "
-                   "its traffic speed (22 m/s = 80 km/h)"},
+                   "v of the travelling point load: 1.5 m/s is walking pace; a road bridge takes its traffic "
+                   "speed (22 m/s = 80 km/h). Recorded with the design; the dynamic check runs the paper's "
+                   "travelling load (eqs 50–51), not yet Q_t at this speed, and the design says so"},
            l.travelling_speed_m_s, Range{0.0, 1000.0, true, false});
   v.Number(KeyInfo{"wind_n_per_m", "N/m",
                    "W, transverse wind on the 3D bridge's deck per metre of span: 1200 N/m is a peak velocity "

@@ -303,6 +303,10 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     if (d.cases.empty()) throw ModelError("loads.cases: only travelling loads were asked for, and they are too costly to check at this n");
   }
   const bool single = d.cases.size() == 1 && !travels;
+  if (travels && !paper) {
+    d.notes.push_back("loads.travelling_speed_m_s: the dynamic check runs the paper's travelling load (eqs 50-51); "
+                      "Q_t moving at this speed is checked statically at every deck station, not dynamically");
+  }
 
   const EquilibriumSystem eq = BuildEquilibrium(s);
   const EquilibriumSolver solver(eq);
@@ -336,8 +340,12 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     env = EnvelopeOf(d.cases, base_forces, travels ? &influence : nullptr);
     Eigen::VectorXd f(kNumBaseActions);
     for (int a = 0; a < kNumBaseActions; ++a) f[a] = d.cases[0].factor[a];
+    // The paper's case as the paper writes it: f = F_tot / 2^n on every deck node (in.loads),
+    // bit for bit, so its designs and runs do not move with the order of a sum.
+    const Eigen::Matrix3Xd single_loads = paper ? Eigen::Matrix3Xd(in.loads + f[kSelfWeight] * d.actions.base[kSelfWeight])
+                                                : d.actions.Loads(d.cases[0]);
     if (single) {
-      basis.particular = base_forces * f;
+      basis.particular = solver.Particular(FreeLoads(eq, single_loads));
     } else {
       basis.particular.resize(members, 2);
       for (int j = 0; j < members; ++j) basis.particular(j, 0) = env.uls_max[j].force, basis.particular(j, 1) = env.min[j].force;
@@ -345,7 +353,6 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     CheckBasis(basis);
     std::optional<ReducedMinMassProblem> problem;
     if (basis.basis_formed) problem.emplace(s, basis, settings);
-    const Eigen::Matrix3Xd single_loads = d.actions.Loads(d.cases[0]);
     solution = SolveMinMass(problem ? &*problem : nullptr, basis.states, s, single ? &single_loads : nullptr, settings,
                             config.design, d.solver, d.solver_form);
     for (int a = 0; a < kNumBaseActions; ++a) f[a] = reference.factor[a];
@@ -395,7 +402,9 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   done(0.8);
 
   // Equilibrium of the reference state, and no member past its floor in any case.
-  const Eigen::Matrix3Xd reference_loads = d.actions.Loads(reference);
+  const Eigen::Matrix3Xd reference_loads =
+      paper ? Eigen::Matrix3Xd(in.loads + reference.factor[kSelfWeight] * d.actions.base[kSelfWeight])
+            : d.actions.Loads(reference);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, reference_forces, reference_loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   const double load_scale = SelfStressForceScale(basis, settings);

@@ -18,6 +18,6 @@ namespace tbridge {
 // Runs the check and raises the members' utilisations (mode "dynamic" or "slack", case
 // "dynamic: paper_travelling"). Skips it, saying why in the result's note, when the run
 // would take more than `max_member_steps` member-steps.
-DynamicCheck CheckDynamics(Design& design, double max_member_steps = 2e8);
+DynamicCheck CheckDynamics(Design& design, double max_member_steps = 5e7);
 
 }  // namespace tbridge
