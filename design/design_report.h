@@ -27,7 +27,12 @@ namespace tbridge {
 //   stability              {stable, method, negative_pivots, zero_pivots, free_dofs, reduced_dofs,
 //                           min_pivot [N/m], critical_load_factor (null: none or not computed),
 //                           critical_load_factor_computed} (design/stability.h)
-//   reactions              [{node (1-based), force [x, y, z] [N]}, ...], one per fixed node
+//   reactions              [{case, node (1-based), force [x, y, z] [N]}, ...]: per case
+//                          (the reference state, then each statically solved case) and support
+//   cases, deflection_max, dynamic_check, resizing, self_weight_iterations, utilisation_max,
+//   verdict                the load cases and the checks (design/verification.h); members
+//                          also carry force_min, reference_force, utilisation,
+//                          governing_case and mode
 //   units                  the unit of every numeric field above ("1" = dimensionless)
 // Keys are in alphabetical order; nodes and members are written one per line as they are
 // read from the design, so no copy of the document is held. Numbers are the shortest text
