@@ -61,13 +61,20 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     m.strings.push_back(ds);
   }
   ShareStringMass(m, options.string_mass);
-  if (options.deck_inertia) AddDeckInertia(m, design, design.reference.factor[kPayloadFull]);
+  // A run carries the design loads: the permanent load and the payload (the paper's design
+  // load). An engineering design's reference state is the permanent load alone, so the
+  // payload is added, and the run starts from the equilibrium under it.
+  const double payload = 1.0 - design.reference.factor[kPayloadFull];
+  if (payload != 0 && design.actions.base[kPayloadFull].size() == m.loads.size()) {
+    m.loads += payload * design.actions.base[kPayloadFull];
+  }
+  if (options.deck_inertia) AddDeckInertia(m, design, 1.0);
   if (options.gravity_on_structure) {
     // The design's own lumping of the members' weight gives way to the model's.
     if (design.reference.factor[kSelfWeight] != 0) m.loads -= design.reference.factor[kSelfWeight] * design.actions.base[kSelfWeight];
     AddStructureWeight(m);
-    SettleAtEquilibrium(m, design);
   }
+  SettleAtEquilibrium(m, design);
   return m;
 }
 

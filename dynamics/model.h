@@ -103,6 +103,7 @@ void AddStructureWeight(DynamicModel& model);
 
 // Adds the deck beams' mass (and the superimposed dead load's) at the deck nodes of a designed
 // bridge, and `payload_factor` times the payload's: mass, not weight, which the loads carry.
+// BuildDynamicModel's loads carry the whole payload, so it takes 1.
 void AddDeckInertia(DynamicModel& model, const Design& design, double payload_factor);
 
 // Moves `model.positions` to the static equilibrium under `model.loads` (statics/), from the

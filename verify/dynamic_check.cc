@@ -27,12 +27,12 @@ void Raise(MemberSizing& m, double u, const char* mode) {
 DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
   DynamicCheck out;
   const bool paper = d.reference.factor[kPayloadFull] != 0;  // the paper's case carries the payload already
+  // The model a run of this design gets (tbridge simulate with the defaults): the design
+  // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
   ModelOptions options;
   options.gravity_on_structure = d.config.design.self_weight;
-  DynamicModel model = BuildDynamicModel(d, options);
-  if (!paper) model.loads += d.actions.base[kPayloadFull];
-  if (!paper) AddDeckInertia(model, d, 1.0);
-  SettleAtEquilibrium(model, d);
+  options.deck_inertia = !paper;
+  const DynamicModel model = BuildDynamicModel(d, options);
 
   const int stations = static_cast<int>(d.actions.station_nodes.size());
   TravellingLoadConfig run;
