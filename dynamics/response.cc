@@ -201,4 +201,11 @@ Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, doub
   return deck_vertical.topRows(last + 1).rowwise().sum();
 }
 
+Eigen::VectorXd AntisymmetricDeckSignal(const Eigen::MatrixXd& deck_vertical, const Eigen::VectorXd& sign, double dt,
+                                        double duration) {
+  if (sign.size() != deck_vertical.cols()) throw std::invalid_argument("deck frequency: one sign per deck node");
+  const Eigen::Index rows = DeckSignal(deck_vertical, dt, duration).size();
+  return deck_vertical.topRows(rows) * sign;
+}
+
 }  // namespace tbridge

@@ -77,4 +77,11 @@ FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt,
 // std::invalid_argument for an empty matrix, dt <= 0 or duration <= 0.
 Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration);
 
+// The antisymmetric counterpart, a projection of the deck motion on the mirror-odd shape: each
+// node's column weighted by `sign` (+1 left of mid-span, -1 right, 0 on it) and summed. The
+// summed signal above cancels in every antisymmetric mode; this one cancels in every
+// symmetric mode. Throws as DeckSignal, and for a size mismatch.
+Eigen::VectorXd AntisymmetricDeckSignal(const Eigen::MatrixXd& deck_vertical, const Eigen::VectorXd& sign, double dt,
+                                        double duration);
+
 }  // namespace tbridge

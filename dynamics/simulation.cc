@@ -564,6 +564,25 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
         } catch (const std::invalid_argument&) {
           // fewer than three crossings: a record shorter than a period; the spectral estimate stands alone
         }
+        // Mirror-odd weights about mid-span (halfway between the outermost nodes).
+        const double mid = 0.5 * (model.positions.row(0).minCoeff() + model.positions.row(0).maxCoeff());
+        const double span = model.positions.row(0).maxCoeff() - model.positions.row(0).minCoeff();
+        Eigen::VectorXd sign(static_cast<Eigen::Index>(model.deck_nodes.size()));
+        for (size_t k = 0; k < model.deck_nodes.size(); ++k) {
+          const double x = model.positions(0, model.deck_nodes[k]) - mid;
+          sign[static_cast<Eigen::Index>(k)] = std::abs(x) <= 1e-9 * span ? 0.0 : (x > 0 ? -1.0 : 1.0);
+        }
+        const Eigen::VectorXd odd =
+            AntisymmetricDeckSignal(result.deck_vertical, sign, result.deck_sample_dt, config.duration);
+        const Eigen::VectorXd even = DeckSignal(result.deck_vertical, result.deck_sample_dt, config.duration);
+        const auto spread = [](const Eigen::VectorXd& v) { return (v.array() - v.mean()).abs().maxCoeff(); };
+        if (spread(odd) > 1e-6 * spread(even)) {
+          try {
+            s.antisymmetric_frequency = DominantFrequency(odd, result.deck_sample_dt);
+          } catch (const std::invalid_argument&) {
+            // no dominant peak in a record this short
+          }
+        }
       } catch (const std::invalid_argument& e) {
         s.frequency_note = std::string("no deck frequency: ") + e.what();
       }

@@ -90,6 +90,10 @@ struct SimulationSummary {
   // Mean period from the crossings of the same deck signal (MeanPeriodFromCrossings), when
   // it has at least three crossings; empty otherwise.
   std::optional<FrequencyEstimate> crossing_frequency;
+  // The dominant frequency of the antisymmetric deck signal (AntisymmetricDeckSignal), when
+  // the motion has an antisymmetric part above 1e-6 of the symmetric one: the antisymmetric
+  // modes, which the summed signal cannot show.
+  std::optional<FrequencyEstimate> antisymmetric_frequency;
 };
 
 struct SimulationResult {

@@ -107,6 +107,15 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                              {"omega_rad_s", s.crossing_frequency->omega_rad_s},
                              {"cycles", s.crossing_frequency->cycles}}
             : nlohmann::json(nullptr);
+    // The summed signal shows only the symmetric modes; the mirror-odd projection the rest.
+    j["frequency"]["antisymmetric"] =
+        s.antisymmetric_frequency
+            ? nlohmann::json{{"method", "dominant spectral peak of the deck displacement projected on the "
+                                        "mirror-odd shape (+1 left of mid-span, -1 right)"},
+                             {"period_s", s.antisymmetric_frequency->period_s},
+                             {"omega_rad_s", s.antisymmetric_frequency->omega_rad_s},
+                             {"frequency_hz", s.antisymmetric_frequency->frequency_hz}}
+            : nlohmann::json(nullptr);
   } else if (!s.frequency_note.empty()) {
     j["frequency"] = {{"note", s.frequency_note}};
   }
