@@ -47,6 +47,8 @@ void ApplyPaperSwitches(Config& c) {
   }
 }
 
+bool KeepsPaperSwitches(const Config& c) { return c.loads.cases == std::vector<std::string>{"paper"}; }
+
 Config ParseConfig(const nlohmann::json& root) {
   JsonSection top(root, "");
   Config c;

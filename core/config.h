@@ -100,6 +100,9 @@ void Validate(const Config& config);
 // 10, plain Euler buckling with factor 1, and in a run no deck inertia and no structure
 // weight. The paper's configs write them out.
 void ApplyPaperSwitches(Config& config);
+// Whether `config` keeps the paper's switches: its one load case, "paper". Such a design is the
+// paper's: checked and reported, not resized, and run without the deck's inertia.
+bool KeepsPaperSwitches(const Config& config);
 // The resolved config, every default filled in, for echoing into outputs.
 nlohmann::json ToJson(const Config& config);
 

@@ -42,11 +42,9 @@ CaseEnvelope EnvelopeOf(const std::vector<LoadCase>& cases, const Eigen::MatrixX
   const double inf = std::numeric_limits<double>::infinity();
   env.uls_max.assign(members, MemberExtreme{-inf, -1, -1});
   env.min.assign(members, MemberExtreme{inf, -1, -1});
-  Eigen::VectorXd f(base.cols());
   for (size_t c = 0; c < cases.size(); ++c) {
     const LoadCase& lc = cases[c];
-    for (Eigen::Index a = 0; a < base.cols(); ++a) f[a] = lc.factor[a];
-    const Eigen::VectorXd x = base * f;
+    const Eigen::VectorXd x = base * lc.Factors();
     const bool travels = lc.station_load != 0 && influence != nullptr;
     for (Eigen::Index j = 0; j < members; ++j) {
       // A travelling load s >= 0: its extremes are s times the extreme influences.

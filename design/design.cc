@@ -196,8 +196,8 @@ DesignInputs PrepareDesign(const Config& config) {
   in.topology = MakeBridge(config.bridge);
   const Structure& s = in.topology.structure;
   in.deck = ComputeDeck(config.bridge, config.material, config.design);
-  in.loads = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
-  for (int v : in.topology.deck_nodes) in.loads(1, v) = -in.deck.node_load;
+  in.actions = MakeActions(config, in.topology, in.deck);
+  in.loads = in.actions.base[kPaperLoad];
 
   const double sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
   auto circle = [](double r) { return std::numbers::pi * r * r; };
@@ -283,9 +283,9 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   const double sigma_w = settings.working_stress;
   const BarRule rule = BarRuleOf(config);
 
-  d.actions = MakeActions(config, d.topology, d.deck);
+  d.actions = std::move(in.actions);
   d.cases = MakeLoadCases(config, d.deck, d.notes);
-  const bool paper = d.cases.size() == 1 && d.cases[0].name == "paper";
+  const bool paper = KeepsPaperSwitches(config);
   bool travels = false;
   for (const LoadCase& c : d.cases) travels = travels || c.station_load != 0;
   // A travelling family costs one equilibrium solve per deck station, each linear in the
@@ -338,12 +338,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     base_forces = solver.Particular(w);
     basis.load_residual = std::max(influence.load_residual, (eq.A * base_forces + w).cwiseAbs().maxCoeff());
     env = EnvelopeOf(d.cases, base_forces, travels ? &influence : nullptr);
-    Eigen::VectorXd f(kNumBaseActions);
-    for (int a = 0; a < kNumBaseActions; ++a) f[a] = d.cases[0].factor[a];
-    // The paper's case as the paper writes it: f = F_tot / 2^n on every deck node (in.loads),
-    // bit for bit, so its designs and runs do not move with the order of a sum.
-    const Eigen::Matrix3Xd single_loads = paper ? Eigen::Matrix3Xd(in.loads + f[kSelfWeight] * d.actions.base[kSelfWeight])
-                                                : d.actions.Loads(d.cases[0]);
+    const Eigen::Matrix3Xd single_loads = d.actions.Loads(d.cases[0]);
     if (single) {
       basis.particular = solver.Particular(FreeLoads(eq, single_loads));
     } else {
@@ -355,8 +350,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     if (basis.basis_formed) problem.emplace(s, basis, settings);
     solution = SolveMinMass(problem ? &*problem : nullptr, basis.states, s, single ? &single_loads : nullptr, settings,
                             config.design, d.solver, d.solver_form);
-    for (int a = 0; a < kNumBaseActions; ++a) f[a] = reference.factor[a];
-    reference_forces = single ? Eigen::VectorXd(solution.forces.col(0)) : Eigen::VectorXd(base_forces * f);
+    reference_forces =
+        single ? Eigen::VectorXd(solution.forces.col(0)) : Eigen::VectorXd(base_forces * reference.Factors());
     if (!single && solution.alpha.size()) reference_forces += basis.self_stress * solution.alpha;
 
     // Size every member for its largest force; rest lengths from the reference state.
@@ -402,9 +397,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   done(0.8);
 
   // Equilibrium of the reference state, and no member past its floor in any case.
-  const Eigen::Matrix3Xd reference_loads =
-      paper ? Eigen::Matrix3Xd(in.loads + reference.factor[kSelfWeight] * d.actions.base[kSelfWeight])
-            : d.actions.Loads(reference);
+  const Eigen::Matrix3Xd reference_loads = d.actions.Loads(reference);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, reference_forces, reference_loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   const double load_scale = SelfStressForceScale(basis, settings);

@@ -66,8 +66,9 @@ struct Design {
 struct DesignInputs {
   BridgeTopology topology;
   Deck deck;
-  // The paper's one design load, deck and payload at the deck nodes [N] (3 x n_n): the load of
-  // a one-case design, and of the solver cross-checks.
+  Actions actions;  // the characteristic base actions (self-weight still zero)
+  // The paper's one design load, deck and payload at the deck nodes [N] (3 x n_n), its
+  // kPaperLoad action: the load of a one-case design, and of the solver cross-checks.
   Eigen::Matrix3Xd loads;
   MinMassSettings settings;             // sigma_w, buckling factor, tension and area floors
   std::vector<double> string_min_area;  // per string [m^2]: deck and transverse minimum sections

@@ -207,8 +207,7 @@ json DynamicsJson(const Design& d) {
           {"peak_deck_displacement", c.peak_deck_displacement}, {"amplification", groups}};
 }
 
-json VerdictJson(const Design& d) {
-  const Verdict v = DesignVerdict(d);
+json VerdictJson(const Design& d, const Verdict& v) {
   return {{"pass", v.pass}, {"summary", v.summary}, {"notes", d.notes}};
 }
 
@@ -288,8 +287,9 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("stability", StabilityJson(d.stability));
   field("topology", topology);
   field("units", Units());
-  field("utilisation_max", DesignVerdict(d).utilisation_max);
-  field("verdict", VerdictJson(d), true);
+  const Verdict verdict = DesignVerdict(d);
+  field("utilisation_max", verdict.utilisation_max);
+  field("verdict", VerdictJson(d, verdict), true);
   os << "}\n";
 }
 

@@ -12,9 +12,11 @@ const char* LimitStateName(LimitState state) {
 }
 
 const char* BaseActionName(int action) {
-  static const char* const kNames[kNumBaseActions] = {"G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W"};
+  static const char* const kNames[kNumBaseActions] = {"G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W", "F_paper"};
   return kNames[action];
 }
+
+double PayloadShare(const LoadCase& c) { return c.factor[kPayloadFull] + c.factor[kPaperLoad]; }
 
 Eigen::Matrix3Xd Actions::StationLoad(int station, double load) const {
   Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, base[0].cols());
@@ -63,6 +65,7 @@ Actions MakeActions(const Config& config, const BridgeTopology& topology, const 
       a.base[kPayloadLeft](1, v) = -q * l_d * left / planes;
       a.base[kPayloadRight](1, v) = -q * l_d * (1.0 - left) / planes;
       if (b.planes == 2) a.base[kWind](2, v) = config.loads.wind_n_per_m * l_d / planes;
+      a.base[kPaperLoad](1, v) = -deck.node_load;
     }
   }
   return a;
@@ -109,8 +112,8 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std:
   };
   if (wants("paper")) {
     LoadCase c;
-    permanent(c, 1.0);
-    c.factor[kPayloadFull] = 1.0;
+    c.factor[kPaperLoad] = 1.0;
+    c.factor[kSelfWeight] = self ? 1.0 : 0.0;
     add("paper", LimitState::kUltimate, "G + Q_full (the paper's design load, unfactored)", c);
     return cases;
   }

@@ -22,9 +22,15 @@ namespace tbridge {
 enum class LimitState { kUltimate, kServiceability };
 const char* LimitStateName(LimitState state);  // "ultimate" | "serviceability"
 
-// The characteristic base actions, in this order.
-enum BaseAction { kDeckDead = 0, kSelfWeight, kPayloadFull, kPayloadLeft, kPayloadRight, kWind, kNumBaseActions };
-const char* BaseActionName(int action);  // "G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W"
+// The characteristic base actions, in this order. kPaperLoad is the paper's design load as eq. 9
+// writes it, f = F_tot / 2^n (deck beams and payload together) on each deck node, so that the
+// paper's case gives its loads bit for bit.
+enum BaseAction { kDeckDead = 0, kSelfWeight, kPayloadFull, kPayloadLeft, kPayloadRight, kWind, kPaperLoad, kNumBaseActions };
+const char* BaseActionName(int action);  // "G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W", "F_paper"
+
+struct LoadCase;
+// The share of the full-span payload that `c` carries (its own, or within the paper's load).
+double PayloadShare(const LoadCase& c);
 
 struct LoadCase {
   std::string name;         // "uls_payload_full", "sls_travelling", "paper", ...
@@ -33,6 +39,8 @@ struct LoadCase {
   std::array<double, kNumBaseActions> factor{};  // coefficient of each base action
   // A travelling family: `station_load` [N] on each deck station in turn (0 = none).
   double station_load = 0;
+  // The factors as a vector over the base actions.
+  Eigen::Map<const Eigen::VectorXd> Factors() const { return {factor.data(), kNumBaseActions}; }
 };
 
 // Node loads [N] of the base actions (3 x n_n each) and the deck stations a travelling load

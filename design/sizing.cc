@@ -72,6 +72,15 @@ MemberSizing SizeString(double length, double tension, double reference_tension,
   return s;
 }
 
+void RaiseUtilisation(MemberSizing& m, double u, const std::string& governing_case, const char* mode) {
+  if (u <= m.utilisation) return;
+  m.utilisation = u;
+  m.governing_case = governing_case;
+  m.mode = mode;
+}
+
+double SlackUtilisation(double strain, double sigma_w, double E) { return 1.0 - strain / (sigma_w / E); }
+
 double ColumnCurveChi(double lambda, double alpha) {
   const double phi = 0.5 * (1.0 + alpha * (lambda - 0.2) + lambda * lambda);
   return std::min(1.0, 1.0 / (phi + std::sqrt(std::max(phi * phi - lambda * lambda, 0.0))));

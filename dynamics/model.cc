@@ -64,7 +64,7 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   // A run carries the design loads: the permanent load and the payload (the paper's design
   // load). An engineering design's reference state is the permanent load alone, so the
   // payload is added, and the run starts from the equilibrium under it.
-  const double payload = 1.0 - design.reference.factor[kPayloadFull];
+  const double payload = 1.0 - PayloadShare(design.reference);
   if (payload != 0 && design.actions.base[kPayloadFull].size() == m.loads.size()) {
     m.loads += payload * design.actions.base[kPayloadFull];
   }

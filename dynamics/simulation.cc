@@ -163,7 +163,8 @@ class Monitor {
       }
       const double len = std::sqrt(len2);
       const bool taut = len >= s.rest_length;
-      summary_.min_string_strain[k] = std::min(summary_.min_string_strain[k], (len - s.rest_length) / s.rest_length);
+      // The stretch [m] while the run goes, divided by L0 once at its end (no division per step).
+      summary_.min_string_strain[k] = std::min(summary_.min_string_strain[k], len - s.rest_length);
       double tension = 0;
       if (taut) {
         const double stretch = len - s.rest_length;
@@ -551,6 +552,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
     }
     if (std::sqrt(len2) < st.rest_length) ++s.slack.slack_at_end;
   }
+  for (size_t k = 0; k < model.strings.size(); ++k) s.min_string_strain[k] /= model.strings[k].rest_length;
   if (config.frequency.enabled) {
     if (!deck) {
       s.frequency_note = "the model has no deck nodes";

@@ -190,7 +190,7 @@ int RunModesCommand(const std::vector<std::string>& args) {
   // otherwise the paper's model, with the deck's inertia unless the config keeps the paper's
   // switches (its one load case).
   ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
-  if (!config.dynamics && !config.structure) options.deck_inertia = config.loads.cases != std::vector<std::string>{"paper"};
+  if (!config.dynamics && !config.structure) options.deck_inertia = !KeepsPaperSwitches(config);
   std::optional<Design> design;
   if (!config.structure) {
     design = RunDesign(config, &progress);

@@ -234,7 +234,7 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   };
   // The bridge tbridge design writes: verified and resized (the paper's configs keep the
   // paper's design, which needs no check to be simulated).
-  const bool paper = config.loads.cases == std::vector<std::string>{"paper"};
+  const bool paper = KeepsPaperSwitches(config);
   const auto verified = [](const Config& c) { return DesignAndVerify(c); };
   const ScenarioResult scenario =
       RunScenario(config, hooks, check_design, paper ? std::function<Design(const Config&)>{} : verified);

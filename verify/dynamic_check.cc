@@ -15,18 +15,13 @@ namespace tbridge {
 
 namespace {
 
-void Raise(MemberSizing& m, double u, const char* mode) {
-  if (u <= m.utilisation) return;
-  m.utilisation = u;
-  m.governing_case = "dynamic: paper_travelling";
-  m.mode = mode;
-}
+const char* const kCase = "dynamic: paper_travelling";  // where a member's dynamic utilisation comes from
 
 }  // namespace
 
 DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
   DynamicCheck out;
-  const bool paper = d.reference.factor[kPayloadFull] != 0;  // the paper's case carries the payload already
+  const bool paper = KeepsPaperSwitches(d.config);
   // The model a run of this design gets (tbridge simulate with the defaults): the design
   // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
   ModelOptions options;
@@ -103,11 +98,11 @@ DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
     const double demand = gamma_g * m.reference_force + gamma_q * std::max(peak - m.reference_force, 0.0);
     if (bar) {
       const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-      Raise(m, demand / std::min(cap.yield, cap.buckling), "dynamic");
+      RaiseUtilisation(m, demand / std::min(cap.yield, cap.buckling), kCase, "dynamic");
     } else {
-      if (m.area > 0) Raise(m, demand / (m.area * sigma_w), "dynamic");
+      if (m.area > 0) RaiseUtilisation(m, demand / (m.area * sigma_w), kCase, "dynamic");
       const double strain = summary.min_string_strain[j - nb];
-      if (strain < 0) Raise(m, 1.0 - strain / (sigma_w / E), "slack");
+      if (strain < 0) RaiseUtilisation(m, SlackUtilisation(strain, sigma_w, E), kCase, "slack");
     }
     GroupAmplification& g = groups[group];
     g.group = group;

@@ -24,14 +24,6 @@ std::vector<int> SpreadStations(int count, int max) {
   return out;
 }
 
-// Raises a member's utilisation when `u` exceeds it.
-void Raise(MemberSizing& m, double u, const std::string& label, const char* mode) {
-  if (u <= m.utilisation) return;
-  m.utilisation = u;
-  m.governing_case = label;
-  m.mode = mode;
-}
-
 }  // namespace
 
 StaticCheck CheckStatics(Design& d, int max_stations) {
@@ -74,12 +66,12 @@ StaticCheck CheckStatics(Design& d, int max_stations) {
           MemberSizing& m = d.bars[b];
           const double force = result.state.bar_compression[b];
           const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-          Raise(m, std::abs(force) / cap.yield, r.label, "yield");
-          if (force > 0) Raise(m, force / cap.buckling, r.label, "buckling");
+          RaiseUtilisation(m, std::abs(force) / cap.yield, r.label, "yield");
+          if (force > 0) RaiseUtilisation(m, force / cap.buckling, r.label, "buckling");
         }
         for (size_t k = 0; k < d.strings.size(); ++k) {
           MemberSizing& m = d.strings[k];
-          if (m.area > 0) Raise(m, result.state.string_tension[k] / (m.area * sigma_w), r.label, "yield");
+          if (m.area > 0) RaiseUtilisation(m, result.state.string_tension[k] / (m.area * sigma_w), r.label, "yield");
         }
       }
       if (r.converged && lc.state == LimitState::kServiceability) {
@@ -88,8 +80,7 @@ StaticCheck CheckStatics(Design& d, int max_stations) {
           const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
           MemberSizing& m = d.strings[k];
           if (length >= m.rest_length) continue;
-          // Slack: the strain it lacks to be taut, over the strain it works at.
-          Raise(m, 1.0 + (m.rest_length - length) / m.rest_length / (sigma_w / E), r.label, "slack");
+          RaiseUtilisation(m, SlackUtilisation((length - m.rest_length) / m.rest_length, sigma_w, E), r.label, "slack");
         }
         if (r.deflection_m > out.deflection_max_m) {
           out.deflection_max_m = r.deflection_m;

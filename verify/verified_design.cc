@@ -20,9 +20,8 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     const Verdict verdict = DesignVerdict(d);
     record.converged = verdict.pass;
     // The paper's design is the paper's: with its switches the checks report, and resize nothing.
-    const bool paper = config.loads.cases == std::vector<std::string>{"paper"};
     const bool stop =
-        paper || record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
+        KeepsPaperSwitches(config) || record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
     if (verdict.pass || stop) {
       if (!verdict.pass) record.why = verdict.summary;
       d.resizing = record;

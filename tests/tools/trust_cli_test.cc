@@ -23,6 +23,7 @@
 #include "design/solvers.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
@@ -53,6 +54,9 @@ std::map<std::string, std::string> Snapshot(const fs::path& dir) {
   }
   return out;
 }
+
+// `text`, a config, with the paper's switches (test::WithPaperSwitches), as JSON text.
+std::string Paper(const std::string& text) { return test::WithPaperSwitches(nlohmann::json::parse(text)).dump(); }
 
 fs::path Write(const fs::path& path, const std::string& text) {
   std::ofstream(path) << text;
@@ -325,14 +329,14 @@ TEST_CASE("defect 7: the exit codes are listed once, with 1; --version names the
 
 TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses them and writes nothing") {
   const fs::path dir = FreshDir("trust_plausible");
-  const std::pair<const char*, const char*> cases[] = {
+  const std::pair<std::string, const char*> cases[] = {
       // 1e-6 m span: members of 1e-8 m, masses that print as 0.000 kg
-      {R"({"loads": {"cases": ["paper"]}, "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "bridge": {"n": 3, "span": 1e-6}})", "shorter than 1 mm"},
+      {Paper(R"({"bridge": {"n": 3, "span": 1e-6}})"), "shorter than 1 mm"},
       // 1.1e9 N payload: 1.6 m thick bars 0.13 m long, a 1.22 m deck on a 12 m span. The
       // deck strings at their 1 m maximum radius keep the prestress (2.2e8 N) strong enough
       // for the bars to stand: the design is stable, only implausible.
-      {R"({"bridge": {"n": 3, "payload": 1.1e9}, "design": {"deck_string_min_radius": 1.0, "yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "loads": {"cases": ["paper"]}})", "thicker than long"},
-      {R"({"bridge": {"n": 3, "payload": 1.1e9}, "design": {"deck_string_min_radius": 1.0, "yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "loads": {"cases": ["paper"]}})", "exceeds span / 10"}};
+      {Paper(R"({"bridge": {"n": 3, "payload": 1.1e9}, "design": {"deck_string_min_radius": 1.0}})"), "thicker than long"},
+      {Paper(R"({"bridge": {"n": 3, "payload": 1.1e9}, "design": {"deck_string_min_radius": 1.0}})"), "exceeds span / 10"}};
   for (const auto& [text, warning] : cases) {
     const fs::path config = Write(dir / "config.json", text);
     const fs::path out = dir / "out.json";
@@ -352,7 +356,7 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
   // loaded by 1e12 N upright (as with no deck prestress at all), so the design is refused as
   // unstable before any plausibility check: exit 3, nothing written.
   {
-    const fs::path config = Write(dir / "config.json", R"({"loads": {"cases": ["paper"]}, "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "bridge": {"n": 3, "payload": 1e12}})");
+    const fs::path config = Write(dir / "config.json", Paper(R"({"bridge": {"n": 3, "payload": 1e12}})"));
     const fs::path out = dir / "out.json";
     fs::remove(out);
     const CliResult r = Run(dir, "design " + Quote(config.string()) + " -o " + Quote(out.string()) + " -q");
@@ -361,7 +365,7 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
     CHECK_FALSE(fs::exists(out));
   }
   // The paper's n = 3 design is plausible: no warning.
-  const fs::path config = Write(dir / "config.json", R"({"loads": {"cases": ["paper"]}, "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "bridge": {"n": 3}})");
+  const fs::path config = Write(dir / "config.json", Paper(R"({"bridge": {"n": 3}})"));
   const CliResult r = Run(dir, "design " + Quote(config.string()) + " -o " + Quote((dir / "out.json").string()) + " --strict -q");
   CHECK(r.code == 0);
   CHECK(r.err.empty());
@@ -370,7 +374,7 @@ TEST_CASE("plausibility: implausible designs warn on stderr, --strict refuses th
 TEST_CASE("plausibility and progress: n = 12 and 16 on a 12 m span warn of their tiny members and deck") {
   const fs::path dir = FreshDir("trust_n12");
   // n = 12 on the default 12 m span: bars 0.26 mm long, a deck 7.9 um thick.
-  const fs::path config = Write(dir / "config.json", R"({"loads": {"cases": ["paper"]}, "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "bridge": {"n": 12}})");
+  const fs::path config = Write(dir / "config.json", Paper(R"({"bridge": {"n": 12}})"));
   CliResult r = Run(dir, "design " + Quote(config.string()) + " -o " + Quote((dir / "out.json").string()) + " -q --progress");
   INFO(r.err);
   CHECK(r.code == 0);
@@ -378,7 +382,7 @@ TEST_CASE("plausibility and progress: n = 12 and 16 on a 12 m span warn of their
   CHECK_THAT(r.err, Catch::Contains("deck thickness 7.89e-06 m is below 1 mm"));
   // n = 16 takes about 2 s, longer than the progress line's 1 s delay: a line is drawn (the
   // design's fraction done, or the writing's elapsed time, whichever stage runs at 1 s).
-  const fs::path config16 = Write(dir / "config16.json", R"({"loads": {"cases": ["paper"]}, "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "bridge": {"n": 16}})");
+  const fs::path config16 = Write(dir / "config16.json", Paper(R"({"bridge": {"n": 16}})"));
   r = Run(dir, "design " + Quote(config16.string()) + " -o " + Quote((dir / "out16.json").string()) + " -q --progress");
   CHECK(r.code == 0);
   CHECK_THAT(r.err, Catch::Contains("elapsed "));
@@ -390,7 +394,7 @@ TEST_CASE("plausibility: simulate --strict stops an implausible design before it
   const fs::path dir = FreshDir("trust_plausible_simulate");
   // 1e6 steps would take seconds; the refusal comes after the design, before the first one.
   const fs::path config =
-      Write(dir / "config.json", R"({"loads": {"cases": ["paper"]}, "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": false, "bar_resistance": "euler"}, "bridge": {"n": 3, "payload": 1e12}, "dynamics": {"duration": 10}})");
+      Write(dir / "config.json", Paper(R"({"bridge": {"n": 3, "payload": 1e12}, "dynamics": {"duration": 10}})"));
   const auto start = std::chrono::steady_clock::now();
   const CliResult r = Run(dir, "simulate " + Quote(config.string()) + " -o " + Quote((dir / "out").string()) + " --strict");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
