@@ -65,6 +65,7 @@ struct LoadsConfig {
   double travelling_load_n = 10000.0;      // Q_t [N]: EN 1991-2 5.3.2.2 Q_fwk for footbridges
   double travelling_speed_m_s = 1.5;       // v [m/s]: walking pace
   double wind_n_per_m = 1200.0;            // transverse line load on the deck [N/m] (3D)
+  double wind_rise_s = 1.0;                // the dynamic check's gust rises over this [s]
   double gamma_g_sup = 1.35;               // unfavourable permanent
   double gamma_g_inf = 1.0;                // favourable permanent
   double gamma_q = 1.5;                    // payload and travelling load

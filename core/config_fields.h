@@ -164,13 +164,18 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
            l.travelling_load_n, Range::Closed(0.0, 1e9));
   v.Number(KeyInfo{"travelling_speed_m_s", "m/s",
                    "v of the travelling point load: 1.5 m/s is walking pace; a road bridge takes its traffic "
-                   "speed (22 m/s = 80 km/h). Recorded with the design; the dynamic check runs the paper's "
-                   "travelling load (eqs 50–51), not yet Q_t at this speed, and the design says so"},
+                   "speed (22 m/s = 80 km/h). With the `\"travelling\"` case the dynamic check runs Q_t crossing "
+                   "the deck at this speed, shared between deck nodes by the lever rule, for span / v"},
            l.travelling_speed_m_s, Range{0.0, 1000.0, true, false});
   v.Number(KeyInfo{"wind_n_per_m", "N/m",
                    "W, transverse wind on the 3D bridge's deck per metre of span: 1200 N/m is a peak velocity "
                    "pressure of 0.9 kPa on 1 m of exposed depth with a force coefficient of 1.3 (EN 1991-1-4 8.3)"},
            l.wind_n_per_m, Range::Closed(0.0, 1e8));
+  v.Number(KeyInfo{"wind_rise_s", "s",
+                   "with the `\"wind\"` case on a 3D bridge, the dynamic check's gust: W rises linearly from zero "
+                   "over this time, then holds for as long again. 1 s is shorter than the 3 s gust behind EN "
+                   "1991-1-4's peak velocity pressure, so the run shows the overshoot a sudden gust would cause"},
+           l.wind_rise_s, Range{0.0, 100.0, true, false});
   v.Number(KeyInfo{"gamma_g_sup", "–", "gamma_G,sup, unfavourable permanent action (EN 1990 A2, set B)"},
            l.gamma_g_sup, Range::Closed(0.0, 10.0));
   v.Number(KeyInfo{"gamma_g_inf", "–", "gamma_G,inf, favourable permanent action; the no-slack check uses it"},

@@ -40,12 +40,16 @@ struct NodeInitialConfig {
   std::array<double, 3> velocity{0, 0, 0};      // [m/s]
 };
 
-// A force on one node (1-based) for t_start <= t < t_end; schedules add up.
+// A force on one node (1-based) for t_start <= t < t_end; schedules add up. It grows linearly
+// from zero over the first rise_s and falls linearly to zero over the last fall_s, so a load
+// that moves along the deck (the lever rule between two nodes) is a chain of such ramps.
 struct LoadStepConfig {
   double t_start = 0;  // [s]
   double t_end = 0;    // [s], > t_start
   int node = 1;
   std::array<double, 3> force{0, 0, 0};  // [N]
+  double rise_s = 0;   // [s], >= 0; rise_s + fall_s <= t_end - t_start
+  double fall_s = 0;   // [s], >= 0
 };
 
 struct RecordConfig {

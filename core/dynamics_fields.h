@@ -12,7 +12,7 @@ namespace tbridge {
 
 inline const SectionInfo kDynamicsSection{"dynamics", "a dynamic scenario (`tbridge simulate`)",
                                           "`dt` at most `duration`; `loads[].t_end` greater than "
-                                          "its `t_start`; each `prestrain` group at most once."};
+                                          "its `t_start` by at least `rise_s` + `fall_s`; each `prestrain` group at most once."};
 
 // Largest node number accepted before the structure is known; the simulation checks the
 // real node count.
@@ -68,6 +68,15 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
            Range::NonNegative());
   v.Integer(KeyInfo{"node", "–", "the node (1-based)", true}, l.node, 1, kMaxDynamicsNode);
   v.Vector3(KeyInfo{"force", "N", "the force, on top of the design's deck loads"}, l.force);
+  v.Number(KeyInfo{"rise_s", "s",
+                   "the force grows linearly from 0 at t_start to its full value at t_start + "
+                   "rise_s (0: a step)"},
+           l.rise_s, Range::NonNegative());
+  v.Number(KeyInfo{"fall_s", "s",
+                   "the force falls linearly to 0 over the last fall_s before t_end (0: a step). "
+                   "A load moving at speed v between deck nodes h apart is, on each node, a ramp "
+                   "with rise_s = fall_s = h/v"},
+           l.fall_s, Range::NonNegative());
 }
 
 template <class R, class V>

@@ -147,8 +147,10 @@ Verdict DesignVerdict(const Design& d) {
   std::ostringstream os;
   os << (v.pass ? "PASS: " : "FAIL: ") << "utilisation_max " << v.utilisation_max << " (" << v.governing << ")";
   for (const std::string& f : fails) os << "; " << f;
-  // A skipped dynamic check is said, never silent; it does not fail the static checks.
-  if (!d.dynamics.done) os << "; dynamic check " << (d.dynamics.note.empty() ? "not run" : d.dynamics.note);
+  // A skipped dynamic run is said, never silent; it does not fail the static checks.
+  if (!d.dynamics.ran()) os << "; dynamic check not run";
+  const std::string not_done = d.dynamics.NotDone();
+  if (!not_done.empty()) os << "; dynamic check: " << not_done;
   v.summary = os.str();
   return v;
 }
@@ -303,10 +305,6 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     if (d.cases.empty()) throw ModelError("loads.cases: only travelling loads were asked for, and they are too costly to check at this n");
   }
   const bool single = d.cases.size() == 1 && !travels;
-  if (travels && !paper) {
-    d.notes.push_back("loads.travelling_speed_m_s: the dynamic check runs the paper's travelling load (eqs 50-51); "
-                      "Q_t moving at this speed is checked statically at every deck station, not dynamically");
-  }
 
   const EquilibriumSystem eq = BuildEquilibrium(s);
   const EquilibriumSolver solver(eq);

@@ -196,15 +196,18 @@ json CasesJson(const Design& d) {
 }
 
 json DynamicsJson(const Design& d) {
-  const DynamicCheck& c = d.dynamics;
-  json groups = json::array();
-  for (const GroupAmplification& g : c.groups) {
-    groups.push_back({{"group", g.group}, {"static_peak", g.static_peak}, {"dynamic_peak", g.dynamic_peak},
-                      {"amplification", g.amplification}});
+  json runs = json::array();
+  for (const DynamicRun& r : d.dynamics.runs) {
+    json groups = json::array();
+    for (const GroupAmplification& g : r.groups) {
+      groups.push_back({{"group", g.group}, {"static_peak", g.static_peak}, {"dynamic_peak", g.dynamic_peak},
+                        {"amplification", g.amplification}});
+    }
+    runs.push_back({{"name", r.name}, {"load", r.load}, {"done", r.done}, {"note", r.note},
+                    {"integrator", r.integrator}, {"dt", r.dt}, {"steps", r.steps}, {"duration", r.duration},
+                    {"peak_deck_displacement", r.peak_deck_displacement}, {"amplification", groups}});
   }
-  return {{"done", c.done}, {"note", c.note}, {"scenario", "paper_travelling (eqs 50-51) at service level"},
-          {"integrator", c.integrator}, {"dt", c.dt}, {"steps", c.steps}, {"duration", c.duration},
-          {"peak_deck_displacement", c.peak_deck_displacement}, {"amplification", groups}};
+  return {{"ran", d.dynamics.ran()}, {"runs", runs}};
 }
 
 json VerdictJson(const Design& d, const Verdict& v) {
@@ -348,15 +351,17 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 d.resizing.structure_mass_kg.front(), d.resizing.structure_mass_kg.back(),
                 d.resizing.converged ? "" : " (did not converge)"));
   }
-  if (d.dynamics.done) {
+  for (const DynamicRun& r : d.dynamics.runs) {
+    if (!r.done) {
+      line("dynamic check, " + r.name + ": " + r.note);
+      continue;
+    }
     std::string amp;
-    for (const GroupAmplification& g : d.dynamics.groups) amp += Format(" %s %.3g", g.group.c_str(), g.amplification);
-    line(Format("dynamic check: the paper's travelling load, %s at dt = %.3g s, %ld steps; peak deck displacement "
-                "%.4g m; dynamic amplification per group:%s",
-                d.dynamics.integrator.c_str(), d.dynamics.dt, d.dynamics.steps, d.dynamics.peak_deck_displacement,
+    for (const GroupAmplification& g : r.groups) amp += Format(" %s %.3g", g.group.c_str(), g.amplification);
+    line(Format("dynamic check, %s (%s): %s at dt = %.3g s, %ld steps; peak deck displacement %.4g m; dynamic "
+                "amplification per group:%s",
+                r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps, r.peak_deck_displacement,
                 amp.c_str()));
-  } else if (!d.dynamics.note.empty()) {
-    line("dynamic check: " + d.dynamics.note);
   }
   line(DesignVerdict(d).summary);
   line("");

@@ -32,15 +32,17 @@ struct StaticCheck {
   bool all_converged = true;
 };
 
-// The dynamic check (verify/dynamic_check.h): the paper's travelling load run at service level.
+// The dynamic check (verify/dynamic_check.h): each dynamic load run at service level.
 struct GroupAmplification {
   std::string group;          // member group ("deck", "substructure", "vertical", ...)
-  double static_peak = 0;     // largest force of the group's members over the static stations [N]
+  double static_peak = 0;     // largest force of the group's members over the static counterpart [N]
   double dynamic_peak = 0;    // largest in the run [N]
   double amplification = 0;   // the largest dynamic / static ratio of a member of the group
 };
 
-struct DynamicCheck {
+struct DynamicRun {
+  std::string name;        // "paper_travelling", "moving_load" or "wind_gust"
+  std::string load;        // what it applies, as an engineer writes it
   bool done = false;
   std::string note;        // why it was skipped, when not done
   std::string integrator;  // as resolved
@@ -49,6 +51,21 @@ struct DynamicCheck {
   double duration = 0;     // [s]
   double peak_deck_displacement = 0;  // [m], from the run's start (static equilibrium)
   std::vector<GroupAmplification> groups;
+};
+
+struct DynamicCheck {
+  std::vector<DynamicRun> runs;
+  bool ran() const { return !runs.empty(); }
+  // The runs not done, with their notes ("moving_load skipped: ..."); empty when all were.
+  std::string NotDone() const {
+    std::string out;
+    for (const DynamicRun& r : runs) {
+      if (r.done) continue;
+      if (!out.empty()) out.append("; ");
+      out.append(r.name).append(" ").append(r.note);
+    }
+    return out;
+  }
 };
 
 // The resizing loop's record (verify/verified_design.h).

@@ -24,15 +24,16 @@ NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& ti
       throw ModelError(std::string(engine) + ": a timed load names node " + std::to_string(l.node + 1) +
                        " out of range");
     }
-    timed_.push_back({l.t_start, l.t_end, l.node * dim_, {l.force.x(), l.force.y(), l.force.z()}});
+    timed_.push_back({l.t_start, l.t_end, l.rise_s, l.fall_s, l.node * dim_, {l.force.x(), l.force.y(), l.force.z()}});
   }
 }
 
 void NodeLoads::At(double t, double* force) const {
   std::memcpy(force, constant_.data(), sizeof(double) * static_cast<size_t>(constant_.size()));
   for (const PackedLoad& l : timed_) {
-    if (t >= l.t_start && t < l.t_end) {
-      for (int d = 0; d < dim_; ++d) force[l.o + d] += l.f[d];
+    const double shape = LoadShape(t, l.t_start, l.t_end, l.rise_s, l.fall_s);
+    if (shape != 0.0) {
+      for (int d = 0; d < dim_; ++d) force[l.o + d] += shape * l.f[d];
     }
   }
 }

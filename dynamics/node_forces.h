@@ -12,12 +12,24 @@
 
 namespace tbridge {
 
-// A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads.
+// A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads,
+// ramped up over rise_s and down over fall_s (LoadStepConfig).
 struct TimedLoad {
   double t_start = 0, t_end = 0;
   int node = 0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]; z ignored when dim = 2
+  double rise_s = 0, fall_s = 0;
 };
+
+// The fraction of a timed load's force acting at t: 0 outside [t_start, t_end), linear over
+// the rise and the fall, 1 between.
+inline double LoadShape(double t, double t_start, double t_end, double rise_s, double fall_s) {
+  if (t < t_start || t >= t_end) return 0.0;
+  double f = 1.0;
+  if (rise_s > 0 && t < t_start + rise_s) f = (t - t_start) / rise_s;
+  if (fall_s > 0 && t > t_end - fall_s) f = std::min(f, (t_end - t) / fall_s);
+  return f;
+}
 
 // One string between coordinate offsets oi, oj (node x dim).
 struct PackedString {
@@ -39,7 +51,7 @@ class NodeLoads {
 
  private:
   struct PackedLoad {
-    double t_start, t_end;
+    double t_start, t_end, rise_s, fall_s;
     int o;
     double f[3];
   };

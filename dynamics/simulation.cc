@@ -81,16 +81,19 @@ class Monitor {
     e.dissipated += 0.5 * (t - t_old) * (last_power_ + power);
     last_power_ = power;
     // Work of the loads: constant loads exactly, W . (x - x0); each timed load by its force
-    // times the displacement of its node over the part of the step it acts in.
+    // times the displacement of its node over the part of the step it acts in (exact for a
+    // step; a ramp's force taken at the middle of that part).
     double work = 0;
     for (int i = 0; i < c; ++i) work += model_loads(i) * (y[i] - x0_(i));
     for (TimedLoadState& l : timed_) {
       const double overlap = std::min(t, l.config.t_end) - std::max(t_old, l.config.t_start);
       const int o = (l.config.node - 1) * dim_;
       if (overlap > 0) {
+        const double mid = std::max(t_old, l.config.t_start) + 0.5 * overlap;
+        const double shape = LoadShape(mid, l.config.t_start, l.config.t_end, l.config.rise_s, l.config.fall_s);
         double fdx = 0;
         for (int d = 0; d < dim_; ++d) fdx += l.config.force[d] * (y[o + d] - l.last(d));
-        timed_work_ += fdx * overlap / (t - t_old);
+        timed_work_ += shape * fdx * overlap / (t - t_old);
       }
       for (int d = 0; d < dim_; ++d) l.last(d) = y[o + d];
     }
@@ -609,7 +612,8 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
     const std::string key = "dynamics.loads[" + std::to_string(k) + "]";
     if (l.node > n_n) throw ConfigError(key + ".node", std::to_string(l.node), "must be in 1.." + std::to_string(n_n));
     if (dim == 2 && l.force[2] != 0) throw ConfigError(key + ".force", Num(l.force[2]), "z must be 0 for a planar bridge");
-    timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2])});
+    timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2]), l.rise_s,
+                     l.fall_s});
   }
   SimulationResult result;
   result.dim = dim;

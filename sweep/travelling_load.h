@@ -18,8 +18,8 @@ struct TravellingLoadResult {
   double peak_string_stress = 0;      // max tension / area over strings and steps [Pa]
   double peak_stress_ratio = 0;       // peak_string_stress / sigma_w [-]
   int slack_strings = 0;              // strings that were slack (s < L0) at some step
-  // max over bars and steps of |bar force| / capacity, capacity = min(sigma_w A, Euler
-  // pi E A^2 / (4 l^2 SF_buckling)) for compression and sigma_w A for tension [-]
+  // max over bars and steps of |bar force| / capacity: the design's bar resistance
+  // (BarRuleOf: yield and buckling) in compression, its yield resistance in tension [-]
   double peak_bar_capacity_ratio = 0;
   long steps = 0;
   double dt = 0;           // the step taken [s]: the largest <= config.dt that divides a station
@@ -27,13 +27,9 @@ struct TravellingLoadResult {
   std::string engine;      // "class1" | "classk"
 };
 
-// The scenario of the run: the moving force load_factor x design.deck.node_load, downward,
-// on deck station k (every plane) for t in [k, k + 1) x duration / stations, on top of the
-// design loads; bar-force peaks, no frequency measurement, no node history. The step is the largest one <=
-// config.dt that puts a whole number of steps in each station, so the load switches on
-// step boundaries. Throws ModelError when the model has no deck nodes.
-DynamicsConfig TravellingLoadScenario(const DynamicModel& model, const Design& design,
-                                      const TravellingLoadConfig& config);
+// The scenario of the run: the paper's travelling load (verify/load_scenarios.h) of
+// load_factor x f per deck node (every plane), on top of the design loads.
+DynamicsConfig TravellingLoadScenario(const Design& design, const TravellingLoadConfig& config);
 
 // Runs the scenario on `model` (built from `design`; bars in design order). Throws ModelError
 // when the run blows up (non-finite state, a bar-length error above 1e-3 relative, or energy

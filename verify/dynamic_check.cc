@@ -9,13 +9,120 @@
 #include "design/static_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
-#include "sweep/travelling_load.h"
+#include "verify/load_scenarios.h"
 
 namespace tbridge {
 
 namespace {
 
-const char* const kCase = "dynamic: paper_travelling";  // where a member's dynamic utilisation comes from
+// One dynamic load: its scenario, the static loads it is compared with (each on top of the
+// model's standing loads), and the factor on what it adds to the permanent forces.
+struct LoadRun {
+  DynamicRun record;
+  DynamicsConfig scenario;
+  std::vector<Eigen::Matrix3Xd> static_counterparts;
+  double gamma = 1.0;
+};
+
+LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, std::vector<Eigen::Matrix3Xd> statics,
+                double gamma) {
+  LoadRun run;
+  run.record.name = name;
+  run.record.load = std::move(load);
+  run.scenario = std::move(scenario);
+  run.static_counterparts = std::move(statics);
+  run.gamma = gamma;
+  return run;
+}
+
+std::string Describe(const char* what, double value, const char* unit) {
+  std::ostringstream os;
+  os << what << value << unit;
+  return os.str();
+}
+
+// The loads a design is checked under: the paper's travelling load always; Q_t at walking
+// speed with the "travelling" case; the wind gust with the "wind" case on a 3D bridge.
+std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
+  const LoadsConfig& l = d.config.loads;
+  const double gamma_g_q = paper ? 1.0 : l.gamma_q;
+  std::vector<LoadRun> runs;
+  auto stations = [&d](double force) {
+    std::vector<Eigen::Matrix3Xd> out;
+    for (size_t k = 0; k < d.actions.station_nodes.size(); ++k) out.push_back(d.actions.StationLoad(static_cast<int>(k), force));
+    return out;
+  };
+  const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
+  runs.push_back(MakeRun("paper_travelling", Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
+                         PaperTravellingScenario(d, paper_duration, 1e-4, "rk4", d.deck.station_load),
+                         stations(d.deck.station_load), gamma_g_q));
+  const auto& cases = l.cases;
+  const auto asked = [&cases](const char* name) { return std::find(cases.begin(), cases.end(), name) != cases.end(); };
+  if (asked("travelling") && l.travelling_load_n > 0) {
+    runs.push_back(MakeRun("moving_load",
+                           Describe("Q_t = ", l.travelling_load_n, " N") +
+                               Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
+                           MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, 1e-4),
+                           stations(l.travelling_load_n), gamma_g_q));
+  }
+  if (asked("wind") && d.topology.planes == 2 && l.wind_n_per_m > 0) {
+    runs.push_back(MakeRun("wind_gust",
+                           Describe("W = ", l.wind_n_per_m, " N/m") + Describe(" rising over ", l.wind_rise_s, " s, then held"),
+                           WindGustScenario(d, l.wind_rise_s, 1e-4), {d.actions.base[kWind]}, l.gamma_w));
+  }
+  return runs;
+}
+
+// Runs `run` on `model`; a step that is not stable for this bridge blows up, and a quarter of
+// it is tried, twice. Fills the record's run fields, or its note when skipped or failed.
+bool Run(const DynamicModel& model, double members, double max_member_steps, LoadRun& run, SimulationSummary& summary) {
+  DynamicRun& r = run.record;
+  for (int attempt = 0;; ++attempt) {
+    const double steps = run.scenario.duration / run.scenario.dt;
+    if (steps * members > max_member_steps) {
+      std::ostringstream os;
+      os << "skipped: " << steps << " RK4 steps of " << members << " members at dt = " << run.scenario.dt
+         << " s exceed the " << max_member_steps << " member-steps the check allows";
+      r.note = os.str();
+      return false;
+    }
+    try {
+      summary = Simulate(model, run.scenario).summary;
+      break;
+    } catch (const ModelError& e) {
+      if (attempt == 2) {
+        r.note = "not done: the run failed at every step tried down to " + std::to_string(run.scenario.dt) + " s (" +
+                 e.what() + ")";
+        return false;
+      }
+      run.scenario.dt /= 4;
+    }
+  }
+  r.done = true;
+  r.dt = run.scenario.dt;
+  r.duration = run.scenario.duration;
+  r.steps = summary.steps;
+  r.integrator = summary.substeps > 1 ? summary.integrator + "x" + std::to_string(summary.substeps) : summary.integrator;
+  r.peak_deck_displacement = summary.peak_deck_displacement[1];
+  return true;
+}
+
+// Each member's largest force [C_bars; T_strings] over the static counterparts and the
+// standing loads alone, where every run starts [N].
+Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, std::vector<Eigen::Matrix3Xd> loads) {
+  const StaticModel statics = StaticModelOf(d);
+  const StaticState start = ReferenceState(statics, d);
+  const int nb = d.topology.structure.num_bars(), ns = d.topology.structure.num_strings();
+  Eigen::VectorXd peak = Eigen::VectorXd::Zero(nb + ns);
+  loads.push_back(Eigen::Matrix3Xd::Zero(3, model.loads.cols()));
+  for (const Eigen::Matrix3Xd& extra : loads) {
+    const StaticResult r = SolveStatic(statics, start, d.loads, model.loads + extra);
+    if (!r.converged) continue;
+    peak.head(nb) = peak.head(nb).cwiseMax(r.state.bar_compression);
+    peak.tail(ns) = peak.tail(ns).cwiseMax(r.state.string_tension);
+  }
+  return peak;
+}
 
 }  // namespace
 
@@ -28,89 +135,45 @@ DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
   options.gravity_on_structure = d.config.design.self_weight;
   options.deck_inertia = !paper;
   const DynamicModel model = BuildDynamicModel(d, options);
-
-  const int stations = static_cast<int>(d.actions.station_nodes.size());
-  TravellingLoadConfig run;
-  run.duration = 0.25 * stations;
-  run.integrator = "rk4";
-  run.load_factor = 1.0;
-  run.dt = 1e-4;
   const double members = static_cast<double>(d.bars.size() + d.strings.size());
-  if (run.duration / run.dt * members > max_member_steps) {
-    std::ostringstream os;
-    os << "skipped: " << run.duration / run.dt << " RK4 steps of " << members << " members exceed the "
-       << max_member_steps << " member-steps the check allows";
-    out.note = os.str();
-    return out;
-  }
-  // A step that is not stable for this bridge blows up; a quarter of it is tried, twice.
-  SimulationSummary summary;
-  for (int attempt = 0;; ++attempt) {
-    const DynamicsConfig scenario = TravellingLoadScenario(model, d, run);
-    try {
-      summary = Simulate(model, scenario).summary;
-      out.dt = scenario.dt;
-      break;
-    } catch (const ModelError& e) {
-      if (attempt == 2) {
-        out.note = std::string("not done: the run failed at every step tried down to ") + std::to_string(run.dt) +
-                   " s (" + e.what() + ")";
-        return out;
-      }
-      run.dt /= 4;
-      if (run.duration / run.dt * members > max_member_steps) {
-        out.note = "skipped: RK4 needs a step below " + std::to_string(run.dt * 4) + " s, too many member-steps";
-        return out;
-      }
-    }
-  }
-  out.done = true;
-  out.duration = run.duration;
-  out.steps = summary.steps;
-  out.integrator = summary.substeps > 1 ? summary.integrator + "x" + std::to_string(summary.substeps) : summary.integrator;
-  out.peak_deck_displacement = summary.peak_deck_displacement[1];
 
-  // The static counterpart: the same loads with f standing at each station.
-  const StaticModel statics = StaticModelOf(d);
-  const StaticState start = ReferenceState(statics, d);
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars();
-  Eigen::VectorXd static_peak = Eigen::VectorXd::Zero(nb + s.num_strings());
-  for (int k = 0; k < stations; ++k) {
-    const Eigen::Matrix3Xd loads = model.loads + d.actions.StationLoad(k, d.deck.station_load);
-    const StaticResult r = SolveStatic(statics, start, d.loads, loads);
-    if (!r.converged) continue;
-    for (int b = 0; b < nb; ++b) static_peak[b] = std::max(static_peak[b], r.state.bar_compression[b]);
-    for (int j = 0; j < s.num_strings(); ++j) static_peak[nb + j] = std::max(static_peak[nb + j], r.state.string_tension[j]);
-  }
-
   const double gamma_g = paper ? 1.0 : d.config.loads.gamma_g_sup;
-  const double gamma_q = paper ? 1.0 : d.config.loads.gamma_q;
   const BarRule rule = BarRuleOf(d.config);
   const double E = d.config.material.youngs_modulus;
   const double sigma_w = d.config.material.yield_stress / d.config.design.yield_safety_factor;
-  std::map<std::string, GroupAmplification> groups;
-  for (int j = 0; j < nb + s.num_strings(); ++j) {
-    const bool bar = j < nb;
-    MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
-    const std::string& group = bar ? s.bars[j].group : s.strings[j - nb].group;
-    const double peak = bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
-    const double demand = gamma_g * m.reference_force + gamma_q * std::max(peak - m.reference_force, 0.0);
-    if (bar) {
-      const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-      RaiseUtilisation(m, demand / std::min(cap.yield, cap.buckling), kCase, "dynamic");
-    } else {
-      if (m.area > 0) RaiseUtilisation(m, demand / (m.area * sigma_w), kCase, "dynamic");
-      const double strain = summary.min_string_strain[j - nb];
-      if (strain < 0) RaiseUtilisation(m, SlackUtilisation(strain, sigma_w, E), kCase, "slack");
+  for (LoadRun& run : LoadRuns(d, paper)) {
+    SimulationSummary summary;
+    if (Run(model, members, max_member_steps, run, summary)) {
+      const std::string label = "dynamic: " + run.record.name;
+      const Eigen::VectorXd static_peak = StaticPeaks(d, model, run.static_counterparts);
+      std::map<std::string, GroupAmplification> groups;
+      for (int j = 0; j < nb + s.num_strings(); ++j) {
+        const bool bar = j < nb;
+        MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
+        const std::string& group = bar ? s.bars[j].group : s.strings[j - nb].group;
+        const double peak = bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
+        // gamma_G on the permanent force, gamma on what the standing payload and the run add.
+        const double demand = gamma_g * m.reference_force + run.gamma * std::max(peak - m.reference_force, 0.0);
+        if (bar) {
+          const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
+          RaiseUtilisation(m, demand / std::min(cap.yield, cap.buckling), label, "dynamic");
+        } else {
+          if (m.area > 0) RaiseUtilisation(m, demand / (m.area * sigma_w), label, "dynamic");
+          const double strain = summary.min_string_strain[j - nb];
+          if (strain < 0) RaiseUtilisation(m, SlackUtilisation(strain, sigma_w, E), label, "slack");
+        }
+        GroupAmplification& g = groups[group];
+        g.group = group;
+        g.static_peak = std::max(g.static_peak, static_peak[j]);
+        g.dynamic_peak = std::max(g.dynamic_peak, peak);
+        if (static_peak[j] > 0) g.amplification = std::max(g.amplification, peak / static_peak[j]);
+      }
+      for (auto& [name, g] : groups) run.record.groups.push_back(g);
     }
-    GroupAmplification& g = groups[group];
-    g.group = group;
-    g.static_peak = std::max(g.static_peak, static_peak[j]);
-    g.dynamic_peak = std::max(g.dynamic_peak, peak);
-    if (static_peak[j] > 0) g.amplification = std::max(g.amplification, peak / static_peak[j]);
+    out.runs.push_back(std::move(run.record));
   }
-  for (auto& [name, g] : groups) out.groups.push_back(g);
   return out;
 }
 

@@ -1,14 +1,19 @@
-// The dynamic check of a sized design: the paper's travelling load (eqs 50-51) run on the
-// bridge at service level. The permanent load and the payload stand (their weight in the
-// loads, the deck's and the payload's mass at the deck nodes), the bridge starts at rest in
-// its static equilibrium under them, and the deck node load f visits each inner deck node for
-// 0.25 s. RK4 at a step of at most 1e-4 s that divides the 0.25 s: SDIRK3 under-reports the
-// string peaks by up to 22 % (BENCHMARKS.md), so the check does not use it.
+// The dynamic check of a sized design: its dynamic loads run on the bridge at service level.
+// The permanent load and the payload stand (their weight in the loads, the deck's and the
+// payload's mass at the deck nodes), and the bridge starts at rest in its static equilibrium
+// under them. The loads (verify/load_scenarios.h):
+// - the paper's travelling load (eqs 50-51), always: f on each inner deck station for 0.25 s;
+// - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
+// - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
+// RK4 at a step of at most 1e-4 s: SDIRK3 under-reports the string peaks by up to 22 %
+// (BENCHMARKS.md), so the check does not use it.
 //
-// A member's dynamic demand is gamma_G,sup F_G + gamma_Q (F_peak - F_G), F_G its force in the
-// reference state and F_peak its peak in the run (the factors are 1 with the paper's
-// switches); its utilisation is that over its resistance. A string that goes slack in the
-// run fails with mode "slack".
+// A member's dynamic demand is gamma_G,sup F_G + gamma (F_peak - F_G), F_G its force in the
+// reference state, F_peak its peak in the run and gamma the load's factor (gamma_Q for the
+// travelling loads, gamma_W for wind; all 1 with the paper's switches); its utilisation is that
+// over its resistance. A string that goes slack in a run fails with mode "slack". Each run's
+// peaks are compared per member group with its static counterpart (the load standing at each
+// station, or the full wind) for the dynamic amplification.
 #pragma once
 
 #include "design/design.h"
@@ -16,8 +21,8 @@
 namespace tbridge {
 
 // Runs the check and raises the members' utilisations (mode "dynamic" or "slack", case
-// "dynamic: paper_travelling"). Skips it, saying why in the result's note, when the run
-// would take more than `max_member_steps` member-steps.
+// "dynamic: <run>"). Skips a run, saying why in its note, when it would take more than
+// `max_member_steps` member-steps.
 DynamicCheck CheckDynamics(Design& design, double max_member_steps = 5e7);
 
 }  // namespace tbridge

@@ -25,7 +25,7 @@ json FullDynamics() {
     "atol": 1e-9, "string_mass": "nodes", "damping_c": 2, "stabilisation": {"enabled": true, "omega_rad_s": 50,
     "zeta": 0.5}, "prestrain": [{"group": "deck", "ratio": 0.95}], "perturbation": {"bar_class": 1, "delta": 0.01},
     "initial": [{"node": 2, "displacement": [0, 0.01, 0], "velocity": [0, 0, 0.1]}],
-    "loads": [{"t_start": 0, "t_end": 0.1, "node": 3, "force": [0, -10, 0]}],
+    "loads": [{"t_start": 0, "t_end": 0.1, "node": 3, "force": [0, -10, 0], "rise_s": 0.02, "fall_s": 0.05}],
     "record": {"nodes": [2, 3], "every": 5, "csv": false, "bar_forces": true},
     "frequency": {"enabled": false, "every": 20}, "guard": {"max_bar_length_error": 0.01, "max_energy_growth": 2},
     "gravity_on_structure": true, "limits": {"max_steps": 300000000, "max_output_bytes": 1e9}})");
@@ -127,6 +127,8 @@ TEST_CASE("Validate: a default config passes, the rules across keys hold in code
       {with(dynamics, "/dynamics/dt", 1.0), [](Config& k) { k.dynamics->dt = 1.0; }},
       {with(dynamics, "/dynamics/loads/0/t_end", 0),
        [](Config& k) { k.dynamics->loads[0].t_end = 0; }},
+      {with(dynamics, "/dynamics/loads/0/rise_s", 0.08),  // with fall_s 0.05: 0.13 s in 0.1 s
+       [](Config& k) { k.dynamics->loads[0].rise_s = 0.08; }},
       {with(dynamics, "/dynamics/prestrain/1", json{{"group", "deck"}, {"ratio", 0.9}}),
        [](Config& k) {
          k.dynamics->prestrain.push_back({"deck", 0.9});

@@ -1,0 +1,118 @@
+// The dynamic loads of the check: the moving point load against the lever rule's closed form,
+// and the moving load and the wind gust, run slowly, against their static counterparts (the
+// quasi-static limit of a dynamic run).
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "sweep/first_frequency.h"
+#include "dynamics/model.h"
+#include "dynamics/node_forces.h"
+#include "verify/dynamic_check.h"
+#include "verify/load_scenarios.h"
+
+namespace tbridge {
+namespace {
+
+// The vertical load the scenario puts on the deck at time t, and its first moment about x = 0.
+struct DeckLoad {
+  double total = 0;   // [N], upward positive
+  double moment = 0;  // [N m]
+};
+DeckLoad LoadAt(const Design& d, const DynamicsConfig& run, double t) {
+  DeckLoad out;
+  for (const LoadStepConfig& l : run.loads) {
+    const double f = LoadShape(t, l.t_start, l.t_end, l.rise_s, l.fall_s) * l.force[1];
+    out.total += f;
+    out.moment += f * d.topology.structure.nodes(0, l.node - 1);
+  }
+  return out;
+}
+
+TEST_CASE("a load crossing the deck is shared between deck nodes by the lever rule", "[verify][dynamics]") {
+  Config config;
+  config.bridge.n = 3;
+  const Design d = RunDesign(config);
+  const double q = 10000, v = 1.5, span = config.bridge.span;
+  const DynamicsConfig run = MovingLoadScenario(d, q, v, 1e-4);
+  REQUIRE(run.duration == Approx(span / v).epsilon(1e-15));
+  const std::vector<double>& x = d.actions.station_x;
+  // 1e-12 relative: sums of a few products of ramps computed in double precision.
+  for (int k = 0; k <= 200; ++k) {
+    const double t = run.duration * k / 200.0, at = v * t;
+    const DeckLoad load = LoadAt(d, run, t);
+    INFO("t = " << t << " s, load at x = " << at << " m");
+    if (at >= x.front() && at <= x.back()) {
+      // Between the first and the last station the deck nodes carry all of it, centred on v t.
+      CHECK(-load.total == Approx(q).epsilon(1e-12));
+      CHECK(load.moment / load.total == Approx(at).margin(1e-12 * span));
+    } else {
+      // Between a support and its nearest station that station carries the lever rule's share,
+      // the support the rest: q (distance from the support) / (station's distance from it).
+      const double share = at < x.front() ? at / x.front() : (span - at) / (span - x.back());
+      CHECK(-load.total == Approx(q * share).margin(1e-12 * q));
+    }
+  }
+}
+
+// A dynamic run whose load changes over times T_r much longer than the bridge's periods
+// follows the static response: on each mode a ramp overshoots its static value by at most
+// 2 / (omega T_r) of the change (the undamped one-degree-of-freedom ramp response), and the
+// lowest frequency bounds that for every mode.
+double QuasiStaticBound(const Design& d, double ramp_s) {
+  ModelOptions options;
+  options.gravity_on_structure = true;
+  const DynamicModel model = BuildDynamicModel(d, options);
+  return 2.0 / (LowestFrequency(model).omega_rad_s * ramp_s);
+}
+
+TEST_CASE("a load crossing slowly gives its static peaks", "[verify][dynamics]") {
+  Config config;
+  config.bridge.n = 2;
+  config.loads.travelling_speed_m_s = 0.2;  // 3 m between stations: 15 s ramps
+  Design d = RunDesign(config);
+  const DynamicCheck check = CheckDynamics(d);
+  const DynamicRun& run = check.runs.at(1);
+  REQUIRE(run.name == "moving_load");
+  REQUIRE(run.done);
+  const double ramp_s = config.bridge.span / 4 / 0.2;
+  const double bound = QuasiStaticBound(d, ramp_s);
+  INFO("quasi-static bound " << bound);
+  REQUIRE(bound < 0.01);
+  // Each group's dynamic peak against its static peak with Q_t standing at each station: equal
+  // but for the overshoot bound (on the whole force, which the standing loads only dilute).
+  for (const GroupAmplification& g : run.groups) {
+    INFO("group " << g.group);
+    CHECK(g.amplification <= 1 + bound);
+    CHECK(g.amplification >= 1 - bound);
+  }
+}
+
+TEST_CASE("a slowly rising wind gives the static wind's forces", "[verify][dynamics]") {
+  Config config;
+  config.bridge.n = 2;
+  config.bridge.planes = 2;
+  config.bridge.beta_deg = 20;
+  config.bridge.deck_width = 1.5;
+  // The 3D design found with the paper's factors (SPEC's 3D bridge) and every engineering case.
+  config.design.yield_safety_factor = 10;
+  config.design.buckling_safety_factor = 1;
+  config.design.bar_resistance = "euler";
+  config.loads.wind_rise_s = 20;
+  Design d = RunDesign(config);
+  const DynamicCheck check = CheckDynamics(d);
+  const DynamicRun& run = check.runs.back();
+  REQUIRE(run.name == "wind_gust");
+  REQUIRE(run.done);
+  const double bound = QuasiStaticBound(d, config.loads.wind_rise_s);
+  INFO("quasi-static bound " << bound);
+  REQUIRE(bound < 0.01);
+  for (const GroupAmplification& g : run.groups) {
+    INFO("group " << g.group << ": static " << g.static_peak << " N, dynamic " << g.dynamic_peak << " N");
+    CHECK(g.amplification <= 1 + bound);
+    CHECK(g.amplification >= 1 - bound);
+  }
+}
+
+}  // namespace
+}  // namespace tbridge
