@@ -155,6 +155,10 @@ Verdict DesignVerdict(const Design& d) {
   return v;
 }
 
+bool MustStayTaut(const Design& d, int k) {
+  return d.strings[k].kind == MemberKind::kDeckString || d.topology.structure.strings[k].group == "transverse";
+}
+
 void RequireStable(const Design& d) {
   const StabilityVerdict& v = d.stability;
   if (v.stable) return;

@@ -103,6 +103,12 @@ BarRule BarRuleOf(const Config& config);
 // structure that buckles under its own design load is no design.
 void RequireStable(const Design& design);
 
+// Whether string k must stay taut in service: the strings whose prestress the design sets (the
+// deck chain, the planar bridge's one self-stress; the 3D bridge's transverse strings, which
+// couple the planes only through it). Any other string may go slack: the checks then find the
+// bridge's equilibrium (statically, or its motion) without it, and check the rest.
+bool MustStayTaut(const Design& design, int k);
+
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);
 

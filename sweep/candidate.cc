@@ -8,6 +8,7 @@
 #include "dynamics/model.h"
 #include "sweep/first_frequency.h"
 #include "sweep/travelling_load.h"
+#include "verify/verified_design.h"
 
 namespace tbridge {
 
@@ -104,13 +105,26 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   CandidateRow row;
   row.candidate = candidate;
   try {
-    Design design = RunDesign(CandidateConfig(spec, candidate));
-    RequireStable(design);  // as tbridge design: an unstable candidate is no design (its note says why)
+    const Config config = CandidateConfig(spec, candidate);
+    // As tbridge design: an unstable candidate is no design (its note says why).
+    Design design = sw.verified ? DesignAndVerify(config) : RunDesign(config);
+    RequireStable(design);
+    row.first_design = design.resizing.structure_mass_kg.empty() ? design.mass.structure
+                                                                 : design.resizing.structure_mass_kg.front();
+    row.designs = std::max(1, design.resizing.iterations);
+    if (sw.verified) {
+      const Verdict verdict = DesignVerdict(design);
+      row.verified = verdict.pass;
+      row.utilisation_max = verdict.utilisation_max;
+      if (!verdict.pass) row.note = verdict.summary;
+    }
     const Material& mat = design.config.material;
     row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
     ModelOptions options;
     options.string_mass = MassMode(sw.travelling_load.string_mass);
     options.damping = sw.travelling_load.damping_c;
+    options.deck_inertia = sw.travelling_load.deck_inertia;
+    options.gravity_on_structure = design.config.design.self_weight;
     const bool prestrained = candidate.deck_prestrain < 1.0;
     if (prestrained && sw.prestrain_sizing == "grow_area") {
       row.deck_string_area_factor = GrowDeckStrings(design, candidate.deck_prestrain);
@@ -155,6 +169,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   auto check = [&](bool active, bool passed, const char* name) {
     if (active && !passed) row.violated.push_back(name);
   };
+  check(sw.verified, row.verified.value_or(false), kVerifiedDesign);
   check(con.min_first_frequency_rad_s.has_value(),
         row.first_frequency_rad_s && *row.first_frequency_rad_s >= con.min_first_frequency_rad_s.value_or(0),
         kMinFirstFrequency);

@@ -22,6 +22,7 @@ struct Candidate {
 std::vector<Candidate> EnumerateCandidates(const SweepConfig& sweep);
 
 // Names of the constraints, in the order they are checked and reported.
+inline constexpr const char* kVerifiedDesign = "verified_design";
 inline constexpr const char* kMinFirstFrequency = "min_first_frequency";
 inline constexpr const char* kMaxDeckDisplacement = "max_deck_displacement";
 inline constexpr const char* kSpanOverDisplacement = "span_over_displacement";
@@ -37,6 +38,12 @@ struct CandidateRow {
   // Masses [kg]: the design's parts after any deck-string growth (MassBreakdown).
   double bars = 0, strings = 0, deck_strings = 0, deck_beams = 0, structure = 0, total = 0;
   double joint_mass = 0;  // [kg]
+  // The verification (sweep.verified): the structure mass of the first design, before any
+  // resizing [kg]; the designs run; the verdict and the largest utilisation.
+  double first_design = 0;
+  int designs = 1;
+  std::optional<bool> verified;
+  std::optional<double> utilisation_max;
   double objective = 0;   // total + joint_mass [kg]
   int free_nodes = 0;
   double deck_string_area_factor = 1;  // deck-string area / design area (grow_area)
@@ -54,6 +61,12 @@ struct CandidateRow {
 
 // Evaluates one candidate of `spec`. Design or run failures (ModelError) give a row with
 // ok = false and the message in `note`; bad input (ConfigError) propagates.
+//
+// With sweep.verified the design is DesignAndVerify's (tbridge design's): checked statically
+// and dynamically and resized until it passes; a verdict that fails makes the row infeasible
+// (verified_design), its note the verdict. The dynamic model of the modes and the run carries
+// gravity on the structure with design.self_weight, and the deck's inertia with
+// sweep.travelling_load.deck_inertia.
 //
 // Deck prestrain r < 1 (SweepConfig::prestrain_sizing):
 // - grow_area: the wanted deck-string tension is T = E A0 (1/r - 1), A0 the design area. The

@@ -215,6 +215,10 @@ void RowFields(Row& r, Visit&& v) {  // Row: CandidateRow or const CandidateRow
   v("mass_kg", "total", r.total);
   v("mass_kg", "joints", r.joint_mass);
   v("mass_kg", "objective", r.objective);
+  v("mass_kg", "first_design", r.first_design);
+  v("", "designs", r.designs);
+  v("", "verified", r.verified);
+  v("", "utilisation_max", r.utilisation_max);
   v("", "free_nodes", r.free_nodes);
   v("", "deck_string_area_factor", r.deck_string_area_factor);
   v("", "prestress_pa", r.prestress);
@@ -283,7 +287,8 @@ std::string SweepFingerprint(const SweepSpec& spec) {
 std::string SweepCsv(const std::vector<CandidateRow>& rows) {
   std::ostringstream out;
   out << "index,n,p,beta_deg,deck_prestrain,ok,bars_kg,strings_kg,deck_strings_kg,deck_beams_kg,structure_kg,"
-         "total_kg,joint_mass_kg,objective_kg,deck_string_area_factor,prestress_pa,first_frequency_rad_s,"
+         "total_kg,joint_mass_kg,objective_kg,first_design_kg,designs,verified,utilisation_max,"
+         "deck_string_area_factor,prestress_pa,first_frequency_rad_s,"
          "peak_deck_displacement_m,peak_stress_ratio,slack_strings,peak_bar_capacity_ratio,run_integrator,feasible,violated,note\n";
   auto opt = [](const std::optional<double>& v) { return v ? Fixed(*v) : std::string(); };
   for (const CandidateRow& r : rows) {
@@ -291,7 +296,9 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
     out << c.index << "," << c.n << "," << c.p << "," << Fixed(c.beta_deg) << "," << Fixed(c.deck_prestrain) << ","
         << (r.ok ? 1 : 0) << "," << Fixed(r.bars) << "," << Fixed(r.strings) << "," << Fixed(r.deck_strings) << ","
         << Fixed(r.deck_beams) << "," << Fixed(r.structure) << "," << Fixed(r.total) << "," << Fixed(r.joint_mass)
-        << "," << Fixed(r.objective) << "," << Fixed(r.deck_string_area_factor) << "," << Fixed(r.prestress) << ","
+        << "," << Fixed(r.objective) << "," << Fixed(r.first_design) << "," << r.designs << ","
+        << (r.verified ? (*r.verified ? "1" : "0") : "") << "," << opt(r.utilisation_max) << ","
+        << Fixed(r.deck_string_area_factor) << "," << Fixed(r.prestress) << ","
         << opt(r.first_frequency_rad_s) << "," << opt(r.peak_deck_displacement) << "," << opt(r.peak_stress_ratio)
         << "," << (r.slack_strings ? std::to_string(*r.slack_strings) : std::string()) << ","
         << opt(r.peak_bar_capacity_ratio) << "," << r.run_integrator.value_or("") << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","

@@ -27,9 +27,9 @@ struct SweepConstraints {
   std::optional<double> min_first_frequency_rad_s;  // [rad/s], > 0
   std::optional<double> max_deck_displacement;      // peak |dy| of a deck node [m], > 0
   std::optional<double> span_over_displacement;     // span / peak |dy| must be >= this [-], > 0
-  bool no_slack_under_service = false;              // no string goes slack in the run
+  bool no_slack_under_service = true;               // no string goes slack in the run
   std::optional<double> max_dynamic_stress_ratio;   // peak string stress / sigma_w [-], > 0
-  bool bar_capacity_during_motion = false;          // peak bar force <= yield and Euler capacity
+  bool bar_capacity_during_motion = true;           // peak bar force <= the design's bar resistance
   bool prestress_within_allowed = false;            // prestrained strings' stress <= sigma_w
 };
 
@@ -49,6 +49,7 @@ struct TravellingLoadConfig {
   double load_factor = 1.0;  // moving load / design node load [-], (0, 100]
   std::string string_mass = "bars";  // as dynamics.string_mass
   double damping_c = 0;      // c of every string [N s/m], [0, 1e9]
+  bool deck_inertia = true;  // the deck's and payload's mass at the deck nodes, as dynamics.deck_inertia
 };
 
 // What to compute even when no constraint needs it.
@@ -70,6 +71,10 @@ struct SweepConfig {
   // stays allowed, and the mass shows it. "keep_area": A0 is kept, rest length = r x length
   // (the paper's Table 6 experiment); the implied stress E (1/r - 1) may exceed sigma_w.
   std::string prestrain_sizing = "grow_area";
+  // Each candidate is the verified design (verify/verified_design.h: its static and dynamic
+  // checks, and the resizing of what fails), as tbridge design writes it; false: the
+  // minimum-mass design alone.
+  bool verified = true;
   JointMassConfig joint_mass;
   SweepConstraints constraints;
   TravellingLoadConfig travelling_load;

@@ -41,7 +41,7 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
       KeyInfo{"span_over_displacement", "–", "span / that peak >= this (e.g. 1000 for L/1000)"},
       c.span_over_displacement, Range::Positive(), Absent::kNull);
   v.Bool(KeyInfo{"no_slack_under_service", "–",
-                 "no string goes slack (s < L0) at any step of the run"},
+                 "no string goes slack (s < L0) at any step of the travelling-load run"},
          c.no_slack_under_service);
   v.OptionalNumber(
       KeyInfo{"max_dynamic_stress_ratio", "–",
@@ -49,8 +49,9 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
               "any load on top of it gives > 1; yield is at `yield_safety_factor`"},
       c.max_dynamic_stress_ratio, Range::Positive(), Absent::kNull);
   v.Bool(KeyInfo{"bar_capacity_during_motion", "–",
-                 "peak bar force <= min(sigma_w·A, Euler pi·E·A²/(4·l²·SF)) in compression, "
-                 "sigma_w·A in tension, at every step (bar forces lambda·l from the class-k "
+                 "peak bar force in the travelling-load run <= the design's bar resistance "
+                 "(`design.bar_resistance`: the column curve, or the paper's Euler load) in compression, "
+                 "its yield resistance in tension, at every step (bar forces lambda·l from the class-k "
                  "multipliers, dynamics/classk.h, for any class)"},
          c.bar_capacity_during_motion);
   v.Bool(
@@ -95,6 +96,10 @@ void DescribeFields(T& t,
            t.string_mass, {"bars", "nodes", "off"});
   v.Number(KeyInfo{"damping_c", "N·s/m", "string damping in the modes' model and the run"},
            t.damping_c, Range::Closed(0.0, 1e9));
+  v.Bool(KeyInfo{"deck_inertia", "–",
+                 "the deck beams' and the standing payload's mass at the deck nodes, in the modes and the "
+                 "run, as `dynamics.deck_inertia`"},
+         t.deck_inertia);
 }
 
 template <class R, class V>
@@ -124,6 +129,13 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
           "`keep_area`: A0 kept, L0 = r·s (Table 6's experiment); the stress E·(1/r − 1) may "
           "exceed sigma_w. The design itself is unchanged; only the candidate's copy is"},
       s.prestrain_sizing, {"grow_area", "keep_area"});
+  v.Bool(KeyInfo{"verified", "–",
+                 "each candidate is the verified design, as `tbridge design` writes it: its static check "
+                 "of every case, its dynamic check and the resizing of what fails, so its mass carries "
+                 "its dynamic premium over the first design (`mass_kg.first_design`); a candidate whose "
+                 "verification does not pass is infeasible (`verified_design`). false: the minimum-mass "
+                 "design alone"},
+         s.verified);
   v.Section("joint_mass", s.joint_mass);
   v.Section("constraints", s.constraints);
   v.Section("travelling_load", s.travelling_load);

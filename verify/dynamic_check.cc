@@ -162,7 +162,7 @@ DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
         } else {
           if (m.area > 0) RaiseUtilisation(m, demand / (m.area * sigma_w), label, "dynamic");
           const double strain = summary.min_string_strain[j - nb];
-          if (strain < 0) RaiseUtilisation(m, SlackUtilisation(strain, sigma_w, E), label, "slack");
+          if (strain < 0 && MustStayTaut(d, j - nb)) RaiseUtilisation(m, SlackUtilisation(strain, sigma_w, E), label, "slack");
         }
         GroupAmplification& g = groups[group];
         g.group = group;

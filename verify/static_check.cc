@@ -79,7 +79,7 @@ StaticCheck CheckStatics(Design& d, int max_stations) {
           const Member& e = s.strings[k];
           const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
           MemberSizing& m = d.strings[k];
-          if (length >= m.rest_length) continue;
+          if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
           RaiseUtilisation(m, SlackUtilisation((length - m.rest_length) / m.rest_length, sigma_w, E), r.label, "slack");
         }
         if (r.deflection_m > out.deflection_max_m) {

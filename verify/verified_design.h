@@ -1,11 +1,12 @@
-// A design that holds under its own checks: the minimum-mass design, its static check
-// (verify/static_check.h), and a fully-stressed resizing of what fails, repeated.
+// A design that holds under its own checks: the minimum-mass design, its static and dynamic
+// checks (verify/static_check.h, verify/dynamic_check.h), and a fully-stressed resizing of
+// what fails, repeated.
 //
 // Each pass designs with per-member area floors (RunDesign's `area_floor`), so the self-weight
 // fixed point, the prestress and the rest lengths are recomputed with the new sizes. A member
 // that fails in yield grows by its utilisation, one that buckles by its square root (Euler's
-// load grows with A^2); slack strings or a deflection past its limit stiffen every string by
-// the deflection's excess (at least 10 %). Floors only rise, so no member shrinks while it
+// load grows with A^2); a slack string that must stay taut (MustStayTaut) or a deflection
+// past its limit stiffens every string by the deflection's excess (at least 10 %). Floors only rise, so no member shrinks while it
 // fails. The loop ends when the verdict passes or after `max_iterations`, saying why not.
 // With the paper's switches (loads.cases ["paper"]) the design is the paper's: it is checked
 // and reported, not resized.

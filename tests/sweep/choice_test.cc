@@ -15,9 +15,11 @@ namespace {
 
 using nlohmann::json;
 
+// The paper's outer loop: its designs as they are (not verified), the paper's model (no deck
+// inertia) and only the constraints each test names.
 SweepSpec Spec(const std::string& sweep_json) {
   json root = {{"bridge", {{"beta_deg", 10}}}};
-  root["sweep"] = json::parse(sweep_json);
+  root["sweep"] = test::PaperSweep(json::parse(sweep_json));
   return ParseSweepSpec(test::WithPaperSwitches(root));
 }
 

@@ -64,7 +64,8 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "
 }
 
 TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass", "[sweep]") {
-  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", {{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}}}};
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"sweep", test::PaperSweep({{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}})}};
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
   REQUIRE(grid.size() == 3);
@@ -87,7 +88,7 @@ TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and 
 
   // keep_area: the paper's experiment; the implied stress is far past the allowed one.
   root["sweep"]["prestrain_sizing"] = "keep_area";
-  root["sweep"]["constraints"] = {{"prestress_within_allowed", true}};
+  root["sweep"]["constraints"]["prestress_within_allowed"] = true;
   const SweepSpec keep = ParseSweepSpec(test::WithPaperSwitches(root));
   const CandidateRow kept = EvaluateCandidate(keep, grid[1]);
   CHECK(kept.deck_string_area_factor == 1.0);

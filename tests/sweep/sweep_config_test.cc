@@ -36,7 +36,13 @@ TEST_CASE("a minimal sweep config resolves its defaults", "[sweep]") {
   CHECK(s.sweep.deck_prestrain == std::vector<double>{1.0});
   CHECK(s.sweep.size() == 3);
   CHECK_FALSE(s.sweep.NeedsModes());
-  CHECK_FALSE(s.sweep.NeedsRun());
+  // Candidates are verified designs, and bar capacity and no-slack in the travelling-load run
+  // are constraints unless switched off.
+  CHECK(s.sweep.verified);
+  CHECK(s.sweep.constraints.no_slack_under_service);
+  CHECK(s.sweep.constraints.bar_capacity_during_motion);
+  CHECK(s.sweep.travelling_load.deck_inertia);
+  CHECK(s.sweep.NeedsRun());
   // The echoed config (with null for absent constraints) reads back to the same spec.
   const SweepSpec again = ParseSweepSpec(ToJson(s));
   CHECK(ToJson(again) == ToJson(s));

@@ -56,8 +56,12 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
     CHECK(peak == Approx(g.dynamic_peak).epsilon(1e-12));
   }
   // And the run confirms the design holds: no member past its resistance at service level
-  // (the check's factored demand is the stricter one), no string slack.
-  CHECK(s.slack.ever_slack == 0);
+  // (the check's factored demand is the stricter one), and no string that must stay taut (the
+  // deck chain) goes slack; others may, and the run carries the load without them.
+  for (int k = 0; k < st.num_strings(); ++k) {
+    INFO("string " << d.strings[k].name);
+    if (MustStayTaut(d, k)) CHECK(s.min_string_strain[k] >= 0);
+  }
   CHECK(s.max_string_stress <= d.config.material.yield_stress / d.config.design.yield_safety_factor);
 }
 
