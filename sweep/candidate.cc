@@ -116,7 +116,8 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
       const Verdict verdict = DesignVerdict(design);
       row.verified = verdict.pass;
       row.utilisation_max = verdict.utilisation_max;
-      if (!verdict.pass) row.note = verdict.summary;
+      // The verdict says what failed, or which dynamic run was skipped and why.
+      if (!verdict.pass || !design.dynamics.NotDone().empty()) row.note = verdict.summary;
     }
     const Material& mat = design.config.material;
     row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
@@ -154,6 +155,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
         row.peak_deck_displacement = run.peak_deck_displacement;
         row.peak_stress_ratio = run.peak_stress_ratio;
         row.slack_strings = run.slack_strings;
+        row.slack_taut_strings = run.slack_taut_strings;
         row.peak_bar_capacity_ratio = run.peak_bar_capacity_ratio;
         row.run_integrator = run.integrator;
       }
@@ -179,7 +181,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   check(con.span_over_displacement.has_value(),
         row.peak_deck_displacement && *row.peak_deck_displacement * con.span_over_displacement.value_or(0) <= span,
         kSpanOverDisplacement);
-  check(con.no_slack_under_service, row.slack_strings && *row.slack_strings == 0, kNoSlack);
+  check(con.no_slack_under_service, row.slack_taut_strings && *row.slack_taut_strings == 0, kNoSlack);
   check(con.max_dynamic_stress_ratio.has_value(),
         row.peak_stress_ratio && *row.peak_stress_ratio <= con.max_dynamic_stress_ratio.value_or(0), kMaxDynamicStress);
   check(con.bar_capacity_during_motion, row.peak_bar_capacity_ratio && *row.peak_bar_capacity_ratio <= 1.0,

@@ -52,7 +52,8 @@ struct CandidateRow {
   std::optional<double> first_frequency_rad_s;
   std::optional<double> peak_deck_displacement;  // [m]
   std::optional<double> peak_stress_ratio;       // peak string stress / sigma_w
-  std::optional<int> slack_strings;
+  std::optional<int> slack_strings;       // every string slack at some step of the run
+  std::optional<int> slack_taut_strings;  // of those, the ones that must stay taut (MustStayTaut)
   std::optional<double> peak_bar_capacity_ratio;
   std::optional<std::string> run_integrator;  // "rk4" | "rk4xM" | "sdirk3": what the travelling load ran with
   bool feasible = false;

@@ -227,6 +227,7 @@ void RowFields(Row& r, Visit&& v) {  // Row: CandidateRow or const CandidateRow
   v("", "peak_deck_displacement_m", r.peak_deck_displacement);
   v("", "peak_stress_ratio", r.peak_stress_ratio);
   v("", "slack_strings", r.slack_strings);
+  v("", "slack_taut_strings", r.slack_taut_strings);
   v("", "peak_bar_capacity_ratio", r.peak_bar_capacity_ratio);
   v("", "run_integrator", r.run_integrator);
   v("", "feasible", r.feasible);
@@ -289,7 +290,7 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
   out << "index,n,p,beta_deg,deck_prestrain,ok,bars_kg,strings_kg,deck_strings_kg,deck_beams_kg,structure_kg,"
          "total_kg,joint_mass_kg,objective_kg,first_design_kg,designs,verified,utilisation_max,"
          "deck_string_area_factor,prestress_pa,first_frequency_rad_s,"
-         "peak_deck_displacement_m,peak_stress_ratio,slack_strings,peak_bar_capacity_ratio,run_integrator,feasible,violated,note\n";
+         "peak_deck_displacement_m,peak_stress_ratio,slack_strings,slack_taut_strings,peak_bar_capacity_ratio,run_integrator,feasible,violated,note\n";
   auto opt = [](const std::optional<double>& v) { return v ? Fixed(*v) : std::string(); };
   for (const CandidateRow& r : rows) {
     const Candidate& c = r.candidate;
@@ -301,6 +302,7 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
         << Fixed(r.deck_string_area_factor) << "," << Fixed(r.prestress) << ","
         << opt(r.first_frequency_rad_s) << "," << opt(r.peak_deck_displacement) << "," << opt(r.peak_stress_ratio)
         << "," << (r.slack_strings ? std::to_string(*r.slack_strings) : std::string()) << ","
+        << (r.slack_taut_strings ? std::to_string(*r.slack_taut_strings) : std::string()) << ","
         << opt(r.peak_bar_capacity_ratio) << "," << r.run_integrator.value_or("") << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","
         << CsvText(r.note) << "\n";
   }

@@ -41,7 +41,8 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
       KeyInfo{"span_over_displacement", "–", "span / that peak >= this (e.g. 1000 for L/1000)"},
       c.span_over_displacement, Range::Positive(), Absent::kNull);
   v.Bool(KeyInfo{"no_slack_under_service", "–",
-                 "no string goes slack (s < L0) at any step of the travelling-load run"},
+                 "no string that must stay taut (the deck chain; the 3D bridge's transverse strings) goes "
+                 "slack (s < L0) at any step of the travelling-load run; other strings may"},
          c.no_slack_under_service);
   v.OptionalNumber(
       KeyInfo{"max_dynamic_stress_ratio", "–",
@@ -133,8 +134,9 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
                  "each candidate is the verified design, as `tbridge design` writes it: its static check "
                  "of every case, its dynamic check and the resizing of what fails, so its mass carries "
                  "its dynamic premium over the first design (`mass_kg.first_design`); a candidate whose "
-                 "verification does not pass is infeasible (`verified_design`). false: the minimum-mass "
-                 "design alone"},
+                 "verification does not pass is infeasible (`verified_design`). A deck prestrain r < 1 "
+                 "changes the deck strings after the verification: the travelling-load run and the "
+                 "constraints check the changed bridge. false: the minimum-mass design alone"},
          s.verified);
   v.Section("joint_mass", s.joint_mass);
   v.Section("constraints", s.constraints);

@@ -25,6 +25,9 @@ TravellingLoadResult RunTravellingLoad(const DynamicModel& model, const Design& 
   r.peak_string_stress = s.max_string_stress;
   r.peak_stress_ratio = s.max_string_stress / model.allowed_stress;
   r.slack_strings = s.slack.ever_slack;
+  for (int k = 0; k < static_cast<int>(design.strings.size()); ++k) {
+    if (s.min_string_strain[k] < 0 && MustStayTaut(design, k)) ++r.slack_taut_strings;
+  }
   r.steps = s.steps;
   r.dt = run.dt;
   r.integrator = s.substeps > 1 ? s.integrator + "x" + std::to_string(s.substeps) : s.integrator;

@@ -18,6 +18,7 @@ struct TravellingLoadResult {
   double peak_string_stress = 0;      // max tension / area over strings and steps [Pa]
   double peak_stress_ratio = 0;       // peak_string_stress / sigma_w [-]
   int slack_strings = 0;              // strings that were slack (s < L0) at some step
+  int slack_taut_strings = 0;         // of those, the ones that must stay taut (MustStayTaut)
   // max over bars and steps of |bar force| / capacity: the design's bar resistance
   // (BarRuleOf: yield and buckling) in compression, its yield resistance in tension [-]
   double peak_bar_capacity_ratio = 0;

@@ -11,6 +11,11 @@
   plot_sweep.py feasible OUTDIR -o FIG.png
       The grid over (n, deck prestrain): feasible candidates green, infeasible ones red with
       their first violated constraint, the chosen one circled; the objective in kg in each cell.
+  plot_sweep.py premium OUTDIR -o FIG.png [--prestrain 1]
+      The structure mass against n of a sweep of verified designs (sweep.verified): the first
+      minimum-mass design, and on top of it the premium the checks added by resizing (static
+      cases, dynamic runs), with the premium in per cent above each bar; the chosen design is
+      marked, candidates that did not pass are hatched.
   plot_sweep.py bridge DESIGN.json -o FIG.png
       A designed bridge: member width proportional to its radius, colour to its force
       (compression of bars, tension of strings), deck strings dashed.
@@ -53,12 +58,7 @@ def label_of(key, data):
 
 def plot_mass(args):
     data = load_sweep(args.dir)
-    sweep = data["config"]["sweep"]
-    prestrain = args.prestrain if args.prestrain is not None else sweep["deck_prestrain"][0]
-    rows = [r for r in data["rows"] if r["p"] == sweep["p"][0] and r["beta_deg"] == sweep["beta_deg"][0]
-            and r["deck_prestrain"] == prestrain and r["ok"]]
-    if not rows:
-        sys.exit("plot_sweep.py: no rows with deck prestrain %g" % prestrain)
+    rows = rows_of(data, args.prestrain)
     ns = [r["n"] for r in rows]
     parts = [("bars", "bars", "#444444"), ("strings", "strings", "#1f77b4"),
              ("deck_strings", "deck strings", "#9ecae1"), ("deck_beams", "deck beams", "#bbbbbb"),
@@ -84,6 +84,47 @@ def plot_mass(args):
     ax.set_ylabel("mass [kg] (log scale)")
     ax.set_title("objective and its parts (%s); hatched: infeasible" % label_of(series_key(rows[0]), data))
     ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=120)
+
+
+def rows_of(data, prestrain):
+    """The ok rows of one series: the grid's first p and beta, deck prestrain `prestrain`."""
+    sweep = data["config"]["sweep"]
+    prestrain = prestrain if prestrain is not None else sweep["deck_prestrain"][0]
+    rows = [r for r in data["rows"] if r["p"] == sweep["p"][0] and r["beta_deg"] == sweep["beta_deg"][0]
+            and r["deck_prestrain"] == prestrain and r["ok"]]
+    if not rows:
+        sys.exit("plot_sweep.py: no rows with deck prestrain %g" % prestrain)
+    return rows
+
+
+def plot_premium(args):
+    data = load_sweep(args.dir)
+    if not data["config"]["sweep"].get("verified", False):
+        sys.exit("plot_sweep.py: the sweep's designs are not verified (sweep.verified = false): no premium")
+    rows = rows_of(data, args.prestrain)
+    ns = [r["n"] for r in rows]
+    first = [r["mass_kg"]["first_design"] for r in rows]
+    premium = [r["mass_kg"]["structure"] - f for r, f in zip(rows, first)]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.bar(ns, first, color="#1f77b4", width=0.6, label="first minimum-mass design")
+    tops = ax.bar(ns, premium, bottom=first, color="#ff7f0e", width=0.6, label="premium of the checks (resizing)")
+    chosen = data["choice"].get("index")
+    for bar, r, f, p in zip(tops, rows, first, premium):
+        if not r["verified"]:
+            bar.set_hatch("//")
+            bar.set_edgecolor("#cc0000")
+        label = "+%.0f %%" % (100 * p / f) + ("" if r["verified"] else " (fails)")
+        ax.text(r["n"], f + p, label, ha="center", va="bottom", fontsize=8)
+        if r["index"] == chosen:
+            ax.annotate("chosen", (r["n"], f + p), xytext=(0, 30), textcoords="offset points", ha="center",
+                        fontsize=9, color="green", arrowprops=dict(arrowstyle="->", color="green"))
+    ax.set_xlabel("complexity n")
+    ax.set_ylabel("structure mass [kg]")
+    ax.set_title("structure mass: first design and the premium of verification (%s)" % label_of(series_key(rows[0]), data),
+                 fontsize=10)
+    ax.legend(fontsize=8, loc="upper left")
     fig.tight_layout()
     fig.savefig(args.output, dpi=120)
 
@@ -174,11 +215,12 @@ def plot_bridge(args):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
-    for name, fn in (("mass", plot_mass), ("frequency", plot_frequency), ("feasible", plot_feasible)):
+    for name, fn in (("mass", plot_mass), ("premium", plot_premium), ("frequency", plot_frequency),
+                     ("feasible", plot_feasible)):
         p = sub.add_parser(name)
         p.add_argument("dir")
         p.add_argument("-o", "--output", required=True)
-        if name == "mass":
+        if name in ("mass", "premium"):
             p.add_argument("--prestrain", type=float, default=None)
         p.set_defaults(fn=fn)
     p = sub.add_parser("bridge")
