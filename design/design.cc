@@ -155,6 +155,10 @@ Verdict DesignVerdict(const Design& d) {
   return v;
 }
 
+LoadCase ReferenceCase(const Config& config, const std::vector<LoadCase>& cases) {
+  return KeepsPaperSwitches(config) ? cases.at(0) : PermanentCase(config);
+}
+
 bool MustStayTaut(const Design& d, int k) {
   return d.strings[k].kind == MemberKind::kDeckString || d.topology.structure.strings[k].group == "transverse";
 }
@@ -256,6 +260,8 @@ void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& ru
   }
 }
 
+}  // namespace
+
 // The permanent action's factors: deck dead load, and the members' weight when it is on.
 LoadCase PermanentCase(const Config& c) {
   LoadCase g;
@@ -264,8 +270,6 @@ LoadCase PermanentCase(const Config& c) {
   g.factor[kSelfWeight] = c.design.self_weight ? 1.0 : 0.0;
   return g;
 }
-
-}  // namespace
 
 Design RunDesign(const Config& config, ProgressReporter* progress, const std::vector<double>* area_floor) {
   // Fractions of a whole design's time at n = 16: topology 0.2, factorisation 0.4, solve and
@@ -291,7 +295,6 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
 
   d.actions = std::move(in.actions);
   d.cases = MakeLoadCases(config, d.deck, d.notes);
-  const bool paper = KeepsPaperSwitches(config);
   bool travels = false;
   for (const LoadCase& c : d.cases) travels = travels || c.station_load != 0;
   // A travelling family costs one equilibrium solve per deck station, each linear in the
@@ -325,7 +328,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
 
   // The reference state: the drawn geometry is in equilibrium under it (the paper's design
   // load; else the permanent load G with the prestress).
-  const LoadCase reference = paper ? d.cases[0] : PermanentCase(config);
+  const LoadCase reference = ReferenceCase(config, d.cases);
   std::vector<double> mass(members, 0.0);
   const double g = config.design.gravity;
   Eigen::MatrixXd base_forces;

@@ -26,6 +26,9 @@ struct MassBreakdown {
   double total = 0;         // structure + deck beams [kg]
 };
 
+// Design::solver_form of a design read back from its file (design/design_reader.h).
+inline constexpr const char* kReadFromFile = "read from file";
+
 struct Design {
   Config config;             // resolved
   BridgeTopology topology;
@@ -50,7 +53,7 @@ struct Design {
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;
   SolverOutcome solver;
-  std::string solver_form;           // "self-stress" (the reduced problem) or "full"
+  std::string solver_form;           // "self-stress" (the reduced problem), "full", or kReadFromFile
   double equilibrium_residual = 0;  // max |A x + w| over free DOFs [N]
   int self_stress_states = -1;      // n_b + n_s - rank(A); -1 when not computed (large n)
   // Static stability at the design state (design/stability.h); the critical load factor is
@@ -102,6 +105,11 @@ BarRule BarRuleOf(const Config& config);
 // Throws ModelError, saying why, when the design's stability verdict is not stable: a
 // structure that buckles under its own design load is no design.
 void RequireStable(const Design& design);
+
+// The load case of the reference state: the paper's one case with its switches, else the
+// permanent load G (PermanentCase: deck dead load, and the members' weight when it is on).
+LoadCase PermanentCase(const Config& config);
+LoadCase ReferenceCase(const Config& config, const std::vector<LoadCase>& cases);
 
 // Whether string k must stay taut in service: the strings whose prestress the design sets (the
 // deck chain, the planar bridge's one self-stress; the 3D bridge's transverse strings, which

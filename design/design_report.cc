@@ -312,10 +312,14 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
               "node, F_tot = %.6g N",
               d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3,
               d.deck.node_load, d.deck.total_load));
-  line(Format("solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
-              "self-stress states: %d",
-              d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(), d.solver.iterations,
-              d.equilibrium_residual, d.self_stress_states));
+  if (d.solver_form == kReadFromFile) {
+    line(Format("design: read from its file, checked as written; equilibrium residual %.2e N", d.equilibrium_residual));
+  } else {
+    line(Format("solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
+                "self-stress states: %d",
+                d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(), d.solver.iterations,
+                d.equilibrium_residual, d.self_stress_states));
+  }
   const StabilityVerdict& v = d.stability;
   std::string critical = "not computed (n > 6)";
   if (v.critical_load_factor_computed) {

@@ -1,0 +1,162 @@
+#include "design/design_reader.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+
+#include "core/error.h"
+#include "design/equilibrium.h"
+
+namespace tbridge {
+
+namespace {
+
+using nlohmann::json;
+
+std::string Text(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+// file[key] as a number, or a ConfigError naming `where`.
+double Number(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key) || !j.at(key).is_number()) {
+    throw ConfigError(where + "." + key, j.is_object() && j.contains(key) ? j.at(key).dump() : "(missing)",
+                      "a number, as tbridge design writes it");
+  }
+  return j.at(key).get<double>();
+}
+
+const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
+  const json& list = file.at("members");
+  const std::string where = "members[" + std::to_string(index) + "]";
+  if (index >= list.size()) throw ConfigError("members", std::to_string(list.size()) + " members", "the config draws " +
+                                                                 std::to_string(s.num_bars() + s.num_strings()));
+  const json& m = list[index];
+  const int nb = s.num_bars();
+  const ::tbridge::Member& e = static_cast<int>(index) < nb ? s.bars[index] : s.strings[index - nb];
+  const json want = {e.i + 1, e.j + 1};
+  if (!m.is_object() || !m.contains("nodes") || m.at("nodes") != want) {
+    throw ConfigError(where + ".nodes", m.is_object() && m.contains("nodes") ? m.at("nodes").dump() : "(missing)",
+                      "the config draws this member between nodes " + want.dump());
+  }
+  return m;
+}
+
+}  // namespace
+
+Design ReadDesign(const json& file) {
+  if (!file.is_object() || !file.contains("config") || !file.contains("members") || !file.contains("nodes") ||
+      !file.at("members").is_array() || !file.at("nodes").is_array()) {
+    throw ConfigError("(root)", "(a JSON value)", "a design file of tbridge design, with config, members and nodes");
+  }
+  Design d;
+  d.config = ParseConfig(file.at("config"));
+  if (d.config.structure) throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
+  DesignInputs in = PrepareDesign(d.config);
+  d.topology = std::move(in.topology);
+  d.deck = in.deck;
+  d.actions = std::move(in.actions);
+  d.cases = MakeLoadCases(d.config, d.deck, d.notes);
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars(), ns = s.num_strings();
+  const Material& mat = d.config.material;
+
+  // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it exactly).
+  const json& nodes = file.at("nodes");
+  if (static_cast<int>(nodes.size()) != s.num_nodes()) {
+    throw ConfigError("nodes", std::to_string(nodes.size()) + " nodes", "the config draws " + std::to_string(s.num_nodes()));
+  }
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    const json& p = nodes[v];
+    bool same = p.is_array() && p.size() == 3;
+    for (int a = 0; same && a < 3; ++a) same = p[a].is_number() && std::abs(p[a].get<double>() - s.nodes(a, v)) <= 1e-9;
+    if (!same) {
+      throw ConfigError("nodes[" + std::to_string(v) + "]", p.dump(),
+                        "the config draws node " + std::to_string(v + 1) + " at [" + Text(s.nodes(0, v)) + ", " +
+                            Text(s.nodes(1, v)) + ", " + Text(s.nodes(2, v)) + "]");
+    }
+  }
+
+  // Members: area (and rest length) as written, the rest derived from them.
+  if (static_cast<int>(file.at("members").size()) != nb + ns) {
+    throw ConfigError("members", std::to_string(file.at("members").size()) + " members",
+                      "the config draws " + std::to_string(nb + ns));
+  }
+  std::vector<double> masses(nb + ns);
+  d.reference_forces.resize(nb + ns);
+  for (int k = 0; k < nb + ns; ++k) {
+    const json& j = MemberOf(file, k, s);
+    const std::string where = "members[" + std::to_string(k) + "]";
+    const bool bar = k < nb;
+    const ::tbridge::Member& e = bar ? s.bars[k] : s.strings[k - nb];
+    MemberSizing m;
+    m.name = Structure::Name(e);
+    m.kind = bar ? MemberKind::kBar : e.group == "deck" ? MemberKind::kDeckString : MemberKind::kString;
+    m.i = e.i;
+    m.j = e.j;
+    m.length = s.Length(e);
+    m.area = Number(j, "area", where);
+    if (!(m.area >= 0) || !std::isfinite(m.area)) throw ConfigError(where + ".area", Text(m.area), "a finite area >= 0 [m^2]");
+    m.radius = std::sqrt(m.area / std::numbers::pi);
+    m.mass = mat.density * m.area * m.length;
+    m.reference_force = Number(j, "reference_force", where);
+    m.rest_length = bar ? m.length : Number(j, "rest_length", where);
+    if (!bar) {
+      if (!(m.rest_length > 0)) throw ConfigError(where + ".rest_length", Text(m.rest_length), "a rest length > 0 [m]");
+      m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
+      // The string's tension at the drawn geometry is its reference force: 1e-6 relative
+      // allows the file's rounding and the design's own sizing tolerance, and no real edit.
+      const double tension = std::max(m.stiffness * (m.length - m.rest_length), 0.0);
+      if (std::abs(tension - m.reference_force) > 1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
+        throw ConfigError(where + ".rest_length", Text(m.rest_length),
+                          "with area " + Text(m.area) + " m^2 the string pulls " + Text(tension) +
+                              " N at its drawn length, not its reference_force " + Text(m.reference_force) +
+                              " N: re-derive the design with tbridge design after changing a member");
+      }
+    }
+    m.force = m.reference_force;
+    m.force_density = m.force / m.length;
+    m.stress = m.area > 0 ? m.force / m.area : 0.0;
+    m.governed_by = j.value("governed_by", "");
+    masses[k] = m.mass;
+    d.reference_forces[k] = m.reference_force;
+    (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
+    (bar ? d.bars : d.strings).push_back(m);
+  }
+  d.mass.deck_beams = d.deck.beams_mass;
+  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
+  d.mass.total = d.mass.structure + d.mass.deck_beams;
+
+  // The reference state: its loads from the members as read, its forces in equilibrium with them.
+  d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, d.config.design.gravity);
+  d.reference = ReferenceCase(d.config, d.cases);
+  d.loads = d.actions.Loads(d.reference);
+  const EquilibriumSystem eq = BuildEquilibrium(s);
+  const Eigen::VectorXd residual = EquilibriumResidual(eq, d.reference_forces, d.loads);
+  d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
+  // 1e-8 of the largest member force: the design leaves 1e-10 of it (design.tolerance), the
+  // file's digits nothing; a member's weight changed by an edited area shows at once.
+  const double scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
+  if (!(d.equilibrium_residual <= 1e-8 * scale)) {
+    throw ConfigError("members[].reference_force", "(the reference forces)",
+                      "they leave " + Text(d.equilibrium_residual) +
+                          " N unbalanced at a node under the reference loads (the members' weight and the "
+                          "config's loads): re-derive the design with tbridge design after changing it");
+  }
+  std::vector<double> string_stiffness(ns);
+  for (int k = 0; k < ns; ++k) string_stiffness[k] = d.strings[k].stiffness;
+  d.stability = AssessStability(s, d.reference_forces, string_stiffness, d.config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, d.reference_forces, d.loads);
+  d.reactions.array() += 0.0;
+  d.solver.solver = "none";
+  d.solver.status = kReadFromFile;
+  d.solver.success = true;
+  d.solver_form = kReadFromFile;
+  return d;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,122 @@
+// `tbridge check`: the checks of a written design run again on the file, as written. The same
+// design checked in memory (tbridge design) and from its file must agree; a file whose
+// members were edited without re-deriving them, or whose config no longer matches them, is
+// refused with the key; a design that fails a check exits 1.
+
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_support.h"
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+using tbridge::test::FreshDir;
+using tbridge::test::Quote;
+using tbridge::test::ReadText;
+using tbridge::test::RunTbridge;
+
+json ReadJson(const fs::path& path) { return json::parse(ReadText(path)); }
+
+void WriteJson(const fs::path& path, const json& j) { std::ofstream(path) << j.dump(2); }
+
+// dir/design.json, the design `tbridge design` writes for configs/NAME.
+fs::path DesignFile(const fs::path& dir, const std::string& name) {
+  const fs::path design = dir / "design.json";
+  const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name;
+  REQUIRE(RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code == 0);
+  return design;
+}
+
+TEST_CASE("check: the written default design, checked from its file, gives the design's checks", "[tools]") {
+  const fs::path dir = FreshDir("check_default");
+  const fs::path design = DesignFile(dir, "default.json"), checked = dir / "checked.json";
+  const auto r = RunTbridge(dir, "check " + Quote(design.string()) + " -o " + Quote(checked.string()));
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Contains("PASS") && Catch::Contains("read from its file"));
+  const json a = ReadJson(design), b = ReadJson(checked);
+  // The same runs on the same bridge, once from memory and once from the file's 17 digits:
+  // 1e-9 relative leaves the rounding of a reread, a chaotic run would differ at once.
+  REQUIRE(a["dynamic_check"]["runs"].size() == b["dynamic_check"]["runs"].size());
+  for (size_t k = 0; k < a["dynamic_check"]["runs"].size(); ++k) {
+    const json& x = a["dynamic_check"]["runs"][k];
+    const json& y = b["dynamic_check"]["runs"][k];
+    INFO("run " << x["name"]);
+    CHECK(y["peak_deck_displacement"].get<double>() ==
+          Approx(x["peak_deck_displacement"].get<double>()).epsilon(1e-9));
+  }
+  REQUIRE(a["deflection_max"].size() == b["deflection_max"].size());
+  for (size_t k = 0; k < a["deflection_max"].size(); ++k) {
+    CHECK(b["deflection_max"][k]["deflection"].get<double>() ==
+          Approx(a["deflection_max"][k]["deflection"].get<double>()).epsilon(1e-9));
+  }
+  // The check's utilisations are those of its nonlinear cases and runs, which the design also
+  // took: never above the design's (1e-9 for the reread), and the largest within 1 % of it
+  // (the design's linear envelope of every station may govern a member at most that much).
+  double largest = 0;
+  for (size_t k = 0; k < a["members"].size(); ++k) {
+    INFO("member " << a["members"][k]["name"]);
+    CHECK(b["members"][k]["utilisation"].get<double>() <= a["members"][k]["utilisation"].get<double>() + 1e-9);
+    largest = std::max(largest, b["members"][k]["utilisation"].get<double>());
+  }
+  CHECK(largest == Approx(a["utilisation_max"].get<double>()).epsilon(0.01));
+}
+
+TEST_CASE("check: an edited design file is refused with the key, and nothing is written", "[tools]") {
+  const fs::path dir = FreshDir("check_edited");
+  const fs::path design = DesignFile(dir, "paper_n2.json"), out = dir / "checked.json";
+  const json original = ReadJson(design);
+  const int string_index = original["topology"]["bars"].get<int>();  // the first string
+  {
+    // A string's area doubled without its rest length: its tension no longer matches.
+    json edited = original;
+    edited["members"][string_index]["area"] = 2 * original["members"][string_index]["area"].get<double>();
+    WriteJson(dir / "area.json", edited);
+    const auto r = RunTbridge(dir, "check " + Quote((dir / "area.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("members[" + std::to_string(string_index) + "].rest_length"));
+    CHECK_FALSE(fs::exists(out));
+  }
+  {
+    // The config's payload changed: the reference forces no longer balance the loads.
+    json edited = original;
+    edited["config"]["bridge"]["payload"] = 2 * original["config"]["bridge"]["payload"].get<double>();
+    WriteJson(dir / "payload.json", edited);
+    const auto r = RunTbridge(dir, "check " + Quote((dir / "payload.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("members[].reference_force"));
+    CHECK_FALSE(fs::exists(out));
+  }
+  {
+    // A node moved: the config draws it elsewhere.
+    json edited = original;
+    edited["nodes"][3][1] = original["nodes"][3][1].get<double>() + 0.01;
+    WriteJson(dir / "node.json", edited);
+    const auto r = RunTbridge(dir, "check " + Quote((dir / "node.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("nodes[3]"));
+  }
+  {
+    const auto r = RunTbridge(dir, "check " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") + " -o " +
+                                       Quote(out.string()));
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("a design file of tbridge design"));
+  }
+}
+
+TEST_CASE("check: the paper's design fails its dynamic check and the check exits 1", "[tools]") {
+  const fs::path dir = FreshDir("check_paper");
+  const fs::path design = DesignFile(dir, "paper_n2.json"), out = dir / "checked.json";
+  const auto r = RunTbridge(dir, "check " + Quote(design.string()) + " -o " + Quote(out.string()));
+  CHECK(r.code == 1);
+  CHECK_THAT(r.out, Catch::Contains("FAIL"));
+  // The verdict is the design's own: checked in memory and from the file, the same.
+  CHECK(ReadJson(out)["verdict"]["pass"] == ReadJson(design)["verdict"]["pass"]);
+}
+
+}  // namespace
