@@ -393,9 +393,16 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     // converges geometrically; 1e-12 is a few hundred rounding steps of a sum of masses.
     if (!config.design.self_weight || std::abs(total - previous_total) <= 1e-12 * total) break;
     if (d.self_weight_iterations >= 200 || !std::isfinite(total)) {
+      // Still growing: the weight outruns what the members carry. Moving back and forth: the
+      // minimum-mass problem has many optima (self-stresses), and a small change of weight
+      // moves the solver from one to another.
+      const bool growing = !std::isfinite(total) || total > 1.05 * previous_total;
       throw ModelError("self-weight: the member mass did not settle in 200 sizings (" + std::to_string(previous_total) +
-                       " kg, then " + std::to_string(total) +
-                       " kg): the members cannot carry their own weight at this span and material");
+                       " kg, then " + std::to_string(total) + " kg): " +
+                       (growing ? std::string("the members cannot carry their own weight at this span and material")
+                                : std::string("it moves between optima of the minimum-mass problem (" +
+                                              std::to_string(d.self_stress_states) +
+                                              " self-stress states); design.self_weight false designs without it")));
     }
     previous_total = total;
   }
@@ -414,6 +421,14 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
        << ", beta = " << config.bridge.beta_deg << " deg: solver " << d.solver.solver
        << " returned status " << d.solver.status << " after " << d.solver.iterations
        << " iterations (equilibrium residual " << d.equilibrium_residual << " N)";
+    if (d.topology.planes == 2) {
+      // The transverse strings' prestress floor grows with sigma_w; where the loads cannot
+      // balance it, no member forces are both in equilibrium and of the right sign.
+      const double r = config.design.transverse_string_min_radius;
+      os << "; the transverse strings are prestressed at sigma_w pi r^2 = " << sigma_w * std::numbers::pi * r * r
+         << " N each (design.transverse_string_min_radius = " << r << " m), which these loads may not balance: a "
+         << "smaller radius lowers it";
+    }
     throw ModelError(os.str());
   }
 
