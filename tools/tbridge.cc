@@ -86,7 +86,7 @@ void PrintUsage(std::ostream& os) {
   }
   os << "\nlooking at results:\n"
         "  tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png   a simulate run (shapes, deck histories)\n"
-        "  tools/plot_sweep.py mass|frequency|feasible OUTDIR -o FIG.png   a sweep's trade-offs\n"
+        "  tools/plot_sweep.py mass|premium|frequency|feasible OUTDIR -o FIG.png   a sweep's trade-offs\n"
         "  tools/plot_sweep.py bridge DESIGN.json -o FIG.png          a design\n"
         "  tbridge simulate CONFIG.json -o OUTDIR --vtk DIR            DIR/run.pvd for ParaView\n"
         "\nA failed run leaves its output files and folders as they were. Progress (--progress or a\n"
