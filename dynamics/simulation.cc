@@ -600,6 +600,32 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 
 }  // namespace
 
+namespace {
+
+// Both engines take the same stabilisation settings (ClassKOptions is Class1Options).
+Class1Options EngineOptions(const DynamicsConfig& config) {
+  Class1Options options;
+  options.stabilisation = config.stabilisation.enabled;
+  options.omega_rad_s = config.stabilisation.omega_rad_s;
+  options.zeta = config.stabilisation.zeta;
+  return options;
+}
+
+}  // namespace
+
+double Rk4StableStep(const DynamicModel& model, const DynamicsConfig& config) {
+  const Class1Options options = EngineOptions(config);
+  const Eigen::VectorXd y = InitialState(model, config);
+  if (EngineFor(model, config) == "class1") {
+    const Class1System system(model, options);
+    Class1Ode ode(system);
+    return kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max);
+  }
+  const ClassKSystem system(model, options);
+  ClassKOde ode(system);
+  return kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max);
+}
+
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
                           const std::vector<PrestrainReport>& prestrain, const RunHooks& hooks) {
   CheckRunLimits(model, config, hooks.extra_bytes_per_record ? hooks.extra_bytes_per_record(model) : 0.0);
@@ -624,11 +650,7 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
 
   const std::string engine = EngineFor(model, config);
   result.summary.engine = engine;
-  // Both engines take the same stabilisation settings (ClassKOptions is Class1Options).
-  Class1Options options;
-  options.stabilisation = config.stabilisation.enabled;
-  options.omega_rad_s = config.stabilisation.omega_rad_s;
-  options.zeta = config.stabilisation.zeta;
+  const Class1Options options = EngineOptions(config);
   // Bar forces come from the class-k multipliers for either engine; a class-k run could share
   // its system, but a second one keeps the two paths alike and costs only its arrays.
   std::unique_ptr<ClassKSystem> probe;

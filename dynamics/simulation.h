@@ -153,6 +153,11 @@ void CheckStepLimit(const DynamicsConfig& config);
 // for outputs the caller writes per record).
 void CheckRunLimits(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record = 0);
 
+// The largest RK4 step that is stable for a run of `config` on `model` at its start:
+// kAutoRk4Fraction x 2 sqrt(2) / omega_max, omega_max by power iteration on the engine
+// EngineFor picks, with the run's stabilisation [s]. What "auto" takes RK4 up to.
+double Rk4StableStep(const DynamicModel& model, const DynamicsConfig& config);
+
 class ProgressReporter;
 
 // Optional company of a run.

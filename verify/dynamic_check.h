@@ -5,8 +5,9 @@
 // - the paper's travelling load (eqs 50-51), always: f on each inner deck station for 0.25 s;
 // - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
 // - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
-// RK4 at a step of at most 1e-4 s: SDIRK3 under-reports the string peaks by up to 22 %
-// (BENCHMARKS.md), so the check does not use it.
+// RK4 at 1e-4 s, or at the largest whole fraction of it within 0.9 of RK4's stability limit:
+// SDIRK3 under-reports the string peaks by up to 22 % (BENCHMARKS.md), so the check does not
+// use it.
 //
 // A member's dynamic demand is gamma_G,sup F_G + gamma (F_peak - F_G), F_G its force in the
 // reference state, F_peak its peak in the run and gamma the load's factor (gamma_Q for the
