@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/string_law.h"
 #include "design/equilibrium.h"
 
 namespace tbridge {
@@ -110,7 +111,7 @@ Design ReadDesign(const json& file) {
       m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
       // The string's tension at the drawn geometry is its reference force: 1e-6 relative
       // allows the file's rounding and the design's own sizing tolerance, and no real edit.
-      const double tension = std::max(m.stiffness * (m.length - m.rest_length), 0.0);
+      const double tension = StringTension(m.stiffness, m.rest_length, m.length);
       if (std::abs(tension - m.reference_force) > 1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
         throw ConfigError(where + ".rest_length", Text(m.rest_length),
                           "with area " + Text(m.area) + " m^2 the string pulls " + Text(tension) +

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/string_law.h"
 #include "core/structure.h"
 
 namespace tbridge {
@@ -377,7 +378,7 @@ LinearisedSystem Linearise(const DynamicModel& model) {
       ++sys.slack_strings;
       continue;
     }
-    const double tension = st.stiffness * (length - st.rest_length);
+    const double tension = StringTension(st.stiffness, st.rest_length, length);
     sys.string_tension(k) = tension;
     const Eigen::Vector3d u = s / length;
     force.col(st.i) += tension * u;

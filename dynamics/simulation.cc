@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/progress.h"
+#include "core/string_law.h"
 #include "dynamics/class1.h"
 #include "dynamics/classk.h"
 #include "dynamics/coupling.h"
@@ -171,7 +172,7 @@ class Monitor {
       double tension = 0;
       if (taut) {
         const double stretch = len - s.rest_length;
-        const double spring = s.stiffness * stretch;
+        const double spring = StringTension(s.stiffness, s.rest_length, len);
         elastic += 0.5 * spring * stretch;
         const double length_rate = rate / len;
         tension = std::max(spring + s.damping * length_rate, 0.0);

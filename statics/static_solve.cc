@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/string_law.h"
+
 namespace tbridge {
 
 namespace {
@@ -26,8 +28,6 @@ DofMap MapDofs(const Structure& s) {
   return m;
 }
 
-double Tension(double k, double rest, double length) { return length > rest ? k * (length - rest) : 0.0; }
-
 // Adds `force` on node v to the residual (free coordinates only).
 void AddForce(const DofMap& map, int v, const Eigen::Vector3d& force, Eigen::VectorXd& r) {
   if (map.first[v] < 0) return;
@@ -44,7 +44,7 @@ void Residual(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x
     const Member& e = s.strings[k];
     const Eigen::Vector3d d = x.col(e.j) - x.col(e.i);
     const double len = d.norm();
-    const double t = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
+    const double t = StringTension(m.string_stiffness[k], m.string_rest_length[k], len);
     AddForce(map, e.i, t / len * d, r);
     AddForce(map, e.j, -t / len * d, r);
   }
@@ -89,7 +89,7 @@ Eigen::SparseMatrix<double> Jacobian(const StaticModel& m, const DofMap& map, co
       pair_block(e.i, e.j, Eigen::Matrix3d(-1e-6 * m.string_stiffness[k] * u * u.transpose()));
       continue;
     }
-    const double tension = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
+    const double tension = StringTension(m.string_stiffness[k], m.string_rest_length[k], len);
     const Eigen::Matrix3d K = m.string_stiffness[k] * u * u.transpose() +
                               tension / len * (Eigen::Matrix3d::Identity() - u * u.transpose());
     pair_block(e.i, e.j, -K);  // dR/dx of a string is minus its tangent stiffness
@@ -130,7 +130,7 @@ StaticState StateAt(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const E
     const Member& e = s.strings[k];
     const Eigen::Vector3d d = nodes.col(e.j) - nodes.col(e.i);
     const double len = d.norm();
-    const double t = Tension(m.string_stiffness[k], m.string_rest_length[k], len);
+    const double t = StringTension(m.string_stiffness[k], m.string_rest_length[k], len);
     out.string_tension[k] = t;
     net.col(e.i) += t / len * d;
     net.col(e.j) -= t / len * d;
