@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/class1.h"

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/modal.h"

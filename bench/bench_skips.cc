@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <functional>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/class1.h"

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/class1.h"

@@ -50,6 +50,7 @@
 #include <memory>
 #include <string>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/class1.h"

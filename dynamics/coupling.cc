@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/structure.h"
+
 namespace tbridge {
 
 long AccelerationCoupling::entries() const {

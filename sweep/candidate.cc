@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bridge/design_model.h"
 #include "core/error.h"
 #include "dynamics/model.h"
 #include "sweep/first_frequency.h"

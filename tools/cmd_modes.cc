@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/progress.h"

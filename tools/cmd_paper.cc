@@ -13,7 +13,7 @@
 
 #include "core/error.h"
 #include "core/progress.h"
-#include "dynamics/paper_tables.h"
+#include "app/paper_tables.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 

@@ -18,7 +18,7 @@
 #include "core/progress.h"
 #include "design/plausibility.h"
 #include "dynamics/model.h"
-#include "dynamics/scenario.h"
+#include "app/scenario.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 #include "verify/verified_design.h"

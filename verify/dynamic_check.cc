@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "bridge/design_model.h"
 #include "core/error.h"
 #include "design/static_model.h"
 #include "dynamics/model.h"

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "bridge/design_model.h"
 #include "core/dynamics_config.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"

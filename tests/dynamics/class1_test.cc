@@ -5,6 +5,7 @@
 #define EIGEN_RUNTIME_NO_MALLOC
 #include <Eigen/Core>
 
+#include "bridge/design_model.h"
 #include "dynamics/class1.h"
 
 #include <catch2/catch.hpp>

@@ -1,5 +1,6 @@
 // The class-k engine (Lagrange multipliers for shared bar nodes) against the class-1 closed
 // form, closed-form frequencies, conservation laws, symmetry and statics.
+#include "bridge/design_model.h"
 #include "dynamics/classk.h"
 
 #include <suitesparse/SuiteSparse_config.h>

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "bridge/design_model.h"
 #include "design/design.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"

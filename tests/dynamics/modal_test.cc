@@ -1,4 +1,5 @@
 // Linearised modes (dynamics/modal.h) against closed forms and SPEC.md §9.
+#include "bridge/design_model.h"
 #include "dynamics/modal.h"
 
 #include <Eigen/Dense>

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/modal.h"

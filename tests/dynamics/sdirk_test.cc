@@ -1,6 +1,7 @@
 // The implicit SDIRK3 integrator: its Jacobian pattern and colouring, its order, agreement
 // with RK4, and steps far beyond RK4's stability limit on a stiff bridge.
 
+#include "bridge/design_model.h"
 #include "dynamics/sdirk.h"
 
 #include <catch2/catch.hpp>

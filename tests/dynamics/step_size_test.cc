@@ -1,5 +1,6 @@
 // The highest linearised frequency by power iteration against the dense modal analysis.
 
+#include "bridge/design_model.h"
 #include "dynamics/step_size.h"
 
 #include <catch2/catch.hpp>

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "design/design.h"

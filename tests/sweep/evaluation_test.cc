@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bridge/design_model.h"
 #include "design/design.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"

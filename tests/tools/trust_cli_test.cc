@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "bridge/design_model.h"
 #include "cli_support.h"
 #include "core/config.h"
 #include "design/design.h"

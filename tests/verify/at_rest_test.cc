@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "bridge/design_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "verify/verified_design.h"

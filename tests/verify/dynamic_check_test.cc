@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "core/config.h"
-#include "dynamics/scenario.h"
+#include "app/scenario.h"
 #include "verify/verified_design.h"
 
 namespace tbridge {

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "bridge/design_model.h"
 #include "sweep/first_frequency.h"
 #include "dynamics/model.h"
 #include "dynamics/node_forces.h"

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <Eigen/Core>
 
+#include "bridge/design_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "test_support.h"

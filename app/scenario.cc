@@ -1,5 +1,6 @@
-#include "dynamics/scenario.h"
+#include "app/scenario.h"
 
+#include "bridge/design_model.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "dynamics/structure_model.h"

@@ -1,4 +1,4 @@
-#include "dynamics/paper_tables.h"
+#include "app/paper_tables.h"
 
 #include <cmath>
 #include <filesystem>
@@ -9,7 +9,7 @@
 #include "core/json_reader.h"
 #include "core/progress.h"
 #include "design/design.h"
-#include "dynamics/scenario.h"
+#include "app/scenario.h"
 
 namespace tbridge {
 

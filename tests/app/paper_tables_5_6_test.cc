@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "dynamics/paper_tables.h"
+#include "app/paper_tables.h"
 
 namespace tbridge {
 namespace {
