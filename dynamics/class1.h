@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "dynamics/engine_frame.h"
 #include "dynamics/engine_ode.h"
 #include "dynamics/integrators.h"
 #include "dynamics/model.h"
@@ -37,13 +38,9 @@
 
 namespace tbridge {
 
-struct Class1Options {
-  bool stabilisation = false;
-  double omega_rad_s = 100.0;  // corrective frequency omega [rad/s]
-  double zeta = 1.0;           // corrective damping ratio [-]
-};
+using Class1Options = EngineOptions;
 
-class Class1System {
+class Class1System : public EngineFrame {
  public:
   // Compiles `model` into flat per-member arrays. Throws ModelError when the model is not
   // class 1, dim is not 2 or 3, an index or size is inconsistent, a bar's mass matrix is not
@@ -52,28 +49,18 @@ class Class1System {
   Class1System(const DynamicModel& model, const Class1Options& options = {},
                std::vector<TimedLoad> timed_loads = {});
 
-  int dim() const { return dim_; }
-  int num_nodes() const { return n_n_; }
-  int coordinates() const { return dim_ * n_n_; }
-  int state_size() const { return 2 * coordinates(); }
   int num_members() const { return static_cast<int>(strings_.size() + bars_.size() + pinned_bars_.size()); }
-  bool damped() const { return damped_; }
-  bool stabilised() const { return options_.stabilisation; }
-
-  // The model's positions, at rest.
-  Eigen::VectorXd RestState() const;
+  int num_model_bars() const { return n_model_bars_; }
 
   // dy = f(t, y); t only selects the timed loads. Allocation-free; `ws` must be
-  // Class1Workspace(coordinates()).
+  // MakeWorkspace(*this). Leaves the bar force densities and the dampers' power in `ws`.
   // CAUTION: performance-sensitive
   void Derivative(double t, const double* y, double* dy, Class1Workspace& ws) const;
 
-  // Kinetic energy of the state [J].
-  double KineticEnergy(const double* y) const;
-  // External node loads at time t, packed like the positions [N].
-  void LoadsAt(double t, double* force) const { loads_.At(t, force); }
-  // Whether any timed load exists (else loads are constant).
-  bool has_timed_loads() const { return loads_.has_timed(); }
+  // The bar force densities lambda (> 0 in compression) [N/m] of the last evaluation in `ws`,
+  // in the order of the model's bars (0 for bars with both ends pinned), into `out`.
+  // Allocation-free when `out` already has one entry per model bar.
+  void BarForceDensities(const Class1Workspace& ws, Eigen::VectorXd& out) const;
 
  private:
   struct PackedBar {  // both ends free
@@ -81,35 +68,28 @@ class Class1System {
     double a00, a01, a11;  // inverse mass matrix
     double p, q, inv_w;    // see the top of the file
     double rest_sq;        // l0^2
-    double m00, m01, m11;  // mass matrix, for the kinetic energy
+    int model_index;       // index in model.bars
   };
   struct PinnedBar {  // end i pinned
     int oi, oj;
     double mass;           // m/3 + m_j
     double inv_mass;
     double rest_sq;
-  };
-  struct LoneNode {
-    int o;
-    double mass, inv_mass;
+    int model_index;
   };
 
+  friend class EngineFrame;  // dispatches to DerivativeImpl
   template <int D, bool Damped, bool Stabilised>
   void DerivativeImpl(double t, const double* y, double* dy, Class1Workspace& ws) const;
 
-  int dim_ = 2, n_n_ = 0;
-  bool damped_ = false;
-  Class1Options options_;
-  Eigen::VectorXd rest_positions_;  // packed
-  NodeLoads loads_;                 // constant and timed loads
-  std::vector<PackedString> strings_;
+  int n_model_bars_ = 0;
   std::vector<PackedBar> bars_;
   std::vector<PinnedBar> pinned_bars_;
-  std::vector<LoneNode> lone_;
-  std::vector<int> fixed_offsets_;
 };
 
-inline Class1Workspace MakeWorkspace(const Class1System& system) { return Class1Workspace(system.coordinates()); }
+inline Class1Workspace MakeWorkspace(const Class1System& system) {
+  return Class1Workspace(system.coordinates(), system.num_model_bars());
+}
 
 // Adapter to the integrators: owns the workspace and can hold the timed loads at one time for
 // the stages of a step (dynamics/engine_ode.h).

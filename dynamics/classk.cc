@@ -73,28 +73,7 @@ struct ClassKWorkspace::Solver {
 
 ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& options,
                            std::vector<TimedLoad> timed_loads)
-    : dim_(model.dim), n_n_(model.num_nodes()), n_model_bars_(static_cast<int>(model.bars.size())), options_(options) {
-  if (dim_ != 2 && dim_ != 3) throw ModelError(std::string(kEngine) + ": dim must be 2 or 3");
-  if (static_cast<int>(model.fixed.size()) != n_n_) {
-    throw ModelError(std::string(kEngine) + ": fixed has " + std::to_string(model.fixed.size()) + " entries for " +
-                     std::to_string(n_n_) + " nodes");
-  }
-  const bool has_node_mass = model.node_mass.size() != 0;
-  if (has_node_mass && model.node_mass.size() != n_n_) {
-    throw ModelError(std::string(kEngine) + ": node_mass has the wrong size");
-  }
-  if (options.stabilisation && !(options.omega_rad_s > 0 && options.zeta >= 0)) {
-    throw ModelError(std::string(kEngine) + ": stabilisation needs omega > 0 and zeta >= 0");
-  }
-  auto node_mass = [&](int a) { return has_node_mass ? model.node_mass(a) : 0.0; };
-
-  loads_ = NodeLoads(model, timed_loads, kEngine);
-  strings_ = PackStrings(model, kEngine, damped_);
-  rest_positions_.resize(coordinates());
-  for (int a = 0; a < n_n_; ++a) {
-    for (int d = 0; d < dim_; ++d) rest_positions_(a * dim_ + d) = model.positions(d, a);
-  }
-
+    : EngineFrame(model, options, timed_loads, kEngine), n_model_bars_(static_cast<int>(model.bars.size())) {
   // Bars and their copies. A node's first copy is its primary: it takes the node's mass and
   // force, and the node's acceleration is read from it.
   primary_copy_.assign(n_n_, -1);
@@ -124,22 +103,23 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
     };
     p.ci = free_i ? add_copy(b.i, 0, p.fi) : -1;
     p.cj = free_j ? add_copy(b.j, 1, p.fj) : -1;
-    p.m00 = free_i ? b.mass / 3.0 + (p.fi ? node_mass(b.i) : 0.0) : 0.0;
-    p.m11 = free_j ? b.mass / 3.0 + (p.fj ? node_mass(b.j) : 0.0) : 0.0;
-    p.m01 = free_i && free_j ? b.mass / 6.0 : 0.0;
+    const double m00 = free_i ? b.mass / 3.0 + (p.fi ? NodeMass(b.i) : 0.0) : 0.0;
+    const double m11 = free_j ? b.mass / 3.0 + (p.fj ? NodeMass(b.j) : 0.0) : 0.0;
+    const double m01 = free_i && free_j ? b.mass / 6.0 : 0.0;
     if (free_i && free_j) {
-      const double det = p.m00 * p.m11 - p.m01 * p.m01;
+      const double det = m00 * m11 - m01 * m01;
       if (!(det > 0)) throw ModelError(std::string(kEngine) + ": " + name + " has a singular mass matrix (no mass)");
-      p.a00 = p.m11 / det;
-      p.a11 = p.m00 / det;
-      p.a01 = -p.m01 / det;
+      p.a00 = m11 / det;
+      p.a11 = m00 / det;
+      p.a01 = -m01 / det;
     } else {
-      const double m = free_i ? p.m00 : p.m11;
+      const double m = free_i ? m00 : m11;
       if (!(m > 0)) throw ModelError(std::string(kEngine) + ": " + name + " has no mass at its free end");
       (free_i ? p.a00 : p.a11) = 1.0 / m;
     }
     p.w = p.a00 + p.a11 - 2.0 * p.a01;
     bars_.push_back(p);
+    AddMassBlock(free_i ? p.oi : -1, free_j ? p.oj : -1, m00, m01, m11);
   }
 
   // Constraint rows in their natural order: bar rows, then dim rows per extra copy.
@@ -241,24 +221,9 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
     for (int d = 0; d < dim_; ++d) c.rows[d] = new_row[c.row + d];
   }
 
-  for (int a = 0; a < n_n_; ++a) {
-    if (model.fixed[a]) {
-      fixed_offsets_.push_back(a * dim_);
-    } else if (node_copies[a].empty()) {
-      const double m = node_mass(a);
-      if (!(m > 0)) {
-        throw ModelError(std::string(kEngine) + ": free node " + NodeName(a) +
-                         " has neither a bar nor a mass (use string_mass \"nodes\" or give it mass)");
-      }
-      lone_.push_back({a * dim_, m, 1.0 / m});
-    }
-  }
-}
-
-Eigen::VectorXd ClassKSystem::RestState() const {
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(state_size());
-  y.head(coordinates()) = rest_positions_;
-  return y;
+  std::vector<bool> has_bar(n_n_);
+  for (int a = 0; a < n_n_; ++a) has_bar[a] = !node_copies[a].empty();
+  AddNodes(model, has_bar);
 }
 
 ClassKWorkspace::ClassKWorkspace(const ClassKSystem& system)
@@ -318,11 +283,6 @@ void ClassKSystem::BarForceDensities(const ClassKWorkspace& ws, Eigen::VectorXd&
   for (const PackedBar& p : bars_) out(p.model_index) = ws.mu(p.row);
 }
 
-void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
-  Specialise(dim_, damped_, options_.stabilisation,
-             [&]<int D, bool Damped, bool Stabilised>() { DerivativeImpl<D, Damped, Stabilised>(t, y, dy, ws); });
-}
-
 template <int D, bool Damped, bool Stabilised>
 void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
   // CAUTION: performance-sensitive. Flat loops over preallocated buffers; CHOLMOD refactorises
@@ -331,10 +291,7 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
   const double* x = y;
   const double* v = y + c;
   double* f = ws.force.data();
-  double* acc = dy + c;
-  std::memcpy(dy, v, sizeof(double) * static_cast<size_t>(c));  // x' = v
-  loads_.At(t, f);
-  AccumulateStringForces<D, Damped>(strings_, x, v, f);
+  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f);  // x' = v; loads and strings (eqs 16-17)
 
   ClassKWorkspace::Solver& s = *ws.solver;
   double* rhs = ws.mu.data();  // the right-hand side, solved in place into mu
@@ -406,6 +363,7 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
     }
   }
   // Node accelerations from the primary copies: a = u + M^-1 J^T mu.
+  double* acc = dy + c;
   for (const PackedBar& p : bars_) {
     for (int d = 0; d < D; ++d) {
       const double gi = p.ci >= 0 ? jt[p.ci * D + d] : 0.0;
@@ -414,32 +372,11 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
       if (p.cj >= 0 && p.fj) acc[p.oj + d] = u[p.cj * D + d] + p.a01 * gi + p.a11 * gj;
     }
   }
-  for (const LoneNode& n : lone_) {
-    for (int d = 0; d < D; ++d) acc[n.o + d] = f[n.o + d] * n.inv_mass;
-  }
-  for (const int o : fixed_offsets_) {
-    for (int d = 0; d < D; ++d) {
-      acc[o + d] = 0;
-      dy[o + d] = 0;
-    }
-  }
+  FinishDerivative<D>(f, dy);
 }
 
-double ClassKSystem::KineticEnergy(const double* y) const {
-  const double* v = y + coordinates();
-  auto dot = [&](int a, int b) {
-    double s = 0;
-    for (int d = 0; d < dim_; ++d) s += v[a + d] * v[b + d];
-    return s;
-  };
-  double e = 0;
-  for (const PackedBar& b : bars_) {
-    if (b.ci >= 0) e += b.m00 * dot(b.oi, b.oi);
-    if (b.cj >= 0) e += b.m11 * dot(b.oj, b.oj);
-    if (b.ci >= 0 && b.cj >= 0) e += 2.0 * b.m01 * dot(b.oi, b.oj);
-  }
-  for (const LoneNode& n : lone_) e += n.mass * dot(n.o, n.o);
-  return 0.5 * e;
+void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
+  Evaluate(*this, t, y, dy, ws);
 }
 
 }  // namespace tbridge

@@ -45,11 +45,11 @@
 namespace tbridge {
 
 // The stabilisation settings are those of class 1: omega [rad/s] > 0, zeta [-] >= 0.
-using ClassKOptions = Class1Options;
+using ClassKOptions = EngineOptions;
 
 class ClassKWorkspace;
 
-class ClassKSystem {
+class ClassKSystem : public EngineFrame {
  public:
   // Compiles `model` into flat arrays and the constant pattern of A. Throws ModelError when
   // dim is not 2 or 3, an index or size is inconsistent, a bar has length <= 0 or a singular
@@ -58,19 +58,10 @@ class ClassKSystem {
   ClassKSystem(const DynamicModel& model, const ClassKOptions& options = {},
                std::vector<TimedLoad> timed_loads = {});
 
-  int dim() const { return dim_; }
-  int num_nodes() const { return n_n_; }
-  int coordinates() const { return dim_ * n_n_; }
-  int state_size() const { return 2 * coordinates(); }
   int num_copies() const { return static_cast<int>(copies_.size()); }
   int num_bars() const { return static_cast<int>(bars_.size()); }  // bars with a free end
   int num_constraints() const { return n_rows_; }  // bar rows + dim x extra copies
   long matrix_nonzeros() const { return static_cast<long>(a_row_.size()); }  // lower triangle
-  bool damped() const { return damped_; }
-  bool stabilised() const { return options_.stabilisation; }
-
-  // The model's positions, at rest.
-  Eigen::VectorXd RestState() const;
 
   // dy = f(t, y). `ws` must be ClassKWorkspace(*this). Allocation-free after the workspace's
   // construction (see ClassKWorkspace). Throws ModelError when A is not positive definite
@@ -83,12 +74,6 @@ class ClassKSystem {
   // Allocation-free when `out` already has one entry per model bar.
   void BarForceDensities(const ClassKWorkspace& ws, Eigen::VectorXd& out) const;
 
-  // Kinetic energy of the state [J].
-  double KineticEnergy(const double* y) const;
-  // External node loads at time t, packed like the positions [N].
-  void LoadsAt(double t, double* force) const { loads_.At(t, force); }
-  bool has_timed_loads() const { return loads_.has_timed(); }
-
  private:
   friend class ClassKWorkspace;
 
@@ -98,7 +83,6 @@ class ClassKSystem {
     int row;             // its row of A (after the fill-reducing order)
     bool fi, fj;         // whether the end's copy receives the node force (primary copy)
     double a00, a01, a11;  // inverse mass block (a00 unused for a pinned i, a11 for a pinned j)
-    double m00, m01, m11;  // mass block, for the kinetic energy
     double w;            // (-1, 1) A_inv (-1, 1)^T over the free ends: A_kk = w |b|^2
     double rest_sq;      // l0^2
     int model_index;     // index in model.bars
@@ -117,25 +101,14 @@ class ClassKSystem {
     int at, bar, d;
     double coef;
   };
-  struct LoneNode {
-    int o;
-    double mass, inv_mass;
-  };
-
+  friend class EngineFrame;  // dispatches to DerivativeImpl
   template <int D, bool Damped, bool Stabilised>
   void DerivativeImpl(double t, const double* y, double* dy, ClassKWorkspace& ws) const;
 
-  int dim_ = 2, n_n_ = 0, n_model_bars_ = 0, n_rows_ = 0;
-  bool damped_ = false;
-  ClassKOptions options_;
-  Eigen::VectorXd rest_positions_;
-  NodeLoads loads_;
-  std::vector<PackedString> strings_;
+  int n_model_bars_ = 0, n_rows_ = 0;
   std::vector<PackedBar> bars_;
   std::vector<Copy> copies_;
   std::vector<Coincidence> coincidences_;
-  std::vector<LoneNode> lone_;
-  std::vector<int> fixed_offsets_;
   std::vector<int> primary_copy_;  // per node: its primary copy, -1 without bars
   // Lower triangle of A in compressed columns (CHOLMOD's layout): column pointers, row
   // indices, the constant part of the values, and the state-dependent entries.
@@ -163,6 +136,7 @@ class ClassKWorkspace {
   Eigen::VectorXd b;      // bar vectors, dim per packed bar [m]
   Eigen::VectorXd bar_length_sq;  // |b|^2 per packed bar [m^2]
   Eigen::VectorXd mu;     // right-hand side, then the multipliers, per row of A [N/m], [N]
+  double damper_power = 0;  // the dampers' power at the last evaluation [W]
 
   // Nonzeros of the factor L (with its diagonal); 0 without constraints.
   long factor_nonzeros() const;

@@ -32,6 +32,7 @@ class EngineOde final : public OdeSystem {
   void Derivative(double t, const double* y, double* dy) override {
     system_.Derivative(hold_loads_ ? load_time_ : t, y, dy, ws_);
   }
+  double DissipatedPower() const override { return ws_.damper_power; }
   // Evaluates the timed loads at `t` for every stage from now on. A fixed-step driver holds
   // them at each step's midpoint, so that a load switching on a step boundary is constant
   // within every step (a switch inside the stages of one step would cost O(dt) in energy).

@@ -8,18 +8,23 @@
 
 namespace tbridge {
 
-void Rk4Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws) {
+double Rk4Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws) {
   // CAUTION: performance-sensitive. Every expression below is evaluated lazily into an
   // existing vector, so no temporary is allocated.
   const double half = 0.5 * h;
   system.Derivative(t, y.data(), ws.k1.data());
+  double power = system.DissipatedPower();
   ws.stage = y + half * ws.k1;
   system.Derivative(t + half, ws.stage.data(), ws.k2.data());
+  power += 2.0 * system.DissipatedPower();
   ws.stage = y + half * ws.k2;
   system.Derivative(t + half, ws.stage.data(), ws.k3.data());
+  power += 2.0 * system.DissipatedPower();
   ws.stage = y + h * ws.k3;
   system.Derivative(t + h, ws.stage.data(), ws.k4.data());
+  power += system.DissipatedPower();
   y += (h / 6.0) * (ws.k1 + 2.0 * (ws.k2 + ws.k3) + ws.k4);
+  return (h / 6.0) * power;
 }
 
 namespace {
@@ -47,6 +52,7 @@ constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700
 
 void Dopri5::Start(OdeSystem& system, double t, const Eigen::VectorXd& y, Dopri5Workspace& ws) {
   system.Derivative(t, y.data(), ws.k[0].data());
+  power_[0] = system.DissipatedPower();
   ++evaluations_;
   t_old_ = t;
 }
@@ -68,16 +74,22 @@ double Dopri5::Step(OdeSystem& system, double& t, Eigen::VectorXd& y, double& h,
     }
     ws.stage = y + step * a21 * k[0];
     system.Derivative(t + c2 * step, ws.stage.data(), k[1].data());
+    power_[1] = system.DissipatedPower();
     ws.stage = y + step * (a31 * k[0] + a32 * k[1]);
     system.Derivative(t + c3 * step, ws.stage.data(), k[2].data());
+    power_[2] = system.DissipatedPower();
     ws.stage = y + step * (a41 * k[0] + a42 * k[1] + a43 * k[2]);
     system.Derivative(t + c4 * step, ws.stage.data(), k[3].data());
+    power_[3] = system.DissipatedPower();
     ws.stage = y + step * (a51 * k[0] + a52 * k[1] + a53 * k[2] + a54 * k[3]);
     system.Derivative(t + c5 * step, ws.stage.data(), k[4].data());
+    power_[4] = system.DissipatedPower();
     ws.stage = y + step * (a61 * k[0] + a62 * k[1] + a63 * k[2] + a64 * k[3] + a65 * k[4]);
     system.Derivative(t + step, ws.stage.data(), k[5].data());
+    power_[5] = system.DissipatedPower();
     ws.y_new = y + step * (a71 * k[0] + a73 * k[2] + a74 * k[3] + a75 * k[4] + a76 * k[5]);
     system.Derivative(t + step, ws.y_new.data(), k[6].data());
+    power_[6] = system.DissipatedPower();
     evaluations_ += 6;
 
     // Error estimate, reusing `stage` for the difference of the two solutions.
@@ -102,6 +114,8 @@ double Dopri5::Step(OdeSystem& system, double& t, Eigen::VectorXd& y, double& h,
       t = (step == t_end - t) ? t_end : t + step;
       y.swap(ws.y_new);
       k[0].swap(k[6]);  // FSAL
+      last_dissipated_ = step * (a71 * power_[0] + a73 * power_[2] + a74 * power_[3] + a75 * power_[4] + a76 * power_[5]);
+      power_[0] = power_[6];
       ++accepted_;
       const double fac = err > 0 ? options_.safety * std::pow(err, -0.2) : options_.fac_max;
       h = step * std::clamp(fac, options_.fac_min, options_.fac_max);

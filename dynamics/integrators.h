@@ -18,12 +18,18 @@ class OdeSystem {
   virtual int size() const = 0;
   // dy = f(t, y); y and dy point to size() values and do not alias.
   virtual void Derivative(double t, const double* y, double* dy) = 0;
+  // The rate at which the last Derivative's state loses energy to dissipation [W] (string
+  // dampers), integrated by the explicit integrators with their own stage weights: the
+  // quadrature that matches their update of the state, so an energy balance closes to the
+  // method's order even where the power jumps (a string going slack).
+  virtual double DissipatedPower() const { return 0.0; }
 };
 
 // One classical RK4 step of size h from (t, y); y is overwritten with y(t + h). `ws` must be
 // sized for the system (Rk4Workspace(system.size())); preconditions are not checked here.
+// Returns the energy dissipated over the step, h/6 (P1 + 2 P2 + 2 P3 + P4) [J].
 // CAUTION: performance-sensitive
-void Rk4Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws);
+double Rk4Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws);
 
 struct Dopri5Options {
   double rtol = 1e-8;       // relative tolerance [-]
@@ -58,6 +64,8 @@ class Dopri5 {
   // [t_old, t_new]; writes into `out` (sized like y). Allocation-free.
   void Interpolate(double t_out, const Dopri5Workspace& ws, Eigen::VectorXd& out) const;
 
+  // The energy dissipated over the last accepted step, by the 5th-order weights [J].
+  double last_dissipated() const { return last_dissipated_; }
   int accepted() const { return accepted_; }
   int rejected() const { return rejected_; }
   int evaluations() const { return evaluations_; }
@@ -65,6 +73,8 @@ class Dopri5 {
  private:
   Dopri5Options options_;
   double t_old_ = 0, h_last_ = 0;
+  double power_[7] = {0, 0, 0, 0, 0, 0, 0};  // DissipatedPower of each stage [W]
+  double last_dissipated_ = 0;
   int accepted_ = 0, rejected_ = 0, evaluations_ = 0;
 };
 

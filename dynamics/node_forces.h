@@ -67,11 +67,14 @@ std::vector<PackedString> PackStrings(const DynamicModel& model, const char* eng
 
 // Adds every string's pull to f: force density
 //   gamma = max(k (1 - L0/s) + c (s . s_dot)/s^2, 0) if s >= L0, else 0,
-// pulling node i by gamma s and node j by -gamma s (s = n_j - n_i).
+// pulling node i by gamma s and node j by -gamma s (s = n_j - n_i). Returns the power the
+// dampers take out of the motion, sum (gamma - k (1 - L0/s)) (s . s_dot) over the taut strings
+// [W] (0 when not Damped), so that an integrator can integrate it with its own stages.
 // CAUTION: performance-sensitive (inlined into the engines' loops).
 template <int D, bool Damped>
-inline void AccumulateStringForces(const std::vector<PackedString>& strings, const double* x, const double* v,
-                                   double* f) {
+inline double AccumulateStringForces(const std::vector<PackedString>& strings, const double* x, const double* v,
+                                     double* f) {
+  [[maybe_unused]] double power = 0;
   for (const PackedString& s : strings) {
     double dx[D];
     double len2 = 0;
@@ -84,8 +87,10 @@ inline void AccumulateStringForces(const std::vector<PackedString>& strings, con
     if constexpr (Damped) {
       double rate = 0;  // s . s_dot
       for (int d = 0; d < D; ++d) rate += dx[d] * (v[s.oj + d] - v[s.oi + d]);
+      const double spring = gamma;
       const double total = gamma + s.c * rate * inv_len * inv_len;
       gamma = gamma >= 0 ? std::max(total, 0.0) : 0.0;
+      if (spring >= 0) power += (gamma - spring) * rate;
     } else {
       gamma = std::max(gamma, 0.0);
     }
@@ -94,6 +99,7 @@ inline void AccumulateStringForces(const std::vector<PackedString>& strings, con
       f[s.oj + d] -= gamma * dx[d];
     }
   }
+  return power;
 }
 
 }  // namespace tbridge

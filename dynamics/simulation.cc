@@ -17,6 +17,7 @@
 #include "dynamics/classk.h"
 #include "dynamics/coupling.h"
 #include "dynamics/integrators.h"
+#include "dynamics/run_monitor.h"
 #include "dynamics/sdirk.h"
 #include "dynamics/step_size.h"
 
@@ -31,226 +32,6 @@ std::string Num(double v) {
   s << v;
   return s.str();
 }
-
-// Per-step measurements of the summary, on the accepted states only. `System` is the engine
-// (Class1System or ClassKSystem): it gives the coordinates and the kinetic energy.
-template <class System>
-class Monitor {
- public:
-  // `probe`, when given, measures the bar forces (record.bar_forces).
-  Monitor(const DynamicModel& model, const System& system, const Eigen::VectorXd& y0,
-          const DynamicsConfig& config, const ClassKSystem* probe)
-      : model_(model), system_(system), config_(config), dim_(model.dim), x0_(y0.head(system.coordinates())),
-        probe_(probe) {
-    taut_.resize(model.strings.size());
-    ever_slack_.assign(model.strings.size(), 0);
-    summary_.slack.per_string.assign(model.strings.size(), 0);
-    summary_.peak_string_tension.assign(model.strings.size(), 0.0);
-    summary_.min_string_strain.assign(model.strings.size(), std::numeric_limits<double>::infinity());
-    if (probe_) {
-      probe_ws_ = std::make_unique<ClassKWorkspace>(*probe_);
-      probe_dy_.resize(probe_->state_size());
-      lambda_.setZero(static_cast<Eigen::Index>(model.bars.size()));
-      summary_.peak_bar_compression.assign(model.bars.size(), 0.0);
-      summary_.peak_bar_tension.assign(model.bars.size(), 0.0);
-    }
-    summary_.allowed_stress = model.allowed_stress;
-    double kinetic = 0, elastic = 0, power = 0;
-    Measure(0.0, 0.0, y0.data(), /*first=*/true, kinetic, elastic, power);
-    last_power_ = power;
-    auto& e = summary_.energy;
-    e.kinetic_start = kinetic;
-    e.elastic_start = elastic;
-    e.kinetic_end = kinetic;
-    e.elastic_end = elastic;
-    e.reference = std::max(kinetic + elastic, 1e-12);
-    h0_ = kinetic + elastic;
-    for (const LoadStepConfig& l : config.loads) {
-      timed_.push_back({l, x0_.segment((l.node - 1) * dim_, dim_)});
-    }
-  }
-
-  // After an accepted step from t_old to t (state y). Throws ModelError on a blow-up.
-  void Accept(int step, double t_old, double t, const double* y) {
-    const int c = system_.coordinates();
-    for (int i = 0; i < 2 * c; ++i) {
-      if (!std::isfinite(y[i])) Fail(step, t, "a node position or velocity is not finite");
-    }
-    double kinetic = 0, elastic = 0, power = 0;
-    Measure(t, 0.5 * (t_old + t), y, false, kinetic, elastic, power);
-    auto& e = summary_.energy;
-    e.dissipated += 0.5 * (t - t_old) * (last_power_ + power);
-    last_power_ = power;
-    // Work of the loads: constant loads exactly, W . (x - x0); each timed load by its force
-    // times the displacement of its node over the part of the step it acts in (exact for a
-    // step; a ramp's force taken at the middle of that part).
-    double work = 0;
-    for (int i = 0; i < c; ++i) work += model_loads(i) * (y[i] - x0_(i));
-    for (TimedLoadState& l : timed_) {
-      const double overlap = std::min(t, l.config.t_end) - std::max(t_old, l.config.t_start);
-      const int o = (l.config.node - 1) * dim_;
-      if (overlap > 0) {
-        const double mid = std::max(t_old, l.config.t_start) + 0.5 * overlap;
-        const double shape = LoadShape(mid, l.config.t_start, l.config.t_end, l.config.rise_s, l.config.fall_s);
-        double fdx = 0;
-        for (int d = 0; d < dim_; ++d) fdx += l.config.force[d] * (y[o + d] - l.last(d));
-        timed_work_ += shape * fdx * overlap / (t - t_old);
-      }
-      for (int d = 0; d < dim_; ++d) l.last(d) = y[o + d];
-    }
-    e.external_work = work + timed_work_;
-    e.kinetic_end = kinetic;
-    e.elastic_end = elastic;
-    const double drift = (kinetic + elastic - e.external_work + e.dissipated - h0_) / e.reference;
-    e.final_drift = drift;
-    e.max_drift = std::max(e.max_drift, std::abs(drift));
-    if (summary_.max_bar_length_error > config_.guard.max_bar_length_error) {
-      Fail(step, t, "the bar-length error " + Num(summary_.max_bar_length_error) +
-                        " exceeds guard.max_bar_length_error = " + Num(config_.guard.max_bar_length_error));
-    }
-    if (drift > config_.guard.max_energy_growth) {
-      Fail(step, t, "the energy grew by " + Num(drift) + " of its initial value (guard.max_energy_growth = " +
-                        Num(config_.guard.max_energy_growth) + ")");
-    }
-  }
-
-  SimulationSummary& summary() { return summary_; }
-
-  // Called on a blow-up only: the highest linearised frequency of the initial state [rad/s].
-  void SetOmegaMax(std::function<double()> omega_max) { omega_max_ = std::move(omega_max); }
-
- private:
-  struct TimedLoadState {
-    LoadStepConfig config;
-    Eigen::VectorXd last;  // node position at the previous accepted step
-  };
-
-  double model_loads(int i) const {
-    return model_.loads.size() != 0 ? model_.loads(i % dim_, i / dim_) : 0.0;
-  }
-
-  [[noreturn]] void Fail(int step, double t, const std::string& what) const {
-    std::ostringstream msg;
-    msg << "the run blew up at step " << step << ", t = " << t << " s: " << what << ". Try a smaller dt";
-    // A safe dt from the highest linearised frequency: half RK4's limit 2 sqrt(2)/omega_max.
-    double omega = 0;
-    try {
-      if (omega_max_) omega = omega_max_();
-    } catch (const std::exception&) {
-      omega = 0;  // no advice beats a second failure
-    }
-    const double safe = 0.5 * Rk4StepLimit(omega);
-    if (omega > 0 && safe < config_.dt) {
-      msg << ": the highest linearised frequency " << omega << " rad/s makes RK4 stable only below "
-          << 2 * safe << " s, so dt = " << safe << " s is safe (or integrator \"sdirk3\" keeps this dt)";
-    } else {
-      msg << " (e.g. dt = " << config_.dt / 4 << " s; the highest linearised frequency " << omega
-          << " rad/s allows this dt, so the cause is the motion, not stability)";
-    }
-    if (!config_.stabilisation.enabled) msg << " or enable stabilisation";
-    throw ModelError(msg.str());
-  }
-
-  // The state y at time t; the loads of `load_time` act on it (the step's hold time).
-  void Measure(double t, double load_time, const double* y, bool first, double& kinetic, double& elastic,
-               double& power) {
-    const int c = system_.coordinates();
-    const double* x = y;
-    const double* v = y + c;
-    for (size_t k = 0; k < model_.strings.size(); ++k) {
-      const DynamicString& s = model_.strings[k];
-      double len2 = 0, rate = 0;
-      for (int d = 0; d < dim_; ++d) {
-        const double dx = x[s.j * dim_ + d] - x[s.i * dim_ + d];
-        len2 += dx * dx;
-        rate += dx * (v[s.j * dim_ + d] - v[s.i * dim_ + d]);
-      }
-      const double len = std::sqrt(len2);
-      const bool taut = len >= s.rest_length;
-      // The stretch [m] while the run goes, divided by L0 once at its end (no division per step).
-      summary_.min_string_strain[k] = std::min(summary_.min_string_strain[k], len - s.rest_length);
-      double tension = 0;
-      if (taut) {
-        const double stretch = len - s.rest_length;
-        const double spring = StringTension(s.stiffness, s.rest_length, len);
-        elastic += 0.5 * spring * stretch;
-        const double length_rate = rate / len;
-        tension = std::max(spring + s.damping * length_rate, 0.0);
-        power += (tension - spring) * length_rate;  // rate of work done on the damper
-      }
-      if (!taut && !ever_slack_[k]) {
-        ever_slack_[k] = 1;
-        ++summary_.slack.ever_slack;
-      }
-      if (first) {
-        taut_[k] = taut;
-        if (!taut) ++summary_.slack.slack_at_start;
-      } else if (taut != taut_[k]) {
-        taut_[k] = taut;
-        ++summary_.slack.per_string[k];
-        ++summary_.slack.total;
-      }
-      summary_.peak_string_tension[k] = std::max(summary_.peak_string_tension[k], tension);
-      if (k < model_.string_area.size() && model_.string_area[k] > 0) {
-        const double stress = tension / model_.string_area[k];
-        if (stress > summary_.max_string_stress) {
-          summary_.max_string_stress = stress;
-          summary_.max_stress_string = s.name;
-          summary_.max_stress_time = t;
-        }
-      }
-    }
-    for (const DynamicBar& b : model_.bars) {
-      double len2 = 0;
-      for (int d = 0; d < dim_; ++d) {
-        const double db = x[b.j * dim_ + d] - x[b.i * dim_ + d];
-        len2 += db * db;
-      }
-      summary_.max_bar_length_error =
-          std::max(summary_.max_bar_length_error, std::abs(std::sqrt(len2) - b.length) / b.length);
-    }
-    for (const int a : model_.deck_nodes) {
-      for (int d = 0; d < dim_; ++d) {
-        const double u = std::abs(x[a * dim_ + d] - model_.positions(d, a));
-        if (u > summary_.peak_deck_displacement[d]) {
-          summary_.peak_deck_displacement[d] = u;
-          summary_.peak_deck_node[d] = a;
-          summary_.peak_deck_time[d] = t;
-        }
-      }
-    }
-    if (probe_) MeasureBarForces(load_time, y);
-    kinetic = system_.KineticEnergy(y);
-  }
-
-  void MeasureBarForces(double load_time, const double* y) {
-    probe_->Derivative(load_time, y, probe_dy_.data(), *probe_ws_);
-    probe_->BarForceDensities(*probe_ws_, lambda_);
-    for (size_t k = 0; k < model_.bars.size(); ++k) {
-      const double force = lambda_(static_cast<Eigen::Index>(k)) * model_.bars[k].length;  // > 0: compression
-      double& peak = force >= 0 ? summary_.peak_bar_compression[k] : summary_.peak_bar_tension[k];
-      peak = std::max(peak, std::abs(force));
-    }
-  }
-
-  const DynamicModel& model_;
-  const System& system_;
-  const DynamicsConfig& config_;
-  int dim_;
-  Eigen::VectorXd x0_;
-  std::vector<bool> taut_;
-  std::vector<char> ever_slack_;
-  std::vector<TimedLoadState> timed_;
-  const ClassKSystem* probe_;
-  std::unique_ptr<ClassKWorkspace> probe_ws_;
-  Eigen::VectorXd probe_dy_, lambda_;
-  double timed_work_ = 0;
-  double h0_ = 0;
-  double last_power_ = 0;
-  std::function<double()> omega_max_;
-  SimulationSummary summary_;
-};
-
 
 // A uniform output grid t_k = k * spacing and the rows filled so far.
 struct Sampler {
@@ -432,12 +213,23 @@ namespace {
 template <class System, class Ode>
 SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& config,
                              const std::vector<PrestrainReport>& prestrain, const System& system,
-                             const ClassKSystem* probe, SimulationResult result,
-                             std::chrono::steady_clock::time_point wall_start, ProgressReporter* progress) {
+                             SimulationResult result, std::chrono::steady_clock::time_point wall_start,
+                             ProgressReporter* progress) {
   const int dim = model.dim;
   Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
-  Monitor<System> monitor(model, system, y, config, probe);
+  // Bar forces from the run's own engine, in a workspace of their own (the integrator's holds
+  // its stages).
+  RunMonitor::BarForceProbe probe;
+  if (config.record.bar_forces) {
+    auto probe_ws = std::shared_ptr<decltype(MakeWorkspace(system))>(new auto(MakeWorkspace(system)));
+    auto probe_dy = std::make_shared<Eigen::VectorXd>(system.state_size());
+    probe = [&system, probe_ws, probe_dy](double t, const double* state, Eigen::VectorXd& lambda) {
+      system.Derivative(t, state, probe_dy->data(), *probe_ws);
+      system.BarForceDensities(*probe_ws, lambda);
+    };
+  }
+  RunMonitor monitor(model, system, config, y, probe);
   const Eigen::VectorXd y_start = y;
   monitor.SetOmegaMax([&] { return HighestFrequency(ode, y_start).omega_max; });
 
@@ -486,14 +278,16 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
       const double t_old = (step - 1) * config.dt;
       const double t = step == total_steps ? config.duration : step * config.dt;
       if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * (t_old + t));
+      double dissipated = std::numeric_limits<double>::quiet_NaN();  // SDIRK3: by the trapezoidal rule
       if (sdirk) {
         sdirk->Step(ode, t_old, t - t_old, y);
       } else {
         // Sub-steps share the step's held loads; the monitor sees the step's end state.
         const double h = (t - t_old) / choice.substeps;
-        for (int k = 0; k < choice.substeps; ++k) Rk4Step(ode, t_old + k * h, h, y, ws);
+        dissipated = 0;
+        for (int k = 0; k < choice.substeps; ++k) dissipated += Rk4Step(ode, t_old + k * h, h, y, ws);
       }
-      monitor.Accept(static_cast<int>(step), t_old, t, y.data());
+      monitor.Accept(step, t_old, t, y.data(), dissipated);
       // A lock and two stores every 1024 steps: far below the cost of the steps.
       if (progress != nullptr && (step & 1023) == 0) progress->Update(t, config.duration);
       if (recording && step % config.record.every == 0) take_history(t, y);
@@ -520,7 +314,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
                               Num(config.duration) + " s: raise the limit, or loosen dynamics.rtol and atol");
       }
       dp.Step(ode, t, y, h, config.duration, ws);
-      monitor.Accept(++step, t_old, t, y.data());
+      monitor.Accept(++step, t_old, t, y.data(), dp.last_dissipated());
       if (progress != nullptr && (step & 1023) == 0) progress->Update(t, config.duration);
       // Dense output onto the uniform grids (within rounding of the end time).
       if (recording) {
@@ -544,19 +338,9 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   if (recording) result.history.conservativeResize(hist.rows, n_cols);
   if (deck) result.deck_vertical.conservativeResize(deck_s.rows, result.deck_vertical.cols());
 
+  monitor.Finish(y.data());
   s.duration = config.duration;
-  s.stress_exceeds_allowed = s.max_string_stress > s.allowed_stress;
   s.prestrain = prestrain;
-  // Slack strings at the end, from the final state.
-  for (const DynamicString& st : model.strings) {
-    double len2 = 0;
-    for (int d = 0; d < dim; ++d) {
-      const double dx = y(st.j * dim + d) - y(st.i * dim + d);
-      len2 += dx * dx;
-    }
-    if (std::sqrt(len2) < st.rest_length) ++s.slack.slack_at_end;
-  }
-  for (size_t k = 0; k < model.strings.size(); ++k) s.min_string_strain[k] /= model.strings[k].rest_length;
   if (config.frequency.enabled) {
     if (!deck) {
       s.frequency_note = "the model has no deck nodes";
@@ -603,9 +387,9 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 
 namespace {
 
-// Both engines take the same stabilisation settings (ClassKOptions is Class1Options).
-Class1Options EngineOptions(const DynamicsConfig& config) {
-  Class1Options options;
+// Both engines take the same stabilisation settings.
+EngineOptions EngineOptionsOf(const DynamicsConfig& config) {
+  EngineOptions options;
   options.stabilisation = config.stabilisation.enabled;
   options.omega_rad_s = config.stabilisation.omega_rad_s;
   options.zeta = config.stabilisation.zeta;
@@ -615,7 +399,7 @@ Class1Options EngineOptions(const DynamicsConfig& config) {
 }  // namespace
 
 double Rk4StableStep(const DynamicModel& model, const DynamicsConfig& config) {
-  const Class1Options options = EngineOptions(config);
+  const EngineOptions options = EngineOptionsOf(config);
   const Eigen::VectorXd y = InitialState(model, config);
   if (EngineFor(model, config) == "class1") {
     const Class1System system(model, options);
@@ -651,18 +435,14 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
 
   const std::string engine = EngineFor(model, config);
   result.summary.engine = engine;
-  const Class1Options options = EngineOptions(config);
-  // Bar forces come from the class-k multipliers for either engine; a class-k run could share
-  // its system, but a second one keeps the two paths alike and costs only its arrays.
-  std::unique_ptr<ClassKSystem> probe;
-  if (config.record.bar_forces) probe = std::make_unique<ClassKSystem>(model, options, timed);
+  const EngineOptions options = EngineOptionsOf(config);
   if (engine == "class1") {
     const Class1System system(model, options, timed);
-    return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, probe.get(), std::move(result),
+    return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, std::move(result),
                                                 wall_start, hooks.progress);
   }
   const ClassKSystem system(model, options, timed);
-  return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, probe.get(), std::move(result),
+  return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, std::move(result),
                                               wall_start, hooks.progress);
 }
 

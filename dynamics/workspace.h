@@ -6,10 +6,14 @@
 
 namespace tbridge {
 
-// The class-1 right-hand side: non-bar node forces, dim x n_n packed node-major [N].
+// The class-1 right-hand side: non-bar node forces, dim x n_n packed node-major [N]; what the
+// last evaluation found: the bar force densities per model bar [N/m] and the dampers' power [W].
 struct Class1Workspace {
   Eigen::VectorXd force;
-  explicit Class1Workspace(int coordinates = 0) : force(Eigen::VectorXd::Zero(coordinates)) {}
+  Eigen::VectorXd lambda;
+  double damper_power = 0;
+  explicit Class1Workspace(int coordinates = 0, int bars = 0)
+      : force(Eigen::VectorXd::Zero(coordinates)), lambda(Eigen::VectorXd::Zero(bars)) {}
 };
 
 // Classical RK4: the four stage slopes and the stage state (each of the state's size).

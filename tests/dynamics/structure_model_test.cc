@@ -126,9 +126,10 @@ TEST_CASE("structure run: the damped prism loses mechanical energy at every samp
     // Strict: the smallest loss over 0.5 s (3.5-4 s, most strings slack) is 2.6e-4 J.
     CHECK(Mechanical(e) < previous);
     CHECK(e.dissipated > 0);
-    // The balance kinetic + elastic + dissipated = initial closes to RK4's accuracy, which
-    // drops to first order at the 66 slack kinks: 1.9e-3 of the initial 1.125 J seen.
-    CHECK(e.max_drift < 1e-2);
+    // The balance kinetic + elastic + dissipated = initial closes to RK4's accuracy across the
+    // 66 slack kinks: 6.5e-5 of the initial 1.125 J seen (motes_peer_test.cc compares it with
+    // the undamped prism's).
+    CHECK(e.max_drift < 2e-4);
     previous = Mechanical(e);
   }
 }

@@ -1,0 +1,69 @@
+#include "dynamics/engine_frame.h"
+
+#include "core/error.h"
+
+namespace tbridge {
+
+EngineFrame::EngineFrame(const DynamicModel& model, const EngineOptions& options, const std::vector<TimedLoad>& timed,
+                         const char* engine)
+    : engine_(engine), dim_(model.dim), n_n_(model.num_nodes()), options_(options) {
+  const std::string where(engine);
+  if (dim_ != 2 && dim_ != 3) throw ModelError(where + ": dim must be 2 or 3");
+  if (static_cast<int>(model.fixed.size()) != n_n_) {
+    throw ModelError(where + ": fixed has " + std::to_string(model.fixed.size()) + " entries for " +
+                     std::to_string(n_n_) + " nodes");
+  }
+  if (model.node_mass.size() != 0 && model.node_mass.size() != n_n_) {
+    throw ModelError(where + ": node_mass has the wrong size");
+  }
+  if (options.stabilisation && !(options.omega_rad_s > 0 && options.zeta >= 0)) {
+    throw ModelError(where + ": stabilisation needs omega > 0 and zeta >= 0");
+  }
+  node_mass_ = model.node_mass;
+  loads_ = NodeLoads(model, timed, engine);
+  strings_ = PackStrings(model, engine, damped_);
+  rest_positions_.resize(coordinates());
+  for (int a = 0; a < n_n_; ++a) {
+    for (int d = 0; d < dim_; ++d) rest_positions_(a * dim_ + d) = model.positions(d, a);
+  }
+}
+
+void EngineFrame::AddNodes(const DynamicModel& model, const std::vector<bool>& has_bar) {
+  for (int a = 0; a < n_n_; ++a) {
+    if (model.fixed[a]) {
+      fixed_offsets_.push_back(a * dim_);
+    } else if (!has_bar[a]) {
+      const double m = NodeMass(a);
+      if (!(m > 0)) {
+        throw ModelError(Where() + ": free node " + std::to_string(a + 1) +
+                         " has neither a bar nor a mass (use string_mass \"nodes\" or give it mass)");
+      }
+      lone_.push_back({a * dim_, m, 1.0 / m});
+    }
+  }
+}
+
+Eigen::VectorXd EngineFrame::RestState() const {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(state_size());
+  y.head(coordinates()) = rest_positions_;
+  return y;
+}
+
+double EngineFrame::KineticEnergy(const double* y) const {
+  const double* v = y + coordinates();
+  auto dot = [&](int a, int b) {
+    double s = 0;
+    for (int d = 0; d < dim_; ++d) s += v[a + d] * v[b + d];
+    return s;
+  };
+  double e = 0;
+  for (const MassBlock& b : blocks_) {
+    if (b.oi >= 0) e += b.m00 * dot(b.oi, b.oi);
+    if (b.oj >= 0) e += b.m11 * dot(b.oj, b.oj);
+    if (b.oi >= 0 && b.oj >= 0) e += 2.0 * b.m01 * dot(b.oi, b.oj);
+  }
+  for (const LoneNode& n : lone_) e += n.mass * dot(n.o, n.o);
+  return 0.5 * e;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,115 @@
+// What the class-1 and class-k engines compile from a model alike: the checks of its sizes and
+// options, the loads and strings, the rest positions, the free nodes without a bar, the pinned
+// coordinates and the mass blocks that give the kinetic energy. Each engine adds its bars.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "dynamics/engine_ode.h"
+#include "dynamics/model.h"
+#include "dynamics/node_forces.h"
+
+namespace tbridge {
+
+// Stabilisation of the bar lengths (paper eqs 24-26, SPEC.md §8), the same for both engines.
+struct EngineOptions {
+  bool stabilisation = false;
+  double omega_rad_s = 100.0;  // corrective frequency omega [rad/s]
+  double zeta = 1.0;           // corrective damping ratio [-]
+};
+
+class EngineFrame {
+ public:
+  int dim() const { return dim_; }
+  int num_nodes() const { return n_n_; }
+  int coordinates() const { return dim_ * n_n_; }
+  int state_size() const { return 2 * coordinates(); }
+  bool damped() const { return damped_; }
+  bool stabilised() const { return options_.stabilisation; }
+
+  // The model's positions, at rest.
+  Eigen::VectorXd RestState() const;
+  // Kinetic energy of the state [J]: every bar's mass block, then the lone point masses.
+  double KineticEnergy(const double* y) const;
+  // External node loads at time t, packed like the positions [N].
+  void LoadsAt(double t, double* force) const { loads_.At(t, force); }
+  // Whether any timed load exists (else loads are constant).
+  bool has_timed_loads() const { return loads_.has_timed(); }
+
+ protected:
+  // Throws ModelError naming `engine` when dim is not 2 or 3, `fixed` or `node_mass` has the
+  // wrong size, stabilisation has omega <= 0 or zeta < 0, a timed load names a node out of
+  // range or a string is invalid (PackStrings).
+  EngineFrame(const DynamicModel& model, const EngineOptions& options, const std::vector<TimedLoad>& timed,
+              const char* engine);
+
+  // Once the bars are known (`has_bar[a]`: a bar ends at node a): pinned nodes are held, and
+  // free nodes without a bar move as point masses. Throws ModelError for such a node without mass.
+  void AddNodes(const DynamicModel& model, const std::vector<bool>& has_bar);
+  // The bar's mass block on the velocities at offsets oi, oj (-1: a pinned end, no term).
+  void AddMassBlock(int oi, int oj, double m00, double m01, double m11) { blocks_.push_back({oi, oj, m00, m01, m11}); }
+  double NodeMass(int a) const { return node_mass_.size() != 0 ? node_mass_(a) : 0.0; }
+  std::string Where() const { return engine_; }
+
+  // dy = f(t, y) by `self.DerivativeImpl<D, Damped, Stabilised>`, with the dimension, damping
+  // and stabilisation as constants (Specialise): one dispatch per evaluation.
+  template <class Self, class Workspace>
+  void Evaluate(const Self& self, double t, const double* y, double* dy, Workspace& ws) const {
+    Specialise(dim_, damped_, options_.stabilisation, [&]<int D, bool Damped, bool Stabilised>() {
+      self.template DerivativeImpl<D, Damped, Stabilised>(t, y, dy, ws);
+    });
+  }
+
+  // The start of every evaluation: x' = v into dy, then the non-bar forces into f (loads at t
+  // and the strings' pulls). Returns the dampers' power [W]. CAUTION: performance-sensitive.
+  template <int D, bool Damped>
+  double StartDerivative(double t, const double* y, double* dy, double* f) const {
+    const int c = coordinates();
+    std::memcpy(dy, y + c, sizeof(double) * static_cast<size_t>(c));
+    loads_.At(t, f);
+    return AccumulateStringForces<D, Damped>(strings_, y, y + c, f);
+  }
+
+  // The end of every evaluation: the lone nodes' accelerations F / m, and zero rate for the
+  // pinned coordinates. CAUTION: performance-sensitive.
+  template <int D>
+  void FinishDerivative(const double* f, double* dy) const {
+    double* acc = dy + coordinates();
+    for (const LoneNode& n : lone_) {
+      for (int d = 0; d < D; ++d) acc[n.o + d] = f[n.o + d] * n.inv_mass;
+    }
+    for (const int o : fixed_offsets_) {
+      for (int d = 0; d < D; ++d) {
+        acc[o + d] = 0;
+        dy[o + d] = 0;
+      }
+    }
+  }
+
+  const char* engine_;
+  int dim_ = 2, n_n_ = 0;
+  bool damped_ = false;
+  EngineOptions options_;
+  NodeLoads loads_;
+  std::vector<PackedString> strings_;
+
+ private:
+  struct LoneNode {
+    int o;
+    double mass, inv_mass;
+  };
+  struct MassBlock {
+    int oi, oj;
+    double m00, m01, m11;
+  };
+  Eigen::VectorXd rest_positions_;  // packed
+  Eigen::VectorXd node_mass_;
+  std::vector<LoneNode> lone_;
+  std::vector<int> fixed_offsets_;
+  std::vector<MassBlock> blocks_;
+};
+
+}  // namespace tbridge

@@ -1,0 +1,92 @@
+// What a run measures at every accepted state for its summary: string tension, stress and
+// slack, bar-length error, deck peaks, energy balance and (when asked) bar force peaks; and the
+// guards that stop a run that blows up. It sees every accepted step, so no peak or slack
+// transition is missed, whatever is recorded.
+//
+// Packed: the members are flat arrays of offsets and constants, names stay in the model and
+// are looked up once at the end; lengths are compared squared, and a square root is taken
+// only for a taut string. Allocation-free after construction.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/dynamics_config.h"
+#include "dynamics/engine_frame.h"
+#include "dynamics/model.h"
+#include "dynamics/run_summary.h"
+
+namespace tbridge {
+
+class RunMonitor {
+ public:
+  // Evaluates the engine at (t, y) and leaves one bar force density per model bar in `lambda`.
+  using BarForceProbe = std::function<void(double t, const double* y, Eigen::VectorXd& lambda)>;
+
+  // Measures the start state y0. `probe`, when given, gives the bar forces (record.bar_forces).
+  RunMonitor(const DynamicModel& model, const EngineFrame& engine, const DynamicsConfig& config,
+             const Eigen::VectorXd& y0, BarForceProbe probe = {});
+
+  // After an accepted step from t_old to t (state y, loads held at the step's midpoint).
+  // `dissipated` is the energy the dampers took over the step by the integrator's own stages
+  // [J]; NaN when the integrator has none (the power at the step's ends is then integrated by
+  // the trapezoidal rule). Throws ModelError on a blow-up.
+  // CAUTION: performance-sensitive
+  void Accept(long step, double t_old, double t, const double* y, double dissipated);
+
+  // After the last step, from the final state: the slack strings at the end, the names and the
+  // strains and errors kept squared while running.
+  void Finish(const double* y);
+
+  SimulationSummary& summary() { return summary_; }
+
+  // Called on a blow-up only: the highest linearised frequency of the initial state [rad/s].
+  void SetOmegaMax(std::function<double()> omega_max) { omega_max_ = std::move(omega_max); }
+
+ private:
+  struct PackedString {
+    int oi, oj;               // coordinate offsets of the ends
+    double rest, rest_sq;     // L0 [m], L0^2 [m^2]
+    double k, c, inv_area;    // [N/m], [N s/m], 1/A [1/m^2] (0 without an area)
+  };
+  struct PackedBar {
+    int oi, oj;
+    double inv_rest_sq;  // 1 / l0^2 [1/m^2]
+  };
+  struct TimedLoadState {
+    int o;                  // coordinate offset of its node
+    double t_start, t_end, rise_s, fall_s;
+    double force[3];        // [N]
+    double last[3];         // node position at the previous accepted step [m]
+  };
+
+  [[noreturn]] void Fail(long step, double t, const std::string& what) const;
+  // The state y at time t; the loads of `load_time` act on it. Returns the dampers' power [W].
+  double Measure(double t, double load_time, const double* y, bool first, double& kinetic, double& elastic);
+
+  const DynamicModel& model_;
+  const EngineFrame& engine_;
+  const DynamicsConfig& config_;
+  int dim_, c_;
+  std::vector<PackedString> strings_;
+  std::vector<PackedBar> bars_;
+  std::vector<int> deck_offsets_;   // per deck node: its coordinate offset
+  std::vector<double> deck_rest_;   // per deck node: x, y, z of the model's positions [m]
+  Eigen::VectorXd x0_, loads_;      // start positions [m], constant loads [N], packed
+  double loads_dot_x0_ = 0;         // loads . x0 [J]
+  std::vector<TimedLoadState> timed_;
+  std::vector<char> taut_, ever_slack_;
+  std::vector<double> min_ratio_sq_;  // per string: min (s / L0)^2 so far
+  double bar_ratio_sq_min_ = 1, bar_ratio_sq_max_ = 1;  // extremes of (l / l0)^2 over bars and steps
+  double bar_guard_lo_ = 0, bar_guard_hi_ = 0;          // (1 -+ guard)^2
+  int max_stress_string_ = -1;
+  BarForceProbe probe_;
+  Eigen::VectorXd lambda_;
+  double timed_work_ = 0, h0_ = 0, last_power_ = 0;
+  std::function<double()> omega_max_;
+  SimulationSummary summary_;
+};
+
+}  // namespace tbridge
