@@ -128,3 +128,8 @@ SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& opt
 }
 
 }  // namespace tbridge
+
+// The module's entry point, looked up by design/solvers.cc: the adapter's solve function.
+extern "C" __attribute__((visibility("default"))) void* tbridge_solver_entry() {
+  return reinterpret_cast<void*>(&tbridge::SolveWithNlopt);
+}

@@ -1,7 +1,8 @@
 // Which NLP solvers this build has, and the one call that reaches them. Each solver adapter
-// is its own library (tbridge_ipopt, tbridge_nlopt; CMake options TBRIDGE_WITH_IPOPT and
-// TBRIDGE_WITH_NLOPT), so a build without either stays possible; this file is the only place
-// that knows which were built in.
+// is its own module (tbridge_ipopt.so, tbridge_nlopt.so; CMake options TBRIDGE_WITH_IPOPT and
+// TBRIDGE_WITH_NLOPT), loaded on first use, so a build without either stays possible and a
+// command that designs nothing never loads them; this file is the only place that knows which
+// were built in.
 #pragma once
 
 #include <Eigen/Core>

@@ -214,7 +214,8 @@ template <class System, class Ode>
 SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& config,
                              const std::vector<PrestrainReport>& prestrain, const System& system,
                              SimulationResult result, std::chrono::steady_clock::time_point wall_start,
-                             ProgressReporter* progress) {
+                             const RunHooks& hooks) {
+  ProgressReporter* progress = hooks.progress;
   const int dim = model.dim;
   Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
@@ -240,16 +241,26 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   const bool recording = !result.recorded_nodes.empty();
   Sampler hist{config.dt * config.record.every, 0, 0};
   Sampler deck_s{config.dt * config.frequency.every, 0, 0};
-  if (recording) result.history.resize(total_steps / config.record.every + 2, n_cols);
+  const bool streaming = !hooks.history.empty();
+  Eigen::VectorXd row(n_cols);  // the row being taken, streamed
+  if (recording && streaming) {
+    for (HistorySink* sink : hooks.history) sink->Begin(model, result.recorded_nodes);
+  }
+  if (recording && !streaming) result.history.resize(total_steps / config.record.every + 2, n_cols);
   if (deck) {
     result.deck_vertical.resize(total_steps / config.frequency.every + 2, static_cast<int>(model.deck_nodes.size()));
     result.deck_sample_dt = deck_s.spacing;
   }
   auto take_history = [&](double t, const Eigen::VectorXd& state) {
-    if (hist.rows >= result.history.rows()) return;
-    result.history(hist.rows, 0) = t;
+    if (!streaming && hist.rows >= result.history.rows()) return;
+    row(0) = t;
     for (size_t k = 0; k < result.recorded_nodes.size(); ++k) {
-      for (int d = 0; d < dim; ++d) result.history(hist.rows, 1 + dim * k + d) = state(result.recorded_nodes[k] * dim + d);
+      for (int d = 0; d < dim; ++d) row(1 + dim * k + d) = state(result.recorded_nodes[k] * dim + d);
+    }
+    if (streaming) {
+      for (HistorySink* sink : hooks.history) sink->Row(t, row.data() + 1);
+    } else {
+      result.history.row(hist.rows) = row.transpose();
     }
     ++hist.rows;
   };
@@ -335,7 +346,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
     s.evaluations = dp.evaluations();
   }
   if (progress != nullptr) progress->Update(config.duration, config.duration);
-  if (recording) result.history.conservativeResize(hist.rows, n_cols);
+  if (recording && !streaming) result.history.conservativeResize(hist.rows, n_cols);
   if (deck) result.deck_vertical.conservativeResize(deck_s.rows, result.deck_vertical.cols());
 
   monitor.Finish(y.data());
@@ -439,11 +450,11 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   if (engine == "class1") {
     const Class1System system(model, options, timed);
     return RunScenario<Class1System, Class1Ode>(model, config, prestrain, system, std::move(result),
-                                                wall_start, hooks.progress);
+                                                wall_start, hooks);
   }
   const ClassKSystem system(model, options, timed);
   return RunScenario<ClassKSystem, ClassKOde>(model, config, prestrain, system, std::move(result),
-                                              wall_start, hooks.progress);
+                                              wall_start, hooks);
 }
 
 }  // namespace tbridge

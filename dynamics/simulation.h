@@ -98,6 +98,17 @@ double Rk4StableStep(const DynamicModel& model, const DynamicsConfig& config);
 
 class ProgressReporter;
 
+// Takes the recorded rows as the run produces them, so that a long history goes to disk in
+// memory bounded by one row (RunHooks::history).
+class HistorySink {
+ public:
+  virtual ~HistorySink() = default;
+  // Before the first step: the model and the recorded nodes (0-based). May throw ConfigError.
+  virtual void Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) = 0;
+  // One record at time t [s]: dim coordinates [m] of each recorded node, in their order.
+  virtual void Row(double t, const double* coordinates) = 0;
+};
+
 // Optional company of a run.
 struct RunHooks {
   ProgressReporter* progress = nullptr;  // told the simulated time [s] against the duration
@@ -105,6 +116,9 @@ struct RunHooks {
   // Bytes the caller will write per recorded sample besides history.csv (e.g. the VTK
   // export), counted against the output limit (CheckRunLimits); empty = none.
   std::function<double(const DynamicModel&)> extra_bytes_per_record;
+  // Where the recorded rows go. Empty: SimulationResult::history holds them; else each row
+  // goes to every sink as it is taken, and the history stays empty.
+  std::vector<HistorySink*> history;
 };
 
 // Runs `config` on `model` with the engine EngineFor picks. Throws ConfigError for initial

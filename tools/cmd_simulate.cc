@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -173,24 +174,29 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
   return j;
 }
 
-std::string HistoryCsv(const SimulationResult& r) {
-  std::ostringstream out;
-  out.precision(12);
-  out << "t";
-  const char* axes = "xyz";
-  for (const int node : r.recorded_nodes) {
-    for (int d = 0; d < r.dim; ++d) out << "," << axes[d] << node + 1;
-  }
-  out << "\n";
-  for (Eigen::Index row = 0; row < r.history.rows(); ++row) {
-    for (Eigen::Index col = 0; col < r.history.cols(); ++col) {
-      if (col > 0) out << ",";
-      out << r.history(row, col);
+// history.csv as the run records: t, then x, y[, z] of every recorded node, 12 digits.
+class CsvHistory : public HistorySink {
+ public:
+  explicit CsvHistory(std::ostream& out) : out_(out) {}
+  void Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) override {
+    columns_ = model.dim * static_cast<int>(recorded_nodes.size());
+    out_.precision(12);
+    out_ << "t";
+    for (const int node : recorded_nodes) {
+      for (int d = 0; d < model.dim; ++d) out_ << "," << "xyz"[d] << node + 1;
     }
-    out << "\n";
+    out_ << "\n";
   }
-  return out.str();
-}
+  void Row(double t, const double* coordinates) override {
+    out_ << t;
+    for (int c = 0; c < columns_; ++c) out_ << "," << coordinates[c];
+    out_ << "\n";
+  }
+
+ private:
+  std::ostream& out_;
+  int columns_ = 0;
+};
 
 int RunSimulateCommand(const std::vector<std::string>& args) {
   const CommandSpec& spec = SimulateSpec();
@@ -224,6 +230,18 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
   RunHooks hooks;
   hooks.progress = &progress;
+  // History and VTK stream to their staged files as the run records.
+  std::unique_ptr<CsvHistory> csv_history;
+  std::unique_ptr<VtkHistory> vtk_history;
+  if (history_out != nullptr) {
+    csv_history = std::make_unique<CsvHistory>(*history_out);
+    hooks.history.push_back(csv_history.get());
+  }
+  if (vtk_dir) {
+    vtk_history = std::make_unique<VtkHistory>(
+        *pvd_out, [&](const std::string& name, const std::string& content) { outputs.Stage(*vtk_dir + "/" + name, content); });
+    hooks.history.push_back(vtk_history.get());
+  }
   if (vtk_dir) hooks.extra_bytes_per_record = [](const DynamicModel& m) { return VtkBytesPerSample(m); };
   // Under --strict an implausible design stops before the run; otherwise its warnings are
   // printed after the run, not across the progress line.
@@ -244,16 +262,7 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   const SimulationResult& result = scenario.simulation;
 
   summary_out << SummaryJson(config, model, result).dump(2) << "\n";
-  if (history_out != nullptr) *history_out << HistoryCsv(result);
-  if (vtk_dir) {
-    for (const auto& [name, content] : VtkSeries(model, result)) {
-      if (name == "run.pvd") {
-        *pvd_out << content;
-      } else {
-        outputs.Stage(*vtk_dir + "/" + name, content);
-      }
-    }
-  }
+  if (vtk_history) vtk_history->Finish();
   outputs.Commit();
   if (!parsed.Flag("-q")) {
     const SimulationSummary& s = result.summary;

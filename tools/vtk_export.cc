@@ -10,15 +10,6 @@ namespace tbridge::cli {
 
 namespace {
 
-// Node positions (3 x n_n) at history row `row`: recorded coordinates over the model's rest.
-Eigen::Matrix3Xd PositionsAt(const DynamicModel& model, const SimulationResult& r, Eigen::Index row) {
-  Eigen::Matrix3Xd p = model.positions;
-  for (size_t k = 0; k < r.recorded_nodes.size(); ++k) {
-    for (int d = 0; d < r.dim; ++d) p(d, r.recorded_nodes[k]) = r.history(row, 1 + k * r.dim + d);
-  }
-  return p;
-}
-
 std::string Piece(const DynamicModel& model, const Eigen::Matrix3Xd& p) {
   std::ostringstream out;
   out.precision(10);
@@ -67,29 +58,36 @@ std::string Piece(const DynamicModel& model, const Eigen::Matrix3Xd& p) {
 
 }  // namespace
 
-std::map<std::string, std::string> VtkSeries(const DynamicModel& model, const SimulationResult& r) {
-  if (r.history.rows() == 0) {
-    throw ConfigError("dynamics.record.nodes", "[]", "the VTK export needs recorded nodes: list every free node");
-  }
+void VtkHistory::Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) {
   for (int v = 0; v < model.num_nodes(); ++v) {
     if (model.fixed[v]) continue;
-    if (std::find(r.recorded_nodes.begin(), r.recorded_nodes.end(), v) == r.recorded_nodes.end()) {
+    if (std::find(recorded_nodes.begin(), recorded_nodes.end(), v) == recorded_nodes.end()) {
       throw ConfigError("dynamics.record.nodes", "(node " + std::to_string(v + 1) + " missing)",
                         "the VTK export needs every free node recorded");
     }
   }
-  std::map<std::string, std::string> files;
-  std::ostringstream pvd;
-  pvd.precision(12);
-  pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (Eigen::Index row = 0; row < r.history.rows(); ++row) {
-    const std::string name = "run_" + std::to_string(row) + ".vtp";
-    files[name] = Piece(model, PositionsAt(model, r, row));
-    pvd << "<DataSet timestep=\"" << r.history(row, 0) << "\" part=\"0\" file=\"" << name << "\"/>\n";
+  model_ = &model;
+  recorded_ = recorded_nodes;
+  positions_ = model.positions;
+  pvd_.precision(12);
+  pvd_ << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+}
+
+void VtkHistory::Row(double t, const double* coordinates) {
+  const int dim = model_->dim;
+  for (size_t k = 0; k < recorded_.size(); ++k) {
+    for (int d = 0; d < dim; ++d) positions_(d, recorded_[k]) = coordinates[k * dim + d];
   }
-  pvd << "</Collection>\n</VTKFile>\n";
-  files["run.pvd"] = pvd.str();
-  return files;
+  const std::string name = "run_" + std::to_string(samples_++) + ".vtp";
+  emit_(name, Piece(*model_, positions_));
+  pvd_ << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << name << "\"/>\n";
+}
+
+void VtkHistory::Finish() {
+  if (samples_ == 0) {
+    throw ConfigError("dynamics.record.nodes", "[]", "the VTK export needs recorded nodes: list every free node");
+  }
+  pvd_ << "</Collection>\n</VTKFile>\n";
 }
 
 double VtkBytesPerSample(const DynamicModel& model) {
