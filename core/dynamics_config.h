@@ -84,7 +84,7 @@ struct LimitsConfig {
   // for dopri5 (counted as it runs); [1, 2e9].
   long max_steps = 1000000000;
   // Bytes written or held for writing [B]: history.csv (about 20 bytes per value), the VTK
-  // export when asked, and the deck samples of the frequency measurement (8 bytes each);
+  // export when asked, and the deck signals of the frequency measurement (16 bytes a sample);
   // [1, 1e15].
   double max_output_bytes = 1e10;
 };

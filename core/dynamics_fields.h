@@ -125,7 +125,7 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
               "most bytes a run writes or holds for writing, checked before it starts: history.csv "
               "(records × (1 + dim × nodes) values × 20 B; 8 B a value in memory when `record.csv` "
               "is false), the `--vtk` export (~1 kB + 108 B a node + 60 B a member per sample) and "
-              "the deck samples of the frequency measurement (8 B each)"},
+              "the deck signals of the frequency measurement (16 B a sample)"},
       l.max_output_bytes, Range::Closed(1.0, 1e15));
 }
 

@@ -49,11 +49,13 @@ Eigen::VectorXd EngineFrame::RestState() const {
   return y;
 }
 
-double EngineFrame::KineticEnergy(const double* y) const {
+template <int Dim>
+double EngineFrame::KineticEnergyOf(const double* y) const {
+  // CAUTION: performance-sensitive: the run's monitor calls it at every accepted step.
   const double* v = y + coordinates();
   auto dot = [&](int a, int b) {
     double s = 0;
-    for (int d = 0; d < dim_; ++d) s += v[a + d] * v[b + d];
+    for (int d = 0; d < Dim; ++d) s += v[a + d] * v[b + d];
     return s;
   };
   double e = 0;
@@ -64,6 +66,10 @@ double EngineFrame::KineticEnergy(const double* y) const {
   }
   for (const LoneNode& n : lone_) e += n.mass * dot(n.o, n.o);
   return 0.5 * e;
+}
+
+double EngineFrame::KineticEnergy(const double* y) const {
+  return dim_ == 2 ? KineticEnergyOf<2>(y) : KineticEnergyOf<3>(y);
 }
 
 }  // namespace tbridge

@@ -110,6 +110,9 @@ class EngineFrame {
   std::vector<LoneNode> lone_;
   std::vector<int> fixed_offsets_;
   std::vector<MassBlock> blocks_;
+
+  template <int Dim>
+  double KineticEnergyOf(const double* y) const;
 };
 
 }  // namespace tbridge

@@ -191,21 +191,16 @@ FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt,
   return DominantFrequency(DeckSignal(deck_vertical, dt, duration), dt, options);
 }
 
-Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration) {
-  if (deck_vertical.size() == 0) throw std::invalid_argument("deck frequency: no samples");
+Eigen::Index SamplesWithin(Eigen::Index samples, double dt, double duration) {
+  if (samples == 0) throw std::invalid_argument("deck frequency: no samples");
   if (!(duration > 0)) throw std::invalid_argument("deck frequency: duration must be > 0");
   if (!(dt > 0)) throw std::invalid_argument("deck frequency: dt must be > 0");
-  // Rows 0..last have t = k dt <= duration (with a relative slack for round-off in k dt).
-  const Eigen::Index last = std::min<Eigen::Index>(
-      deck_vertical.rows() - 1, static_cast<Eigen::Index>(std::floor(duration / dt * (1 + 1e-12))));
-  return deck_vertical.topRows(last + 1).rowwise().sum();
+  return std::min<Eigen::Index>(samples, static_cast<Eigen::Index>(std::floor(duration / dt * (1 + 1e-12))) + 1);
 }
 
-Eigen::VectorXd AntisymmetricDeckSignal(const Eigen::MatrixXd& deck_vertical, const Eigen::VectorXd& sign, double dt,
-                                        double duration) {
-  if (sign.size() != deck_vertical.cols()) throw std::invalid_argument("deck frequency: one sign per deck node");
-  const Eigen::Index rows = DeckSignal(deck_vertical, dt, duration).size();
-  return deck_vertical.topRows(rows) * sign;
+Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration) {
+  if (deck_vertical.size() == 0) throw std::invalid_argument("deck frequency: no samples");
+  return deck_vertical.topRows(SamplesWithin(deck_vertical.rows(), dt, duration)).rowwise().sum();
 }
 
 }  // namespace tbridge

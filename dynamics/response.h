@@ -76,12 +76,8 @@ FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt,
 // where the motion is periodic the two agree, where strings go slack they part. Throws
 // std::invalid_argument for an empty matrix, dt <= 0 or duration <= 0.
 Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration);
-
-// The antisymmetric counterpart, a projection of the deck motion on the mirror-odd shape: each
-// node's column weighted by `sign` (+1 left of mid-span, -1 right, 0 on it) and summed. The
-// summed signal above cancels in every antisymmetric mode; this one cancels in every
-// symmetric mode. Throws as DeckSignal, and for a size mismatch.
-Eigen::VectorXd AntisymmetricDeckSignal(const Eigen::MatrixXd& deck_vertical, const Eigen::VectorXd& sign, double dt,
-                                        double duration);
+// How many of `samples` taken every dt from t = 0 have t <= duration (with a relative slack
+// for round-off in k dt). Throws std::invalid_argument for no samples, dt <= 0 or duration <= 0.
+Eigen::Index SamplesWithin(Eigen::Index samples, double dt, double duration);
 
 }  // namespace tbridge

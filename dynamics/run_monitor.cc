@@ -20,8 +20,8 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   for (size_t k = 0; k < n_s; ++k) {
     const DynamicString& s = model.strings[k];
     const double area = k < model.string_area.size() ? model.string_area[k] : 0.0;
-    strings_.push_back({s.i * dim_, s.j * dim_, s.rest_length, s.rest_length * s.rest_length, s.stiffness,
-                        s.damping, area > 0 ? 1.0 / area : 0.0});
+    strings_.push_back({s.i * dim_, s.j * dim_, s.rest_length, s.rest_length * s.rest_length,
+                        1.0 / (s.rest_length * s.rest_length), s.stiffness, s.damping, area > 0 ? 1.0 / area : 0.0});
   }
   for (const DynamicBar& b : model.bars) bars_.push_back({b.i * dim_, b.j * dim_, 1.0 / (b.length * b.length)});
   for (const int a : model.deck_nodes) {
@@ -48,6 +48,13 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     timed_.push_back(s);
   }
   taut_.assign(n_s, 0);
+  for (size_t k = 0; k < n_s; ++k) {  // the start's slack strings are not transitions
+    const PackedString& st = strings_[k];
+    double len2 = 0;
+    for (int d = 0; d < dim_; ++d) len2 += (y0(st.oj + d) - y0(st.oi + d)) * (y0(st.oj + d) - y0(st.oi + d));
+    taut_[k] = len2 >= st.rest_sq;
+    if (!taut_[k]) ++summary_.slack.slack_at_start;
+  }
   ever_slack_.assign(n_s, 0);
   min_ratio_sq_.assign(n_s, std::numeric_limits<double>::infinity());
   summary_.slack.per_string.assign(n_s, 0);
@@ -59,7 +66,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   }
   summary_.allowed_stress = model.allowed_stress;
   double kinetic = 0, elastic = 0;
-  last_power_ = Measure(0.0, 0.0, y0.data(), /*first=*/true, kinetic, elastic);
+  last_power_ = Measure(0.0, 0.0, y0.data(), kinetic, elastic);
   auto& e = summary_.energy;
   e.kinetic_start = e.kinetic_end = kinetic;
   e.elastic_start = e.elastic_end = elastic;
@@ -68,20 +75,33 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
 }
 
 void RunMonitor::Accept(long step, double t_old, double t, const double* y, double dissipated) {
-  // One sum finds a NaN or an infinity anywhere in the state (they propagate through it).
-  double sum = 0;
-  for (int i = 0; i < 2 * c_; ++i) sum += y[i];
-  if (!std::isfinite(sum)) Fail(step, t, "a node position or velocity is not finite");
+  // One pass over the state: its sum finds a NaN or an infinity anywhere in it (they
+  // propagate through it), and the work of the constant loads is W . (x - x0). Two partial
+  // sums each, so the additions do not wait on each other.
+  const double* loads = loads_.data();
+  double sum[2] = {0, 0}, load_dot_x[2] = {0, 0};
+  int i = 0;
+  for (; i + 2 <= c_; i += 2) {
+    for (int l = 0; l < 2; ++l) {
+      sum[l] += y[i + l] + y[c_ + i + l];
+      load_dot_x[l] += loads[i + l] * y[i + l];
+    }
+  }
+  for (; i < c_; ++i) {
+    sum[0] += y[i] + y[c_ + i];
+    load_dot_x[0] += loads[i] * y[i];
+  }
+  if (!std::isfinite(sum[0] + sum[1])) Fail(step, t, "a node position or velocity is not finite");
   double kinetic = 0, elastic = 0;
-  const double power = Measure(t, 0.5 * (t_old + t), y, false, kinetic, elastic);
+  const double power = Measure(t, 0.5 * (t_old + t), y, kinetic, elastic);
   auto& e = summary_.energy;
   e.dissipated += std::isnan(dissipated) ? 0.5 * (t - t_old) * (last_power_ + power) : dissipated;
   last_power_ = power;
-  // Work of the loads: constant loads exactly, W . (x - x0), one dot product; each timed load
+  // Work of the loads: constant loads exactly, W . (x - x0), from the pass above; each timed load
   // by its force times the displacement of its node over the part of the step it acts in
   // (exact, since the driver holds the loads constant over a step; a ramp's force is taken at
   // the middle of that part).
-  const double work = Eigen::Map<const Eigen::VectorXd>(y, c_).dot(loads_) - loads_dot_x0_;
+  const double work = load_dot_x[0] + load_dot_x[1] - loads_dot_x0_;
   for (TimedLoadState& l : timed_) {
     const double overlap = std::min(t, l.t_end) - std::max(t_old, l.t_start);
     if (overlap > 0) {
@@ -114,53 +134,72 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   }
 }
 
-double RunMonitor::Measure(double t, double load_time, const double* y, bool first, double& kinetic,
-                           double& elastic) {
-  // CAUTION: performance-sensitive: every accepted step of every run passes here.
+template <int Dim, bool Damped>
+double RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
+  // CAUTION: performance-sensitive: every accepted step of every run passes here. The
+  // dimension and the damping are template arguments, so an undamped run reads no velocity
+  // and divides by nothing, and the coordinate loops unroll. The arrays and the running
+  // extremes are locals: a store to the char flags may alias anything, and would otherwise
+  // make the compiler reload every member pointer after it.
   const double* x = y;
   const double* v = y + c_;
-  double power = 0;
-  for (size_t k = 0; k < strings_.size(); ++k) {
-    const PackedString& s = strings_[k];
+  const PackedString* strings = strings_.data();
+  const size_t n_s = strings_.size();
+  double* min_ratio_sq = min_ratio_sq_.data();
+  double* peak = summary_.peak_string_tension.data();
+  char* taut_now = taut_.data();
+  char* ever_slack = ever_slack_.data();
+  int* transitions = summary_.slack.per_string.data();
+  double max_stress = summary_.max_string_stress;
+  int max_stress_string = max_stress_string_, new_transitions = 0, newly_slack = 0;
+  double power = 0, elastic_sum = 0;
+  for (size_t k = 0; k < n_s; ++k) {
+    const PackedString& s = strings[k];
     double len2 = 0, rate = 0;
-    for (int d = 0; d < dim_; ++d) {
+    for (int d = 0; d < Dim; ++d) {
       const double dx = x[s.oj + d] - x[s.oi + d];
       len2 += dx * dx;
-      rate += dx * (v[s.oj + d] - v[s.oi + d]);
+      if constexpr (Damped) rate += dx * (v[s.oj + d] - v[s.oi + d]);
     }
-    min_ratio_sq_[k] = std::min(min_ratio_sq_[k], len2 / s.rest_sq);
+    min_ratio_sq[k] = std::min(min_ratio_sq[k], len2 * s.inv_rest_sq);
     const bool taut = len2 >= s.rest_sq;
     if (taut) {
       const double len = std::sqrt(len2);
       const double spring = StringTension(s.k, s.rest, len);
-      elastic += 0.5 * spring * (len - s.rest);
-      const double length_rate = rate / len;
-      const double tension = std::max(spring + s.c * length_rate, 0.0);
-      power += (tension - spring) * length_rate;  // rate of work done on the damper
-      double& peak = summary_.peak_string_tension[k];
-      if (tension > peak) peak = tension;
-      const double stress = tension * s.inv_area;
-      if (stress > summary_.max_string_stress) {
-        summary_.max_string_stress = stress;
-        max_stress_string_ = static_cast<int>(k);
-        summary_.max_stress_time = t;
+      elastic_sum += 0.5 * spring * (len - s.rest);
+      double tension = spring;
+      if constexpr (Damped) {
+        const double length_rate = rate / len;
+        tension = std::max(spring + s.c * length_rate, 0.0);
+        power += (tension - spring) * length_rate;  // rate of work done on the damper
       }
-    } else if (!ever_slack_[k]) {
-      ever_slack_[k] = 1;
-      ++summary_.slack.ever_slack;
+      peak[k] = std::max(peak[k], tension);
+      const double stress = tension * s.inv_area;
+      if (stress > max_stress) {
+        max_stress = stress;
+        max_stress_string = static_cast<int>(k);
+      }
+    } else if (!ever_slack[k]) {
+      ever_slack[k] = 1;
+      ++newly_slack;
     }
-    if (first) {
-      taut_[k] = taut;
-      if (!taut) ++summary_.slack.slack_at_start;
-    } else if (static_cast<char>(taut) != taut_[k]) {
-      taut_[k] = taut;
-      ++summary_.slack.per_string[k];
-      ++summary_.slack.total;
+    if (static_cast<char>(taut) != taut_now[k]) {
+      taut_now[k] = taut;
+      ++transitions[k];
+      ++new_transitions;
     }
   }
+  elastic += elastic_sum;
+  if (max_stress_string != max_stress_string_ || max_stress != summary_.max_string_stress) {
+    summary_.max_string_stress = max_stress;
+    max_stress_string_ = max_stress_string;
+    summary_.max_stress_time = t;
+  }
+  summary_.slack.ever_slack += newly_slack;
+  summary_.slack.total += new_transitions;
   for (const PackedBar& b : bars_) {
     double len2 = 0;
-    for (int d = 0; d < dim_; ++d) {
+    for (int d = 0; d < Dim; ++d) {
       const double db = x[b.oj + d] - x[b.oi + d];
       len2 += db * db;
     }
@@ -168,6 +207,14 @@ double RunMonitor::Measure(double t, double load_time, const double* y, bool fir
     bar_ratio_sq_min_ = std::min(bar_ratio_sq_min_, r);
     bar_ratio_sq_max_ = std::max(bar_ratio_sq_max_, r);
   }
+  return power;
+}
+
+double RunMonitor::Measure(double t, double load_time, const double* y, double& kinetic, double& elastic) {
+  const bool damped = engine_.damped();
+  const double power = dim_ == 2 ? (damped ? MeasureMembers<2, true>(t, y, elastic) : MeasureMembers<2, false>(t, y, elastic))
+                                 : (damped ? MeasureMembers<3, true>(t, y, elastic) : MeasureMembers<3, false>(t, y, elastic));
+  const double* x = y;
   for (size_t n = 0; n < deck_offsets_.size(); ++n) {
     const int o = deck_offsets_[n];
     for (int d = 0; d < dim_; ++d) {

@@ -49,6 +49,7 @@ class RunMonitor {
   struct PackedString {
     int oi, oj;               // coordinate offsets of the ends
     double rest, rest_sq;     // L0 [m], L0^2 [m^2]
+    double inv_rest_sq;       // 1 / L0^2 [1/m^2]
     double k, c, inv_area;    // [N/m], [N s/m], 1/A [1/m^2] (0 without an area)
   };
   struct PackedBar {
@@ -64,7 +65,11 @@ class RunMonitor {
 
   [[noreturn]] void Fail(long step, double t, const std::string& what) const;
   // The state y at time t; the loads of `load_time` act on it. Returns the dampers' power [W].
-  double Measure(double t, double load_time, const double* y, bool first, double& kinetic, double& elastic);
+  double Measure(double t, double load_time, const double* y, double& kinetic, double& elastic);
+  // Its members' part: string tension, stress, slack and elastic energy, bar lengths; returns
+  // the dampers' power [W].
+  template <int Dim, bool Damped>
+  double MeasureMembers(double t, const double* y, double& elastic);
 
   const DynamicModel& model_;
   const EngineFrame& engine_;

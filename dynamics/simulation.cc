@@ -174,7 +174,7 @@ RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config,
   // exponent and separator; without the CSV the rows are still held (8 bytes a value).
   e.history_bytes = values * (config.record.csv ? 20.0 : 8.0);
   if (config.frequency.enabled && !model.deck_nodes.empty()) {
-    e.deck_bytes = (std::floor(steps / config.frequency.every) + 1) * 8.0 * static_cast<double>(model.deck_nodes.size());
+    e.deck_bytes = (std::floor(steps / config.frequency.every) + 1) * 16.0;  // two signals
   }
   e.extra_bytes = records * extra_bytes_per_record;
   return e;
@@ -247,8 +247,18 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
     for (HistorySink* sink : hooks.history) sink->Begin(model, result.recorded_nodes);
   }
   if (recording && !streaming) result.history.resize(total_steps / config.record.every + 2, n_cols);
+  // Mirror-odd weights about mid-span (halfway between the outermost nodes).
+  std::vector<double> odd_sign;
   if (deck) {
-    result.deck_vertical.resize(total_steps / config.frequency.every + 2, static_cast<int>(model.deck_nodes.size()));
+    const double mid = 0.5 * (model.positions.row(0).minCoeff() + model.positions.row(0).maxCoeff());
+    const double span = model.positions.row(0).maxCoeff() - model.positions.row(0).minCoeff();
+    for (const int a : model.deck_nodes) {
+      const double x = model.positions(0, a) - mid;
+      odd_sign.push_back(std::abs(x) <= 1e-9 * span ? 0.0 : (x > 0 ? -1.0 : 1.0));
+    }
+    const Eigen::Index samples = total_steps / config.frequency.every + 2;
+    result.deck_even.resize(samples);
+    result.deck_odd.resize(samples);
     result.deck_sample_dt = deck_s.spacing;
   }
   auto take_history = [&](double t, const Eigen::VectorXd& state) {
@@ -265,11 +275,16 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
     ++hist.rows;
   };
   auto take_deck = [&](const Eigen::VectorXd& state) {
-    if (deck_s.rows >= result.deck_vertical.rows()) return;
+    if (deck_s.rows >= result.deck_even.size()) return;
+    double even = 0, odd = 0;
     for (size_t k = 0; k < model.deck_nodes.size(); ++k) {
       const int a = model.deck_nodes[k];
-      result.deck_vertical(deck_s.rows, static_cast<int>(k)) = state(a * dim + 1) - model.positions(1, a);
+      const double u = state(a * dim + 1) - model.positions(1, a);
+      even += u;
+      odd += odd_sign[k] * u;
     }
+    result.deck_even(deck_s.rows) = even;
+    result.deck_odd(deck_s.rows) = odd;
     ++deck_s.rows;
   };
   if (recording) take_history(0.0, y);
@@ -347,7 +362,12 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   }
   if (progress != nullptr) progress->Update(config.duration, config.duration);
   if (recording && !streaming) result.history.conservativeResize(hist.rows, n_cols);
-  if (deck) result.deck_vertical.conservativeResize(deck_s.rows, result.deck_vertical.cols());
+  if (deck) {
+    // The samples with t <= duration, for the frequency and the summary alike.
+    const Eigen::Index rows = SamplesWithin(deck_s.rows, deck_s.spacing, config.duration);
+    result.deck_even.conservativeResize(rows);
+    result.deck_odd.conservativeResize(rows);
+  }
 
   monitor.Finish(y.data());
   s.duration = config.duration;
@@ -357,25 +377,15 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
       s.frequency_note = "the model has no deck nodes";
     } else {
       try {
-        s.frequency = DeckFrequency(result.deck_vertical, result.deck_sample_dt, config.duration);
+        const Eigen::VectorXd& even = result.deck_even;
+        const Eigen::VectorXd& odd = result.deck_odd;
+        s.frequency = DominantFrequency(even, result.deck_sample_dt);
         s.has_frequency = true;
         try {
-          s.crossing_frequency = MeanPeriodFromCrossings(
-              DeckSignal(result.deck_vertical, result.deck_sample_dt, config.duration), result.deck_sample_dt);
+          s.crossing_frequency = MeanPeriodFromCrossings(even, result.deck_sample_dt);
         } catch (const std::invalid_argument&) {
           // fewer than three crossings: a record shorter than a period; the spectral estimate stands alone
         }
-        // Mirror-odd weights about mid-span (halfway between the outermost nodes).
-        const double mid = 0.5 * (model.positions.row(0).minCoeff() + model.positions.row(0).maxCoeff());
-        const double span = model.positions.row(0).maxCoeff() - model.positions.row(0).minCoeff();
-        Eigen::VectorXd sign(static_cast<Eigen::Index>(model.deck_nodes.size()));
-        for (size_t k = 0; k < model.deck_nodes.size(); ++k) {
-          const double x = model.positions(0, model.deck_nodes[k]) - mid;
-          sign[static_cast<Eigen::Index>(k)] = std::abs(x) <= 1e-9 * span ? 0.0 : (x > 0 ? -1.0 : 1.0);
-        }
-        const Eigen::VectorXd odd =
-            AntisymmetricDeckSignal(result.deck_vertical, sign, result.deck_sample_dt, config.duration);
-        const Eigen::VectorXd even = DeckSignal(result.deck_vertical, result.deck_sample_dt, config.duration);
         const auto spread = [](const Eigen::VectorXd& v) { return (v.array() - v.mean()).abs().maxCoeff(); };
         if (spread(odd) > 1e-6 * spread(even)) {
           try {

@@ -39,10 +39,15 @@ struct SimulationResult {
   // Recorded history: one row per record time: t, then dim coordinates of each recorded node.
   std::vector<int> recorded_nodes;  // 0-based
   int dim = 2;
-  Eigen::MatrixXd history;
-  // Deck vertical displacement (rows: samples every frequency.every steps from t = 0; columns:
-  // model.deck_nodes) [m]; empty when frequency is off.
-  Eigen::MatrixXd deck_vertical;
+  // Row-major, so a record is one contiguous write (column-major made each of its values a
+  // cache miss a whole column away).
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> history;
+  // The deck's vertical displacement, sampled every frequency.every steps from t = 0 [m]:
+  // summed over model.deck_nodes (the paper's signal, DeckSignal), and weighted mirror-odd
+  // about mid-span (+1 left, -1 right, 0 on it; it cancels in every symmetric mode, as the sum
+  // cancels in every antisymmetric one). Two numbers a
+  // sample, however long the deck; empty when frequency is off.
+  Eigen::VectorXd deck_even, deck_odd;
   double deck_sample_dt = 0;  // [s]
 };
 
@@ -74,7 +79,7 @@ struct RunEstimate {
   long steps = 0;            // ceil(duration / dt): steps of dt (dopri5: output grid points)
   long records = 0;          // history rows (0 when no node is recorded)
   double history_bytes = 0;  // history.csv (about 20 bytes a value), or the rows held in memory
-  double deck_bytes = 0;     // deck samples of the frequency measurement held in memory
+  double deck_bytes = 0;     // deck signals of the frequency measurement held in memory
   double extra_bytes = 0;    // records x the caller's bytes per record (e.g. the VTK export)
   double total_bytes() const { return history_bytes + deck_bytes + extra_bytes; }
 };

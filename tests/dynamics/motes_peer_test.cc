@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/config.h"
+#include "csv_rows.h"
 #include "dynamics/simulation.h"
 #include "dynamics/structure_model.h"
 
@@ -17,23 +18,6 @@ namespace {
 
 const std::string kData = TBRIDGE_SOURCE_DIR "/tests/data/motes/";
 
-// Rows of a MOTES CSV: t, then x, y, z of every MOTES node.
-std::vector<std::vector<double>> ReadCsv(const std::string& path) {
-  std::ifstream in(path);
-  REQUIRE(in);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream s(line);
-    std::string cell;
-    while (std::getline(s, cell, ',')) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 // The largest gap [m] between tbridge's run of `config` (every 10th step, as MOTES wrote) and
 // MOTES's positions of the first `nodes` nodes.
 double GapToMotes(const std::string& config, const std::string& positions, int nodes) {
@@ -41,7 +25,7 @@ double GapToMotes(const std::string& config, const std::string& positions, int n
   c.dynamics->record.every = 10;
   const DynamicModel m = BuildStructureModel(*c.structure, ModelOptionsOf(*c.dynamics));
   const SimulationResult r = Simulate(m, *c.dynamics);
-  const auto motes = ReadCsv(kData + positions);
+  const auto motes = test::ReadCsvRows(kData + positions);
   REQUIRE(static_cast<long>(motes.size()) == r.history.rows());
   double gap = 0;
   for (size_t row = 0; row < motes.size(); ++row) {

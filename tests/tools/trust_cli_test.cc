@@ -184,7 +184,8 @@ TEST_CASE("run limits: 1e7 steps fit the defaults, a history of 1e9 steps does n
   d.duration = 100;  // 1e7 steps
   CHECK_NOTHROW(CheckStepLimit(d));
   const DynamicModel model = BuildDynamicModel(RunDesign(config), ModelOptionsOf(d));
-  CHECK_NOTHROW(CheckRunLimits(model, d));  // deck samples: 1e6 x 7 nodes x 8 B = 56 MB
+  CHECK_NOTHROW(CheckRunLimits(model, d));  // deck signals: 1e6 samples x 16 B = 16 MB
+  CHECK(EstimateRun(model, d).deck_bytes == Approx((1e6 + 1) * 16.0));  // two doubles a sample, every 10th step and t = 0
   // Every node recorded for 1e9 steps: 1e9 rows x 29 values x ~20 B = 5.8e11 B > 1e10 B.
   d.duration = 1e4;
   for (int node = 1; node <= 16; ++node) d.record.nodes.push_back(node);
