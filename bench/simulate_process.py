@@ -8,14 +8,16 @@ Usage: bench/simulate_process.py [--build build] [--repeats 3] [--memory-steps 1
    same): whole-process wall time of a long run minus a short one, over their step difference,
    with the monitor and summary on (the deck frequency included); beside bench_step's bare
    stabilised step and its yardstick, a hand-written loop, timed in the same script run.
-2. The MOTES prism and D-bar (configs/motes_*.json, 5000 RK4 steps): in-run time per step
-   (summary.json run.wall_s / run.steps) against bench_motes's bare loop, and the whole process
-   against the in-run time.
+2. The MOTES prism and D-bar (configs/motes_*.json, 5000 RK4 steps, as shipped and with
+   nothing recorded): in-run time per step (summary.json run.wall_s / run.steps, best run)
+   against bench_motes's bare loop (best of its runs, interleaved with them), and the whole
+   process against the in-run time.
 3. Memory: the prism for 1e6 and 1e7 steps with history every 100 steps; peak RSS of each.
 4. Start-up: a one-step simulate of the prism against `tbridge --version` and /bin/true.
 
 Wall time is the best of `repeats` fresh processes; peak memory is tbridge's largest resident
-set as GNU time reports it (`/usr/bin/time -f %M`, Debian package "time"). Prints Markdown.
+set as GNU time reports it (`/usr/bin/time -f %M`, Debian package "time") in one more run.
+Prints Markdown.
 """
 import argparse
 import json
@@ -30,19 +32,20 @@ SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def run(cmd, repeats=1):
-    """Best wall time [s] and largest peak RSS [MiB] of `repeats` runs of cmd."""
-    best, rss = float("inf"), 0.0
+    """Best wall time [s] of `repeats` runs of cmd, and its peak RSS [MiB] from one more run
+    under GNU time (kept out of the timed runs: it adds milliseconds of its own)."""
+    best = float("inf")
+    for _ in range(repeats):
+        start = time.perf_counter()
+        proc = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        wall = time.perf_counter() - start
+        if proc.returncode != 0:
+            sys.exit(f"{' '.join(cmd)} failed ({proc.returncode}): {proc.stderr[-2000:]}")
+        best = min(best, wall)
     with tempfile.NamedTemporaryFile("r") as report:
-        for _ in range(repeats):
-            start = time.perf_counter()
-            proc = subprocess.run(["/usr/bin/time", "-o", report.name, "-f", "%M"] + cmd,
-                                  stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-            wall = time.perf_counter() - start
-            if proc.returncode != 0:
-                sys.exit(f"{' '.join(cmd)} failed ({proc.returncode}): {proc.stderr[-2000:]}")
-            best = min(best, wall)
-            report.seek(0)
-            rss = max(rss, int(report.read().split()[-1]) / 1024.0)  # %M is in KiB
+        subprocess.run(["/usr/bin/time", "-o", report.name, "-f", "%M"] + cmd, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL, check=True)
+        rss = int(report.read().split()[-1]) / 1024.0  # %M is in KiB
     return best, rss
 
 
@@ -107,24 +110,38 @@ def per_member_step(args, work):
     print()
 
 
-def motes(args, work):
+def bench_motes(args):
     out = subprocess.run([args.bench_motes], capture_output=True, text=True, check=True).stdout
-    bare = {m.group(1): float(m.group(2)) for m in re.finditer(r"^(\S+)\s.*?: ([0-9.]+) us/step", out, re.M)}
+    return {m.group(1): float(m.group(2)) for m in re.finditer(r"^(\S+)\s.*?: ([0-9.]+) us/step", out, re.M)}
+
+
+def motes(args, work):
+    """The shipped configs (history of every node every 10 steps to history.csv), and the same
+    with nothing recorded; bench_motes is run between them and its best taken."""
     print("### MOTES scenes: in-run and whole process against bench_motes\n")
-    print("| scene | steps | bench_motes [us/step] | in-run [us/step] | in-run / bare | whole process [ms] "
-          "| in-run [ms] | whole / in-run |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| scene | recorded | steps | bench_motes [us/step] | in-run [us/step] | in-run / bare "
+          "| whole process [ms] | in-run [ms] | whole / in-run |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    bare = {}
     for name, key in (("prism", "prism"), ("dbar", "d-bar")):
-        path = os.path.join(SOURCE, "configs", f"motes_{name}.json")
-        best_in_run = float("inf")
-        wall, _, summary = simulate(args, path, os.path.join(work, f"motes_{name}"), args.repeats)
-        for _ in range(args.repeats):  # the in-run time of its best run, from the summary
-            _, _, s = simulate(args, path, os.path.join(work, f"motes_{name}"), 1)
-            best_in_run = min(best_in_run, s["run"]["wall_s"])
-        steps = summary["run"]["steps"]
-        us = 1e6 * best_in_run / steps
-        print(f"| {key} | {steps} | {bare[key]:.2f} | {us:.2f} | {us / bare[key]:.2f} | {1e3 * wall:.1f} | "
-              f"{1e3 * best_in_run:.1f} | {wall / best_in_run:.2f} |")
+        with open(os.path.join(SOURCE, "configs", f"motes_{name}.json")) as f:
+            config = json.load(f)
+        shipped = os.path.join(SOURCE, "configs", f"motes_{name}.json")
+        config["dynamics"]["record"] = {"csv": False}
+        quiet = write(os.path.join(work, f"motes_{name}_norecord.json"), config)
+        for label, path in (("every node, every 10 steps (shipped)", shipped), ("nothing", quiet)):
+            outdir = os.path.join(work, f"motes_{name}")
+            wall, _, summary = simulate(args, path, outdir, args.repeats)
+            best_in_run = float("inf")
+            for _ in range(2 * args.repeats + 1):  # the in-run time of its best run, from the summary
+                _, _, s = simulate(args, path, outdir, 1)
+                best_in_run = min(best_in_run, s["run"]["wall_s"])
+                for k, v in bench_motes(args).items():
+                    bare[k] = min(bare.get(k, float("inf")), v)
+            steps = summary["run"]["steps"]
+            us = 1e6 * best_in_run / steps
+            print(f"| {key} | {label} | {steps} | {bare[key]:.2f} | {us:.2f} | {us / bare[key]:.2f} | "
+                  f"{1e3 * wall:.1f} | {1e3 * best_in_run:.1f} | {wall / best_in_run:.2f} |")
     print()
 
 

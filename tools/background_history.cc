@@ -1,6 +1,7 @@
 #include "tools/background_history.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace tbridge::cli {
 
@@ -12,7 +13,9 @@ BackgroundHistory::~BackgroundHistory() { Stop(/*drain=*/false); }
 void BackgroundHistory::Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) {
   for (HistorySink* sink : sinks_) sink->Begin(model, recorded_nodes);
   width_ = 1 + model.dim * static_cast<int>(recorded_nodes.size());
-  ring_.assign(static_cast<size_t>(capacity_) * static_cast<size_t>(width_), 0.0);
+  // Not zeroed: a page of the ring is touched when a row first reaches it, so a short run
+  // pays for the rows it records, not for the whole ring (zeroing it took 1 ms of a 3 ms run).
+  ring_ = std::make_unique_for_overwrite<double[]>(static_cast<size_t>(capacity_) * static_cast<size_t>(width_));
   writer_ = std::thread(&BackgroundHistory::Write, this);
 }
 
@@ -25,7 +28,7 @@ void BackgroundHistory::Row(double t, const double* coordinates) {
     run_waiting_ = false;
   }
   if (error_ != nullptr) return;  // Finish reports it; the run itself goes on to its end
-  double* slot = ring_.data() + (head_ % capacity_) * width_;
+  double* slot = ring_.get() + (head_ % capacity_) * width_;
   slot[0] = t;
   std::copy(coordinates, coordinates + width_ - 1, slot + 1);
   ++head_;
@@ -45,7 +48,7 @@ void BackgroundHistory::Write() {
     lock.unlock();
     try {
       for (long r = first; r < last; ++r) {
-        const double* slot = ring_.data() + (r % capacity_) * width_;
+        const double* slot = ring_.get() + (r % capacity_) * width_;
         for (HistorySink* sink : sinks_) sink->Row(slot[0], slot + 1);
       }
     } catch (...) {

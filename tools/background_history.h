@@ -9,6 +9,7 @@
 
 #include <condition_variable>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -37,7 +38,7 @@ class BackgroundHistory : public HistorySink {
 
   std::vector<HistorySink*> sinks_;
   int capacity_, width_ = 0;     // rows; doubles a row (t, then the coordinates)
-  std::vector<double> ring_;     // capacity_ x width_
+  std::unique_ptr<double[]> ring_;  // capacity_ x width_
   long head_ = 0, tail_ = 0;     // rows queued so far, rows written so far
   bool done_ = false, drain_ = true, writer_waiting_ = false, run_waiting_ = false;
   std::exception_ptr error_;
