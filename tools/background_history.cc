@@ -5,14 +5,16 @@
 
 namespace tbridge::cli {
 
-BackgroundHistory::BackgroundHistory(std::vector<HistorySink*> sinks, int capacity)
-    : sinks_(std::move(sinks)), capacity_(std::max(capacity, 4)) {}
+BackgroundHistory::BackgroundHistory(std::vector<HistorySink*> sinks, bool always, int capacity)
+    : sinks_(std::move(sinks)), always_(always), capacity_(std::max(capacity, 4)) {}
 
 BackgroundHistory::~BackgroundHistory() { Stop(/*drain=*/false); }
 
 void BackgroundHistory::Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) {
   for (HistorySink* sink : sinks_) sink->Begin(model, recorded_nodes);
   width_ = 1 + model.dim * static_cast<int>(recorded_nodes.size());
+  threaded_ = always_ || width_ >= kThreadedWidth;
+  if (!threaded_) return;
   // Not zeroed: a page of the ring is touched when a row first reaches it, so a short run
   // pays for the rows it records, not for the whole ring (zeroing it took 1 ms of a 3 ms run).
   ring_ = std::make_unique_for_overwrite<double[]>(static_cast<size_t>(capacity_) * static_cast<size_t>(width_));
@@ -20,6 +22,10 @@ void BackgroundHistory::Begin(const DynamicModel& model, const std::vector<int>&
 }
 
 void BackgroundHistory::Row(double t, const double* coordinates) {
+  if (!threaded_) {
+    for (HistorySink* sink : sinks_) sink->Row(t, coordinates);
+    return;
+  }
   std::unique_lock<std::mutex> lock(mutex_);
   if (head_ - tail_ == capacity_) {
     run_waiting_ = true;

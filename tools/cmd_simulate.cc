@@ -269,7 +269,7 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   // Formatted on a second thread while the run steps on; after the sinks, so it stops first.
   std::unique_ptr<BackgroundHistory> background;
   if (history_out != nullptr || vtk_dir) {
-    background = std::make_unique<BackgroundHistory>(hooks.history);
+    background = std::make_unique<BackgroundHistory>(hooks.history, /*always=*/vtk_dir.has_value());
     hooks.history = {background.get()};
   }
   // Under --strict an implausible design stops before the run; otherwise its warnings are

@@ -48,7 +48,7 @@ DynamicModel TwoNodes() {
 
 TEST_CASE("background history: 10000 rows through a ring of 8 arrive whole and in order") {
   KeptRows kept;
-  cli::BackgroundHistory background({&kept}, /*capacity=*/8);
+  cli::BackgroundHistory background({&kept}, /*always=*/true, /*capacity=*/8);
   background.Begin(TwoNodes(), {0, 1});
   const long n = 10000;
   for (long r = 0; r < n; ++r) {
@@ -65,9 +65,20 @@ TEST_CASE("background history: 10000 rows through a ring of 8 arrive whole and i
   CHECK(exact);
 }
 
+TEST_CASE("background history: narrow rows go straight through, on the caller's thread") {
+  KeptRows kept;
+  cli::BackgroundHistory background({&kept});
+  background.Begin(TwoNodes(), {0, 1});  // 7 values a row, below kThreadedWidth
+  const double c[6] = {1, 2, 3, 4, 5, 6};
+  for (int r = 0; r < 3; ++r) background.Row(r, c);
+  CHECK(kept.rows.size() == 3);  // before Finish: nothing was queued
+  background.Finish();
+  CHECK(kept.rows.size() == 3);
+}
+
 TEST_CASE("background history: a sink's failure on the writer thread is thrown by Finish") {
   KeptRows kept(/*fail_at=*/5);
-  cli::BackgroundHistory background({&kept}, /*capacity=*/4);
+  cli::BackgroundHistory background({&kept}, /*always=*/true, /*capacity=*/4);
   background.Begin(TwoNodes(), {0, 1});
   const double c[6] = {0, 0, 0, 0, 0, 0};
   for (int r = 0; r < 100; ++r) background.Row(r, c);  // never blocks on the dead writer
