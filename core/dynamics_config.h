@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/dynamics_choices.h"
+
 namespace tbridge {
 
 class JsonSection;
@@ -94,15 +96,16 @@ struct DynamicsConfig {
   double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
   // "auto" | "rk4" | "dopri5" | "sdirk3". "auto": RK4 when dt is at most 0.9 of its stability
   // limit 2 sqrt(2)/omega_max (omega_max of the initial state, by power iteration), RK4
-  // sub-steps while up to 40 per step serve, else the implicit SDIRK3 at the same dt
+  // sub-steps while they cost no more than one SDIRK3 step (estimated from the model's
+  // counts), else the implicit SDIRK3 at the same dt
   // (ResolveIntegrator in dynamics/simulation.h; BENCHMARKS.md has the evidence).
-  std::string integrator = "auto";
+  IntegratorKind integrator = IntegratorKind::kAuto;
   // "auto": the class-1 closed form when no node carries two bars, else class k;
   // "class1" (throws for a class-k bridge) | "classk" (Lagrange multipliers, any bridge)
-  std::string engine = "auto";
+  EngineKind engine = EngineKind::kAuto;
   double rtol = 1e-8;                 // dopri5 relative tolerance
   double atol = 1e-10;                // dopri5 absolute tolerance [m, m/s]
-  std::string string_mass = "bars";   // "bars" (eq 27) | "nodes" | "off"
+  StringMassMode string_mass = StringMassMode::kOnBars;  // "bars" (eq 27) | "nodes" | "off"
   double damping_c = 0;               // c per string [N s/m]
   StabilisationConfig stabilisation;
   std::vector<PrestrainConfig> prestrain;

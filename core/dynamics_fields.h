@@ -136,29 +136,32 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
       KeyInfo{"dt", "s",
               "RK4 and SDIRK3 step; DOPRI5's first step and output spacing; at most `duration`"},
       d.dt, Range::Closed(1e-12, 1.0));
-  v.Choice(KeyInfo{"integrator", "–",
+  EnumChoice(v, KeyInfo{"integrator", "–",
                    "`\"rk4\"`: fixed-step classical RK4 (the paper's); `\"dopri5\"`: adaptive "
                    "Dormand-Prince 5(4); `\"sdirk3\"`: fixed-step implicit L-stable SDIRK3 with "
                    "Newton on a sparse Jacobian (dynamics/sdirk.h); `\"auto\"`: RK4 when `dt` <= "
                    "0.9 × 2√2/ω_max; beyond, RK4 with m = ceil(dt / (0.9 × 2√2/ω_max)) sub-steps "
-                   "per step while m <= 40 (the cost of one SDIRK3 step; summary.json "
+                   "per step while m RK4 steps cost no more than one SDIRK3 step, as estimated from the "
+                   "model's member, coordinate and sparse-factor counts (12-27 on the paper's "
+                   "bridges n = 2..7, ~40 at n = 8; summary.json "
                    "`run.substeps`); else SDIRK3 at the same `dt` (below)"},
-           d.integrator, {"auto", "rk4", "dopri5", "sdirk3"});
-  v.Choice(
+           d.integrator, kIntegratorNames);
+  EnumChoice(
+      v,
       KeyInfo{
           "engine", "–",
           "`auto`: the class-1 closed form when no node carries two bars, else class k (bar "
           "lengths held by Lagrange multipliers, sparse Cholesky per evaluation); `classk` forces "
           "class k on any bridge (the cross-check); `class1` on a class-k bridge is an error"},
-      d.engine, {"auto", "class1", "classk"});
+      d.engine, kEngineNames);
   v.Number(KeyInfo{"rtol", "–", "DOPRI5 relative tolerance: RMS of err / (atol + rtol·|y|) <= 1"},
            d.rtol, Range::Closed(1e-14, 1e-1));
   v.Number(KeyInfo{"atol", "m and m/s", "DOPRI5 absolute tolerance, of positions and velocities"},
            d.atol, Range::Closed(1e-16, 1.0));
-  v.Choice(KeyInfo{"string_mass", "–",
+  EnumChoice(v, KeyInfo{"string_mass", "–",
                    "eq. 27: half of each string's mass (rho·A·L0) on the bars at each end, spread "
                    "uniformly; or lumped at the end nodes; or massless strings"},
-           d.string_mass, {"bars", "nodes", "off"});
+           d.string_mass, kStringMassNames);
   v.Number(
       KeyInfo{"damping_c", "N·s/m", "c of every string: force density term c·(s·ṡ)/s² (eq. 16)"},
       d.damping_c, Range::Closed(0.0, 1e9));

@@ -7,15 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "core/dynamics_choices.h"
+
 
 namespace tbridge {
-
-// How string mass enters the dynamics (eq 27).
-enum class StringMassMode {
-  kOff,     // massless strings
-  kOnBars,  // half of each string's mass goes to the bar at each end, spread uniformly (eq 27)
-  kAtNodes  // half of each string's mass lumped at each end node
-};
 
 struct DynamicBar {
   int i = 0, j = 0;    // 0-based end nodes; bar vector b = n_j - n_i

@@ -108,6 +108,8 @@ Sdirk3::Sdirk3(const AccelerationCoupling& coupling, int size, const SdirkOption
   }
   lu_ = std::make_unique<NewtonFactor>();
   if (!lu_->Analyse(matrix_)) throw std::invalid_argument("sdirk3: KLU could not analyse the Newton matrix's pattern");
+  counts_ = {static_cast<long>(matrix_.nonZeros()), lu_->symbolic->lnz + lu_->symbolic->unz, lu_->symbolic->est_flops,
+             colours * dim + 1};
 
   for (Eigen::VectorXd* v : {&y0_, &dy_, &dy_pert_, &y_pert_, &stage_}) *v = Eigen::VectorXd::Zero(2 * c_);
   for (Eigen::VectorXd* v : {&sx_, &sv_, &vel_, &vel_old_, &residual_, &delta_, &eps_}) *v = Eigen::VectorXd::Zero(c_);

@@ -66,6 +66,14 @@ struct SdirkStats {
   int colours = 0;
 };
 
+// What a step's work scales with, from the pattern alone (known before any step).
+struct SdirkCounts {
+  long matrix_nonzeros = 0;     // of the Newton matrix I - h gamma D
+  double factor_nonzeros = 0;   // KLU's estimate of nonzeros in L + U: a solve's work
+  double factor_flops = 0;      // KLU's estimate of a factorisation's flops
+  int refresh_evaluations = 0;  // right-hand sides a Jacobian refresh takes: colours x dim + 1
+};
+
 class Sdirk3 {
  public:
   // `coupling` gives the Jacobian's pattern; `size` is the state size 2 c of the system it
@@ -82,6 +90,7 @@ class Sdirk3 {
   void Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y);
 
   const SdirkStats& stats() const { return stats_; }
+  const SdirkCounts& counts() const { return counts_; }
 
  private:
   // Step, split in halves while Newton fails (up to `halvings_left` deep).
@@ -96,6 +105,7 @@ class Sdirk3 {
   int c_ = 0;
   SdirkOptions options_;
   SdirkStats stats_;
+  SdirkCounts counts_;
   // Column groups: per colour and direction, the value slots of the matrix they fill.
   struct Slot {
     int value;  // index into the matrix's value array

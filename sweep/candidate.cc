@@ -15,12 +15,6 @@ namespace tbridge {
 
 namespace {
 
-StringMassMode MassMode(const std::string& name) {
-  if (name == "nodes") return StringMassMode::kAtNodes;
-  if (name == "off") return StringMassMode::kOff;
-  return StringMassMode::kOnBars;
-}
-
 // grow_area (see candidate.h): the deck strings carry E A0 (1/r - 1) at an allowed stress.
 // Returns the area factor; updates the members and the mass breakdown of `design`.
 double GrowDeckStrings(Design& design, double ratio) {
@@ -123,7 +117,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     const Material& mat = design.config.material;
     row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
     ModelOptions options;
-    options.string_mass = MassMode(sw.travelling_load.string_mass);
+    options.string_mass = sw.travelling_load.string_mass;
     options.damping = sw.travelling_load.damping_c;
     options.deck_inertia = sw.travelling_load.deck_inertia;
     options.gravity_on_structure = design.config.design.self_weight;

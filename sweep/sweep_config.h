@@ -43,11 +43,11 @@ struct TravellingLoadConfig {
   // 5e-4 s is a screening step that leaves n >= 7-8 to SDIRK3 (deck peak within 3.4 %,
   // string stress peaks 22 % low at n = 8; BENCHMARKS.md, Sweep timing).
   double dt = 1e-4;
-  // "auto" | "rk4" | "sdirk3", as dynamics.integrator: "auto" is RK4 (with up to 40
+  // "auto" | "rk4" | "sdirk3", as dynamics.integrator: "auto" is RK4 (with
   // sub-steps) where that is stable, else SDIRK3 (which damps the modes far above 1/dt).
-  std::string integrator = "auto";
+  IntegratorKind integrator = IntegratorKind::kAuto;
   double load_factor = 1.0;  // moving load / design node load [-], (0, 100]
-  std::string string_mass = "bars";  // as dynamics.string_mass
+  StringMassMode string_mass = StringMassMode::kOnBars;  // as dynamics.string_mass
   double damping_c = 0;      // c of every string [N s/m], [0, 1e9]
   bool deck_inertia = true;  // the deck's and payload's mass at the deck nodes, as dynamics.deck_inertia
 };

@@ -55,7 +55,7 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
   };
   const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
   runs.push_back(MakeRun("paper_travelling", Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
-                         PaperTravellingScenario(d, paper_duration, 1e-4, "rk4", d.deck.station_load),
+                         PaperTravellingScenario(d, paper_duration, 1e-4, IntegratorKind::kRk4, d.deck.station_load),
                          stations(d.deck.station_load), gamma_g_q));
   const auto& cases = l.cases;
   const auto asked = [&cases](const char* name) { return std::find(cases.begin(), cases.end(), name) != cases.end(); };

@@ -10,7 +10,7 @@ namespace tbridge {
 namespace {
 
 // A run that records peaks only: bar forces for the capacity check, no frequency, no history.
-DynamicsConfig PeaksOnly(double duration_s, double dt_s, const std::string& integrator) {
+DynamicsConfig PeaksOnly(double duration_s, double dt_s, IntegratorKind integrator) {
   DynamicsConfig run;
   run.duration = duration_s;
   run.dt = dt_s;
@@ -27,7 +27,7 @@ void RequireStations(const Design& design, const char* what) {
 }  // namespace
 
 DynamicsConfig PaperTravellingScenario(const Design& design, double duration_s, double dt_s,
-                                       const std::string& integrator, double force_n) {
+                                       IntegratorKind integrator, double force_n) {
   RequireStations(design, "travelling load");
   const std::vector<std::vector<int>>& stations = design.actions.station_nodes;
   const int count = static_cast<int>(stations.size());
@@ -47,7 +47,7 @@ DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double s
   RequireStations(design, "moving load");
   const Actions& a = design.actions;
   const double span = design.config.bridge.span;
-  DynamicsConfig run = PeaksOnly(span / speed_m_s, dt_s, "rk4");
+  DynamicsConfig run = PeaksOnly(span / speed_m_s, dt_s, IntegratorKind::kRk4);
   const int count = static_cast<int>(a.station_nodes.size());
   for (int k = 0; k < count; ++k) {
     // The deck points either side: the previous station (or the support at 0), the next (or
@@ -71,7 +71,7 @@ DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double s
 
 DynamicsConfig WindGustScenario(const Design& design, double rise_s, double dt_s) {
   const Eigen::Matrix3Xd& wind = design.actions.base[kWind];
-  DynamicsConfig run = PeaksOnly(2 * rise_s, dt_s, "rk4");
+  DynamicsConfig run = PeaksOnly(2 * rise_s, dt_s, IntegratorKind::kRk4);
   for (int v = 0; v < wind.cols(); ++v) {
     if (wind.col(v).isZero(0.0)) continue;
     LoadStepConfig l;

@@ -16,7 +16,7 @@ namespace tbridge {
 // Bar-force peaks on, no frequency measurement, no node history. Throws ModelError when the
 // design has no deck stations.
 DynamicsConfig PaperTravellingScenario(const Design& design, double duration_s, double dt_s,
-                                       const std::string& integrator, double force_n);
+                                       IntegratorKind integrator, double force_n);
 
 // A point load `force_n` crossing the deck at `speed_m_s`, from the support at x = 0 (t = 0)
 // to the one at x = span (t = span / v). Between two deck points it is shared by the lever

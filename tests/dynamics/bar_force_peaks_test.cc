@@ -21,7 +21,7 @@ TEST_CASE("at rest the bar-force peaks are the design's bar forces", "[dynamics]
     DynamicsConfig run;
     run.duration = 1e-3;
     run.dt = 1e-5;
-    run.integrator = "rk4";
+    run.integrator = IntegratorKind::kRk4;
     run.frequency.enabled = false;
     run.record.bar_forces = true;
     const SimulationSummary s = Simulate(model, run).summary;

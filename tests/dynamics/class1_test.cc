@@ -401,10 +401,10 @@ TEST_CASE("a whole run's steps allocate nothing: integrator, engine, monitor and
   ModelOptions damped;
   damped.damping = 10;
   const DynamicModel m = BuildDynamicModel(test::PaperDesign(3), damped);
-  for (const std::string engine : {"class1", "classk"}) {
+  for (const EngineKind engine : {EngineKind::kClass1, EngineKind::kClassK}) {
     DynamicsConfig c = Scenario(1e-3, 1e-5, 1, 1e-3);
     c.engine = engine;
-    c.integrator = "rk4";
+    c.integrator = IntegratorKind::kRk4;
     c.stabilisation.enabled = true;
     // The deck frequency stays off: its analysis after the run allocates differently for a
     // record too short to hold three crossings (an exception with its message).
@@ -413,7 +413,7 @@ TEST_CASE("a whole run's steps allocate nothing: integrator, engine, monitor and
     const long short_run = RunAllocations(m, c);
     c.duration = 0.1;
     const long long_run = RunAllocations(m, c);
-    INFO(engine << ": " << short_run << " allocations for 100 steps, " << long_run << " for 10000");
+    INFO(NameOf(engine) << ": " << short_run << " allocations for 100 steps, " << long_run << " for 10000");
     CHECK(long_run == short_run);
   }
 }
@@ -443,7 +443,7 @@ TEST_CASE("a run that blows up stops with the step, the time and a smaller dt") 
   const DynamicModel m = BuildDynamicModel(test::PaperDesign(2));
   // dt = 2e-3 is 3.6x the RK4 stability limit of n = 2 (5.6e-4 s, SPEC.md §9).
   DynamicsConfig c = Scenario(1.0, 2e-3, 1, 0.01);
-  c.integrator = "rk4";  // "auto" would take the implicit path here and not blow up
+  c.integrator = IntegratorKind::kRk4;  // "auto" would take the implicit path here and not blow up
   try {
     Simulate(m, c);
     FAIL("expected ModelError");

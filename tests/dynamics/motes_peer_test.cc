@@ -58,7 +58,7 @@ TEST_CASE("MOTES peer: the class-k D-bar follows MOTES's trajectory without its 
 }
 
 // The shipped prism (configs/motes_prism.json), damped as shipped and with c = 0.
-SimulationSummary Prism(double damping, const std::string& integrator) {
+SimulationSummary Prism(double damping, IntegratorKind integrator) {
   Config c = LoadConfig(TBRIDGE_SOURCE_DIR "/configs/motes_prism.json");
   c.dynamics->integrator = integrator;
   c.dynamics->rtol = 1e-6;
@@ -69,8 +69,8 @@ SimulationSummary Prism(double damping, const std::string& integrator) {
 }
 
 TEST_CASE("energy balance: the damped prism closes as tightly as the undamped one, across slack") {
-  const SimulationSummary damped = Prism(10.0, "rk4");
-  const SimulationSummary free = Prism(0.0, "rk4");
+  const SimulationSummary damped = Prism(10.0, IntegratorKind::kRk4);
+  const SimulationSummary free = Prism(0.0, IntegratorKind::kRk4);
   INFO("damped: drift " << damped.energy.max_drift << ", " << damped.slack.total << " slack transitions, "
                         << damped.energy.dissipated << " J dissipated; undamped: drift " << free.energy.max_drift
                         << ", " << free.slack.total << " transitions");
@@ -89,7 +89,7 @@ TEST_CASE("energy balance: the damped prism closes as tightly as the undamped on
 }
 
 TEST_CASE("energy balance: DOPRI5 integrates dissipation with its own stages too") {
-  const SimulationSummary damped = Prism(10.0, "dopri5");
+  const SimulationSummary damped = Prism(10.0, IntegratorKind::kDopri5);
   INFO("drift " << damped.energy.max_drift << " after " << damped.slack.total << " slack transitions");
   REQUIRE(damped.slack.total >= 60);
   // Seen 8.2e-4 at rtol 1e-6 (the undamped prism: 2.0e-4, its own error across 936 kinks); with

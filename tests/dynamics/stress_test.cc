@@ -18,7 +18,7 @@
 namespace tbridge {
 namespace {
 
-DynamicsConfig Run(double duration, double dt, double delta, const std::string& integrator = "rk4") {
+DynamicsConfig Run(double duration, double dt, double delta, IntegratorKind integrator = IntegratorKind::kRk4) {
   DynamicsConfig c;
   c.duration = duration;
   c.dt = dt;
@@ -144,7 +144,7 @@ TEST_CASE("n = 12: design and a short run with the automatic integrator", "[stre
   // RK4 sub-steps than an SDIRK3 step costs), so "auto" must take the implicit path, and the
   // designed equilibrium must hold. (A push of the central bar sets strings chattering, where
   // the history is chaotic from n = 9 on and SDIRK3 no fallback: BENCHMARKS.md.)
-  const SimulationSummary s = Simulate(m, Run(2e-3, 1e-4, 0.0, "auto")).summary;
+  const SimulationSummary s = Simulate(m, Run(2e-3, 1e-4, 0.0, IntegratorKind::kAuto)).summary;
   Describe("n = 12", s);
   CHECK(s.integrator == "sdirk3");
   CHECK(s.steps == 20);

@@ -138,9 +138,9 @@ TEST_CASE("structure run: class-1 and class-k engines agree on the prism") {
   Config c = Scene("motes_prism");
   c.dynamics->duration = 2;
   const DynamicModel m = ModelOf(c);
-  c.dynamics->engine = "class1";
+  c.dynamics->engine = EngineKind::kClass1;
   const SimulationResult a = Simulate(m, *c.dynamics);
-  c.dynamics->engine = "classk";
+  c.dynamics->engine = EngineKind::kClassK;
   const SimulationResult b = Simulate(m, *c.dynamics);
   REQUIRE(a.history.rows() == b.history.rows());
   const double gap = (a.history - b.history).cwiseAbs().maxCoeff();

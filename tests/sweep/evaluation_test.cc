@@ -106,7 +106,7 @@ TEST_CASE("the travelling load's peaks are linear in a small load", "[sweep]") {
   TravellingLoadConfig t;
   t.duration = 0.2;
   t.dt = 1e-5;
-  t.integrator = "rk4";
+  t.integrator = IntegratorKind::kRk4;
   t.load_factor = 1e-3;
   const TravellingLoadResult a = RunTravellingLoad(model, d, t);
   t.load_factor = 2e-3;
@@ -156,10 +156,10 @@ TEST_CASE("the implicit travelling-load run agrees with RK4 at a resolving step"
   const DynamicModel model = BuildDynamicModel(d);
   TravellingLoadConfig t;
   t.duration = 0.25;
-  t.integrator = "rk4";
+  t.integrator = IntegratorKind::kRk4;
   t.dt = 2e-5;  // a third of RK4's limit at n = 4 (1.4e-4 s, BENCHMARKS.md)
   const TravellingLoadResult explicit_run = RunTravellingLoad(model, d, t);
-  t.integrator = "sdirk3";
+  t.integrator = IntegratorKind::kSdirk3;
   t.dt = 5e-4;  // 3.5x RK4's limit
   const TravellingLoadResult implicit_run = RunTravellingLoad(model, d, t);
   CHECK(implicit_run.steps * 20 < explicit_run.steps);
@@ -183,7 +183,7 @@ TEST_CASE("auto resolves the travelling load per bridge: RK4, RK4 sub-steps or S
   t.load_factor = 1e-3;
   // RK4 limits 1.2e-3, 1.4e-4 and 7e-6 s for n = 1, 4, 8 (BENCHMARKS.md); the steps aligned
   // with the stations are 5e-4, 4.98e-4 and 4.90e-4 s: within 0.9 of the first limit, 4
-  // sub-steps of the second, and 78 of the third (more than SDIRK3's cost of ~40).
+  // sub-steps of the second, and 78 of the third (more than SDIRK3's estimated cost of ~40 RK4 steps at n = 8).
   const std::vector<std::pair<int, std::string>> expected = {{1, "rk4"}, {4, "rk4x4"}, {8, "sdirk3"}};
   for (const auto& [n, integrator] : expected) {
     const Design d = RunDesign(Planar(n));

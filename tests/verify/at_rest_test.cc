@@ -19,7 +19,7 @@ TEST_CASE("a designed bridge with its weight on and no further load stays at res
   DynamicsConfig run;
   run.duration = 0.2;
   run.dt = 1e-5;
-  run.integrator = "rk4";
+  run.integrator = IntegratorKind::kRk4;
   run.frequency.enabled = false;
   run.gravity_on_structure = true;
   const DynamicModel model = BuildDynamicModel(d, ModelOptionsOf(run));

@@ -31,7 +31,7 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
   const int stations = static_cast<int>(d.topology.deck_nodes.size());
   run.duration = 0.25 * stations;
   run.dt = check.dt;
-  run.integrator = "rk4";
+  run.integrator = IntegratorKind::kRk4;
   run.frequency.enabled = false;
   run.record.bar_forces = true;
   run.gravity_on_structure = true;  // follows design.self_weight, as the parse would set it

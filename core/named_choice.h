@@ -1,0 +1,48 @@
+// Choices of a config held as enums: the file and every output spell them as text, the code
+// past the parse compares enum values. One table per enum gives both.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace tbridge {
+
+template <class E>
+struct Named {
+  E value;
+  const char* name;
+};
+
+// The text of `value` in `table`; "" when the table lacks it (a subset table).
+template <class E, std::size_t N>
+constexpr const char* NameIn(const std::array<Named<E>, N>& table, E value) {
+  for (const Named<E>& n : table) {
+    if (n.value == value) return n.name;
+  }
+  return "";
+}
+
+// A choice key whose field is an enum: the visitor (core/config_visitors.h) sees the text, so
+// the parse, the echo, Validate() and the README's table are those of a text choice among the
+// table's names, and the parse writes the enum back. A visitor that writes a text outside the
+// table (a test's) leaves a value outside it too, which Validate() refuses as it would the text.
+template <class V, class F, std::size_t N>
+void EnumChoice(V& v, const auto& key, F& field, const std::array<Named<std::remove_const_t<F>>, N>& table) {
+  std::vector<std::string> allowed;
+  for (const auto& n : table) allowed.emplace_back(n.name);
+  std::string text = NameIn(table, field);
+  if constexpr (std::is_const_v<F>) {
+    v.Choice(key, static_cast<const std::string&>(text), allowed);
+  } else {
+    v.Choice(key, text, allowed);
+    const auto it = std::find(allowed.begin(), allowed.end(), text);
+    field = it != allowed.end() ? table[static_cast<std::size_t>(it - allowed.begin())].value
+                                : static_cast<std::remove_const_t<F>>(-1);
+  }
+}
+
+}  // namespace tbridge
