@@ -49,16 +49,15 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     ds.rest_length = s.rest_length;
     ds.stiffness = s.stiffness;
     ds.damping = options.damping;
-    ds.group = st.strings[k].group;
-    ds.name = s.name;
     ds.mass = mat.density * s.area * s.rest_length;
+    ds.area = s.area;
+    const std::string& group = st.strings[k].group;
     for (const StringPrestrain& p : options.prestrain) {
-      if (p.group != ds.group) continue;
+      if (p.group != group) continue;
       ds.rest_length = p.ratio * s.length;
       ds.stiffness = mat.youngs_modulus * s.area / ds.rest_length;
     }
-    m.string_area.push_back(s.area);
-    m.strings.push_back(ds);
+    m.AddString(ds, s.name, group);
   }
   ShareStringMass(m, options.string_mass);
   // A run carries the design loads: the permanent load and the payload (the paper's design
@@ -75,6 +74,7 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     AddStructureWeight(m);
   }
   SettleAtEquilibrium(m, design);
+  CheckModel(m, "design model");
   return m;
 }
 
@@ -111,7 +111,7 @@ std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const De
     r.yield_stress = design.config.material.yield_stress;
     for (size_t k = 0; k < model.strings.size(); ++k) {
       const DynamicString& s = model.strings[k];
-      if (s.group != p.group) continue;
+      if (model.names.string_group[k] != p.group) continue;
       ++r.strings;
       const double length = (model.positions.col(s.j) - model.positions.col(s.i)).norm();
       const double stress = model.youngs_modulus * (length - s.rest_length) / s.rest_length;

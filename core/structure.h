@@ -20,18 +20,19 @@ struct Member {
   std::string group;
 };
 
-// The representative node of each node's component, the nodes joined by `edges` (any type
-// with int members i and j; bars give the bar-connected clusters), by union-find: nodes a and
-// b are in one component iff the returned entries are equal. Indices are assumed valid.
-template <class Edge>
-std::vector<int> ComponentOf(int num_nodes, const std::vector<Edge>& edges) {
+// The representative node of each node's component, the nodes joined by `edges` (a range of
+// any type with int members i and j; bars give the bar-connected clusters), by union-find:
+// nodes a and b are in one component iff the returned entries are equal. Indices are assumed
+// valid.
+template <class Edges>
+std::vector<int> ComponentOf(int num_nodes, const Edges& edges) {
   std::vector<int> parent(static_cast<size_t>(num_nodes));
   for (int v = 0; v < num_nodes; ++v) parent[v] = v;
   auto find = [&parent](int a) {
     while (parent[a] != a) a = parent[a] = parent[parent[a]];
     return a;
   };
-  for (const Edge& e : edges) parent[find(e.i)] = find(e.j);
+  for (const auto& e : edges) parent[find(e.i)] = find(e.j);
   for (int v = 0; v < num_nodes; ++v) parent[v] = find(v);
   return parent;
 }

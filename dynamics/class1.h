@@ -42,8 +42,8 @@ using Class1Options = EngineOptions;
 
 class Class1System : public EngineFrame {
  public:
-  // Compiles `model` into flat per-member arrays. Throws ModelError when the model is not
-  // class 1, dim is not 2 or 3, an index or size is inconsistent, a bar's mass matrix is not
+  // Compiles `model` into flat per-member arrays. Throws ModelError when the model fails
+  // CheckModel (dynamics/model.h) or is not class 1, a bar's mass matrix is not
   // positive definite, a free node without a bar has no mass, or a timed load names a node
   // out of range.
   Class1System(const DynamicModel& model, const Class1Options& options = {},

@@ -81,10 +81,6 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
   for (size_t k = 0; k < model.bars.size(); ++k) {
     const DynamicBar& b = model.bars[k];
     const std::string name = "bar " + NodeName(b.i) + "-" + NodeName(b.j);
-    if (b.i < 0 || b.j < 0 || b.i >= n_n_ || b.j >= n_n_ || b.i == b.j) {
-      throw ModelError(std::string(kEngine) + ": " + name + " names a node out of range");
-    }
-    if (!(b.mass >= 0 && b.length > 0)) throw ModelError(std::string(kEngine) + ": " + name + " needs mass >= 0 and length > 0");
     const bool free_i = !model.fixed[b.i], free_j = !model.fixed[b.j];
     if (!free_i && !free_j) continue;
     PackedBar p{};

@@ -52,8 +52,7 @@ class ClassKWorkspace;
 class ClassKSystem : public EngineFrame {
  public:
   // Compiles `model` into flat arrays and the constant pattern of A. Throws ModelError when
-  // dim is not 2 or 3, an index or size is inconsistent, a bar has length <= 0 or a singular
-  // mass block, a free node without a bar has no mass, stabilisation has omega <= 0 or
+  // the model fails CheckModel (dynamics/model.h), a bar has a singular mass block, a free node without a bar has no mass, stabilisation has omega <= 0 or
   // zeta < 0, or a timed load names a node out of range.
   ClassKSystem(const DynamicModel& model, const ClassKOptions& options = {},
                std::vector<TimedLoad> timed_loads = {});

@@ -8,20 +8,13 @@ EngineFrame::EngineFrame(const DynamicModel& model, const EngineOptions& options
                          const char* engine)
     : engine_(engine), dim_(model.dim), n_n_(model.num_nodes()), options_(options) {
   const std::string where(engine);
-  if (dim_ != 2 && dim_ != 3) throw ModelError(where + ": dim must be 2 or 3");
-  if (static_cast<int>(model.fixed.size()) != n_n_) {
-    throw ModelError(where + ": fixed has " + std::to_string(model.fixed.size()) + " entries for " +
-                     std::to_string(n_n_) + " nodes");
-  }
-  if (model.node_mass.size() != 0 && model.node_mass.size() != n_n_) {
-    throw ModelError(where + ": node_mass has the wrong size");
-  }
+  CheckModel(model, where);
   if (options.stabilisation && !(options.omega_rad_s > 0 && options.zeta >= 0)) {
     throw ModelError(where + ": stabilisation needs omega > 0 and zeta >= 0");
   }
   node_mass_ = model.node_mass;
   loads_ = NodeLoads(model, timed, engine);
-  strings_ = PackStrings(model, engine, damped_);
+  strings_ = PackStrings(model, damped_);
   rest_positions_.resize(coordinates());
   for (int a = 0; a < n_n_; ++a) {
     for (int d = 0; d < dim_; ++d) rest_positions_(a * dim_ + d) = model.positions(d, a);

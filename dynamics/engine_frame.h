@@ -40,9 +40,8 @@ class EngineFrame {
   bool has_timed_loads() const { return loads_.has_timed(); }
 
  protected:
-  // Throws ModelError naming `engine` when dim is not 2 or 3, `fixed` or `node_mass` has the
-  // wrong size, stabilisation has omega <= 0 or zeta < 0, a timed load names a node out of
-  // range or a string is invalid (PackStrings).
+  // Throws ModelError naming `engine` when the model fails CheckModel (dynamics/model.h),
+  // stabilisation has omega <= 0 or zeta < 0, or a timed load names a node out of range.
   EngineFrame(const DynamicModel& model, const EngineOptions& options, const std::vector<TimedLoad>& timed,
               const char* engine);
 

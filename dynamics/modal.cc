@@ -24,46 +24,6 @@
 namespace tbridge {
 namespace {
 
-void CheckModel(const DynamicModel& model) {
-  const int n_n = model.num_nodes();
-  if (model.dim != 2 && model.dim != 3) {
-    throw ModelError("modal analysis: dim must be 2 or 3, got " + std::to_string(model.dim));
-  }
-  if (static_cast<int>(model.fixed.size()) != n_n) {
-    throw ModelError("modal analysis: fixed has " + std::to_string(model.fixed.size()) +
-                     " entries for " + std::to_string(n_n) + " nodes");
-  }
-  if (model.node_mass.size() != 0 && model.node_mass.size() != n_n) {
-    throw ModelError("modal analysis: node_mass has " + std::to_string(model.node_mass.size()) +
-                     " entries for " + std::to_string(n_n) + " nodes");
-  }
-  if (model.loads.size() != 0 && model.loads.cols() != n_n) {
-    throw ModelError("modal analysis: loads has " + std::to_string(model.loads.cols()) +
-                     " columns for " + std::to_string(n_n) + " nodes");
-  }
-  auto check_pair = [&](int i, int j, const std::string& what) {
-    if (i < 0 || j < 0 || i >= n_n || j >= n_n || i == j) {
-      throw ModelError("modal analysis: " + what + " joins nodes " + std::to_string(i) + " and " +
-                       std::to_string(j) + " of " + std::to_string(n_n));
-    }
-  };
-  for (size_t k = 0; k < model.bars.size(); ++k) {
-    const DynamicBar& b = model.bars[k];
-    check_pair(b.i, b.j, "bar " + std::to_string(k));
-    if (b.mass < 0) throw ModelError("modal analysis: bar " + std::to_string(k) + " has negative mass");
-  }
-  for (size_t k = 0; k < model.strings.size(); ++k) {
-    const DynamicString& s = model.strings[k];
-    check_pair(s.i, s.j, "string " + std::to_string(k));
-    if (s.stiffness < 0 || s.rest_length <= 0) {
-      throw ModelError("modal analysis: string " + s.name + " needs stiffness >= 0 and rest length > 0");
-    }
-  }
-  if (model.node_mass.size() != 0 && model.node_mass.minCoeff() < 0) {
-    throw ModelError("modal analysis: negative node mass");
-  }
-}
-
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
@@ -345,7 +305,7 @@ void SparseModes(const DynamicModel& model, const LinearisedSystem& sys, const M
 }  // namespace
 
 LinearisedSystem Linearise(const DynamicModel& model) {
-  CheckModel(model);
+  CheckModel(model, "modal analysis");
   const int dim = model.dim;
   const int n_n = model.num_nodes();
   LinearisedSystem sys;

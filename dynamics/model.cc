@@ -8,6 +8,55 @@
 
 namespace tbridge {
 
+namespace {
+
+std::string Count(std::size_t n) { return std::to_string(n); }
+
+}  // namespace
+
+void CheckModel(const DynamicModel& m, const std::string& where) {
+  const int n_n = m.num_nodes();
+  const auto fail = [&](const std::string& what) { throw ModelError(where + ": " + what); };
+  if (m.dim != 2 && m.dim != 3) fail("dim must be 2 or 3, got " + std::to_string(m.dim));
+  const auto nodes = [&](std::size_t size, const char* what) {
+    if (size != static_cast<std::size_t>(n_n)) {
+      fail(std::string(what) + " has " + Count(size) + " entries for " + Count(n_n) + " nodes");
+    }
+  };
+  nodes(m.fixed.size(), "fixed");
+  if (m.node_mass.size() != 0) nodes(static_cast<std::size_t>(m.node_mass.size()), "node_mass");
+  if (m.loads.size() != 0) nodes(static_cast<std::size_t>(m.loads.cols()), "loads");
+  if (m.node_mass.size() != 0 && !(m.node_mass.minCoeff() >= 0)) fail("node_mass must be >= 0");
+  const BarColumns& b = m.bars;
+  for (const std::size_t size : {b.j.size(), b.mass.size(), b.length.size()}) {
+    if (size != b.size()) fail("the bar columns differ in length");
+  }
+  const StringColumns& s = m.strings;
+  for (const std::size_t size : {s.j.size(), s.rest_length.size(), s.stiffness.size(), s.damping.size(),
+                                 s.mass.size(), s.area.size(), m.names.string_name.size(),
+                                 m.names.string_group.size()}) {
+    if (size != s.size()) fail("the string columns or names differ in length");
+  }
+  const auto member = [&](const char* kind, int i, int j) {
+    return std::string(kind) + " " + std::to_string(i + 1) + "-" + std::to_string(j + 1);
+  };
+  const auto ends = [&](const char* kind, int i, int j) {
+    if (i < 0 || j < 0 || i >= n_n || j >= n_n || i == j) {
+      fail(member(kind, i, j) + " must join two distinct nodes of 1.." + Count(n_n));
+    }
+  };
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    ends("bar", b.i[k], b.j[k]);
+    if (!(b.mass[k] >= 0 && b.length[k] > 0)) fail(member("bar", b.i[k], b.j[k]) + " needs mass >= 0 and length > 0");
+  }
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    ends("string", s.i[k], s.j[k]);
+    if (!(s.rest_length[k] > 0 && s.stiffness[k] >= 0 && s.damping[k] >= 0 && s.mass[k] >= 0 && s.area[k] >= 0)) {
+      fail(member("string", s.i[k], s.j[k]) + " needs L0 > 0, k >= 0, c >= 0, mass >= 0 and area >= 0");
+    }
+  }
+}
+
 void ShareStringMass(DynamicModel& m, StringMassMode mode) {
   // Bars at each node in compressed rows (bars_at[a] .. bars_at[a + 1] in bar_of), built once so
   // that sharing is O(members). Each bar's shares arrive in the same order as a search over all
@@ -34,7 +83,7 @@ void ShareStringMass(DynamicModel& m, StringMassMode mode) {
       if (mode == StringMassMode::kAtNodes || (mode == StringMassMode::kOnBars && count == 0)) {
         m.node_mass(end) += half;
       } else if (mode == StringMassMode::kOnBars) {
-        for (int r = bars_at[end]; r < bars_at[end + 1]; ++r) m.bars[bar_of[r]].mass += half / count;
+        for (int r = bars_at[end]; r < bars_at[end + 1]; ++r) m.bars.mass[bar_of[r]] += half / count;
       }
     }
   }

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/dynamics_choices.h"
@@ -12,40 +14,125 @@
 
 namespace tbridge {
 
+// One bar as the code past the model reads it (a row of BarColumns).
 struct DynamicBar {
   int i = 0, j = 0;    // 0-based end nodes; bar vector b = n_j - n_i
   double mass = 0;     // bar mass plus its share of string mass (kOnBars) [kg]
   double length = 0;   // l, held constant [m]
 };
 
+// One string as the code past the model reads it (a row of StringColumns).
 struct DynamicString {
   int i = 0, j = 0;          // 0-based end nodes
   double rest_length = 0;    // L0 [m]
   double stiffness = 0;      // k = E A / L0 [N/m]
   double damping = 0;        // c [N s/m]; force density term c (s . s_dot) / s^2
   double mass = 0;           // rho A L0 [kg]
-  std::string group;         // "deck", "substructure", "transverse"
-  std::string name;          // "i-j", 1-based
+  double area = 0;           // A [m^2], for stress reports; 0 when unknown (no stress)
+};
+
+// Iterates a column table row by row, each row a value (Row) read from the columns.
+template <class Table, class Row>
+class RowIterator {
+ public:
+  RowIterator(const Table* table, std::size_t k) : table_(table), k_(k) {}
+  Row operator*() const { return (*table_)[k_]; }
+  RowIterator& operator++() {
+    ++k_;
+    return *this;
+  }
+  bool operator!=(const RowIterator& other) const { return k_ != other.k_; }
+
+ private:
+  const Table* table_;
+  std::size_t k_;
+};
+
+// The bars, one column per quantity (struct of arrays); bars[k] reads bar k.
+struct BarColumns {
+  std::vector<int> i, j;
+  std::vector<double> mass;    // [kg]
+  std::vector<double> length;  // [m]
+
+  std::size_t size() const { return i.size(); }
+  bool empty() const { return i.empty(); }
+  DynamicBar operator[](std::size_t k) const { return {i[k], j[k], mass[k], length[k]}; }
+  void push_back(const DynamicBar& b) {
+    i.push_back(b.i);
+    j.push_back(b.j);
+    mass.push_back(b.mass);
+    length.push_back(b.length);
+  }
+  RowIterator<BarColumns, DynamicBar> begin() const { return {this, 0}; }
+  RowIterator<BarColumns, DynamicBar> end() const { return {this, size()}; }
+};
+
+// The strings, one column per quantity (struct of arrays); strings[k] reads string k. Add
+// strings with DynamicModel::AddString, which keeps the names beside them.
+struct StringColumns {
+  std::vector<int> i, j;
+  std::vector<double> rest_length;  // [m]
+  std::vector<double> stiffness;    // [N/m]
+  std::vector<double> damping;      // [N s/m]
+  std::vector<double> mass;         // [kg]
+  std::vector<double> area;         // [m^2]
+
+  std::size_t size() const { return i.size(); }
+  bool empty() const { return i.empty(); }
+  DynamicString operator[](std::size_t k) const {
+    return {i[k], j[k], rest_length[k], stiffness[k], damping[k], mass[k], area[k]};
+  }
+  void push_back(const DynamicString& s) {
+    i.push_back(s.i);
+    j.push_back(s.j);
+    rest_length.push_back(s.rest_length);
+    stiffness.push_back(s.stiffness);
+    damping.push_back(s.damping);
+    mass.push_back(s.mass);
+    area.push_back(s.area);
+  }
+  RowIterator<StringColumns, DynamicString> begin() const { return {this, 0}; }
+  RowIterator<StringColumns, DynamicString> end() const { return {this, size()}; }
+};
+
+// What only reports read: each string's name ("i-j", 1-based) and group ("deck",
+// "substructure", "transverse", or "string" in a structure scene), in the strings' order.
+struct MemberNames {
+  std::vector<std::string> string_name;
+  std::vector<std::string> string_group;
 };
 
 struct DynamicModel {
   int dim = 2;                        // 2: motion in the x-y plane; 3: full 3D
   Eigen::Matrix3Xd positions;         // equilibrium node positions N0 (3 x n_n) [m]
   std::vector<bool> fixed;            // pinned nodes are prescribed, not integrated
-  std::vector<DynamicBar> bars;
-  std::vector<DynamicString> strings;
+  BarColumns bars;
+  StringColumns strings;
+  MemberNames names;                  // side table of the strings, for reports only
   Eigen::VectorXd node_mass;          // point masses at nodes [kg] (kAtNodes, free string nodes)
   Eigen::Matrix3Xd loads;             // constant external node loads W [N]
   double allowed_stress = 0;          // sigma_w [Pa], for stress reports
   double youngs_modulus = 0;          // E [Pa]
-  std::vector<double> string_area;    // A per string [m^2], for stress reports
   int tensegrity_class = 1;           // max bars at a node
   std::vector<int> deck_nodes;        // free deck nodes (0-based, in order of x), for the
                                       // deck measurement of SPEC.md §9; may be empty
   double gravity = 9.81;              // g [m/s^2] used when gravity acts on the structure
 
   int num_nodes() const { return static_cast<int>(positions.cols()); }
+  // Adds a string with its name and group.
+  void AddString(const DynamicString& s, std::string name, std::string group) {
+    strings.push_back(s);
+    names.string_name.push_back(std::move(name));
+    names.string_group.push_back(std::move(group));
+  }
 };
+
+// Throws ModelError, prefixed by `where`, unless `model` is consistent: dim 2 or 3; fixed,
+// node_mass (>= 0) and loads sized for its nodes; every column and name sized for its members; every
+// member joining two distinct nodes in range; bars with mass >= 0 and length > 0; strings with
+// L0 > 0, k >= 0, c >= 0, mass >= 0 and area >= 0. The one check of a model: the builders,
+// the engines and the modal analysis call it.
+void CheckModel(const DynamicModel& model, const std::string& where);
 
 // Rest length = ratio x stretched (design) length for every string of `group`, with
 // k = E A / L0 recomputed (SPEC.md §7).

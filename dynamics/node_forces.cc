@@ -10,9 +10,6 @@ namespace tbridge {
 NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& timed, const char* engine)
     : dim_(model.dim) {
   const int n_n = model.num_nodes();
-  if (model.loads.size() != 0 && model.loads.cols() != n_n) {
-    throw ModelError(std::string(engine) + ": loads has the wrong size");
-  }
   constant_ = Eigen::VectorXd::Zero(dim_ * n_n);
   if (model.loads.size() != 0) {
     for (int a = 0; a < n_n; ++a) {
@@ -38,20 +35,11 @@ void NodeLoads::At(double t, double* force) const {
   }
 }
 
-std::vector<PackedString> PackStrings(const DynamicModel& model, const char* engine, bool& damped) {
-  const int n_n = model.num_nodes(), dim = model.dim;
+std::vector<PackedString> PackStrings(const DynamicModel& model, bool& damped) {
+  const int dim = model.dim;
   std::vector<PackedString> out;
   damped = false;
   for (const DynamicString& s : model.strings) {
-    for (const int a : {s.i, s.j}) {
-      if (a < 0 || a >= n_n) {
-        throw ModelError(std::string(engine) + ": string " + s.name + " names node " + std::to_string(a + 1) +
-                         " out of range");
-      }
-    }
-    if (!(s.rest_length > 0 && s.stiffness >= 0 && s.damping >= 0)) {
-      throw ModelError(std::string(engine) + ": string " + s.name + " needs L0 > 0, k >= 0, c >= 0");
-    }
     if (model.fixed[s.i] && model.fixed[s.j]) continue;  // moves nothing
     out.push_back({s.i * dim, s.j * dim, s.stiffness, s.stiffness * s.rest_length, s.damping});
     damped = damped || s.damping > 0;

@@ -41,8 +41,8 @@ struct PackedString {
 class NodeLoads {
  public:
   NodeLoads() = default;
-  // Throws ModelError (naming `engine`) when a timed load names a node out of range or the
-  // model's loads have the wrong size.
+  // `model` passed CheckModel. Throws ModelError (naming `engine`) when a timed load names a
+  // node out of range.
   NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& timed, const char* engine);
 
   // force (dim x n_n) = constant loads + the timed loads active at t [N].
@@ -60,10 +60,9 @@ class NodeLoads {
   std::vector<PackedLoad> timed_;
 };
 
-// The strings of `model` that can move something (not both ends pinned), packed for `dim`.
-// Throws ModelError (naming `engine`) for a node out of range or L0 <= 0, k < 0, c < 0.
-// `damped` is set when any kept string has c > 0.
-std::vector<PackedString> PackStrings(const DynamicModel& model, const char* engine, bool& damped);
+// The strings of `model` (which passed CheckModel) that can move something (not both ends
+// pinned), packed for `dim`. `damped` is set when any kept string has c > 0.
+std::vector<PackedString> PackStrings(const DynamicModel& model, bool& damped);
 
 // Adds every string's pull to f: force density
 //   gamma = max(k (1 - L0/s) + c (s . s_dot)/s^2, 0) if s >= L0, else 0,

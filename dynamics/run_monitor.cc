@@ -19,7 +19,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   const size_t n_s = model.strings.size();
   for (size_t k = 0; k < n_s; ++k) {
     const DynamicString& s = model.strings[k];
-    const double area = k < model.string_area.size() ? model.string_area[k] : 0.0;
+    const double area = model.strings.area[k];
     strings_.push_back({s.i * dim_, s.j * dim_, s.rest_length, s.rest_length * s.rest_length,
                         1.0 / (s.rest_length * s.rest_length), s.stiffness, s.damping, area > 0 ? 1.0 / area : 0.0});
   }
@@ -251,7 +251,7 @@ void RunMonitor::Finish(const double* y) {
   s.min_string_strain.resize(strings_.size());
   for (size_t k = 0; k < strings_.size(); ++k) s.min_string_strain[k] = std::sqrt(min_ratio_sq_[k]) - 1.0;
   s.max_bar_length_error = std::max(std::sqrt(bar_ratio_sq_max_) - 1.0, 1.0 - std::sqrt(bar_ratio_sq_min_));
-  if (max_stress_string_ >= 0) s.max_stress_string = model_.strings[max_stress_string_].name;
+  if (max_stress_string_ >= 0) s.max_stress_string = model_.names.string_name[max_stress_string_];
   s.stress_exceeds_allowed = s.max_string_stress > s.allowed_stress;
 }
 

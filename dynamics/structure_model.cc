@@ -78,14 +78,13 @@ DynamicModel BuildStructureModel(const StructureConfig& c, const ModelOptions& o
     ds.stiffness = s.stiffness_n_m;
     ds.damping = s.damping_n_s_m;
     ds.mass = s.mass_kg;
-    ds.group = "string";
-    ds.name = std::to_string(s.nodes[0]) + "-" + std::to_string(s.nodes[1]);
-    m.strings.push_back(ds);
-    m.string_area.push_back(s.area_m2.value_or(0.0));
+    ds.area = s.area_m2.value_or(0.0);
+    m.AddString(ds, std::to_string(s.nodes[0]) + "-" + std::to_string(s.nodes[1]), "string");
   }
   ShareStringMass(m, options.string_mass);
   RequireMassAtFreeNodes(m);
   if (options.gravity_on_structure) AddStructureWeight(m);
+  CheckModel(m, "structure");
   return m;
 }
 

@@ -64,8 +64,11 @@ nlohmann::json ModelMembersJson(const DynamicModel& model) {
     nodes.push_back({model.positions(0, v), model.positions(1, v), model.positions(2, v)});
   }
   for (const DynamicBar& b : model.bars) bars.push_back({{"nodes", {b.i + 1, b.j + 1}}});
-  for (const DynamicString& s : model.strings) {
-    strings.push_back({{"nodes", {s.i + 1, s.j + 1}}, {"group", s.group}, {"rest_length_m", s.rest_length}});
+  for (size_t k = 0; k < model.strings.size(); ++k) {
+    const DynamicString s = model.strings[k];
+    strings.push_back({{"nodes", {s.i + 1, s.j + 1}},
+                       {"group", model.names.string_group[k]},
+                       {"rest_length_m", s.rest_length}});
   }
   std::vector<int> fixed;
   for (int v = 0; v < model.num_nodes(); ++v) {
@@ -129,7 +132,7 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                             {"exceeds_allowed", s.stress_exceeds_allowed}};
   nlohmann::json per_string = nlohmann::json::object();
   for (size_t k = 0; k < s.slack.per_string.size(); ++k) {
-    if (s.slack.per_string[k] > 0) per_string[model.strings[k].name] = s.slack.per_string[k];
+    if (s.slack.per_string[k] > 0) per_string[model.names.string_name[k]] = s.slack.per_string[k];
   }
   j["slack"] = {{"transitions", s.slack.total},
                 {"per_string", per_string},

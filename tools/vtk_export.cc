@@ -41,10 +41,11 @@ std::string Piece(const DynamicModel& model, const Eigen::Matrix3Xd& p) {
     tension << "0\n";
     slack << "0\n";
   }
-  for (const DynamicString& s : model.strings) {
+  for (size_t k = 0; k < model.strings.size(); ++k) {
+    const DynamicString s = model.strings[k];
     const double length = (p.col(s.j) - p.col(s.i)).norm();
     const bool is_slack = length < s.rest_length;
-    type << (s.group == "deck" ? 2 : 1) << "\n";
+    type << (model.names.string_group[k] == "deck" ? 2 : 1) << "\n";
     tension << (is_slack ? 0.0 : s.stiffness * (length - s.rest_length)) << "\n";
     slack << (is_slack ? 1 : 0) << "\n";
   }

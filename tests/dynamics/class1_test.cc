@@ -122,7 +122,7 @@ TEST_CASE("prestrain sets rest lengths, recomputes k and flags the implied stres
   o.prestrain = {{"deck", 0.95}};
   const DynamicModel m = BuildDynamicModel(d, o);
   for (size_t k = 0; k < m.strings.size(); ++k) {
-    if (m.strings[k].group != "deck") continue;
+    if (m.names.string_group[k] != "deck") continue;
     CHECK(m.strings[k].rest_length == Approx(0.95 * d.strings[k].length).epsilon(1e-15));
     CHECK(m.strings[k].stiffness == Approx(m.youngs_modulus * d.strings[k].area / m.strings[k].rest_length).epsilon(1e-15));
   }
@@ -236,7 +236,7 @@ TEST_CASE("a mass on a V of two strings oscillates at sqrt(k_eff/m)") {
     st.j = 2;
     st.rest_length = s - stretch;
     st.stiffness = k;
-    m.strings.push_back(st);
+    m.AddString(st, std::to_string(end + 1) + "-3", "string");
   }
   const double omega = std::sqrt(2 * (k * sin_t * sin_t + tension / s * cos_t * cos_t) / mass);
   const Class1System system(m);

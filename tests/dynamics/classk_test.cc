@@ -282,7 +282,8 @@ DynamicModel DoublePendulum(double l, double m, double g) {
   model.positions.col(1) = Eigen::Vector3d(0, -l, 0);
   model.positions.col(2) = Eigen::Vector3d(0, -2 * l, 0);
   model.fixed = {true, false, false};
-  model.bars = {{0, 1, m, l}, {1, 2, m, l}};
+  model.bars.push_back({0, 1, m, l});
+  model.bars.push_back({1, 2, m, l});
   model.node_mass = Eigen::VectorXd::Zero(3);
   model.loads = Eigen::Matrix3Xd::Zero(3, 3);
   model.loads(1, 1) = -m * g;  // half of each bar

@@ -16,6 +16,8 @@
 #include "core/config.h"
 #include "core/error.h"
 #include "design/design.h"
+#include "dynamics/class1.h"
+#include "dynamics/classk.h"
 #include "dynamics/model.h"
 #include "test_support.h"
 
@@ -162,8 +164,8 @@ TEST_CASE("String-mass oscillator matches its closed forms", "[dynamics][modal]"
   m.fixed = {true, false, true};
   m.loads = Eigen::Matrix3Xd::Zero(3, 3);
   m.node_mass = Eigen::Vector3d(0, mass, 0);
-  m.strings.push_back({0, 1, rest, k, 0, 0, "deck", "1-2"});
-  m.strings.push_back({1, 2, rest, k, 0, 0, "deck", "2-3"});
+  m.AddString({0, 1, rest, k, 0, 0, 0}, "1-2", "deck");
+  m.AddString({1, 2, rest, k, 0, 0, 0}, "2-3", "deck");
   const ModalResult r = ComputeModes(m);
   REQUIRE(r.modes.size() == 3u);
   const double q = k * (s - rest) / s;
@@ -189,8 +191,8 @@ TEST_CASE("A loaded bar on prestressed strings matches its closed form", "[dynam
   m.loads(1, 1) = -load;
   m.node_mass = Eigen::VectorXd::Zero(4);
   m.bars.push_back({0, 1, mass, l});
-  m.strings.push_back({1, 2, rest, k, 0, 0, "substructure", "2-3"});
-  m.strings.push_back({1, 3, rest, k, 0, 0, "substructure", "2-4"});
+  m.AddString({1, 2, rest, k, 0, 0, 0}, "2-3", "substructure");
+  m.AddString({1, 3, rest, k, 0, 0, 0}, "2-4", "substructure");
   const ModalResult r = ComputeModes(m);
   REQUIRE(r.modes.size() == 1u);  // 2 DOFs minus the bar length
   CHECK(r.bar_force_density(0) == Approx(load / l).epsilon(1e-12));
@@ -267,11 +269,11 @@ TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]"
   // Lengthen one substructure string's rest length past its length: it goes slack.
   int slack = -1;
   for (size_t k = 0; k < m.strings.size() && slack < 0; ++k) {
-    if (m.strings[k].group != "deck") slack = static_cast<int>(k);
+    if (m.names.string_group[k] != "deck") slack = static_cast<int>(k);
   }
   REQUIRE(slack >= 0);
   const LinearisedSystem taut = Linearise(m);
-  m.strings[slack].rest_length *= 1.01;
+  m.strings.rest_length[slack] *= 1.01;
   const LinearisedSystem loose = Linearise(m);
   CHECK(loose.slack_strings == 1);
   CHECK(loose.string_tension(slack) == 0);
@@ -285,12 +287,32 @@ TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
   m.dim = 4;
   CHECK_THROWS_AS(ComputeModes(m), ModelError);
   m = ModelOf(test::PaperDesign(1));
-  m.bars[0].mass = 0;  // its two nodes move without mass
+  m.bars.mass[0] = 0;  // its two nodes move without mass
   CHECK_THROWS_WITH(ComputeModes(m), Catch::Contains("mass matrix is singular"));
   m = ModelOf(test::PaperDesign(1));
-  m.strings[0].j = 99;
+  m.strings.j[0] = 99;
   CHECK_THROWS_AS(ComputeModes(m), ModelError);
   CHECK_THROWS_AS(Rk4StableStep(ModalResult{}), ModelError);
+}
+
+TEST_CASE("One check of a model: modal analysis and both engines refuse a bad member alike", "[dynamics][modal]") {
+  // A string to a node that does not exist, a bar of zero length, a string column left short:
+  // each reader names the same fault, from CheckModel, prefixed by itself.
+  DynamicModel far = ModelOf(test::PaperDesign(1));
+  far.strings.j[0] = 99;
+  DynamicModel flat = ModelOf(test::PaperDesign(1));
+  flat.bars.length[0] = 0;
+  DynamicModel ragged = ModelOf(test::PaperDesign(1));
+  ragged.strings.area.pop_back();
+  const std::vector<std::pair<const DynamicModel*, std::string>> cases = {
+      {&far, "must join two distinct nodes of 1.."}, {&flat, "needs mass >= 0 and length > 0"},
+      {&ragged, "the string columns or names differ in length"}};
+  for (const auto& [model, fault] : cases) {
+    INFO(fault);
+    CHECK_THROWS_WITH(ComputeModes(*model), Catch::StartsWith("modal analysis: ") && Catch::Contains(fault));
+    CHECK_THROWS_WITH(Class1System(*model), Catch::StartsWith("class-1 dynamics: ") && Catch::Contains(fault));
+    CHECK_THROWS_WITH(ClassKSystem(*model), Catch::Contains(fault));
+  }
 }
 // Bridges whose bars share nodes: planar p = 2 (n = 2 and 4) and p = 3 (n = 2), and the 3D
 // bridge of configs/paper_3d.json (class 2). Designed once per process.
@@ -423,7 +445,7 @@ TEST_CASE("The mirror map pairs the nodes about mid-span", "[dynamics][modal]") 
 
 TEST_CASE("The sparse solver rejects a free motion without mass", "[dynamics][modal]") {
   DynamicModel m = ModelOf(test::PaperDesign(3));
-  m.bars[0].mass = 0;  // its two nodes move without mass
+  m.bars.mass[0] = 0;  // its two nodes move without mass
   ModalOptions options;
   options.solver = ModalSolver::kSparse;
   options.count = 2;

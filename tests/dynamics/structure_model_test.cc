@@ -69,7 +69,7 @@ TEST_CASE("structure model: the D-bar") {
   CHECK(m.tensegrity_class == 2);
   CHECK(m.fixed == std::vector<bool>{true, false, false, false});
   REQUIRE(m.strings.size() == 2);
-  CHECK(m.strings[0].name == "2-4");
+  CHECK(m.names.string_name[0] == "2-4");
   CHECK(m.strings[0].rest_length == 1.0);
   CHECK(m.strings[1].rest_length == 0.5);
   for (const DynamicBar& b : m.bars) CHECK(b.length == Approx(std::sqrt(2.0)).epsilon(1e-15));
