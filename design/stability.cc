@@ -9,9 +9,9 @@
 #include <cmath>
 #include <complex>
 #include <string>
-#include <tuple>
 
 #include "core/error.h"
+#include "core/tangent_blocks.h"
 #include "design/design.h"
 
 namespace tbridge {
@@ -42,30 +42,14 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const
   }
   const int dim = s.dim();
   Tangent t;
-  t.dof.assign(s.num_nodes(), -1);
-  for (int v = 0; v < s.num_nodes(); ++v) {
-    if (!s.fixed[v]) {
-      t.dof[v] = t.ndof;
-      t.ndof += dim;
-    }
-  }
+  t.dof = FreeDofs(s.fixed, dim, t.ndof);
   Triplets km, kg, c;
   const size_t block = static_cast<size_t>(4 * dim * dim);  // four dim x dim blocks per member
   Triplets& material = split ? km : kg;  // one list when K_m is not wanted on its own
   if (split) km.reserve(block * ns);
   kg.reserve(block * ((split ? ns : 2 * ns) + nb));
   c.reserve(static_cast<size_t>(2 * dim * nb));
-  auto add = [&](Triplets& out, const Member& m, const Eigen::Matrix3d& G) {
-    for (const auto& [a, b, sign] : {std::tuple{m.i, m.i, 1.0}, std::tuple{m.j, m.j, 1.0},
-                                     std::tuple{m.i, m.j, -1.0}, std::tuple{m.j, m.i, -1.0}}) {
-      if (t.dof[a] < 0 || t.dof[b] < 0) continue;
-      for (int r = 0; r < dim; ++r) {
-        for (int q = 0; q < dim; ++q) {
-          if (G(r, q) != 0) out.emplace_back(t.dof[a] + r, t.dof[b] + q, sign * G(r, q));
-        }
-      }
-    }
-  };
+  auto add = [&](Triplets& out, const Member& m, const Eigen::Matrix3d& G) { AddPairBlock(G, m.i, m.j, t.dof, dim, out); };
   auto unit = [&](const Member& m) {
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     u.head(dim) = (s.nodes.col(m.j) - s.nodes.col(m.i)).head(dim).normalized();
@@ -83,11 +67,7 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const
   for (int b = 0; b < nb; ++b) {
     const Member& m = s.bars[b];
     add(kg, m, -(forces[b] / s.Length(m)) * I);
-    const Eigen::Vector3d u = unit(m);
-    for (int r = 0; r < dim; ++r) {
-      if (t.dof[m.i] >= 0) c.emplace_back(b, t.dof[m.i] + r, -u[r]);
-      if (t.dof[m.j] >= 0) c.emplace_back(b, t.dof[m.j] + r, u[r]);
-    }
+    AddBarRow(b, m.i, m.j, unit(m), t.dof, dim, c);
   }
   auto build = [](int rows, int cols, const Triplets& triplets) {
     SparseMatrix m(rows, cols);

@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "core/string_law.h"
 #include "core/structure.h"
+#include "core/tangent_blocks.h"
 
 namespace tbridge {
 namespace {
@@ -30,22 +31,6 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 constexpr const char* kMasslessMessage =
     "modal analysis: the mass matrix is singular on the free motions; a free node moves "
     "without mass (give the strings mass or add node masses)";
-
-// Adds the 3x3 block `k` as [k -k; -k k] at nodes i, j (only their free DOFs).
-void AddPairBlock(const Eigen::Matrix3d& k, int i, int j, const std::vector<int>& first_dof, int dim,
-                  Triplets& target) {
-  const int ends[2] = {i, j};
-  for (int a = 0; a < 2; ++a) {
-    for (int c = 0; c < 2; ++c) {
-      const int ra = first_dof[ends[a]], rc = first_dof[ends[c]];
-      if (ra < 0 || rc < 0) continue;
-      const double sign = (a == c) ? 1.0 : -1.0;
-      for (int r = 0; r < dim; ++r) {
-        for (int q = 0; q < dim; ++q) target.emplace_back(ra + r, rc + q, sign * k(r, q));
-      }
-    }
-  }
-}
 
 // Bars joined at nodes, with the free DOFs (ascending) they touch. Different groups touch
 // different DOFs, so their constraint rows, their least-squares bar forces and their null
@@ -310,16 +295,13 @@ LinearisedSystem Linearise(const DynamicModel& model) {
   const int n_n = model.num_nodes();
   LinearisedSystem sys;
 
-  std::vector<int> first_dof(n_n, -1);
   int n_dof = 0;
+  const std::vector<int> first_dof = FreeDofs(model.fixed, dim, n_dof);
   for (int a = 0; a < n_n; ++a) {
-    if (model.fixed[a]) continue;
-    first_dof[a] = n_dof;
-    for (int c = 0; c < dim; ++c) {
+    for (int c = 0; c < dim && first_dof[a] >= 0; ++c) {
       sys.dof_node.push_back(a);
       sys.dof_axis.push_back(c);
     }
-    n_dof += dim;
   }
   const int n_b = static_cast<int>(model.bars.size());
   const int n_s = static_cast<int>(model.strings.size());
@@ -352,11 +334,7 @@ LinearisedSystem Linearise(const DynamicModel& model) {
   // node i along -b. The same columns, transposed, are the constraint rows d(b.b/2)/dx.
   for (int k = 0; k < n_b; ++k) {
     const DynamicBar& bar = model.bars[k];
-    const Eigen::Vector3d b = model.positions.col(bar.j) - model.positions.col(bar.i);
-    for (int d = 0; d < dim; ++d) {
-      if (first_dof[bar.i] >= 0) constraints.emplace_back(k, first_dof[bar.i] + d, -b(d));
-      if (first_dof[bar.j] >= 0) constraints.emplace_back(k, first_dof[bar.j] + d, b(d));
-    }
+    AddBarRow(k, bar.i, bar.j, model.positions.col(bar.j) - model.positions.col(bar.i), first_dof, dim, constraints);
   }
   sys.constraints.resize(n_b, n_dof);
   sys.constraints.setFromTriplets(constraints.begin(), constraints.end());
