@@ -41,9 +41,9 @@ inline const char* TwoDigits() {
 
 }  // namespace fast_g12_detail
 
-// Writes v at p and returns the end of what it wrote; [p, end) must hold 24 characters (the
-// digits are copied 12 at a time, so a short number may write past its own end, never more
-// than 19 characters from p).
+// Writes v at p and returns the end of what it wrote; [p, end) must hold 24 characters, and
+// the buffer 26 from p: the digits are copied 12 at a time (fixed-size copies compile to a
+// few moves, variable ones to a library call), so a number may write past its own end.
 inline char* FormatG12(char* p, char* end, double v) {
   namespace d = fast_g12_detail;
   const double a = std::fabs(v);
@@ -66,7 +66,7 @@ inline char* FormatG12(char* p, char* end, double v) {
   }
   if (digits < 100000000000ULL) return d::Fallback(p, end, v);  // e one too high: leave it to to_chars
   // The 12 digits, most significant first.
-  char buf[12];
+  char buf[24] = {};  // 12 digits, then room for the fixed-size copies below
   const char* two = d::TwoDigits();
   // Two halves of six digits in 32-bit arithmetic.
   std::uint32_t halves[2] = {static_cast<std::uint32_t>(digits / 1000000), static_cast<std::uint32_t>(digits % 1000000)};
@@ -105,8 +105,8 @@ inline char* FormatG12(char* p, char* end, double v) {
       p += whole;
     } else {
       std::memcpy(p, buf, 12);
-      std::memmove(p + whole + 1, p + whole, static_cast<std::size_t>(12 - whole));
       p[whole] = '.';
+      std::memcpy(p + whole + 1, buf + whole, 12);  // reads into buf's zeroed tail
       p += n + 1;
     }
   } else {  // 0.000ddd
