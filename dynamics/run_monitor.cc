@@ -66,7 +66,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   }
   summary_.allowed_stress = model.allowed_stress;
   double kinetic = 0, elastic = 0;
-  last_power_ = Measure(0.0, 0.0, y0.data(), kinetic, elastic);
+  Measure(0.0, 0.0, y0.data(), kinetic, elastic);
   auto& e = summary_.energy;
   e.kinetic_start = e.kinetic_end = kinetic;
   e.elastic_start = e.elastic_end = elastic;
@@ -93,10 +93,9 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   }
   if (!std::isfinite(sum[0] + sum[1])) Fail(step, t, "a node position or velocity is not finite");
   double kinetic = 0, elastic = 0;
-  const double power = Measure(t, 0.5 * (t_old + t), y, kinetic, elastic);
+  Measure(t, 0.5 * (t_old + t), y, kinetic, elastic);
   auto& e = summary_.energy;
-  e.dissipated += std::isnan(dissipated) ? 0.5 * (t - t_old) * (last_power_ + power) : dissipated;
-  last_power_ = power;
+  e.dissipated += dissipated;
   // Work of the loads: constant loads exactly, W . (x - x0), from the pass above; each timed load
   // by its force times the displacement of its node over the part of the step it acts in
   // (exact, since the driver holds the loads constant over a step; a ramp's force is taken at
@@ -135,7 +134,7 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
 }
 
 template <int Dim, bool Damped>
-double RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
+void RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
   // CAUTION: performance-sensitive: every accepted step of every run passes here. The
   // dimension and the damping are template arguments, so an undamped run reads no velocity
   // and divides by nothing, and the coordinate loops unroll. The arrays and the running
@@ -152,7 +151,7 @@ double RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
   int* transitions = summary_.slack.per_string.data();
   double max_stress = summary_.max_string_stress;
   int max_stress_string = max_stress_string_, new_transitions = 0, newly_slack = 0;
-  double power = 0, elastic_sum = 0;
+  double elastic_sum = 0;
   for (size_t k = 0; k < n_s; ++k) {
     const PackedString& s = strings[k];
     double len2 = 0, rate = 0;
@@ -171,7 +170,6 @@ double RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
       if constexpr (Damped) {
         const double length_rate = rate / len;
         tension = std::max(spring + s.c * length_rate, 0.0);
-        power += (tension - spring) * length_rate;  // rate of work done on the damper
       }
       peak[k] = std::max(peak[k], tension);
       const double stress = tension * s.inv_area;
@@ -207,13 +205,15 @@ double RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
     bar_ratio_sq_min_ = std::min(bar_ratio_sq_min_, r);
     bar_ratio_sq_max_ = std::max(bar_ratio_sq_max_, r);
   }
-  return power;
 }
 
-double RunMonitor::Measure(double t, double load_time, const double* y, double& kinetic, double& elastic) {
+void RunMonitor::Measure(double t, double load_time, const double* y, double& kinetic, double& elastic) {
   const bool damped = engine_.damped();
-  const double power = dim_ == 2 ? (damped ? MeasureMembers<2, true>(t, y, elastic) : MeasureMembers<2, false>(t, y, elastic))
-                                 : (damped ? MeasureMembers<3, true>(t, y, elastic) : MeasureMembers<3, false>(t, y, elastic));
+  if (dim_ == 2) {
+    damped ? MeasureMembers<2, true>(t, y, elastic) : MeasureMembers<2, false>(t, y, elastic);
+  } else {
+    damped ? MeasureMembers<3, true>(t, y, elastic) : MeasureMembers<3, false>(t, y, elastic);
+  }
   const double* x = y;
   for (size_t n = 0; n < deck_offsets_.size(); ++n) {
     const int o = deck_offsets_[n];
@@ -235,7 +235,6 @@ double RunMonitor::Measure(double t, double load_time, const double* y, double& 
     }
   }
   kinetic = engine_.KineticEnergy(y);
-  return power;
 }
 
 void RunMonitor::Finish(const double* y) {

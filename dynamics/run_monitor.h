@@ -31,8 +31,8 @@ class RunMonitor {
 
   // After an accepted step from t_old to t (state y, loads held at the step's midpoint).
   // `dissipated` is the energy the dampers took over the step by the integrator's own stages
-  // [J]; NaN when the integrator has none (the power at the step's ends is then integrated by
-  // the trapezoidal rule). Throws ModelError on a blow-up.
+  // [J] (RK4, DOPRI5 and SDIRK3 each integrate the stages' damper power with their own
+  // weights, which closes the balance across slack kinks). Throws ModelError on a blow-up.
   // CAUTION: performance-sensitive
   void Accept(long step, double t_old, double t, const double* y, double dissipated);
 
@@ -64,12 +64,12 @@ class RunMonitor {
   };
 
   [[noreturn]] void Fail(long step, double t, const std::string& what) const;
-  // The state y at time t; the loads of `load_time` act on it. Returns the dampers' power [W].
-  double Measure(double t, double load_time, const double* y, double& kinetic, double& elastic);
-  // Its members' part: string tension, stress, slack and elastic energy, bar lengths; returns
-  // the dampers' power [W].
+  // The state y at time t; the loads of `load_time` act on it.
+  void Measure(double t, double load_time, const double* y, double& kinetic, double& elastic);
+  // Its members' part: string tension (the damper's share included), stress, slack and
+  // elastic energy, bar lengths.
   template <int Dim, bool Damped>
-  double MeasureMembers(double t, const double* y, double& elastic);
+  void MeasureMembers(double t, const double* y, double& elastic);
 
   const DynamicModel& model_;
   const EngineFrame& engine_;
@@ -89,7 +89,7 @@ class RunMonitor {
   int max_stress_string_ = -1;
   BarForceProbe probe_;
   Eigen::VectorXd lambda_;
-  double timed_work_ = 0, h0_ = 0, last_power_ = 0;
+  double timed_work_ = 0, h0_ = 0;
   std::function<double()> omega_max_;
   SimulationSummary summary_;
 };

@@ -23,9 +23,8 @@ struct EnergyBalance {
   double kinetic_start = 0, elastic_start = 0;  // [J]
   double kinetic_end = 0, elastic_end = 0;      // [J]
   double external_work = 0;  // work done by the loads since t = 0 [J]
-  // By string damping [J]: with the integrator's own stages (RK4, DOPRI5), so that the balance
-  // closes across slack transitions as well as the motion itself does; SDIRK3 by the trapezoidal
-  // rule on the accepted states.
+  // By string damping [J]: with the integrator's own stages and weights (RK4, DOPRI5, SDIRK3),
+  // so that the balance closes across slack transitions as well as the motion itself does.
   double dissipated = 0;
   // H = kinetic + elastic - external work + dissipated is conserved by the exact dynamics;
   // drift = max over the accepted steps of |H - H_0| / E_ref, E_ref = max(kinetic + elastic

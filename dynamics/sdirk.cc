@@ -153,7 +153,7 @@ void Sdirk3::Refresh(OdeSystem& system, double t, double h, const Eigen::VectorX
   ++stats_.jacobians;
 }
 
-bool Sdirk3::SolveStage(OdeSystem& system, double t_stage, double h, bool fresh) {
+bool Sdirk3::SolveStage(OdeSystem& system, int stage, double t_stage, double h, bool fresh) {
   // Newton with backtracking on the residual: across slack kinks a full step can overshoot
   // into the other branch and cycle, so a step that does not reduce |G| is halved.
   const double hg = h * kGamma;
@@ -165,6 +165,9 @@ bool Sdirk3::SolveStage(OdeSystem& system, double t_stage, double h, bool fresh)
     system.Derivative(t_stage, stage_.data(), dy_pert_.data());
     ++stats_.evaluations;
     ++stats_.newton_iterations;
+    // The stage's damper power, at the iterate whose correction ends Newton: within its
+    // tolerance of the converged stage.
+    stage_power_[stage] = system.DissipatedPower();
     residual_ = sv_ - vel_ + hg * dy_pert_.tail(c_);  // -G(V)
     const double residual_norm = residual_.cwiseAbs().maxCoeff();
     if (!std::isfinite(residual_norm)) return false;
@@ -205,6 +208,7 @@ bool Sdirk3::SolveStage(OdeSystem& system, double t_stage, double h, bool fresh)
 }
 
 void Sdirk3::Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
+  last_dissipated_ = 0;
   Split(system, t, h, y, options_.max_halvings);
 }
 
@@ -244,7 +248,7 @@ bool Sdirk3::Attempt(OdeSystem& system, double t, double h, Eigen::VectorXd& y) 
         sx_ = x0 + h * (kB1 * kx_[0] + kB2 * kx_[1]);
         sv_ = v0 + h * (kB1 * kv_[0] + kB2 * kv_[1]);
       }
-      ok = SolveStage(system, t + kC[i] * h, h, fresh);
+      ok = SolveStage(system, i, t + kC[i] * h, h, fresh);
       if (ok) {
         kx_[i] = vel_;
         kv_[i] = (vel_ - sv_) / hg;
@@ -260,6 +264,7 @@ bool Sdirk3::Attempt(OdeSystem& system, double t, double h, Eigen::VectorXd& y) 
   for (Eigen::Index i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i])) Fail(t, h, "the state is not finite");
   }
+  last_dissipated_ += h * (kB1 * stage_power_[0] + kB2 * stage_power_[1] + kGamma * stage_power_[2]);
   ++stats_.steps;
   return true;
 }

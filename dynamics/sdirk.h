@@ -90,6 +90,9 @@ class Sdirk3 {
   void Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y);
 
   const SdirkStats& stats() const { return stats_; }
+  // The energy dissipated over the last Step, by the method's own weights on the stages'
+  // damper power (stiffly accurate: b = the last row of A), halves of a split step added [J].
+  double last_dissipated() const { return last_dissipated_; }
   const SdirkCounts& counts() const { return counts_; }
 
  private:
@@ -100,7 +103,7 @@ class Sdirk3 {
   // Estimates D at (t, y) for step h and factorises I - h gamma D.
   void Refresh(OdeSystem& system, double t, double h, const Eigen::VectorXd& y);
   // Solves one stage; returns false when Newton must restart with a fresh Jacobian.
-  bool SolveStage(OdeSystem& system, double t_stage, double h, bool fresh);
+  bool SolveStage(OdeSystem& system, int stage, double t_stage, double h, bool fresh);
 
   int c_ = 0;
   SdirkOptions options_;
@@ -119,6 +122,8 @@ class Sdirk3 {
   struct NewtonFactor;  // the sparse LU of I - h gamma D (sdirk.cc keeps the library out of here)
   std::unique_ptr<NewtonFactor> lu_;
   double factor_h_ = 0;  // step the current factorisation was made for (0: none)
+  double stage_power_[3] = {0, 0, 0};  // DissipatedPower at each stage's last Newton iterate [W]
+  double last_dissipated_ = 0;
   // Workspace: state-sized (2 c) and coordinate-sized (c) buffers.
   Eigen::VectorXd y0_, dy_, dy_pert_, y_pert_, stage_;
   Eigen::VectorXd sx_, sv_, vel_, vel_old_, residual_, delta_, eps_;

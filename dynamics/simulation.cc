@@ -46,13 +46,13 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
     const double t_old = (step - 1) * config.dt;
     const double t = step == total_steps ? config.duration : step * config.dt;
     if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * (t_old + t));
-    double dissipated = std::numeric_limits<double>::quiet_NaN();  // SDIRK3: by the trapezoidal rule
+    double dissipated = 0;
     if (sdirk != nullptr) {
       sdirk->Step(ode, t_old, t - t_old, y);
+      dissipated = sdirk->last_dissipated();
     } else {
       // Sub-steps share the step's held loads; the monitor sees the step's end state.
       const double h = (t - t_old) / choice.substeps;
-      dissipated = 0;
       for (int k = 0; k < choice.substeps; ++k) dissipated += Rk4Step(ode, t_old + k * h, h, y, ws);
     }
     monitor.Accept(step, t_old, t, y.data(), dissipated);

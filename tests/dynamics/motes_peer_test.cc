@@ -98,5 +98,18 @@ TEST_CASE("energy balance: DOPRI5 integrates dissipation with its own stages too
   CHECK(damped.energy.max_drift < 2e-3);
 }
 
+TEST_CASE("energy balance: SDIRK3 integrates dissipation with its own stages too") {
+  const SimulationSummary damped = Prism(10.0, IntegratorKind::kSdirk3);
+  const SimulationSummary free = Prism(0.0, IntegratorKind::kSdirk3);
+  INFO("damped: drift " << damped.energy.max_drift << " after " << damped.slack.total
+                        << " slack transitions; undamped: drift " << free.energy.max_drift);
+  REQUIRE(damped.slack.total >= 60);
+  // The floor is SDIRK3's own error on the undamped prism at dt = 1e-3 s, its numerical
+  // damping included (2.3e-4 seen, across 942 kinks). With the method's weights on the stages'
+  // damper power the damped balance closes no worse (9.3e-5 seen; with the trapezoidal rule on
+  // the accepted states it was 8.2e-4).
+  CHECK(damped.energy.max_drift <= free.energy.max_drift);
+}
+
 }  // namespace
 }  // namespace tbridge
