@@ -17,7 +17,8 @@ namespace {
 // Unit costs on the reference machine, fitted to `bench_integrator_costs` on the paper's
 // bridges n = 2-7 (BENCHMARKS.md, Cost per step, which prints model and measurement side by
 // side). Fixed numbers, not timings taken at run time: a config picks the same integrator on
-// any machine.
+// any machine. The class-k engine's constraint solve is not counted in the right-hand side:
+// on a class-k bridge the estimate then leans to RK4 sub-steps, the more accurate choice.
 constexpr double kRhsNsPerMember = 4.0;       // ~16-20 ns per member per RK4 step, four sides
 constexpr double kRhsNsPerCoordinate = 1.0;   // the loads' copy, x' = v, pinned and lone nodes
 constexpr double kSolveNsPerNonzero = 0.8;    // a KLU solve: a multiply-add per nonzero of L + U
