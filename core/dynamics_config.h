@@ -98,7 +98,7 @@ struct DynamicsConfig {
   // limit 2 sqrt(2)/omega_max (omega_max of the initial state, by power iteration), RK4
   // sub-steps while they cost no more than one SDIRK3 step (estimated from the model's
   // counts), else the implicit SDIRK3 at the same dt
-  // (ResolveIntegrator in dynamics/simulation.h; BENCHMARKS.md has the evidence).
+  // (ResolveIntegrator in dynamics/integrator_policy.h; BENCHMARKS.md has the evidence).
   IntegratorKind integrator = IntegratorKind::kAuto;
   // "auto": the class-1 closed form when no node carries two bars, else class k;
   // "class1" (throws for a class-k bridge) | "classk" (Lagrange multipliers, any bridge)

@@ -35,6 +35,11 @@ constexpr double kNewtonGrowth = 0.4;
 // refresh is a small share of a step's cost even there.
 constexpr double kRefreshesPerStep = 0.25;
 
+// kAutoRk4Fraction of RK4's stability limit at the state y [s].
+double AutoRk4Step(OdeSystem& ode, const Eigen::VectorXd& y) {
+  return kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max);
+}
+
 }  // namespace
 
 int StepCosts::Rk4StepsPerSdirk3Step() const {
@@ -72,7 +77,7 @@ EngineKind EngineFor(const DynamicModel& model, const DynamicsConfig& config) {
 IntegratorChoice ResolveIntegrator(IntegratorKind requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y,
                                    const std::function<StepCosts()>& costs) {
   if (requested != IntegratorKind::kAuto) return {requested, 1};
-  const double stable = kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max);
+  const double stable = AutoRk4Step(ode, y);
   const double m = std::ceil(dt / stable - 1e-12);
   if (m <= 1) return {IntegratorKind::kRk4, 1};
   if (m <= costs().Rk4StepsPerSdirk3Step()) return {IntegratorKind::kRk4, static_cast<int>(m)};
@@ -93,11 +98,11 @@ double Rk4StableStep(const DynamicModel& model, const DynamicsConfig& config) {
   if (EngineFor(model, config) == EngineKind::kClass1) {
     const Class1System system(model, options);
     Class1Ode ode(system);
-    return kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max);
+    return AutoRk4Step(ode, y);
   }
   const ClassKSystem system(model, options);
   ClassKOde ode(system);
-  return kAutoRk4Fraction * Rk4StepLimit(HighestFrequency(ode, y).omega_max);
+  return AutoRk4Step(ode, y);
 }
 
 }  // namespace tbridge

@@ -169,7 +169,7 @@ void ShareStringMass(DynamicModel& model, StringMassMode mode);
 void AddStructureWeight(DynamicModel& model);
 
 // The largest number of bars meeting at a node (0 without bars); end indices out of range
-// are skipped (the engines reject them with a message).
+// are skipped (CheckModel rejects them with a message).
 int MaxBarsAtANode(const DynamicModel& model);
 
 // Mass that moves: bars (with their string share) plus node point masses [kg]. For the

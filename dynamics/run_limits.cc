@@ -10,10 +10,13 @@
 
 namespace tbridge {
 
+double FixedStepCount(const DynamicsConfig& config) {
+  return std::max(1.0, std::ceil(config.duration / config.dt - 1e-9));
+}
+
 RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record) {
   RunEstimate e;
-  // As the driver counts them; a double first, since a typo can ask for more than a long holds.
-  const double steps = std::max(1.0, std::ceil(config.duration / config.dt - 1e-9));
+  const double steps = FixedStepCount(config);
   e.steps = steps > 9e18 ? std::numeric_limits<long>::max() : static_cast<long>(steps);
   const double records = config.record.nodes.empty() ? 0.0 : std::floor(steps / config.record.every) + 1;
   e.records = records > 9e18 ? std::numeric_limits<long>::max() : static_cast<long>(records);
@@ -29,7 +32,7 @@ RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config,
 }
 
 void CheckStepLimit(const DynamicsConfig& config) {
-  const double steps = std::max(1.0, std::ceil(config.duration / config.dt - 1e-9));
+  const double steps = FixedStepCount(config);
   if (config.integrator != IntegratorKind::kDopri5 && steps > static_cast<double>(config.limits.max_steps)) {
     throw ConfigError("dynamics.duration", NumberText(config.duration),
                       "with dynamics.dt = " + NumberText(config.dt) + " s the run takes " + NumberText(steps) +

@@ -7,6 +7,10 @@
 
 namespace tbridge {
 
+// Steps of dt in the run: ceil(duration / dt), at least 1 (dt that divides the duration up to
+// round-off gives the whole number). A double, since a typo can ask for more than a long holds.
+double FixedStepCount(const DynamicsConfig& config);
+
 // What a run of `config` on `model` will take.
 struct RunEstimate {
   long steps = 0;            // ceil(duration / dt): steps of dt (dopri5: output grid points)

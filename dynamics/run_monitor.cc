@@ -51,7 +51,10 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   for (size_t k = 0; k < n_s; ++k) {  // the start's slack strings are not transitions
     const PackedString& st = strings_[k];
     double len2 = 0;
-    for (int d = 0; d < dim_; ++d) len2 += (y0(st.oj + d) - y0(st.oi + d)) * (y0(st.oj + d) - y0(st.oi + d));
+    for (int d = 0; d < dim_; ++d) {
+      const double dx = y0(st.oj + d) - y0(st.oi + d);
+      len2 += dx * dx;
+    }
     taut_[k] = len2 >= st.rest_sq;
     if (!taut_[k]) ++summary_.slack.slack_at_start;
   }

@@ -45,22 +45,18 @@ void RunRecorder::Start(const double* state) {
 }
 
 void RunRecorder::TakeHistory(double t, const double* state) {
+  if (!streaming_ && history_rows_ >= result_.history.rows()) return;
+  // Streamed rows are taken into row_; held ones straight into the history (row-major:
+  // contiguous).
+  double* row = streaming_ ? row_.data() : result_.history.row(history_rows_).data();
   const int dim = model_.dim;
   const std::vector<int>& nodes = result_.recorded_nodes;
+  row[0] = t;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    for (int d = 0; d < dim; ++d) row[1 + dim * k + d] = state[nodes[k] * dim + d];
+  }
   if (streaming_) {
-    double* row = row_.data();
-    row[0] = t;
-    for (size_t k = 0; k < nodes.size(); ++k) {
-      for (int d = 0; d < dim; ++d) row[1 + dim * k + d] = state[nodes[k] * dim + d];
-    }
     for (HistorySink* sink : sinks_) sink->Row(t, row + 1);
-  } else {
-    if (history_rows_ >= result_.history.rows()) return;
-    double* row = result_.history.row(history_rows_).data();  // row-major: contiguous
-    row[0] = t;
-    for (size_t k = 0; k < nodes.size(); ++k) {
-      for (int d = 0; d < dim; ++d) row[1 + dim * k + d] = state[nodes[k] * dim + d];
-    }
   }
   ++history_rows_;
 }

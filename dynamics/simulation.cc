@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -120,7 +118,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   const Eigen::VectorXd y_start = y;
   monitor.SetOmegaMax([&] { return HighestFrequency(ode, y_start).omega_max; });
 
-  const long total_steps = std::max<long>(1, std::lround(std::ceil(config.duration / config.dt - 1e-9)));
+  // dopri5's count is not bounded by CheckRunLimits (its grid only sizes the records).
+  const long total_steps = static_cast<long>(std::min(FixedStepCount(config), 9e18));
   RunRecorder recorder(model, config, total_steps, hooks.history, result);
   recorder.Start(y.data());
 
