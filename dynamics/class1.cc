@@ -82,7 +82,8 @@ void Class1System::DerivativeImpl(double t, const double* y, double* dy, Class1W
   const double* v = y + c;
   double* f = ws.force.data();
   double* acc = dy + c;
-  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f);  // x' = v; loads and strings (eqs 16-17)
+  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f, ws.record_strings);  // x' = v; loads, strings (eqs 16-17)
+  ws.record_strings = nullptr;
   double* lambdas = ws.lambda.data();
 
   // Bars with both ends free (eq 23 in closed form, see the header).

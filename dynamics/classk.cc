@@ -287,7 +287,8 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
   const double* x = y;
   const double* v = y + c;
   double* f = ws.force.data();
-  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f);  // x' = v; loads and strings (eqs 16-17)
+  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f, ws.record_strings);  // x' = v; loads, strings (eqs 16-17)
+  ws.record_strings = nullptr;
 
   ClassKWorkspace::Solver& s = *ws.solver;
   double* rhs = ws.mu.data();  // the right-hand side, solved in place into mu

@@ -136,6 +136,9 @@ class ClassKWorkspace {
   Eigen::VectorXd bar_length_sq;  // |b|^2 per packed bar [m^2]
   Eigen::VectorXd mu;     // right-hand side, then the multipliers, per row of A [N/m], [N]
   double damper_power = 0;  // the dampers' power at the last evaluation [W]
+  // When set, the next evaluation writes each string's geometry there (one per model string)
+  // and clears it.
+  StringGeometry* record_strings = nullptr;
 
   // Nonzeros of the factor L (with its diagonal); 0 without constraints.
   long factor_nonzeros() const;

@@ -51,14 +51,21 @@ double EngineFrame::KineticEnergyOf(const double* y) const {
     for (int d = 0; d < Dim; ++d) s += v[a + d] * v[b + d];
     return s;
   };
-  double e = 0;
+  // Two running sums, so that each addition does not wait on the one before.
+  double e[2] = {0, 0};
   for (const MassBlock& b : blocks_) {
-    if (b.oi >= 0) e += b.m00 * dot(b.oi, b.oi);
-    if (b.oj >= 0) e += b.m11 * dot(b.oj, b.oj);
-    if (b.oi >= 0 && b.oj >= 0) e += 2.0 * b.m01 * dot(b.oi, b.oj);
+    if (b.oi >= 0) e[0] += b.m00 * dot(b.oi, b.oi);
+    if (b.oj >= 0) e[1] += b.m11 * dot(b.oj, b.oj);
+    if (b.oi >= 0 && b.oj >= 0) e[0] += 2.0 * b.m01 * dot(b.oi, b.oj);
   }
-  for (const LoneNode& n : lone_) e += n.mass * dot(n.o, n.o);
-  return 0.5 * e;
+  const size_t n_lone = lone_.size();
+  size_t k = 0;
+  for (; k + 2 <= n_lone; k += 2) {
+    e[0] += lone_[k].mass * dot(lone_[k].o, lone_[k].o);
+    e[1] += lone_[k + 1].mass * dot(lone_[k + 1].o, lone_[k + 1].o);
+  }
+  if (k < n_lone) e[0] += lone_[k].mass * dot(lone_[k].o, lone_[k].o);
+  return 0.5 * (e[0] + e[1]);
 }
 
 double EngineFrame::KineticEnergy(const double* y) const {

@@ -63,13 +63,15 @@ class EngineFrame {
   }
 
   // The start of every evaluation: x' = v into dy, then the non-bar forces into f (loads at t
-  // and the strings' pulls). Returns the dampers' power [W]. CAUTION: performance-sensitive.
+  // and the strings' pulls). Returns the dampers' power [W]. With `record`, each string's
+  // geometry at y goes there too, by model string. CAUTION: performance-sensitive.
   template <int D, bool Damped>
-  double StartDerivative(double t, const double* y, double* dy, double* f) const {
+  double StartDerivative(double t, const double* y, double* dy, double* f, StringGeometry* record) const {
     const int c = coordinates();
     std::memcpy(dy, y + c, sizeof(double) * static_cast<size_t>(c));
     loads_.At(t, f);
-    return AccumulateStringForces<D, Damped>(strings_, y, y + c, f);
+    return record != nullptr ? AccumulateStringForces<D, Damped, true>(strings_, y, y + c, f, record)
+                             : AccumulateStringForces<D, Damped>(strings_, y, y + c, f);
   }
 
   // The end of every evaluation: the lone nodes' accelerations F / m, and zero rate for the

@@ -40,6 +40,9 @@ class EngineOde final : public OdeSystem {
     hold_loads_ = true;
     load_time_ = t;
   }
+  // The next evaluation also writes each string's geometry at its state to `out` (one per
+  // model string; StringGeometry).
+  void RecordStringsInNextEvaluation(StringGeometry* out) { ws_.record_strings = out; }
 
  private:
   const System& system_;

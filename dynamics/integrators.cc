@@ -9,11 +9,20 @@
 namespace tbridge {
 
 double Rk4Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws) {
+  Rk4FirstStage(system, t, y, ws);
+  return Rk4FinishStep(system, t, h, y, ws);
+}
+
+void Rk4FirstStage(OdeSystem& system, double t, const Eigen::VectorXd& y, Rk4Workspace& ws) {
+  system.Derivative(t, y.data(), ws.k1.data());
+  ws.first_power = system.DissipatedPower();
+}
+
+double Rk4FinishStep(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws) {
   // CAUTION: performance-sensitive. Every expression below is evaluated lazily into an
   // existing vector, so no temporary is allocated.
   const double half = 0.5 * h;
-  system.Derivative(t, y.data(), ws.k1.data());
-  double power = system.DissipatedPower();
+  double power = ws.first_power;
   ws.stage = y + half * ws.k1;
   system.Derivative(t + half, ws.stage.data(), ws.k2.data());
   power += 2.0 * system.DissipatedPower();

@@ -31,6 +31,13 @@ class OdeSystem {
 // CAUTION: performance-sensitive
 double Rk4Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws);
 
+// Rk4Step in two parts, so that a driver can evaluate the first stage of a step as soon as the
+// state it starts from is known (the run monitor reads that evaluation): Rk4FirstStage leaves
+// k1 = f(t, y) and its dampers' power in ws; Rk4FinishStep takes the rest of the step from them
+// and returns what Rk4Step returns. Together they compute exactly what Rk4Step computes.
+void Rk4FirstStage(OdeSystem& system, double t, const Eigen::VectorXd& y, Rk4Workspace& ws);
+double Rk4FinishStep(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws);
+
 struct Dopri5Options {
   double rtol = 1e-8;       // relative tolerance [-]
   double atol = 1e-10;      // absolute tolerance [units of y]

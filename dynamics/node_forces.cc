@@ -39,9 +39,10 @@ std::vector<PackedString> PackStrings(const DynamicModel& model, bool& damped) {
   const int dim = model.dim;
   std::vector<PackedString> out;
   damped = false;
-  for (const DynamicString& s : model.strings) {
+  for (size_t k = 0; k < model.strings.size(); ++k) {
+    const DynamicString s = model.strings[k];
     if (model.fixed[s.i] && model.fixed[s.j]) continue;  // moves nothing
-    out.push_back({s.i * dim, s.j * dim, s.stiffness, s.stiffness * s.rest_length, s.damping});
+    out.push_back({s.i * dim, s.j * dim, s.stiffness, s.stiffness * s.rest_length, s.damping, static_cast<int>(k)});
     damped = damped || s.damping > 0;
   }
   return out;

@@ -39,6 +39,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     }
   }
   loads_dot_x0_ = loads_.dot(x0_);
+  has_loads_ = loads_.cwiseAbs().maxCoeff() > 0;
   for (const LoadStepConfig& l : config.loads) {
     TimedLoadState s{(l.node - 1) * dim_, l.t_start, l.t_end, l.rise_s, l.fall_s, {0, 0, 0}, {0, 0, 0}};
     for (int d = 0; d < dim_; ++d) {
@@ -58,6 +59,18 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     taut_[k] = len2 >= st.rest_sq;
     if (!taut_[k]) ++summary_.slack.slack_at_start;
   }
+  // The strings no engine evaluates (both ends pinned) keep the geometry they start with.
+  geometry_.resize(n_s);
+  for (size_t k = 0; k < n_s; ++k) {
+    const PackedString& st = strings_[k];
+    double len2 = 0, rate = 0;
+    for (int d = 0; d < dim_; ++d) {
+      const double dx = y0(st.oj + d) - y0(st.oi + d);
+      len2 += dx * dx;
+      rate += dx * (y0(c_ + st.oj + d) - y0(c_ + st.oi + d));
+    }
+    geometry_[k] = {len2, 1.0 / std::sqrt(len2), rate};
+  }
   ever_slack_.assign(n_s, 0);
   min_ratio_sq_.assign(n_s, std::numeric_limits<double>::infinity());
   summary_.slack.per_string.assign(n_s, 0);
@@ -69,7 +82,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   }
   summary_.allowed_stress = model.allowed_stress;
   double kinetic = 0, elastic = 0;
-  Measure(0.0, 0.0, y0.data(), kinetic, elastic);
+  Measure(0.0, 0.0, y0.data(), nullptr, kinetic, elastic);
   auto& e = summary_.energy;
   e.kinetic_start = e.kinetic_end = kinetic;
   e.elastic_start = e.elastic_end = elastic;
@@ -77,33 +90,41 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   h0_ = kinetic + elastic;
 }
 
-void RunMonitor::Accept(long step, double t_old, double t, const double* y, double dissipated) {
+void RunMonitor::Accept(long step, double t_old, double t, const double* y, double dissipated,
+                         const StringGeometry* strings) {
   // One pass over the state: its sum finds a NaN or an infinity anywhere in it (they
-  // propagate through it), and the work of the constant loads is W . (x - x0). Two partial
-  // sums each, so the additions do not wait on each other.
+  // propagate through it), and the work of the constant loads is W . (x - x0), when there are
+  // any. Four partial sums, so the additions do not wait on each other (they pair into vector
+  // additions).
   const double* loads = loads_.data();
-  double sum[2] = {0, 0}, load_dot_x[2] = {0, 0};
+  double sum[4] = {0, 0, 0, 0}, load_dot_x[4] = {0, 0, 0, 0};
   int i = 0;
-  for (; i + 2 <= c_; i += 2) {
-    for (int l = 0; l < 2; ++l) {
-      sum[l] += y[i + l] + y[c_ + i + l];
-      load_dot_x[l] += loads[i + l] * y[i + l];
+  if (has_loads_) {
+    for (; i + 4 <= c_; i += 4) {
+      for (int l = 0; l < 4; ++l) {
+        sum[l] += y[i + l] + y[c_ + i + l];
+        load_dot_x[l] += loads[i + l] * y[i + l];
+      }
+    }
+  } else {
+    for (; i + 4 <= c_; i += 4) {
+      for (int l = 0; l < 4; ++l) sum[l] += y[i + l] + y[c_ + i + l];
     }
   }
   for (; i < c_; ++i) {
     sum[0] += y[i] + y[c_ + i];
     load_dot_x[0] += loads[i] * y[i];
   }
-  if (!std::isfinite(sum[0] + sum[1])) Fail(step, t, "a node position or velocity is not finite");
+  if (!std::isfinite((sum[0] + sum[1]) + (sum[2] + sum[3]))) Fail(step, t, "a node position or velocity is not finite");
   double kinetic = 0, elastic = 0;
-  Measure(t, 0.5 * (t_old + t), y, kinetic, elastic);
+  Measure(t, 0.5 * (t_old + t), y, strings, kinetic, elastic);
   auto& e = summary_.energy;
   e.dissipated += dissipated;
   // Work of the loads: constant loads exactly, W . (x - x0), from the pass above; each timed load
   // by its force times the displacement of its node over the part of the step it acts in
   // (exact, since the driver holds the loads constant over a step; a ramp's force is taken at
   // the middle of that part).
-  const double work = load_dot_x[0] + load_dot_x[1] - loads_dot_x0_;
+  const double work = (load_dot_x[0] + load_dot_x[1]) + (load_dot_x[2] + load_dot_x[3]) - loads_dot_x0_;
   for (TimedLoadState& l : timed_) {
     const double overlap = std::min(t, l.t_end) - std::max(t_old, l.t_start);
     if (overlap > 0) {
@@ -136,13 +157,15 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   }
 }
 
-template <int Dim, bool Damped>
-void RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
+template <int Dim, bool Damped, bool Given>
+void RunMonitor::MeasureMembers(double t, const double* y, const StringGeometry* given, double& elastic) {
   // CAUTION: performance-sensitive: every accepted step of every run passes here. The
   // dimension and the damping are template arguments, so an undamped run reads no velocity
   // and divides by nothing, and the coordinate loops unroll. The arrays and the running
   // extremes are locals: a store to the char flags may alias anything, and would otherwise
-  // make the compiler reload every member pointer after it.
+  // make the compiler reload every member pointer after it. With Given, each string's length
+  // and rate come from the engine's evaluation at this state, computed there by the same
+  // expressions; gathering the ends' coordinates again was most of the monitor's time.
   const double* x = y;
   const double* v = y + c_;
   const PackedString* strings = strings_.data();
@@ -158,20 +181,33 @@ void RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
   for (size_t k = 0; k < n_s; ++k) {
     const PackedString& s = strings[k];
     double len2 = 0, rate = 0;
-    for (int d = 0; d < Dim; ++d) {
-      const double dx = x[s.oj + d] - x[s.oi + d];
-      len2 += dx * dx;
-      if constexpr (Damped) rate += dx * (v[s.oj + d] - v[s.oi + d]);
+    if constexpr (Given) {
+      len2 = given[k].len2;
+      rate = given[k].rate;
+    } else {
+      for (int d = 0; d < Dim; ++d) {
+        const double dx = x[s.oj + d] - x[s.oi + d];
+        len2 += dx * dx;
+        if constexpr (Damped) rate += dx * (v[s.oj + d] - v[s.oi + d]);
+      }
     }
     min_ratio_sq[k] = std::min(min_ratio_sq[k], len2 * s.inv_rest_sq);
     const bool taut = len2 >= s.rest_sq;
     if (taut) {
-      const double len = std::sqrt(len2);
+      // |s| as len2 / |s|, with 1/|s| as the engines compute it: given, that takes no square
+      // root and no division here (they share one unit, which bounded the monitor).
+      double inv_len = 0;
+      if constexpr (Given) {
+        inv_len = given[k].inv_len;
+      } else {
+        inv_len = 1.0 / std::sqrt(len2);
+      }
+      const double len = len2 * inv_len;
       const double spring = StringTension(s.k, s.rest, len);
       elastic_sum += 0.5 * spring * (len - s.rest);
       double tension = spring;
       if constexpr (Damped) {
-        const double length_rate = rate / len;
+        const double length_rate = rate * inv_len;
         tension = std::max(spring + s.c * length_rate, 0.0);
       }
       peak[k] = std::max(peak[k], tension);
@@ -210,12 +246,17 @@ void RunMonitor::MeasureMembers(double t, const double* y, double& elastic) {
   }
 }
 
-void RunMonitor::Measure(double t, double load_time, const double* y, double& kinetic, double& elastic) {
+void RunMonitor::Measure(double t, double load_time, const double* y, const StringGeometry* given, double& kinetic,
+                         double& elastic) {
+  const auto members = [&]<int Dim, bool Damped>() {
+    given != nullptr ? MeasureMembers<Dim, Damped, true>(t, y, given, elastic)
+                     : MeasureMembers<Dim, Damped, false>(t, y, given, elastic);
+  };
   const bool damped = engine_.damped();
   if (dim_ == 2) {
-    damped ? MeasureMembers<2, true>(t, y, elastic) : MeasureMembers<2, false>(t, y, elastic);
+    damped ? members.operator()<2, true>() : members.operator()<2, false>();
   } else {
-    damped ? MeasureMembers<3, true>(t, y, elastic) : MeasureMembers<3, false>(t, y, elastic);
+    damped ? members.operator()<3, true>() : members.operator()<3, false>();
   }
   const double* x = y;
   for (size_t n = 0; n < deck_offsets_.size(); ++n) {

@@ -32,9 +32,17 @@ class RunMonitor {
   // After an accepted step from t_old to t (state y, loads held at the step's midpoint).
   // `dissipated` is the energy the dampers took over the step by the integrator's own stages
   // [J] (RK4, DOPRI5 and SDIRK3 each integrate the stages' damper power with their own
-  // weights, which closes the balance across slack kinks). Throws ModelError on a blow-up.
+  // weights, which closes the balance across slack kinks). `strings`, when given, is
+  // string_geometry() as an engine evaluation at y filled it; otherwise the monitor computes
+  // the same from y. Throws ModelError on a blow-up.
   // CAUTION: performance-sensitive
-  void Accept(long step, double t_old, double t, const double* y, double dissipated);
+  void Accept(long step, double t_old, double t, const double* y, double dissipated,
+              const StringGeometry* strings = nullptr);
+
+  // One StringGeometry per model string, for an engine evaluation to fill
+  // (EngineOde::RecordStringsInNextEvaluation) and Accept to read. The strings the engines
+  // leave out (both ends pinned) hold their geometry at the start, which does not change.
+  StringGeometry* string_geometry() { return geometry_.data(); }
 
   // After the last step, from the final state: the slack strings at the end, the names and the
   // strains and errors kept squared while running.
@@ -65,11 +73,12 @@ class RunMonitor {
 
   [[noreturn]] void Fail(long step, double t, const std::string& what) const;
   // The state y at time t; the loads of `load_time` act on it.
-  void Measure(double t, double load_time, const double* y, double& kinetic, double& elastic);
+  void Measure(double t, double load_time, const double* y, const StringGeometry* given, double& kinetic,
+               double& elastic);
   // Its members' part: string tension (the damper's share included), stress, slack and
-  // elastic energy, bar lengths.
-  template <int Dim, bool Damped>
-  void MeasureMembers(double t, const double* y, double& elastic);
+  // elastic energy, bar lengths; the strings' geometry from `given` when Given.
+  template <int Dim, bool Damped, bool Given>
+  void MeasureMembers(double t, const double* y, const StringGeometry* given, double& elastic);
 
   const DynamicModel& model_;
   const EngineFrame& engine_;
@@ -81,7 +90,9 @@ class RunMonitor {
   std::vector<double> deck_rest_;   // per deck node: x, y, z of the model's positions [m]
   Eigen::VectorXd x0_, loads_;      // start positions [m], constant loads [N], packed
   double loads_dot_x0_ = 0;         // loads . x0 [J]
+  bool has_loads_ = false;          // any constant load
   std::vector<TimedLoadState> timed_;
+  std::vector<StringGeometry> geometry_;  // see string_geometry()
   std::vector<char> taut_, ever_slack_;
   std::vector<double> min_ratio_sq_;  // per string: min (s / L0)^2 so far
   double bar_ratio_sq_min_ = 1, bar_ratio_sq_max_ = 1;  // extremes of (l / l0)^2 over bars and steps

@@ -40,20 +40,40 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
                    Sdirk3* sdirk, long total_steps, Eigen::VectorXd& y, RunMonitor& monitor, RunRecorder& recorder,
                    ProgressReporter* progress) {
   Rk4Workspace ws(sdirk == nullptr ? system.state_size() : 0);
+  const auto step_end = [&](long step) { return step == total_steps ? config.duration : step * config.dt; };
+  const auto hold_loads = [&](long step) {
+    if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * ((step - 1) * config.dt + step_end(step)));
+  };
+  // RK4 evaluates each step's first stage as soon as the step before it ends, recording the
+  // strings' geometry for the monitor, which measures that same state (the stages and the
+  // state are exactly those of Rk4Step).
+  const bool rk4 = sdirk == nullptr;
+  if (rk4 && total_steps > 0) {
+    hold_loads(1);
+    Rk4FirstStage(ode, 0.0, y, ws);
+  }
   for (long step = 1; step <= total_steps; ++step) {
     const double t_old = (step - 1) * config.dt;
-    const double t = step == total_steps ? config.duration : step * config.dt;
-    if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * (t_old + t));
+    const double t = step_end(step);
+    hold_loads(step);
     double dissipated = 0;
-    if (sdirk != nullptr) {
+    const StringGeometry* strings = nullptr;
+    if (!rk4) {
       sdirk->Step(ode, t_old, t - t_old, y);
       dissipated = sdirk->last_dissipated();
     } else {
       // Sub-steps share the step's held loads; the monitor sees the step's end state.
       const double h = (t - t_old) / choice.substeps;
-      for (int k = 0; k < choice.substeps; ++k) dissipated += Rk4Step(ode, t_old + k * h, h, y, ws);
+      dissipated += Rk4FinishStep(ode, t_old, h, y, ws);
+      for (int k = 1; k < choice.substeps; ++k) dissipated += Rk4Step(ode, t_old + k * h, h, y, ws);
+      if (step < total_steps) {
+        hold_loads(step + 1);
+        ode.RecordStringsInNextEvaluation(monitor.string_geometry());
+        Rk4FirstStage(ode, t, y, ws);
+        strings = monitor.string_geometry();
+      }
     }
-    monitor.Accept(step, t_old, t, y.data(), dissipated);
+    monitor.Accept(step, t_old, t, y.data(), dissipated, strings);
     if (progress != nullptr && step % kProgressEvery == 0) progress->Update(t, config.duration);
     recorder.AfterStep(step, t, y.data());
   }
