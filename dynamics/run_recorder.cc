@@ -15,8 +15,8 @@ RunRecorder::RunRecorder(const DynamicModel& model, const DynamicsConfig& config
   recording_ = !result.recorded_nodes.empty();
   streaming_ = !sinks.empty();
   deck_ = config.frequency.enabled && !model.deck_nodes.empty();
-  history_every_ = config.record.every;
-  deck_every_ = config.frequency.every;
+  history_every_ = history_countdown_ = config.record.every;
+  deck_every_ = deck_countdown_ = config.frequency.every;
   history_spacing_ = config.dt * config.record.every;
   deck_spacing_ = config.dt * config.frequency.every;
   if (recording_ && streaming_) {

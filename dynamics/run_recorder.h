@@ -50,10 +50,18 @@ class RunRecorder {
 
   // The state at t = 0.
   void Start(const double* state);
-  // After fixed step `step` (1-based) ending at t: the rows and samples that fall on it.
-  void AfterStep(long step, double t, const double* state) {
-    if (recording_ && step % history_every_ == 0) TakeHistory(t, state);
-    if (deck_ && step % deck_every_ == 0) TakeDeck(state);
+  // After each fixed step, in order, ending at t: the rows and samples that fall on it (every
+  // record.every-th and frequency.every-th step). Counted down, not found by a remainder: a
+  // division every step cost more than the rest of this.
+  void AfterStep(double t, const double* state) {
+    if (recording_ && --history_countdown_ == 0) {
+      history_countdown_ = history_every_;
+      TakeHistory(t, state);
+    }
+    if (deck_ && --deck_countdown_ == 0) {
+      deck_countdown_ = deck_every_;
+      TakeDeck(state);
+    }
   }
   // After an adaptive step reaching t: every grid time up to t, each state given by
   // interpolate(t_grid, out) (dense output into `out`, sized like the state).
@@ -80,6 +88,7 @@ class RunRecorder {
   SimulationResult& result_;
   bool recording_ = false, deck_ = false, streaming_ = false;
   int history_every_ = 1, deck_every_ = 1;
+  int history_countdown_ = 1, deck_countdown_ = 1;  // steps to the next row, the next sample
   double history_spacing_ = 0, deck_spacing_ = 0;  // [s]
   long history_next_ = 1, deck_next_ = 1;          // next grid index of an adaptive run
   long history_rows_ = 0, deck_rows_ = 0;

@@ -75,7 +75,7 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
     }
     monitor.Accept(step, t_old, t, y.data(), dissipated, strings);
     if (progress != nullptr && step % kProgressEvery == 0) progress->Update(t, config.duration);
-    recorder.AfterStep(step, t, y.data());
+    recorder.AfterStep(t, y.data());
   }
   SimulationSummary& s = monitor.summary();
   s.steps = static_cast<int>(total_steps);
