@@ -11,7 +11,7 @@ Usage: bench/simulate_process.py [--build build] [--repeats 3] [--memory-steps 1
 2. The MOTES prism and D-bar (configs/motes_*.json, 5000 RK4 steps, as shipped and with
    nothing recorded): in-run time per step (summary.json run.wall_s / run.steps, best run)
    against bench_motes's bare loop (best of its runs, interleaved with them), and the whole
-   process against the in-run time.
+   process (best of the same runs) against the in-run time.
 3. Memory: the prism for 1e6 and 1e7 steps with history every 100 steps; peak RSS of each.
 4. Start-up: a one-step simulate of the prism against `tbridge --version` and /bin/true.
 
@@ -31,9 +31,10 @@ import time
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def run(cmd, repeats=1):
+def run(cmd, repeats=1, rss=True):
     """Best wall time [s] of `repeats` runs of cmd, and its peak RSS [MiB] from one more run
-    under GNU time (kept out of the timed runs: it adds milliseconds of its own)."""
+    under GNU time (kept out of the timed runs: it adds milliseconds of its own; 0 when rss is
+    off)."""
     best = float("inf")
     for _ in range(repeats):
         start = time.perf_counter()
@@ -42,6 +43,8 @@ def run(cmd, repeats=1):
         if proc.returncode != 0:
             sys.exit(f"{' '.join(cmd)} failed ({proc.returncode}): {proc.stderr[-2000:]}")
         best = min(best, wall)
+    if not rss:
+        return best, 0.0
     with tempfile.NamedTemporaryFile("r") as report:
         subprocess.run(["/usr/bin/time", "-o", report.name, "-f", "%M"] + cmd, stdout=subprocess.DEVNULL,
                        stderr=subprocess.DEVNULL, check=True)
@@ -55,8 +58,8 @@ def write(path, config):
     return path
 
 
-def simulate(args, config_path, outdir, repeats):
-    wall, rss = run([args.tbridge, "simulate", config_path, "-o", outdir, "-q"], repeats)
+def simulate(args, config_path, outdir, repeats, rss=True):
+    wall, rss = run([args.tbridge, "simulate", config_path, "-o", outdir, "-q"], repeats, rss)
     with open(os.path.join(outdir, "summary.json")) as f:
         return wall, rss, json.load(f)
 
@@ -131,11 +134,13 @@ def motes(args, work):
         quiet = write(os.path.join(work, f"motes_{name}_norecord.json"), config)
         for label, path in (("every node, every 10 steps (shipped)", shipped), ("nothing", quiet)):
             outdir = os.path.join(work, f"motes_{name}")
-            wall, _, summary = simulate(args, path, outdir, args.repeats)
-            best_in_run = float("inf")
-            for _ in range(2 * args.repeats + 1):  # the in-run time of its best run, from the summary
-                _, _, s = simulate(args, path, outdir, 1)
-                best_in_run = min(best_in_run, s["run"]["wall_s"])
+            # The best whole process and the best in-run time (the summary's) over the same
+            # runs, each run interleaved with bench_motes.
+            wall = best_in_run = float("inf")
+            for _ in range(2 * args.repeats + 1):
+                w, _, summary = simulate(args, path, outdir, 1, rss=False)
+                wall = min(wall, w)
+                best_in_run = min(best_in_run, summary["run"]["wall_s"])
                 for k, v in bench_motes(args).items():
                     bare[k] = min(bare.get(k, float("inf")), v)
             steps = summary["run"]["steps"]
