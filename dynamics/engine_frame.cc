@@ -34,8 +34,12 @@ void EngineFrame::AddNodes(const DynamicModel& model, const std::vector<bool>& h
       lone_.push_back({a * dim_, m, 1.0 / m});
     }
   }
-  lone_mass_ = Eigen::VectorXd::Zero(coordinates());
-  for (const LoneNode& n : lone_) lone_mass_.segment(n.o, dim_).setConstant(n.mass);
+  // One dense pass where lone nodes hold most coordinates (a structure of strings); node by
+  // node where bars hold most (a bridge: the dense pass would weigh mostly zeros).
+  if (2 * static_cast<int>(lone_.size()) * dim_ >= coordinates()) {
+    lone_mass_ = Eigen::VectorXd::Zero(coordinates());
+    for (const LoneNode& n : lone_) lone_mass_.segment(n.o, dim_).setConstant(n.mass);
+  }
 }
 
 Eigen::VectorXd EngineFrame::RestState() const {
@@ -54,15 +58,20 @@ double EngineFrame::KineticEnergyOf(const double* y) const {
     return s;
   };
   // The lone nodes as one pass over every coordinate, weighted by lone_mass_ (zero elsewhere),
-  // in four running sums: the additions do not wait on each other and pair into vector ones.
-  const double* m = lone_mass_.data();
-  const int c = coordinates();
+  // or node by node; in four running sums, so the additions do not wait on each other (in the
+  // dense pass they pair into vector ones).
   double e[4] = {0, 0, 0, 0};
-  int i = 0;
-  for (; i + 4 <= c; i += 4) {
-    for (int l = 0; l < 4; ++l) e[l] += m[i + l] * v[i + l] * v[i + l];
+  if (lone_mass_.size() != 0) {
+    const double* m = lone_mass_.data();
+    const int c = coordinates();
+    int i = 0;
+    for (; i + 4 <= c; i += 4) {
+      for (int l = 0; l < 4; ++l) e[l] += m[i + l] * v[i + l] * v[i + l];
+    }
+    for (; i < c; ++i) e[0] += m[i] * v[i] * v[i];
+  } else {
+    for (size_t k = 0; k < lone_.size(); ++k) e[k % 2] += lone_[k].mass * dot(lone_[k].o, lone_[k].o);
   }
-  for (; i < c; ++i) e[0] += m[i] * v[i] * v[i];
   for (const MassBlock& b : blocks_) {
     if (b.oi >= 0) e[1] += b.m00 * dot(b.oi, b.oi);
     if (b.oj >= 0) e[2] += b.m11 * dot(b.oj, b.oj);

@@ -109,7 +109,8 @@ class EngineFrame {
   Eigen::VectorXd rest_positions_;  // packed
   Eigen::VectorXd node_mass_;
   std::vector<LoneNode> lone_;
-  Eigen::VectorXd lone_mass_;  // per coordinate: its lone node's mass [kg], 0 for the others
+  Eigen::VectorXd lone_mass_;  // per coordinate: its lone node's mass [kg], 0 for the others;
+                               // empty when bars hold most coordinates
   std::vector<int> fixed_offsets_;
   std::vector<MassBlock> blocks_;
 
