@@ -92,30 +92,12 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
 
 void RunMonitor::Accept(long step, double t_old, double t, const double* y, double dissipated,
                          const StringGeometry* strings) {
-  // One pass over the state: its sum finds a NaN or an infinity anywhere in it (they
-  // propagate through it), and the work of the constant loads is W . (x - x0), when there are
-  // any. Four partial sums, so the additions do not wait on each other (they pair into vector
-  // additions).
-  const double* loads = loads_.data();
-  double sum[4] = {0, 0, 0, 0}, load_dot_x[4] = {0, 0, 0, 0};
-  int i = 0;
-  if (has_loads_) {
-    for (; i + 4 <= c_; i += 4) {
-      for (int l = 0; l < 4; ++l) {
-        sum[l] += y[i + l] + y[c_ + i + l];
-        load_dot_x[l] += loads[i + l] * y[i + l];
-      }
-    }
-  } else {
-    for (; i + 4 <= c_; i += 4) {
-      for (int l = 0; l < 4; ++l) sum[l] += y[i + l] + y[c_ + i + l];
-    }
-  }
-  for (; i < c_; ++i) {
-    sum[0] += y[i] + y[c_ + i];
-    load_dot_x[0] += loads[i] * y[i];
-  }
-  if (!std::isfinite((sum[0] + sum[1]) + (sum[2] + sum[3]))) Fail(step, t, "a node position or velocity is not finite");
+  // The state's sum finds a NaN or an infinity anywhere in it (they propagate through it), and
+  // the work of the constant loads is W . (x - x0), when there are any: Eigen's reductions,
+  // which run in vector registers.
+  const Eigen::Map<const Eigen::VectorXd> state(y, 2 * static_cast<Eigen::Index>(c_));
+  if (!std::isfinite(state.sum())) Fail(step, t, "a node position or velocity is not finite");
+  const double load_dot_x = has_loads_ ? loads_.dot(state.head(c_)) : 0.0;
   double kinetic = 0, elastic = 0;
   Measure(t, 0.5 * (t_old + t), y, strings, kinetic, elastic);
   auto& e = summary_.energy;
@@ -124,7 +106,7 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   // by its force times the displacement of its node over the part of the step it acts in
   // (exact, since the driver holds the loads constant over a step; a ramp's force is taken at
   // the middle of that part).
-  const double work = (load_dot_x[0] + load_dot_x[1]) + (load_dot_x[2] + load_dot_x[3]) - loads_dot_x0_;
+  const double work = load_dot_x - loads_dot_x0_;
   for (TimedLoadState& l : timed_) {
     const double overlap = std::min(t, l.t_end) - std::max(t_old, l.t_start);
     if (overlap > 0) {
