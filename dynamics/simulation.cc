@@ -69,7 +69,15 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
       if (step < total_steps) {
         hold_loads(step + 1);
         ode.RecordStringsInNextEvaluation(monitor.string_geometry());
-        Rk4FirstStage(ode, t, y, ws);
+        try {
+          Rk4FirstStage(ode, t, y, ws);
+        } catch (...) {
+          // A state the engine cannot evaluate (the class-k constraint matrix no longer
+          // positive definite) is most often a blown-up one: the monitor's verdict on it comes
+          // first, as it did when this evaluation began the next step.
+          monitor.Accept(step, t_old, t, y.data(), dissipated);
+          throw;
+        }
         strings = monitor.string_geometry();
       }
     }
