@@ -25,6 +25,7 @@
 #include "dynamics/integrators.h"
 #include "dynamics/initial_state.h"
 #include "dynamics/sdirk.h"
+#include "ns_per_call.h"
 
 namespace {
 
@@ -34,12 +35,7 @@ double Rk4NsPerStep(tbridge::Class1Ode& ode, int size, const Eigen::VectorXd& y0
   tbridge::Rk4Workspace ws(size);
   Eigen::VectorXd y = y0;
   const double dt = 1e-8;
-  for (long steps = 16;; steps *= 2) {
-    const auto start = Clock::now();
-    for (long k = 0; k < steps; ++k) tbridge::Rk4Step(ode, k * dt, dt, y, ws);
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (seconds > 0.2) return 1e9 * seconds / static_cast<double>(steps);
-  }
+  return NsPerCall([&](long k) { tbridge::Rk4Step(ode, k * dt, dt, y, ws); });
 }
 
 }  // namespace

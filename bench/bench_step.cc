@@ -11,7 +11,6 @@
 // strings stay taut and nothing is skipped.
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,6 +23,7 @@
 #include "dynamics/integrators.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "ns_per_call.h"
 
 namespace {
 
@@ -37,15 +37,7 @@ double NsPerMemberStep(const tbridge::DynamicModel& model, const Class1Options& 
   tbridge::Rk4Workspace ws(system.state_size());
   Eigen::VectorXd y = y0;
   const double dt = 1e-8;  // tiny: the state barely changes, so every step costs the same
-  long steps = 16;
-  for (;;) {
-    const auto start = std::chrono::steady_clock::now();
-    for (long k = 0; k < steps; ++k) tbridge::Rk4Step(ode, k * dt, dt, y, ws);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (seconds > 0.2) return 1e9 * seconds / (static_cast<double>(steps) * system.num_members());
-    steps *= 2;
-  }
+  return NsPerCall([&](long k) { tbridge::Rk4Step(ode, k * dt, dt, y, ws); }) / system.num_members();
 }
 
 // The yardstick's members: flat arrays of end coordinates and constants, planar.
@@ -154,10 +146,7 @@ double YardstickNsPerMemberStep(const tbridge::DynamicModel& m, const Eigen::Vec
   const double omega = tbridge::Class1Options{}.omega_rad_s;
   const double dt = 1e-8, half = 0.5 * dt;
   const long members = static_cast<long>(strings.size() + bars.size() + pinned.size());
-  long steps = 16;
-  for (;;) {
-    const auto start = std::chrono::steady_clock::now();
-    for (long s = 0; s < steps; ++s) {
+  const double ns_per_step = NsPerCall([&](long) {
       PlainDerivative(strings, bars, pinned, loads, fixed, omega, y.data(), k1.data(), f.data());
       for (int i = 0; i < n; ++i) stage[i] = y[i] + half * k1[i];
       PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k2.data(),
@@ -169,13 +158,8 @@ double YardstickNsPerMemberStep(const tbridge::DynamicModel& m, const Eigen::Vec
       PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k4.data(),
                       f.data());
       for (int i = 0; i < n; ++i) y[i] += (dt / 6.0) * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (seconds > 0.2)
-      return 1e9 * seconds / (static_cast<double>(steps) * static_cast<double>(members));
-    steps *= 2;
-  }
+  });
+  return ns_per_step / static_cast<double>(members);
 }
 
 }  // namespace
