@@ -138,7 +138,7 @@ class ClassKWorkspace {
   double damper_power = 0;  // the dampers' power at the last evaluation [W]
   // When set, the next evaluation writes each string's geometry there (one per model string)
   // and clears it.
-  StringGeometry* record_strings = nullptr;
+  const StringGeometry* record_strings = nullptr;
 
   // Nonzeros of the factor L (with its diagonal); 0 without constraints.
   long factor_nonzeros() const;

@@ -73,10 +73,11 @@ double EngineFrame::KineticEnergyOf(const double* y) const {
     for (size_t k = 0; k < lone_.size(); ++k) e[k % 2] += lone_[k].mass * dot(lone_[k].o, lone_[k].o);
   }
   for (const MassBlock& b : blocks_) {
-    if (b.oi >= 0) e[1] += b.m00 * dot(b.oi, b.oi);
-    if (b.oj >= 0) e[2] += b.m11 * dot(b.oj, b.oj);
-    if (b.oi >= 0 && b.oj >= 0) e[3] += 2.0 * b.m01 * dot(b.oi, b.oj);
+    e[1] += b.m00 * dot(b.oi, b.oi);
+    e[2] += b.m11 * dot(b.oj, b.oj);
+    e[3] += b.two_m01 * dot(b.oi, b.oj);
   }
+  for (const MassEnd& b : block_ends_) e[0] += b.mass * dot(b.o, b.o);
   return 0.5 * ((e[0] + e[1]) + (e[2] + e[3]));
 }
 

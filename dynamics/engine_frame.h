@@ -49,7 +49,13 @@ class EngineFrame {
   // free nodes without a bar move as point masses. Throws ModelError for such a node without mass.
   void AddNodes(const DynamicModel& model, const std::vector<bool>& has_bar);
   // The bar's mass block on the velocities at offsets oi, oj (-1: a pinned end, no term).
-  void AddMassBlock(int oi, int oj, double m00, double m01, double m11) { blocks_.push_back({oi, oj, m00, m01, m11}); }
+  void AddMassBlock(int oi, int oj, double m00, double m01, double m11) {
+    if (oi >= 0 && oj >= 0) {
+      blocks_.push_back({oi, oj, m00, 2.0 * m01, m11});
+    } else if (oi >= 0 || oj >= 0) {
+      block_ends_.push_back({oi >= 0 ? oi : oj, oi >= 0 ? m00 : m11});
+    }
+  }
   double NodeMass(int a) const { return node_mass_.size() != 0 ? node_mass_(a) : 0.0; }
   std::string Where() const { return engine_; }
 
@@ -66,7 +72,7 @@ class EngineFrame {
   // and the strings' pulls). Returns the dampers' power [W]. With `record`, each string's
   // geometry at y goes there too, by model string. CAUTION: performance-sensitive.
   template <int D, bool Damped>
-  double StartDerivative(double t, const double* y, double* dy, double* f, StringGeometry* record) const {
+  double StartDerivative(double t, const double* y, double* dy, double* f, const StringGeometry* record) const {
     const int c = coordinates();
     std::memcpy(dy, y + c, sizeof(double) * static_cast<size_t>(c));
     loads_.At(t, f);
@@ -102,9 +108,16 @@ class EngineFrame {
     int o;
     double mass, inv_mass;
   };
+  // A bar's mass block with both ends free: its kinetic energy is
+  // (m00 |v_i|^2 + 2 m01 v_i . v_j + m11 |v_j|^2) / 2.
   struct MassBlock {
     int oi, oj;
-    double m00, m01, m11;
+    double m00, two_m01, m11;
+  };
+  // The free end of a bar pinned at the other (mass m11 or m00 of its block).
+  struct MassEnd {
+    int o;
+    double mass;
   };
   Eigen::VectorXd rest_positions_;  // packed
   Eigen::VectorXd node_mass_;
@@ -112,7 +125,8 @@ class EngineFrame {
   Eigen::VectorXd lone_mass_;  // per coordinate: its lone node's mass [kg], 0 for the others;
                                // empty when bars hold most coordinates
   std::vector<int> fixed_offsets_;
-  std::vector<MassBlock> blocks_;
+  std::vector<MassBlock> blocks_;  // kept apart from the ends, so that neither loop branches
+  std::vector<MassEnd> block_ends_;
 
   template <int Dim>
   double KineticEnergyOf(const double* y) const;

@@ -42,7 +42,7 @@ class EngineOde final : public OdeSystem {
   }
   // The next evaluation also writes each string's geometry at its state to `out` (one per
   // model string; StringGeometry).
-  void RecordStringsInNextEvaluation(StringGeometry* out) { ws_.record_strings = out; }
+  void RecordStringsInNextEvaluation(const StringGeometry* out) { ws_.record_strings = out; }
 
  private:
   const System& system_;

@@ -39,10 +39,14 @@ struct PackedString {
   int index;
 };
 
-// A string's squared length s . s [m^2], 1/|s| [1/m] and s . s_dot [m^2/s] at one state, as an
-// evaluation found them: what the run monitor measures a string from (RunMonitor::Accept).
+// Where an evaluation records every string's geometry at its state, by model string: s . s
+// [m^2], 1/|s| [1/m] and, when the strings are damped, s . s_dot [m^2/s]. What the run monitor
+// measures the strings from (RunMonitor::Accept); three arrays, so that its pass over them
+// runs in vector registers.
 struct StringGeometry {
-  double len2, inv_len, rate;
+  double* len2;
+  double* inv_len;
+  double* rate;
 };
 
 // Loads as a function of time, packed like the positions. Built once; At allocates nothing.
@@ -78,10 +82,10 @@ std::vector<PackedString> PackStrings(const DynamicModel& model, bool& damped);
 // dampers take out of the motion, sum (gamma - k (1 - L0/s)) (s . s_dot) over the taut strings
 // [W] (0 when not Damped), so that an integrator can integrate it with its own stages.
 // CAUTION: performance-sensitive (inlined into the engines' loops).
-// With Record, each string's geometry also goes to record[s.index] (rate 0 when not Damped).
+// With Record, each string's geometry also goes to `record` (its rate only when Damped).
 template <int D, bool Damped, bool Record = false>
 inline double AccumulateStringForces(const std::vector<PackedString>& strings, const double* x, const double* v,
-                                     double* f, [[maybe_unused]] StringGeometry* record = nullptr) {
+                                     double* f, [[maybe_unused]] const StringGeometry* record = nullptr) {
   [[maybe_unused]] double power = 0;
   for (const PackedString& s : strings) {
     double dx[D];
@@ -92,11 +96,14 @@ inline double AccumulateStringForces(const std::vector<PackedString>& strings, c
     }
     const double inv_len = 1.0 / std::sqrt(len2);
     double gamma = s.k - s.k_rest * inv_len;  // k (1 - L0/s): negative exactly when s < L0
-    if constexpr (Record && !Damped) record[s.index] = {len2, inv_len, 0.0};
+    if constexpr (Record) {
+      record->len2[s.index] = len2;
+      record->inv_len[s.index] = inv_len;
+    }
     if constexpr (Damped) {
       double rate = 0;  // s . s_dot
       for (int d = 0; d < D; ++d) rate += dx[d] * (v[s.oj + d] - v[s.oi + d]);
-      if constexpr (Record) record[s.index] = {len2, inv_len, rate};
+      if constexpr (Record) record->rate[s.index] = rate;
       const double spring = gamma;
       const double total = gamma + s.c * rate * inv_len * inv_len;
       gamma = gamma >= 0 ? std::max(total, 0.0) : 0.0;

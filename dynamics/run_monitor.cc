@@ -17,11 +17,18 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     : model_(model), engine_(engine), config_(config), dim_(model.dim), c_(engine.coordinates()),
       probe_(std::move(probe)) {
   const size_t n_s = model.strings.size();
+  StringArrays& st = strings_;
   for (size_t k = 0; k < n_s; ++k) {
     const DynamicString& s = model.strings[k];
     const double area = model.strings.area[k];
-    strings_.push_back({s.i * dim_, s.j * dim_, s.rest_length, s.rest_length * s.rest_length,
-                        1.0 / (s.rest_length * s.rest_length), s.stiffness, s.damping, area > 0 ? 1.0 / area : 0.0});
+    st.oi.push_back(s.i * dim_);
+    st.oj.push_back(s.j * dim_);
+    st.rest.push_back(s.rest_length);
+    st.rest_sq.push_back(s.rest_length * s.rest_length);
+    st.inv_rest_sq.push_back(1.0 / (s.rest_length * s.rest_length));
+    st.k.push_back(s.stiffness);
+    st.c.push_back(s.damping);
+    st.inv_area.push_back(area > 0 ? 1.0 / area : 0.0);
   }
   for (const DynamicBar& b : model.bars) bars_.push_back({b.i * dim_, b.j * dim_, 1.0 / (b.length * b.length)});
   for (const int a : model.deck_nodes) {
@@ -48,32 +55,27 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     }
     timed_.push_back(s);
   }
-  taut_.assign(n_s, 0);
+  // The geometry at the start: the strings no engine evaluates (both ends pinned) keep it.
+  len2_.assign(n_s, 0.0);
+  inv_len_.assign(n_s, 0.0);
+  rate_.assign(n_s, 0.0);
+  geometry_ = {len2_.data(), inv_len_.data(), rate_.data()};
+  if (dim_ == 2) {
+    FillGeometry<2, true>(y0.data());
+  } else {
+    FillGeometry<3, true>(y0.data());
+  }
+  taut_.assign(n_s, 0.0);
+  taut_at_start_.assign(n_s, 0);
   for (size_t k = 0; k < n_s; ++k) {  // the start's slack strings are not transitions
-    const PackedString& st = strings_[k];
-    double len2 = 0;
-    for (int d = 0; d < dim_; ++d) {
-      const double dx = y0(st.oj + d) - y0(st.oi + d);
-      len2 += dx * dx;
-    }
-    taut_[k] = len2 >= st.rest_sq;
-    if (!taut_[k]) ++summary_.slack.slack_at_start;
+    taut_[k] = len2_[k] >= st.rest_sq[k] ? 1.0 : 0.0;
+    taut_at_start_[k] = taut_[k] != 0;
+    if (!taut_at_start_[k]) ++summary_.slack.slack_at_start;
   }
-  // The strings no engine evaluates (both ends pinned) keep the geometry they start with.
-  geometry_.resize(n_s);
-  for (size_t k = 0; k < n_s; ++k) {
-    const PackedString& st = strings_[k];
-    double len2 = 0, rate = 0;
-    for (int d = 0; d < dim_; ++d) {
-      const double dx = y0(st.oj + d) - y0(st.oi + d);
-      len2 += dx * dx;
-      rate += dx * (y0(c_ + st.oj + d) - y0(c_ + st.oi + d));
-    }
-    geometry_[k] = {len2, 1.0 / std::sqrt(len2), rate};
-  }
-  ever_slack_.assign(n_s, 0);
+  transitions_.assign(n_s, 0.0);
+  energy_.assign(n_s, 0.0);
+  stress_.assign(n_s, 0.0);
   min_ratio_sq_.assign(n_s, std::numeric_limits<double>::infinity());
-  summary_.slack.per_string.assign(n_s, 0);
   summary_.peak_string_tension.assign(n_s, 0.0);
   if (probe_) {
     lambda_.setZero(static_cast<Eigen::Index>(model.bars.size()));
@@ -82,7 +84,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   }
   summary_.allowed_stress = model.allowed_stress;
   double kinetic = 0, elastic = 0;
-  Measure(0.0, 0.0, y0.data(), nullptr, kinetic, elastic);
+  Measure(0.0, 0.0, y0.data(), false, kinetic, elastic);
   auto& e = summary_.energy;
   e.kinetic_start = e.kinetic_end = kinetic;
   e.elastic_start = e.elastic_end = elastic;
@@ -91,7 +93,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
 }
 
 void RunMonitor::Accept(long step, double t_old, double t, const double* y, double dissipated,
-                         const StringGeometry* strings) {
+                         bool strings_recorded) {
   // The state's sum finds a NaN or an infinity anywhere in it (they propagate through it), and
   // the work of the constant loads is W . (x - x0), when there are any: Eigen's reductions,
   // which run in vector registers.
@@ -99,7 +101,7 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   if (!std::isfinite(state.sum())) Fail(step, t, "a node position or velocity is not finite");
   const double load_dot_x = has_loads_ ? loads_.dot(state.head(c_)) : 0.0;
   double kinetic = 0, elastic = 0;
-  Measure(t, 0.5 * (t_old + t), y, strings, kinetic, elastic);
+  Measure(t, 0.5 * (t_old + t), y, strings_recorded, kinetic, elastic);
   auto& e = summary_.energy;
   e.dissipated += dissipated;
   // Work of the loads: constant loads exactly, W . (x - x0), from the pass above; each timed load
@@ -139,83 +141,84 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   }
 }
 
-template <int Dim, bool Damped, bool Given>
-void RunMonitor::MeasureMembers(double t, const double* y, const StringGeometry* given, double& elastic) {
-  // CAUTION: performance-sensitive: every accepted step of every run passes here. The
-  // dimension and the damping are template arguments, so an undamped run reads no velocity
-  // and divides by nothing, and the coordinate loops unroll. The arrays and the running
-  // extremes are locals: a store to the char flags may alias anything, and would otherwise
-  // make the compiler reload every member pointer after it. With Given, each string's length
-  // and rate come from the engine's evaluation at this state, computed there by the same
-  // expressions; gathering the ends' coordinates again was most of the monitor's time.
+template <int Dim, bool Damped>
+void RunMonitor::FillGeometry(const double* y) {
   const double* x = y;
   const double* v = y + c_;
-  const PackedString* strings = strings_.data();
-  const size_t n_s = strings_.size();
+  for (size_t k = 0; k < strings_.oi.size(); ++k) {
+    const int oi = strings_.oi[k], oj = strings_.oj[k];
+    double len2 = 0, rate = 0;
+    for (int d = 0; d < Dim; ++d) {
+      const double dx = x[oj + d] - x[oi + d];
+      len2 += dx * dx;
+      if constexpr (Damped) rate += dx * (v[oj + d] - v[oi + d]);
+    }
+    len2_[k] = len2;
+    inv_len_[k] = 1.0 / std::sqrt(len2);
+    if constexpr (Damped) rate_[k] = rate;
+  }
+}
+
+template <bool Damped>
+void RunMonitor::MeasureStrings(double t, double& elastic) {
+  // CAUTION: performance-sensitive: every accepted step of every run passes here. One pass
+  // with no branch and no sum across strings, which the compiler turns into vector
+  // instructions (two strings at a time with SSE2): the slack test is a factor of 0 or 1, the
+  // counts are doubles, and the elastic energy and the stress are stored per string and
+  // reduced after (a sum in the loop would keep it scalar).
+  const size_t n_s = strings_.oi.size();
+  const double* len2 = len2_.data();
+  const double* inv_len = inv_len_.data();
+  const double* rate = rate_.data();
+  const double* rest = strings_.rest.data();
+  const double* rest_sq = strings_.rest_sq.data();
+  const double* inv_rest_sq = strings_.inv_rest_sq.data();
+  const double* stiffness = strings_.k.data();
+  const double* damping = strings_.c.data();
+  const double* inv_area = strings_.inv_area.data();
   double* min_ratio_sq = min_ratio_sq_.data();
   double* peak = summary_.peak_string_tension.data();
-  char* taut_now = taut_.data();
-  char* ever_slack = ever_slack_.data();
-  int* transitions = summary_.slack.per_string.data();
-  double max_stress = summary_.max_string_stress;
-  int max_stress_string = max_stress_string_, new_transitions = 0, newly_slack = 0;
-  double elastic_sum = 0;
+  double* taut_now = taut_.data();
+  double* transitions = transitions_.data();
+  double* energy = energy_.data();
+  double* stress = stress_.data();
+  // The arrays are distinct: the compiler would otherwise version the loop on every pair.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
   for (size_t k = 0; k < n_s; ++k) {
-    const PackedString& s = strings[k];
-    double len2 = 0, rate = 0;
-    if constexpr (Given) {
-      len2 = given[k].len2;
-      rate = given[k].rate;
-    } else {
-      for (int d = 0; d < Dim; ++d) {
-        const double dx = x[s.oj + d] - x[s.oi + d];
-        len2 += dx * dx;
-        if constexpr (Damped) rate += dx * (v[s.oj + d] - v[s.oi + d]);
-      }
-    }
-    min_ratio_sq[k] = std::min(min_ratio_sq[k], len2 * s.inv_rest_sq);
-    const bool taut = len2 >= s.rest_sq;
-    if (taut) {
-      // |s| as len2 / |s|, with 1/|s| as the engines compute it: given, that takes no square
-      // root and no division here (they share one unit, which bounded the monitor).
-      double inv_len = 0;
-      if constexpr (Given) {
-        inv_len = given[k].inv_len;
-      } else {
-        inv_len = 1.0 / std::sqrt(len2);
-      }
-      const double len = len2 * inv_len;
-      const double spring = StringTension(s.k, s.rest, len);
-      elastic_sum += 0.5 * spring * (len - s.rest);
-      double tension = spring;
-      if constexpr (Damped) {
-        const double length_rate = rate * inv_len;
-        tension = std::max(spring + s.c * length_rate, 0.0);
-      }
-      peak[k] = std::max(peak[k], tension);
-      const double stress = tension * s.inv_area;
-      if (stress > max_stress) {
-        max_stress = stress;
-        max_stress_string = static_cast<int>(k);
-      }
-    } else if (!ever_slack[k]) {
-      ever_slack[k] = 1;
-      ++newly_slack;
-    }
-    if (static_cast<char>(taut) != taut_now[k]) {
-      taut_now[k] = taut;
-      ++transitions[k];
-      ++new_transitions;
-    }
+    min_ratio_sq[k] = std::min(min_ratio_sq[k], len2[k] * inv_rest_sq[k]);
+    const double taut = len2[k] >= rest_sq[k] ? 1.0 : 0.0;  // a factor, not a branch
+    // |s| as s.s / |s|, with 1/|s| as the engines compute it: no square root, no division.
+    const double len = len2[k] * inv_len[k];
+    const double spring = StringTension(stiffness[k], rest[k], len);
+    double tension = spring;
+    if constexpr (Damped) tension = std::max(spring + damping[k] * (rate[k] * inv_len[k]), 0.0);
+    tension *= taut;
+    energy[k] = taut * (0.5 * spring * (len - rest[k]));
+    peak[k] = std::max(peak[k], tension);
+    stress[k] = tension * inv_area[k];
+    transitions[k] += std::abs(taut - taut_now[k]);
+    taut_now[k] = taut;
   }
-  elastic += elastic_sum;
-  if (max_stress_string != max_stress_string_ || max_stress != summary_.max_string_stress) {
-    summary_.max_string_stress = max_stress;
-    max_stress_string_ = max_stress_string;
+  const Eigen::Map<const Eigen::ArrayXd> energies(energy, static_cast<Eigen::Index>(n_s));
+  const Eigen::Map<const Eigen::ArrayXd> stresses(stress, static_cast<Eigen::Index>(n_s));
+  elastic += energies.sum();
+  if (n_s == 0) return;
+  // The largest stress so far, and the first string that reached it.
+  const double step_max = stresses.maxCoeff();
+  if (step_max > summary_.max_string_stress) {
+    summary_.max_string_stress = step_max;
+    max_stress_string_ = static_cast<int>(std::find(stress, stress + n_s, step_max) - stress);
     summary_.max_stress_time = t;
   }
-  summary_.slack.ever_slack += newly_slack;
-  summary_.slack.total += new_transitions;
+}
+
+template <int Dim>
+void RunMonitor::MeasureBars(const double* x) {
+  double lo = bar_ratio_sq_min_, hi = bar_ratio_sq_max_;  // locals: no store per bar
   for (const PackedBar& b : bars_) {
     double len2 = 0;
     for (int d = 0; d < Dim; ++d) {
@@ -223,33 +226,38 @@ void RunMonitor::MeasureMembers(double t, const double* y, const StringGeometry*
       len2 += db * db;
     }
     const double r = len2 * b.inv_rest_sq;
-    bar_ratio_sq_min_ = std::min(bar_ratio_sq_min_, r);
-    bar_ratio_sq_max_ = std::max(bar_ratio_sq_max_, r);
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
   }
+  bar_ratio_sq_min_ = lo;
+  bar_ratio_sq_max_ = hi;
 }
 
-void RunMonitor::Measure(double t, double load_time, const double* y, const StringGeometry* given, double& kinetic,
+void RunMonitor::Measure(double t, double load_time, const double* y, bool strings_recorded, double& kinetic,
                          double& elastic) {
-  const auto members = [&]<int Dim, bool Damped>() {
-    given != nullptr ? MeasureMembers<Dim, Damped, true>(t, y, given, elastic)
-                     : MeasureMembers<Dim, Damped, false>(t, y, given, elastic);
-  };
   const bool damped = engine_.damped();
-  if (dim_ == 2) {
-    damped ? members.operator()<2, true>() : members.operator()<2, false>();
-  } else {
-    damped ? members.operator()<3, true>() : members.operator()<3, false>();
+  if (!strings_recorded) {
+    if (dim_ == 2) {
+      damped ? FillGeometry<2, true>(y) : FillGeometry<2, false>(y);
+    } else {
+      damped ? FillGeometry<3, true>(y) : FillGeometry<3, false>(y);
+    }
   }
-  const double* x = y;
-  for (size_t n = 0; n < deck_offsets_.size(); ++n) {
-    const int o = deck_offsets_[n];
-    for (int d = 0; d < dim_; ++d) {
-      const double u = std::abs(x[o + d] - deck_rest_[3 * n + d]);
-      if (u > summary_.peak_deck_displacement[d]) {
-        summary_.peak_deck_displacement[d] = u;
-        summary_.peak_deck_node[d] = model_.deck_nodes[n];
-        summary_.peak_deck_time[d] = t;
-      }
+  damped ? MeasureStrings<true>(t, elastic) : MeasureStrings<false>(t, elastic);
+  dim_ == 2 ? MeasureBars<2>(y) : MeasureBars<3>(y);
+  // The deck's peak displacement in each direction: the largest over the deck nodes, and the
+  // first node with it only when that beats the peak so far (no branch per node).
+  const size_t n_deck = deck_offsets_.size();
+  const auto displacement = [&](size_t n, int d) { return std::abs(y[deck_offsets_[n] + d] - deck_rest_[3 * n + d]); };
+  for (int d = 0; d < dim_; ++d) {
+    double largest = 0;
+    for (size_t n = 0; n < n_deck; ++n) largest = std::max(largest, displacement(n, d));
+    if (largest > summary_.peak_deck_displacement[d]) {
+      size_t n = 0;
+      while (displacement(n, d) != largest) ++n;
+      summary_.peak_deck_displacement[d] = largest;
+      summary_.peak_deck_node[d] = model_.deck_nodes[n];
+      summary_.peak_deck_time[d] = t;
     }
   }
   if (probe_) {
@@ -265,16 +273,25 @@ void RunMonitor::Measure(double t, double load_time, const double* y, const Stri
 
 void RunMonitor::Finish(const double* y) {
   SimulationSummary& s = summary_;
-  for (const PackedString& st : strings_) {
+  const size_t n_s = strings_.oi.size();
+  for (size_t k = 0; k < n_s; ++k) {
     double len2 = 0;
     for (int d = 0; d < dim_; ++d) {
-      const double dx = y[st.oj + d] - y[st.oi + d];
+      const double dx = y[strings_.oj[k] + d] - y[strings_.oi[k] + d];
       len2 += dx * dx;
     }
-    if (len2 < st.rest_sq) ++s.slack.slack_at_end;
+    if (len2 < strings_.rest_sq[k]) ++s.slack.slack_at_end;
   }
-  s.min_string_strain.resize(strings_.size());
-  for (size_t k = 0; k < strings_.size(); ++k) s.min_string_strain[k] = std::sqrt(min_ratio_sq_[k]) - 1.0;
+  s.slack.per_string.assign(n_s, 0);
+  s.slack.total = s.slack.ever_slack = 0;
+  for (size_t k = 0; k < n_s; ++k) {
+    s.slack.per_string[k] = static_cast<int>(transitions_[k]);
+    s.slack.total += s.slack.per_string[k];
+    // Slack at the start, or slack after a transition.
+    if (!taut_at_start_[k] || transitions_[k] > 0) ++s.slack.ever_slack;
+  }
+  s.min_string_strain.resize(n_s);
+  for (size_t k = 0; k < n_s; ++k) s.min_string_strain[k] = std::sqrt(min_ratio_sq_[k]) - 1.0;
   s.max_bar_length_error = std::max(std::sqrt(bar_ratio_sq_max_) - 1.0, 1.0 - std::sqrt(bar_ratio_sq_min_));
   if (max_stress_string_ >= 0) s.max_stress_string = model_.names.string_name[max_stress_string_];
   s.stress_exceeds_allowed = s.max_string_stress > s.allowed_stress;

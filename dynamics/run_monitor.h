@@ -4,8 +4,8 @@
 // transition is missed, whatever is recorded.
 //
 // Packed: the members are flat arrays of offsets and constants, names stay in the model and
-// are looked up once at the end; lengths are compared squared, and a square root is taken
-// only for a taut string. Allocation-free after construction.
+// are looked up once at the end; lengths are compared squared. Allocation-free after
+// construction.
 #pragma once
 
 #include <Eigen/Core>
@@ -28,21 +28,22 @@ class RunMonitor {
   // Measures the start state y0. `probe`, when given, gives the bar forces (record.bar_forces).
   RunMonitor(const DynamicModel& model, const EngineFrame& engine, const DynamicsConfig& config,
              const Eigen::VectorXd& y0, BarForceProbe probe = {});
+  RunMonitor(const RunMonitor&) = delete;  // string_geometry() points into it
+  RunMonitor& operator=(const RunMonitor&) = delete;
 
   // After an accepted step from t_old to t (state y, loads held at the step's midpoint).
   // `dissipated` is the energy the dampers took over the step by the integrator's own stages
   // [J] (RK4, DOPRI5 and SDIRK3 each integrate the stages' damper power with their own
-  // weights, which closes the balance across slack kinks). `strings`, when given, is
-  // string_geometry() as an engine evaluation at y filled it; otherwise the monitor computes
-  // the same from y. Throws ModelError on a blow-up.
+  // weights, which closes the balance across slack kinks). With `strings_recorded`, an engine
+  // evaluation at y filled string_geometry(); otherwise the monitor computes the same from y.
+  // Throws ModelError on a blow-up.
   // CAUTION: performance-sensitive
-  void Accept(long step, double t_old, double t, const double* y, double dissipated,
-              const StringGeometry* strings = nullptr);
+  void Accept(long step, double t_old, double t, const double* y, double dissipated, bool strings_recorded = false);
 
-  // One StringGeometry per model string, for an engine evaluation to fill
+  // The strings' geometry, by model string, for an engine evaluation to fill
   // (EngineOde::RecordStringsInNextEvaluation) and Accept to read. The strings the engines
   // leave out (both ends pinned) hold their geometry at the start, which does not change.
-  StringGeometry* string_geometry() { return geometry_.data(); }
+  const StringGeometry* string_geometry() const { return &geometry_; }
 
   // After the last step, from the final state: the slack strings at the end, the names and the
   // strains and errors kept squared while running.
@@ -54,11 +55,13 @@ class RunMonitor {
   void SetOmegaMax(std::function<double()> omega_max) { omega_max_ = std::move(omega_max); }
 
  private:
-  struct PackedString {
-    int oi, oj;               // coordinate offsets of the ends
-    double rest, rest_sq;     // L0 [m], L0^2 [m^2]
-    double inv_rest_sq;       // 1 / L0^2 [1/m^2]
-    double k, c, inv_area;    // [N/m], [N s/m], 1/A [1/m^2] (0 without an area)
+  // The strings, one array per quantity: the pass over them at every step runs in vector
+  // registers. Per model string.
+  struct StringArrays {
+    std::vector<int> oi, oj;             // coordinate offsets of the ends
+    std::vector<double> rest, rest_sq;   // L0 [m], L0^2 [m^2]
+    std::vector<double> inv_rest_sq;     // 1 / L0^2 [1/m^2]
+    std::vector<double> k, c, inv_area;  // [N/m], [N s/m], 1/A [1/m^2] (0 without an area)
   };
   struct PackedBar {
     int oi, oj;
@@ -73,18 +76,23 @@ class RunMonitor {
 
   [[noreturn]] void Fail(long step, double t, const std::string& what) const;
   // The state y at time t; the loads of `load_time` act on it.
-  void Measure(double t, double load_time, const double* y, const StringGeometry* given, double& kinetic,
-               double& elastic);
-  // Its members' part: string tension (the damper's share included), stress, slack and
-  // elastic energy, bar lengths; the strings' geometry from `given` when Given.
-  template <int Dim, bool Damped, bool Given>
-  void MeasureMembers(double t, const double* y, const StringGeometry* given, double& elastic);
+  void Measure(double t, double load_time, const double* y, bool strings_recorded, double& kinetic, double& elastic);
+  // The strings' geometry at y, as the engines compute it, into geometry_.
+  template <int Dim, bool Damped>
+  void FillGeometry(const double* y);
+  // From geometry_: string tension (the damper's share included), stress, slack and elastic
+  // energy [J], added to `elastic`.
+  template <bool Damped>
+  void MeasureStrings(double t, double& elastic);
+  // The extremes of the bars' (l / l0)^2.
+  template <int Dim>
+  void MeasureBars(const double* y);
 
   const DynamicModel& model_;
   const EngineFrame& engine_;
   const DynamicsConfig& config_;
   int dim_, c_;
-  std::vector<PackedString> strings_;
+  StringArrays strings_;
   std::vector<PackedBar> bars_;
   std::vector<int> deck_offsets_;   // per deck node: its coordinate offset
   std::vector<double> deck_rest_;   // per deck node: x, y, z of the model's positions [m]
@@ -92,9 +100,14 @@ class RunMonitor {
   double loads_dot_x0_ = 0;         // loads . x0 [J]
   bool has_loads_ = false;          // any constant load
   std::vector<TimedLoadState> timed_;
-  std::vector<StringGeometry> geometry_;  // see string_geometry()
-  std::vector<char> taut_, ever_slack_;
-  std::vector<double> min_ratio_sq_;  // per string: min (s / L0)^2 so far
+  std::vector<double> len2_, inv_len_, rate_;  // geometry_'s arrays
+  StringGeometry geometry_{};                  // see string_geometry()
+  // Per string: 1 while taut, else 0; slack transitions so far (counted in a double so that
+  // the pass stays in vector registers); taut at the start; min (s / L0)^2 so far.
+  std::vector<double> taut_, transitions_;
+  std::vector<char> taut_at_start_;
+  std::vector<double> min_ratio_sq_;
+  std::vector<double> energy_, stress_;  // per string at the measured state: scratch [J], [Pa]
   double bar_ratio_sq_min_ = 1, bar_ratio_sq_max_ = 1;  // extremes of (l / l0)^2 over bars and steps
   double bar_guard_lo_ = 0, bar_guard_hi_ = 0;          // (1 -+ guard)^2
   int max_stress_string_ = -1;

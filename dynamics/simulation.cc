@@ -57,7 +57,7 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
     const double t = step_end(step);
     hold_loads(step);
     double dissipated = 0;
-    const StringGeometry* strings = nullptr;
+    bool strings_recorded = false;
     if (!rk4) {
       sdirk->Step(ode, t_old, t - t_old, y);
       dissipated = sdirk->last_dissipated();
@@ -78,10 +78,10 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
           monitor.Accept(step, t_old, t, y.data(), dissipated);
           throw;
         }
-        strings = monitor.string_geometry();
+        strings_recorded = true;
       }
     }
-    monitor.Accept(step, t_old, t, y.data(), dissipated, strings);
+    monitor.Accept(step, t_old, t, y.data(), dissipated, strings_recorded);
     if (progress != nullptr && step % kProgressEvery == 0) progress->Update(t, config.duration);
     recorder.AfterStep(t, y.data());
   }

@@ -16,7 +16,7 @@ struct Class1Workspace {
   Eigen::VectorXd force;
   Eigen::VectorXd lambda;
   double damper_power = 0;
-  StringGeometry* record_strings = nullptr;
+  const StringGeometry* record_strings = nullptr;
   explicit Class1Workspace(int coordinates = 0, int bars = 0)
       : force(Eigen::VectorXd::Zero(coordinates)), lambda(Eigen::VectorXd::Zero(bars)) {}
 };

@@ -40,7 +40,7 @@ void CheckOneSummary(const std::string& label, double damping, const std::vector
     const double dissipated = Rk4Step(ode, t_old, dt, y, ws);
     ode.RecordStringsInNextEvaluation(given.string_geometry());
     ode.Derivative(t, y.data(), scratch.data());
-    given.Accept(step, t_old, t, y.data(), dissipated, given.string_geometry());
+    given.Accept(step, t_old, t, y.data(), dissipated, true);
     own.Accept(step, t_old, t, y.data(), dissipated);
   }
   given.Finish(y.data());
