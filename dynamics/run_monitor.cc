@@ -84,7 +84,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   }
   summary_.allowed_stress = model.allowed_stress;
   double kinetic = 0, elastic = 0;
-  Measure(0.0, 0.0, y0.data(), false, kinetic, elastic);
+  Measure(0.0, 0.0, y0.data(), true, kinetic, elastic);  // the geometry at y0: filled above
   auto& e = summary_.energy;
   e.kinetic_start = e.kinetic_end = kinetic;
   e.elastic_start = e.elastic_end = elastic;
@@ -271,24 +271,17 @@ void RunMonitor::Measure(double t, double load_time, const double* y, bool strin
   kinetic = engine_.KineticEnergy(y);
 }
 
-void RunMonitor::Finish(const double* y) {
+void RunMonitor::Finish() {
   SimulationSummary& s = summary_;
   const size_t n_s = strings_.oi.size();
-  for (size_t k = 0; k < n_s; ++k) {
-    double len2 = 0;
-    for (int d = 0; d < dim_; ++d) {
-      const double dx = y[strings_.oj[k] + d] - y[strings_.oi[k] + d];
-      len2 += dx * dx;
-    }
-    if (len2 < strings_.rest_sq[k]) ++s.slack.slack_at_end;
-  }
   s.slack.per_string.assign(n_s, 0);
-  s.slack.total = s.slack.ever_slack = 0;
+  s.slack.total = s.slack.ever_slack = s.slack.slack_at_end = 0;
   for (size_t k = 0; k < n_s; ++k) {
     s.slack.per_string[k] = static_cast<int>(transitions_[k]);
     s.slack.total += s.slack.per_string[k];
     // Slack at the start, or slack after a transition.
     if (!taut_at_start_[k] || transitions_[k] > 0) ++s.slack.ever_slack;
+    if (taut_[k] == 0) ++s.slack.slack_at_end;  // at the last accepted state
   }
   s.min_string_strain.resize(n_s);
   for (size_t k = 0; k < n_s; ++k) s.min_string_strain[k] = std::sqrt(min_ratio_sq_[k]) - 1.0;

@@ -45,9 +45,9 @@ class RunMonitor {
   // leave out (both ends pinned) hold their geometry at the start, which does not change.
   const StringGeometry* string_geometry() const { return &geometry_; }
 
-  // After the last step, from the final state: the slack strings at the end, the names and the
-  // strains and errors kept squared while running.
-  void Finish(const double* y);
+  // After the last accepted step (its state is the final one): the slack strings at the end,
+  // the slack counts, the names and the strains and errors kept squared while running.
+  void Finish();
 
   SimulationSummary& summary() { return summary_; }
 

@@ -175,7 +175,7 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   if (hooks.progress != nullptr) hooks.progress->Update(config.duration, config.duration);
   recorder.Finish(config.duration);
 
-  monitor.Finish(y.data());
+  monitor.Finish();
   s.duration = config.duration;
   s.prestrain = prestrain;
   if (config.frequency.enabled) MeasureDeckFrequency(model, result, s);
