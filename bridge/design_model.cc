@@ -67,12 +67,13 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   if (payload != 0 && design.actions.base[kPayloadFull].size() == m.loads.size()) {
     m.loads += payload * design.actions.base[kPayloadFull];
   }
+  // Each weight once. The design's loads carry the deck's, the superimposed dead load's and
+  // the payload's weight, and the members' own when the design counts it (design.self_weight):
+  // then the run keeps that weight, lumped as the design lumps it, so that a run with nothing
+  // added starts in the design's own equilibrium. Otherwise the members' weight is added here,
+  // before the deck's masses join the node masses (their weight is in the loads already).
+  if (options.gravity_on_structure && design.reference.factor[kSelfWeight] == 0) AddStructureWeight(m);
   if (options.deck_inertia) AddDeckInertia(m, design, 1.0);
-  if (options.gravity_on_structure) {
-    // The design's own lumping of the members' weight gives way to the model's.
-    if (design.reference.factor[kSelfWeight] != 0) m.loads -= design.reference.factor[kSelfWeight] * design.actions.base[kSelfWeight];
-    AddStructureWeight(m);
-  }
   SettleAtEquilibrium(m, design);
   CheckModel(m, "design model");
   return m;

@@ -19,7 +19,8 @@ namespace tbridge {
 //   (pinned nodes get no mass);
 // - prestrain: L0 = ratio x design length, k = E A / L0; the mass stays rho A L0 of the
 //   design string (what SPEC.md §9's prestrained frequencies assume);
-// - loads: the design's constant deck loads (plus gravity on the structure when asked);
+// - loads: the design's constant loads, each weight once (the members' own added when asked
+//   and the design did not count it);
 // - dim 2 for planar designs (x-y), 3 otherwise; supports are the fixed nodes.
 // Throws ConfigError for a prestrain group that names no string or a negative damping.
 DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options = {});

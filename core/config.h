@@ -59,8 +59,9 @@ struct DesignConfig {
 struct LoadsConfig {
   // Which actions enter the design: "paper" (the paper's one case: deck and payload at the
   // drawn geometry, unfactored) or any of "permanent", "payload", "travelling",
-  // "paper_travelling", "wind".
-  std::vector<std::string> cases{"permanent", "payload", "travelling", "paper_travelling", "wind"};
+  // "paper_travelling", "wind". The paper's travelling load (eqs 50-51) is the paper's, not a
+  // code's action: it is checked when asked for, and is not among the defaults.
+  std::vector<std::string> cases{"permanent", "payload", "travelling", "wind"};
   double superimposed_dead_n_per_m = 0.0;  // surfacing, railings [N/m], on the deck
   double travelling_load_n = 10000.0;      // Q_t [N]: EN 1991-2 5.3.2.2 Q_fwk for footbridges
   double travelling_speed_m_s = 1.5;       // v [m/s]: walking pace

@@ -151,7 +151,8 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                     "`bridge.payload` over the full span, and the same load per metre over each half span. "
                     "`\"travelling\"`: Q_t at each deck node in turn (the lever rule puts its extremes there). "
                     "`\"paper_travelling\"`: the paper's eqs 50–51, the deck node load f at each inner deck node "
-                    "on top of the payload. `\"wind\"`: `wind_n_per_m` across the deck (3D bridge only; ignored, "
+                    "on top of the payload, statically and as the dynamic check's run (the paper's load, not a "
+                    "code's action: not among the defaults). `\"wind\"`: `wind_n_per_m` across the deck (3D bridge only; ignored, "
                     "and said so, for a planar bridge). Each enters the ultimate combinations (gamma_G G + gamma_Q Q, "
                     "and with favourable G) and the serviceability ones (G + Q). `\"paper\"`: the paper's one "
                     "unfactored case, deck load plus payload at the drawn geometry"},

@@ -115,6 +115,18 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
 
 }  // namespace
 
+const char* VerdictName(VerdictOutcome outcome) {
+  switch (outcome) {
+    case VerdictOutcome::kPass:
+      return "PASS";
+    case VerdictOutcome::kFail:
+      return "FAIL";
+    case VerdictOutcome::kIncomplete:
+      break;
+  }
+  return "INCOMPLETE";
+}
+
 Verdict DesignVerdict(const Design& d) {
   Verdict v;
   const MemberSizing* worst = nullptr;
@@ -123,7 +135,7 @@ Verdict DesignVerdict(const Design& d) {
       if (worst == nullptr || m.utilisation > worst->utilisation) worst = &m;
     }
   }
-  std::vector<std::string> fails;
+  std::vector<std::string> fails, not_done;
   if (worst) {
     v.utilisation_max = worst->utilisation;
     v.governing = "member " + worst->name + " (" + worst->mode + ", " + worst->governing_case + ")";
@@ -141,18 +153,31 @@ Verdict DesignVerdict(const Design& d) {
        << d.statics.deflection_limit_m << " m (" << d.statics.deflection_case << ")";
     fails.push_back(os.str());
   }
-  if (d.unchecked_cases) fails.push_back("some asked-for cases were not checked (notes)");
-  if (!d.statics.done) fails.push_back("static cases not solved");
-  v.pass = fails.empty();
+  if (d.unchecked_cases) not_done.push_back("some asked-for cases were not checked (notes)");
+  if (!d.statics.done) not_done.push_back("static check not run");
+  if (!d.dynamics.done) not_done.push_back("dynamic check not run");
+  const std::string runs_not_done = d.dynamics.NotDone();
+  if (!runs_not_done.empty()) not_done.push_back("dynamic check: " + runs_not_done);
+  v.outcome = !fails.empty()      ? VerdictOutcome::kFail
+              : !not_done.empty() ? VerdictOutcome::kIncomplete
+                                  : VerdictOutcome::kPass;
+  v.pass = v.outcome == VerdictOutcome::kPass;
   std::ostringstream os;
-  os << (v.pass ? "PASS: " : "FAIL: ") << "utilisation_max " << v.utilisation_max << " (" << v.governing << ")";
+  os << VerdictName(v.outcome) << ": utilisation_max " << v.utilisation_max << " (" << v.governing << ")";
   for (const std::string& f : fails) os << "; " << f;
-  // A skipped dynamic run is said, never silent; it does not fail the static checks.
-  if (!d.dynamics.ran()) os << "; dynamic check not run";
-  const std::string not_done = d.dynamics.NotDone();
-  if (!not_done.empty()) os << "; dynamic check: " << not_done;
+  for (const std::string& f : not_done) os << "; " << f;
   v.summary = os.str();
+  v.scope = d.topology.planes == 1
+                ? "in-plane only: a planar bridge is checked in its own plane; its lateral system (bracing, "
+                  "wind, lateral-torsional motion) is not checked"
+                : "both planes and the transverse strings, wind included where loads.cases asks for it";
   return v;
+}
+
+Eigen::VectorXd PrestressForces(const Design& d) {
+  const EquilibriumSystem eq = BuildEquilibrium(d.topology.structure);
+  const EquilibriumSolver solver(eq);
+  return d.reference_forces - solver.Particular(FreeLoads(eq, d.loads)).col(0);
 }
 
 LoadCase ReferenceCase(const Config& config, const std::vector<LoadCase>& cases) {

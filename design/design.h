@@ -88,14 +88,19 @@ DesignInputs PrepareDesign(const Config& config);
 Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
                  const std::vector<double>* area_floor = nullptr);
 
-// The design's one pass/fail line: every member's utilisation at most 1 (1e-9 allows for the
-// rounding of a member sized exactly to its resistance), stable, every static case solved and
-// within the deflection limit, and no asked-for check left out.
+// The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over
+// 1 (1e-9 allows for the rounding of a member sized exactly to its resistance), unstable, a
+// static case with no equilibrium or a deflection over its limit. Otherwise INCOMPLETE when a
+// check, a run or an asked-for case was not done, else PASS.
+enum class VerdictOutcome { kPass, kFail, kIncomplete };
+const char* VerdictName(VerdictOutcome outcome);  // "PASS" | "FAIL" | "INCOMPLETE"
 struct Verdict {
-  bool pass = false;
+  VerdictOutcome outcome = VerdictOutcome::kIncomplete;
+  bool pass = false;  // outcome == kPass
   double utilisation_max = 0;
   std::string governing;  // "member 3-5 (buckling, uls_payload_full)"
-  std::string summary;    // "PASS: ..." or "FAIL: ..., ..."
+  std::string summary;    // "PASS: ...", "FAIL: ...; ..." or "INCOMPLETE: ...; ..."
+  std::string scope;      // what the checks cover, and what they do not
 };
 Verdict DesignVerdict(const Design& design);
 
@@ -116,6 +121,12 @@ LoadCase ReferenceCase(const Config& config, const std::vector<LoadCase>& cases)
 // couple the planes only through it). Any other string may go slack: the checks then find the
 // bridge's equilibrium (statically, or its motion) without it, and check the rest.
 bool MustStayTaut(const Design& design, int k);
+
+// The prestress in the reference forces [C; T] [N]: what is left of them once the share of the
+// reference loads is taken off, that share being the equilibrium's particular solution, as
+// every load case of the design takes it (design/case_envelope.h: x_c = P f_c + N alpha, so
+// this is N alpha). Zero for a statically determinate bridge.
+Eigen::VectorXd PrestressForces(const Design& design);
 
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);

@@ -207,11 +207,17 @@ json DynamicsJson(const Design& d) {
                     {"integrator", r.integrator}, {"dt", r.dt}, {"steps", r.steps}, {"duration", r.duration},
                     {"peak_deck_displacement", r.peak_deck_displacement}, {"amplification", groups}});
   }
-  return {{"ran", d.dynamics.ran()}, {"runs", runs}};
+  return {{"done", d.dynamics.done}, {"ran", d.dynamics.ran()}, {"runs", runs}};
 }
 
 json VerdictJson(const Design& d, const Verdict& v) {
-  return {{"pass", v.pass}, {"summary", v.summary}, {"notes", d.notes}};
+  return {{"outcome", VerdictName(v.outcome)},
+          {"pass", v.pass},
+          {"summary", v.summary},
+          {"scope", v.scope},
+          {"checks",
+           {{"static", CheckStatusName(d.statics.Status())}, {"dynamic", CheckStatusName(d.dynamics.Status())}}},
+          {"notes", d.notes}};
 }
 
 }  // namespace
@@ -355,6 +361,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 d.resizing.structure_mass_kg.front(), d.resizing.structure_mass_kg.back(),
                 d.resizing.converged ? "" : " (did not converge)"));
   }
+  if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {
     if (!r.done) {
       line("dynamic check, " + r.name + ": " + r.note);
@@ -367,7 +374,9 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps, r.peak_deck_displacement,
                 amp.c_str()));
   }
-  line(DesignVerdict(d).summary);
+  const Verdict verdict = DesignVerdict(d);
+  line(verdict.summary);
+  line("scope: " + verdict.scope);
   line("");
 
   line("members (force: tension for strings, compression for bars):");

@@ -79,7 +79,6 @@ void RaiseUtilisation(MemberSizing& m, double u, const std::string& governing_ca
   m.mode = mode;
 }
 
-double SlackUtilisation(double strain, double sigma_w, double E) { return 1.0 - strain / (sigma_w / E); }
 
 double ColumnCurveChi(double lambda, double alpha) {
   const double phi = 0.5 * (1.0 + alpha * (lambda - 0.2) + lambda * lambda);

@@ -50,9 +50,6 @@ struct BarRule {
 
 // Raises m's utilisation to `u` when that is larger, naming where (`governing_case`) and how.
 void RaiseUtilisation(MemberSizing& m, double u, const std::string& governing_case, const char* mode);
-// The utilisation reported for a string that must stay taut and is slack by `strain` (< 0):
-// 1 plus the strain it lacks to be taut over the strain it works at, sigma_w / E.
-double SlackUtilisation(double strain, double working_stress, double youngs_modulus);
 
 // chi(lambda) of EN 1993-1-1 eq 6.49: Phi = 0.5 [1 + alpha (lambda - 0.2) + lambda^2],
 // chi = 1 / (Phi + sqrt(Phi^2 - lambda^2)), at most 1.

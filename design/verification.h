@@ -8,6 +8,32 @@
 
 namespace tbridge {
 
+// What a check found: it ran and everything it checks holds, it ran and something fails, or
+// it (or part of it) was not run. A design is PASS only when every check passed.
+enum class CheckStatus { kPassed, kFailed, kNotRun };
+const char* CheckStatusName(CheckStatus status);  // "passed" | "failed" | "not_run"
+
+// One member's governing finding in a check: the largest demand / resistance over what the
+// check ran, and where. A slack string that must stay taut is measured by its strain instead
+// (mode "slack": resistance is the working strain sigma_w / E and demand that plus the strain
+// the string lacks to be taut, so utilisation = 1 + lacking / working, SlackUtilisation of
+// design/sizing.h).
+struct MemberFinding {
+  double utilisation = 0;      // 0: the check found nothing for this member
+  double demand = 0;           // [N], or the strain for "slack"
+  double resistance = 0;       // [N], or the working strain for "slack"
+  std::string governing_case;  // "uls_travelling at node 5", "dynamic: moving_load"
+  std::string mode;            // "yield" | "buckling" | "dynamic" | "slack"
+};
+// Keeps the larger of `f` and the finding (utilisation, demand, resistance, case, mode).
+void RaiseFinding(MemberFinding& f, double demand, double resistance, const std::string& governing_case,
+                  const char* mode);
+
+// The finding of a string that must stay taut and is slack by `strain` (< 0), working at
+// `working_stress` [Pa] with modulus `youngs_modulus` [Pa] (mode "slack").
+void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress, double youngs_modulus,
+                       const std::string& governing_case);
+
 // One load case solved as a nonlinear static problem (verify/static_check.h).
 struct CaseResponse {
   std::string label;  // the case, with its station for a travelling family ("sls_travelling at node 5")
@@ -24,12 +50,17 @@ struct CaseResponse {
 
 struct StaticCheck {
   bool done = false;
+  // Per member [bars; strings]: what the nonlinear ultimate and serviceability cases demand.
+  std::vector<MemberFinding> members;
   std::vector<CaseResponse> cases;
   double deflection_limit_m = 0;  // span / loads.deflection_limit
   double deflection_max_m = 0;    // over the serviceability cases
   std::string deflection_case;
   int stations_per_family = 0;    // travelling stations solved per family
   bool all_converged = true;
+  // Not run when not done; failed when a case found no equilibrium, a deflection exceeds its
+  // limit or a member's finding exceeds 1 (1e-9 allows for a member sized exactly to it).
+  CheckStatus Status() const;
 };
 
 // The dynamic check (verify/dynamic_check.h): each dynamic load run at service level.
@@ -54,8 +85,14 @@ struct DynamicRun {
 };
 
 struct DynamicCheck {
+  bool done = false;  // the check was carried out (it may have had no load to run)
   std::vector<DynamicRun> runs;
+  // Per member [bars; strings]: the dynamic demand over the runs done.
+  std::vector<MemberFinding> members;
   bool ran() const { return !runs.empty(); }
+  // Not run when the check was not carried out or a run was not done (and nothing failed);
+  // failed when a member's finding exceeds 1.
+  CheckStatus Status() const;
   // The runs not done, with their notes ("moving_load skipped: ..."); empty when all were.
   std::string NotDone() const {
     std::string out;

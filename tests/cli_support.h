@@ -55,4 +55,13 @@ inline CliResult RunTbridge(const fs::path& dir, const std::string& args) {
   return r;
 }
 
+// The exit code `tbridge design` or `check` owes a design file it wrote: 0 for a PASS, 1 for
+// a FAIL or an INCOMPLETE verdict (read from the file's own "verdict"); -1 when unreadable.
+inline int VerdictExit(const fs::path& design_file) {
+  const std::string text = ReadText(design_file);
+  const auto at = text.find("\"outcome\": \"");
+  if (at == std::string::npos) return -1;
+  return text.compare(at + 12, 5, "PASS\"") == 0 ? 0 : 1;
+}
+
 }  // namespace tbridge::test

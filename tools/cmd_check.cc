@@ -12,6 +12,7 @@
 #include "tools/output.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
+#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 
@@ -28,8 +29,8 @@ const CommandSpec& CheckSpec() {
       "slack strings) and the dynamic runs (README.md, \"Safe by design\"). Nothing is resized.\n"
       "Each member's utilisation is its largest over the ultimate static cases and the runs.\n"
       "OUT.json has the fields of a design file; it is written only when the checks ran, and\n"
-      "never partially. Exit 0 when the design passes, 1 when it fails a check (the verdict\n"
-      "says which), 2 when DESIGN.json is not a self-consistent design (the message names the\n"
+      "never partially. Exit 0 when the design passes, 1 when it fails a check or a check was\n"
+      "not run (verdict FAIL or INCOMPLETE; it says which), 2 when DESIGN.json is not a self-consistent design (the message names the\n"
       "key: a member whose area was edited without re-deriving its rest length and forces)."};
   return spec;
 }
@@ -54,8 +55,7 @@ int RunCheckCommand(const std::vector<std::string>& args) {
       m.governing_case.clear();
     }
   }
-  design.statics = CheckStatics(design);
-  design.dynamics = CheckDynamics(design);
+  RecordChecks(design, CheckStatics(design), CheckDynamics(design));
   WriteDesignJson(design, json);
   outputs.Commit();
   if (!parsed.Flag("-q")) std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";

@@ -31,7 +31,8 @@ const CommandSpec& DesignSpec() {
       "succeeds, and never partially; a failed run leaves it as it was. Implausible results\n"
       "(members under 1 mm, a deck under 1 mm or over span / 10, ...) are warned about on\n"
       "stderr. A design that is not statically stable (README.md, \"Reading a design\") is\n"
-      "refused with exit 3. Draw the design with tools/plot_sweep.py bridge OUT.json -o FIG.png."};
+      "refused with exit 3. A design whose verdict is FAIL or INCOMPLETE (a check failed, or\n"
+      "was not run) is written and exits 1. Draw the design with tools/plot_sweep.py bridge OUT.json -o FIG.png."};
   return spec;
 }
 
@@ -60,7 +61,8 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   if (!parsed.Flag("-q")) {
     std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";
   }
-  return 0;
+  // The design is written either way, so that what failed can be read; the exit says it.
+  return DesignVerdict(design).pass ? kExitOk : kExitNotOk;
 }
 
 const CommandRegistrar kRegisterDesign("design",

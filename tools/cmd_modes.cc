@@ -22,6 +22,7 @@
 #include "dynamics/structure_model.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 
@@ -193,9 +194,9 @@ int RunModesCommand(const std::vector<std::string>& args) {
   ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
   if (!config.dynamics && !config.structure) options.deck_inertia = !KeepsPaperSwitches(config);
   std::optional<Design> design;
-  if (!config.structure) {
-    design = RunDesign(config, &progress);
-  }
+  // The bridge tbridge design writes (verified, resized where its checks asked), so that the
+  // modes are those of the bridge the other commands analyse.
+  if (!config.structure) design = DesignAndVerify(config, &progress);
   const DynamicModel model =
       config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(*design, options);
   progress.Stage("modes");

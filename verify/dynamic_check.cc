@@ -42,8 +42,9 @@ std::string Describe(const char* what, double value, const char* unit) {
   return os.str();
 }
 
-// The loads a design is checked under: the paper's travelling load always; Q_t at walking
-// speed with the "travelling" case; the wind gust with the "wind" case on a 3D bridge.
+// The loads a design is checked under: the paper's travelling load with its switches or the
+// "paper_travelling" case; Q_t at walking speed with the "travelling" case; the wind gust with
+// the "wind" case on a 3D bridge.
 std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
   const LoadsConfig& l = d.config.loads;
   const double gamma_g_q = paper ? 1.0 : l.gamma_q;
@@ -53,12 +54,15 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
     for (size_t k = 0; k < d.actions.station_nodes.size(); ++k) out.push_back(d.actions.StationLoad(static_cast<int>(k), force));
     return out;
   };
-  const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
-  runs.push_back(MakeRun("paper_travelling", Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
-                         PaperTravellingScenario(d, paper_duration, 1e-4, IntegratorKind::kRk4, d.deck.station_load),
-                         stations(d.deck.station_load), gamma_g_q));
   const auto& cases = l.cases;
   const auto asked = [&cases](const char* name) { return std::find(cases.begin(), cases.end(), name) != cases.end(); };
+  if (paper || asked("paper_travelling")) {
+    const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
+    runs.push_back(MakeRun("paper_travelling",
+                           Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
+                           PaperTravellingScenario(d, paper_duration, 1e-4, IntegratorKind::kRk4, d.deck.station_load),
+                           stations(d.deck.station_load), gamma_g_q));
+  }
   if (asked("travelling") && l.travelling_load_n > 0) {
     runs.push_back(MakeRun("moving_load",
                            Describe("Q_t = ", l.travelling_load_n, " N") +
@@ -132,9 +136,15 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, std::vec
 
 }  // namespace
 
-DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
+DynamicCheck CheckDynamics(const Design& d, double max_member_steps) {
   DynamicCheck out;
+  out.done = true;
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  out.members.resize(nb + s.num_strings());
   const bool paper = KeepsPaperSwitches(d.config);
+  std::vector<LoadRun> runs = LoadRuns(d, paper);
+  if (runs.empty()) return out;
   // The model a run of this design gets (tbridge simulate with the defaults): the design
   // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
   ModelOptions options;
@@ -143,13 +153,14 @@ DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
   const DynamicModel model = BuildDynamicModel(d, options);
   const double members = static_cast<double>(d.bars.size() + d.strings.size());
 
-  const Structure& s = d.topology.structure;
-  const int nb = s.num_bars();
-  const double gamma_g = paper ? 1.0 : d.config.loads.gamma_g_sup;
+  const LoadsConfig& l = d.config.loads;
+  const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
   const BarRule rule = BarRuleOf(d.config);
   const double E = d.config.material.youngs_modulus;
   const double sigma_w = d.config.material.yield_stress / d.config.design.yield_safety_factor;
-  std::vector<LoadRun> runs = LoadRuns(d, paper);
+  // The prestress is not factored (EN 1990 6.4.3.2 takes gamma_P = 1 for prestress that
+  // favours and disfavours alike); the permanent load's share of the reference force is.
+  const Eigen::VectorXd prestress = PrestressForces(d);
   // The runs share the model, the engine and its stabilisation: one stability limit serves all.
   const double stable_dt = Rk4StableStep(model, runs.front().scenario);
   for (LoadRun& run : runs) {
@@ -160,18 +171,23 @@ DynamicCheck CheckDynamics(Design& d, double max_member_steps) {
       std::map<std::string, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {
         const bool bar = j < nb;
-        MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
+        const MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
         const std::string& group = bar ? s.bars[j].group : s.strings[j - nb].group;
         const double peak = bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
-        // gamma_G on the permanent force, gamma on what the standing payload and the run add.
-        const double demand = gamma_g * m.reference_force + run.gamma * std::max(peak - m.reference_force, 0.0);
+        // The prestress as it is, gamma_G on the permanent load's share of the reference
+        // force (sup where it adds to the force, inf where it relieves it), gamma on what the
+        // standing payload and the run add.
+        const double permanent = m.reference_force - prestress[j];
+        const double demand = prestress[j] + (permanent > 0 ? gamma_g_sup : gamma_g_inf) * permanent +
+                              run.gamma * std::max(peak - m.reference_force, 0.0);
+        MemberFinding& f = out.members[j];
         if (bar) {
           const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-          RaiseUtilisation(m, demand / std::min(cap.yield, cap.buckling), label, "dynamic");
+          RaiseFinding(f, demand, std::min(cap.yield, cap.buckling), label, "dynamic");
         } else {
-          if (m.area > 0) RaiseUtilisation(m, demand / (m.area * sigma_w), label, "dynamic");
+          if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, "dynamic");
           const double strain = summary.min_string_strain[j - nb];
-          if (strain < 0 && MustStayTaut(d, j - nb)) RaiseUtilisation(m, SlackUtilisation(strain, sigma_w, E), label, "slack");
+          if (strain < 0 && MustStayTaut(d, j - nb)) RaiseSlackFinding(f, strain, sigma_w, E, label);
         }
         GroupAmplification& g = groups[group];
         g.group = group;

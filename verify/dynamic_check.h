@@ -2,17 +2,21 @@
 // The permanent load and the payload stand (their weight in the loads, the deck's and the
 // payload's mass at the deck nodes), and the bridge starts at rest in its static equilibrium
 // under them. The loads (verify/load_scenarios.h):
-// - the paper's travelling load (eqs 50-51), always: f on each inner deck station for 0.25 s;
+// - the paper's travelling load (eqs 50-51), with the paper's switches or the
+//   "paper_travelling" case: f on each inner deck station for 0.25 s;
 // - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
 // - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
 // RK4 at 1e-4 s, or at the largest whole fraction of it within 0.9 of RK4's stability limit:
 // SDIRK3 under-reports the string peaks by up to 22 % (BENCHMARKS.md), so the check does not
 // use it.
 //
-// A member's dynamic demand is gamma_G,sup F_G + gamma (F_peak - F_G), F_G its force in the
-// reference state, F_peak its peak in the run and gamma the load's factor (gamma_Q for the
+// A member's dynamic demand is P + gamma_G (F_G - P) + gamma max(F_peak - F_G, 0): F_G its
+// force in the reference state, P the prestress in it (PrestressForces, not factored),
+// gamma_G gamma_G,sup where the permanent load adds to the force and gamma_G,inf where it
+// relieves it, F_peak its peak in the run and gamma the load's factor (gamma_Q for the
 // travelling loads, gamma_W for wind; all 1 with the paper's switches); its utilisation is that
-// over its resistance. A string that goes slack in a run fails with mode "slack". Each run's
+// over its resistance. A string that must stay taut and goes slack in a run fails with mode
+// "slack". Each run's
 // peaks are compared per member group with its static counterpart (the load standing at each
 // station, or the full wind) for the dynamic amplification.
 #pragma once
@@ -21,9 +25,11 @@
 
 namespace tbridge {
 
-// Runs the check and raises the members' utilisations (mode "dynamic" or "slack", case
-// "dynamic: <run>"). Skips a run, saying why in its note, when it would take more than
-// `max_member_steps` member-steps.
-DynamicCheck CheckDynamics(Design& design, double max_member_steps = 5e7);
+// Runs the check and reports each member's largest dynamic utilisation (DynamicCheck::members,
+// mode "dynamic" or "slack", case "dynamic: <run>"). Skips a run, saying why in its note,
+// when it would take more than `max_member_steps` member-steps: the check is then not run
+// (CheckStatus::kNotRun). With no dynamic load among the cases it is done with no run.
+// Changes nothing in `design`.
+DynamicCheck CheckDynamics(const Design& design, double max_member_steps = 5e7);
 
 }  // namespace tbridge

@@ -26,7 +26,7 @@ std::vector<int> SpreadStations(int count, int max) {
 
 }  // namespace
 
-StaticCheck CheckStatics(Design& d, int max_stations) {
+StaticCheck CheckStatics(const Design& d, int max_stations) {
   const Structure& s = d.topology.structure;
   const StaticModel model = StaticModelOf(d);
   const int nb = s.num_bars();
@@ -37,6 +37,7 @@ StaticCheck CheckStatics(Design& d, int max_stations) {
 
   StaticCheck out;
   out.done = true;
+  out.members.resize(d.bars.size() + d.strings.size());
   out.deflection_limit_m = d.config.bridge.span / d.config.loads.deflection_limit;
   const std::vector<int> stations = SpreadStations(static_cast<int>(d.actions.station_nodes.size()), max_stations);
   out.stations_per_family = static_cast<int>(stations.size());
@@ -63,24 +64,24 @@ StaticCheck CheckStatics(Design& d, int max_stations) {
       out.all_converged = out.all_converged && r.converged;
       if (r.converged && lc.state == LimitState::kUltimate) {
         for (int b = 0; b < nb; ++b) {
-          MemberSizing& m = d.bars[b];
+          const MemberSizing& m = d.bars[b];
           const double force = result.state.bar_compression[b];
           const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-          RaiseUtilisation(m, std::abs(force) / cap.yield, r.label, "yield");
-          if (force > 0) RaiseUtilisation(m, force / cap.buckling, r.label, "buckling");
+          RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, "yield");
+          if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, "buckling");
         }
         for (size_t k = 0; k < d.strings.size(); ++k) {
-          MemberSizing& m = d.strings[k];
-          if (m.area > 0) RaiseUtilisation(m, result.state.string_tension[k] / (m.area * sigma_w), r.label, "yield");
+          const MemberSizing& m = d.strings[k];
+          if (m.area > 0) RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w, r.label, "yield");
         }
       }
       if (r.converged && lc.state == LimitState::kServiceability) {
         for (size_t k = 0; k < d.strings.size(); ++k) {
           const Member& e = s.strings[k];
           const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
-          MemberSizing& m = d.strings[k];
+          const MemberSizing& m = d.strings[k];
           if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
-          RaiseUtilisation(m, SlackUtilisation((length - m.rest_length) / m.rest_length, sigma_w, E), r.label, "slack");
+          RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w, E, r.label);
         }
         if (r.deflection_m > out.deflection_max_m) {
           out.deflection_max_m = r.deflection_m;

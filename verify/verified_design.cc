@@ -8,21 +8,34 @@
 
 namespace tbridge {
 
+void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
+  const int nb = static_cast<int>(d.bars.size());
+  for (const std::vector<MemberFinding>* found : {&statics.members, &dynamics.members}) {
+    for (int j = 0; j < static_cast<int>(found->size()); ++j) {
+      const MemberFinding& f = (*found)[j];
+      MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+      if (f.utilisation > 0) RaiseUtilisation(m, f.utilisation, f.governing_case, f.mode.c_str());
+    }
+  }
+  d.statics = std::move(statics);
+  d.dynamics = std::move(dynamics);
+}
+
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
   Resizing record;
   std::vector<double> floor;
   for (record.iterations = 1;; ++record.iterations) {
     Design d = RunDesign(config, record.iterations == 1 ? progress : nullptr, floor.empty() ? nullptr : &floor);
     RequireStable(d);
-    d.statics = CheckStatics(d);
-    d.dynamics = CheckDynamics(d);
+    RecordChecks(d, CheckStatics(d), CheckDynamics(d));
     record.structure_mass_kg.push_back(d.mass.structure);
     const Verdict verdict = DesignVerdict(d);
     record.converged = verdict.pass;
     // The paper's design is the paper's: with its switches the checks report, and resize nothing.
     const bool stop =
         KeepsPaperSwitches(config) || record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
-    if (verdict.pass || stop) {
+    // Resizing mends what fails; a check that could not run is not mended by it.
+    if (verdict.outcome != VerdictOutcome::kFail || stop) {
       if (!verdict.pass) record.why = verdict.summary;
       d.resizing = record;
       return d;

@@ -28,7 +28,9 @@ void WriteJson(const fs::path& path, const json& j) { std::ofstream(path) << j.d
 fs::path DesignFile(const fs::path& dir, const std::string& name) {
   const fs::path design = dir / "design.json";
   const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name;
-  REQUIRE(RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code == 0);
+  const int code = RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code;
+  // Written whatever the verdict; the exit says it (1 for the paper's design, which fails).
+  REQUIRE(code == tbridge::test::VerdictExit(design));
   return design;
 }
 

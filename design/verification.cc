@@ -1,0 +1,60 @@
+#include "design/verification.h"
+
+#include <algorithm>
+
+namespace tbridge {
+
+namespace {
+
+// A member sized exactly to its resistance may read 1 + a few rounding steps.
+constexpr double kUtilisationRounding = 1e-9;
+
+bool AnyOver(const std::vector<MemberFinding>& members) {
+  return std::any_of(members.begin(), members.end(),
+                     [](const MemberFinding& f) { return f.utilisation > 1.0 + kUtilisationRounding; });
+}
+
+}  // namespace
+
+const char* CheckStatusName(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::kPassed:
+      return "passed";
+    case CheckStatus::kFailed:
+      return "failed";
+    case CheckStatus::kNotRun:
+      break;
+  }
+  return "not_run";
+}
+
+void RaiseFinding(MemberFinding& f, double demand, double resistance, const std::string& governing_case,
+                  const char* mode) {
+  const double u = demand / resistance;
+  if (!(u > f.utilisation)) return;
+  f.utilisation = u;
+  f.demand = demand;
+  f.resistance = resistance;
+  f.governing_case = governing_case;
+  f.mode = mode;
+}
+
+void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress, double youngs_modulus,
+                       const std::string& governing_case) {
+  const double working_strain = working_stress / youngs_modulus;
+  RaiseFinding(f, working_strain - strain, working_strain, governing_case, "slack");
+}
+
+CheckStatus StaticCheck::Status() const {
+  if (!done) return CheckStatus::kNotRun;
+  const bool fails = !all_converged || deflection_max_m > deflection_limit_m || AnyOver(members);
+  return fails ? CheckStatus::kFailed : CheckStatus::kPassed;
+}
+
+CheckStatus DynamicCheck::Status() const {
+  if (AnyOver(members)) return CheckStatus::kFailed;
+  if (!done || !NotDone().empty()) return CheckStatus::kNotRun;
+  return CheckStatus::kPassed;
+}
+
+}  // namespace tbridge
