@@ -1,0 +1,132 @@
+#include "design/linear_response.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "core/tangent_blocks.h"
+
+namespace tbridge {
+
+namespace {
+
+// Rows of node `a`'s free DOFs within a solution column, as a block (dim x columns); an empty
+// block for a pinned node.
+Eigen::MatrixXd NodeRows(const Eigen::MatrixXd& u, int first, int dim) {
+  return first < 0 ? Eigen::MatrixXd::Zero(dim, u.cols()) : Eigen::MatrixXd(u.middleRows(first, dim));
+}
+
+}  // namespace
+
+LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd& reference_forces,
+                               const Eigen::VectorXd& string_stiffness)
+    : s_(structure), dim_(structure.dim()), nb_(structure.num_bars()), ns_(structure.num_strings()) {
+  if (reference_forces.size() != nb_ + ns_ || string_stiffness.size() != ns_) {
+    throw ModelError("linear response: expected " + std::to_string(nb_ + ns_) + " member forces and " +
+                     std::to_string(ns_) + " string stiffnesses");
+  }
+  dof_ = FreeDofs(s_.fixed, dim_, ndof_);
+  k_ = string_stiffness;
+  for (int j = 0; j < nb_ + ns_; ++j) {
+    const Member& m = j < nb_ ? s_.bars[j] : s_.strings[j - nb_];
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    e.head(dim_) = (s_.nodes.col(m.j) - s_.nodes.col(m.i)).head(dim_);
+    length_.push_back(e.norm());
+    unit_.push_back(e / e.norm());
+  }
+  TangentTriplets t;
+  Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
+  I.topLeftCorner(dim_, dim_).setIdentity();
+  for (int j = 0; j < nb_ + ns_; ++j) {
+    const bool bar = j < nb_;
+    const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
+    const Eigen::Matrix3d ee = unit_[j] * unit_[j].transpose();
+    const double q = reference_forces[j] / length_[j];
+    const Eigen::Matrix3d g = bar ? Eigen::Matrix3d(-q * I) : Eigen::Matrix3d(k_[j - nb_] * ee + q * (I - ee));
+    AddPairBlock(g, m.i, m.j, dof_, dim_, t);
+    if (bar) AddBarRow(ndof_ + j, m.i, m.j, unit_[j], dof_, dim_, t);
+  }
+  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(ndof_ + nb_, ndof_ + nb_);
+  for (const auto& e : t) {
+    kkt(e.row(), e.col()) += e.value();
+    if (e.row() >= ndof_) kkt(e.col(), e.row()) += e.value();  // C^T beside C
+  }
+  lu_.compute(kkt);
+  // A singular KKT matrix shows as a zero pivot or a reciprocal condition far below rounding.
+  const double rcond = lu_.rcond();
+  if (!(rcond > 1e-14)) {
+    throw ModelError("linear response: the stiffness about the reference state is singular (reciprocal condition " +
+                     std::to_string(rcond) + "): a mechanism that the prestress does not hold");
+  }
+}
+
+Eigen::VectorXd LinearResponse::FreeVector(const Eigen::Matrix3Xd& loads) const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(ndof_);
+  for (int a = 0; a < s_.num_nodes(); ++a) {
+    if (dof_[a] >= 0) f.segment(dof_[a], dim_) = loads.col(a).head(dim_);
+  }
+  return f;
+}
+
+Eigen::MatrixXd LinearResponse::Solve(const Eigen::MatrixXd& free_loads) const {
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ndof_ + nb_, free_loads.cols());
+  rhs.topRows(ndof_) = free_loads;
+  return lu_.solve(rhs);
+}
+
+Eigen::RowVectorXd LinearResponse::Stretch(const Eigen::MatrixXd& u, int i, int j, const Eigen::Vector3d& e) const {
+  const Eigen::MatrixXd d = NodeRows(u, dof_[j], dim_) - NodeRows(u, dof_[i], dim_);
+  return e.head(dim_).transpose() * d;
+}
+
+Eigen::MatrixXd LinearResponse::ForceChanges(const Eigen::MatrixXd& u) const {
+  Eigen::MatrixXd x(nb_ + ns_, u.cols());
+  x.topRows(nb_) = -u.bottomRows(nb_);
+  for (int k = 0; k < ns_; ++k) {
+    const Member& m = s_.strings[k];
+    x.row(nb_ + k) = k_[k] * Stretch(u, m.i, m.j, unit_[nb_ + k]);
+  }
+  return x;
+}
+
+Eigen::RowVectorXd LinearResponse::Vertical(const Eigen::MatrixXd& u, int node) const {
+  if (dof_[node] < 0) return Eigen::RowVectorXd::Zero(u.cols());
+  return u.row(dof_[node] + 1);
+}
+
+void LinearResponse::AddBlockAction(const Eigen::Matrix3d& g, int i, int j, const Eigen::MatrixXd& u,
+                                    Eigen::MatrixXd& out) const {
+  const Eigen::MatrixXd w = g.topLeftCorner(dim_, dim_) * (NodeRows(u, dof_[j], dim_) - NodeRows(u, dof_[i], dim_));
+  if (dof_[j] >= 0) out.middleRows(dof_[j], dim_) += w;
+  if (dof_[i] >= 0) out.middleRows(dof_[i], dim_) -= w;
+}
+
+Eigen::MatrixXd LinearResponse::SolveDerivative(const Eigen::MatrixXd& u, const Direction& dp) const {
+  Eigen::MatrixXd dKu = Eigen::MatrixXd::Zero(ndof_ + nb_, u.cols());
+  Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
+  I.topLeftCorner(dim_, dim_).setIdentity();
+  for (int j = 0; j < nb_ + ns_; ++j) {
+    const bool bar = j < nb_;
+    const double dk = bar ? 0.0 : dp.stiffness[j - nb_];
+    const double dq = dp.forces[j] / length_[j];
+    if (dk == 0 && dq == 0) continue;
+    const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
+    const Eigen::Matrix3d ee = unit_[j] * unit_[j].transpose();
+    const Eigen::Matrix3d g = bar ? Eigen::Matrix3d(-dq * I) : Eigen::Matrix3d(dk * ee + dq * (I - ee));
+    AddBlockAction(g, m.i, m.j, u, dKu);
+  }
+  return -lu_.solve(dKu);
+}
+
+Eigen::MatrixXd LinearResponse::ForceChangeDerivative(const Eigen::MatrixXd& u, const Eigen::MatrixXd& du,
+                                                      const Direction& dp) const {
+  Eigen::MatrixXd dx = ForceChanges(du);
+  for (int k = 0; k < ns_; ++k) {
+    if (dp.stiffness[k] == 0) continue;
+    const Member& m = s_.strings[k];
+    dx.row(nb_ + k) += dp.stiffness[k] * Stretch(u, m.i, m.j, unit_[nb_ + k]);
+  }
+  return dx;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,78 @@
+// The linear response of a prestressed bar-string structure about its reference state: the
+// forces a statically indeterminate bridge really carries under a load, shared by stiffness,
+// and how they change with the string areas and the prestress (direct sensitivities).
+//
+// About the reference state (the drawn geometry, member forces x = [C; T]), a load change f
+// on the free DOFs moves the nodes by u, with the bars rigid (their length held to first order):
+//   [K  C^T] [u ]   [f]      K = sum_strings (k_s e e^T + t_s / l_s (I - e e^T))
+//   [C  0  ] [mu] = [0],         - sum_bars c_b / l_b I            (design/stability.h's K_T)
+// C the bar-length rows (e^T (u_j - u_i) per bar), mu the bars' multipliers. The member forces
+// change by
+//   strings: dT_s = k_s e^T (u_j - u_i),  bars: dC_b = -mu_b  (mu is the bar's added tension).
+// k_s = E A_s / L0_s = (E A_s + T_s) / l_s, since the rest length makes the string carry T_s
+// at its drawn length l_s (L0 = l / (1 + T / (E A))).
+//
+// Sensitivities: with a parameter p that moves k and x, d[u; mu]/dp = -KKT^-1 [dK/dp u; 0],
+// dK/dp = sum_s dk_s/dp (e e^T)_s + sum_j dx_j/dp G_j (G_j the member's geometric block per
+// unit force), and the force map adds dk_s/dp e^T (u_j - u_i).
+//
+// Dense: the KKT matrix is (dim n_free + n_b) square, factorised once per state by partial
+// pivoting LU. Meant for the sizing of bridges up to a few hundred free DOFs (n <= 6), where a
+// dense factorisation costs milliseconds and its solves are matrix products.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <vector>
+
+#include "core/structure.h"
+
+namespace tbridge {
+
+class LinearResponse {
+ public:
+  // `reference_forces`: [C_bars; T_strings] [N] of the reference state; `string_stiffness`:
+  // k_s [N/m] per string. Throws ModelError on size mismatches or a singular KKT matrix (a
+  // mechanism the prestress does not hold).
+  LinearResponse(const Structure& structure, const Eigen::VectorXd& reference_forces,
+                 const Eigen::VectorXd& string_stiffness);
+
+  int num_free_dofs() const { return ndof_; }
+  int num_members() const { return nb_ + ns_; }
+  // The free-DOF vector (dim per free node, node order) of 3 x n_n node loads [N].
+  Eigen::VectorXd FreeVector(const Eigen::Matrix3Xd& loads) const;
+  // [u; mu] for each column of free-DOF loads [N]: (n_dof + n_b) x columns.
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& free_loads) const;
+  // The member force changes [dC; dT] [N] of solutions from Solve: (n_b + n_s) x columns.
+  Eigen::MatrixXd ForceChanges(const Eigen::MatrixXd& solutions) const;
+  // The vertical (y) displacement [m] of node `node` in each solution (0 for a pinned node).
+  Eigen::RowVectorXd Vertical(const Eigen::MatrixXd& solutions, int node) const;
+
+  // How a parameter moves the state: dk_s/dp per string and dx_j/dp per member.
+  struct Direction {
+    Eigen::VectorXd stiffness;  // n_s [N/m per unit p]
+    Eigen::VectorXd forces;     // n_b + n_s [N per unit p]
+  };
+  // d(solutions)/dp for the direction: (n_dof + n_b) x columns.
+  Eigen::MatrixXd SolveDerivative(const Eigen::MatrixXd& solutions, const Direction& dp) const;
+  // d(force changes)/dp: (n_b + n_s) x columns, from the solutions and their derivative.
+  Eigen::MatrixXd ForceChangeDerivative(const Eigen::MatrixXd& solutions, const Eigen::MatrixXd& d_solutions,
+                                        const Direction& dp) const;
+
+ private:
+  // e^T (u_j - u_i) of member (i, j) with unit vector e, for each solution column.
+  Eigen::RowVectorXd Stretch(const Eigen::MatrixXd& solutions, int i, int j, const Eigen::Vector3d& e) const;
+  // Adds g (u_j - u_i) at j and its negative at i, per column: a member block's action.
+  void AddBlockAction(const Eigen::Matrix3d& g, int i, int j, const Eigen::MatrixXd& solutions,
+                      Eigen::MatrixXd& out) const;
+
+  const Structure& s_;
+  int dim_ = 0, nb_ = 0, ns_ = 0, ndof_ = 0;
+  std::vector<int> dof_;
+  std::vector<Eigen::Vector3d> unit_;  // per member [bars; strings]
+  std::vector<double> length_;         // per member [m]
+  Eigen::VectorXd k_;                  // per string [N/m]
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
+}  // namespace tbridge
