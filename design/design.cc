@@ -14,11 +14,11 @@
 
 namespace tbridge {
 
-namespace {
-
 MemberKind StringKind(const Member& m) {
   return m.group == "deck" ? MemberKind::kDeckString : MemberKind::kString;
 }
+
+namespace {
 
 // The rank decision and the loads' reach: a sound basis leaves A N at rounding (entries of A
 // are direction cosines, so ~1e-12 is far above rounding and far below any real stress state).

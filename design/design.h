@@ -88,6 +88,15 @@ DesignInputs PrepareDesign(const Config& config);
 Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
                  const std::vector<double>* area_floor = nullptr);
 
+// The design of `config` with given member areas [m^2] ([bars; strings]) and self-stress
+// coefficients `alpha` [N] on the equilibrium's orthonormal self-stress basis: the reference
+// state is G (with the members' weight from these areas) carried by the particular forces
+// plus the prestress N alpha, and each string's rest length makes it carry its reference
+// force at the drawn geometry. The members' force, utilisation and governing case are the
+// reference state's; the caller's analysis sets them. Throws ModelError when a string would
+// be in compression in the reference state.
+Design SizedDesign(const Config& config, const std::vector<double>& areas, const Eigen::VectorXd& alpha);
+
 // The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over
 // 1 (1e-9 allows for the rounding of a member sized exactly to its resistance), unstable, a
 // static case with no equilibrium or a deflection over its limit. Otherwise INCOMPLETE when a
@@ -127,6 +136,9 @@ bool MustStayTaut(const Design& design, int k);
 // every load case of the design takes it (design/case_envelope.h: x_c = P f_c + N alpha, so
 // this is N alpha). Zero for a statically determinate bridge.
 Eigen::VectorXd PrestressForces(const Design& design);
+
+// A string's kind: a deck string (group "deck") or any other.
+MemberKind StringKind(const Member& string);
 
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);

@@ -211,6 +211,8 @@ SolverOutcome SolveHere(const NlpProblem& problem, const SolverOptions& options,
   app->Options()->SetStringValue("mu_strategy", "adaptive");
   // Bounds are exact physical limits (zero force, prestress floors): do not relax them.
   app->Options()->SetNumericValue("bound_relax_factor", 0.0);
+  // A problem that gives no Hessian (its pattern empty) has it approximated (L-BFGS).
+  if (problem.HessianPattern().empty()) app->Options()->SetStringValue("hessian_approximation", "limited-memory");
 
   SolverOutcome out;
   out.solver = "ipopt";

@@ -1,5 +1,6 @@
 #include "design/linear_response.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -48,13 +49,21 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
   }
   Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(ndof_ + nb_, ndof_ + nb_);
   for (const auto& e : t) {
-    kkt(e.row(), e.col()) += e.value();
-    if (e.row() >= ndof_) kkt(e.col(), e.row()) += e.value();  // C^T beside C
+    if (e.row() < ndof_) kkt(e.row(), e.col()) += e.value();
+  }
+  // The constraint rows are direction cosines (O(1)) beside stiffnesses of O(1e8) N/m: scaled
+  // to the stiffness, the matrix is balanced and its condition says what the structure's is.
+  // The multipliers come out divided by the scale.
+  constraint_scale_ = std::max(kkt.diagonal().head(ndof_).cwiseAbs().maxCoeff(), 1.0);
+  for (const auto& e : t) {
+    if (e.row() < ndof_) continue;
+    kkt(e.row(), e.col()) += constraint_scale_ * e.value();
+    kkt(e.col(), e.row()) += constraint_scale_ * e.value();  // C^T beside C
   }
   lu_.compute(kkt);
   // A singular KKT matrix shows as a zero pivot or a reciprocal condition far below rounding.
   const double rcond = lu_.rcond();
-  if (!(rcond > 1e-14)) {
+  if (!(rcond > 1e-13)) {
     throw ModelError("linear response: the stiffness about the reference state is singular (reciprocal condition " +
                      std::to_string(rcond) + "): a mechanism that the prestress does not hold");
   }
@@ -81,7 +90,7 @@ Eigen::RowVectorXd LinearResponse::Stretch(const Eigen::MatrixXd& u, int i, int 
 
 Eigen::MatrixXd LinearResponse::ForceChanges(const Eigen::MatrixXd& u) const {
   Eigen::MatrixXd x(nb_ + ns_, u.cols());
-  x.topRows(nb_) = -u.bottomRows(nb_);
+  x.topRows(nb_) = -constraint_scale_ * u.bottomRows(nb_);
   for (int k = 0; k < ns_; ++k) {
     const Member& m = s_.strings[k];
     x.row(nb_ + k) = k_[k] * Stretch(u, m.i, m.j, unit_[nb_ + k]);

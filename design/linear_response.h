@@ -41,7 +41,8 @@ class LinearResponse {
   int num_members() const { return nb_ + ns_; }
   // The free-DOF vector (dim per free node, node order) of 3 x n_n node loads [N].
   Eigen::VectorXd FreeVector(const Eigen::Matrix3Xd& loads) const;
-  // [u; mu] for each column of free-DOF loads [N]: (n_dof + n_b) x columns.
+  // [u; mu / s] for each column of free-DOF loads [N]: (n_dof + n_b) x columns (s the bar
+  // rows' scale, which ForceChanges takes back out).
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& free_loads) const;
   // The member force changes [dC; dT] [N] of solutions from Solve: (n_b + n_s) x columns.
   Eigen::MatrixXd ForceChanges(const Eigen::MatrixXd& solutions) const;
@@ -72,6 +73,7 @@ class LinearResponse {
   std::vector<Eigen::Vector3d> unit_;  // per member [bars; strings]
   std::vector<double> length_;         // per member [m]
   Eigen::VectorXd k_;                  // per string [N/m]
+  double constraint_scale_ = 1;        // the bar rows' scale in the KKT matrix [N/m]
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 };
 

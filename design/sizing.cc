@@ -88,13 +88,28 @@ double ColumnCurveChi(double lambda, double alpha) {
 BarCapacity BarResistance(double area, double length, const BarRule& rule, double E) {
   BarCapacity c;
   c.yield = area * rule.yield_stress / rule.yield_factor;
+  c.d_yield = rule.yield_stress / rule.yield_factor;
   // N_cr = pi^2 E I / l^2 with I = A^2 / (4 pi).
   const double n_cr = std::numbers::pi * E * area * area / (4.0 * length * length);
   if (!rule.column_curve) {
     c.buckling = n_cr / rule.buckling_factor;
+    c.d_buckling = 2.0 * std::numbers::pi * E * area / (4.0 * length * length) / rule.buckling_factor;
   } else {
     const double lambda = n_cr > 0 ? std::sqrt(area * rule.yield_stress / n_cr) : 0.0;
-    c.buckling = ColumnCurveChi(lambda, rule.imperfection) * area * rule.yield_stress / rule.buckling_factor;
+    const double chi = ColumnCurveChi(lambda, rule.imperfection);
+    const double fy = rule.yield_stress / rule.buckling_factor;
+    c.buckling = chi * area * fy;
+    // lambda ~ A^(-1/2), so d lambda / dA = -lambda / (2 A); chi = 1 / D with
+    // D = Phi + sqrt(Phi^2 - lambda^2) below its cap at 1.
+    double d_chi_d_area = 0;
+    if (chi < 1.0 && area > 0) {
+      const double phi = 0.5 * (1.0 + rule.imperfection * (lambda - 0.2) + lambda * lambda);
+      const double root = std::sqrt(std::max(phi * phi - lambda * lambda, 0.0));
+      const double d_phi = 0.5 * rule.imperfection + lambda;
+      const double d_D = d_phi + (root > 0 ? (phi * d_phi - lambda) / root : 0.0);
+      d_chi_d_area = -chi * chi * d_D * (-lambda / (2.0 * area));
+    }
+    c.d_buckling = fy * (chi + area * d_chi_d_area);
   }
   return c;
 }

@@ -59,6 +59,9 @@ double ColumnCurveChi(double slenderness, double alpha);
 struct BarCapacity {
   double yield = 0;     // A f_y / gamma_M0
   double buckling = 0;  // chi A f_y / gamma_M1, or pi E A^2 / (4 l^2) / SF (Euler)
+  // Their derivatives with respect to the area [N/m^2], for the sizing's sensitivities.
+  double d_yield = 0;
+  double d_buckling = 0;
 };
 BarCapacity BarResistance(double area, double length, const BarRule& rule, double youngs_modulus);
 

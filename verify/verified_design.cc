@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 
+#include "design/sizing_problem.h"
+#include "design/solvers.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 
@@ -21,41 +25,125 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
   d.dynamics = std::move(dynamics);
 }
 
+namespace {
+
+// The solver of the sizing: the config's iterative solver, Ipopt where it leaves the choice.
+std::string SizingSolver(const Config& config) {
+  const std::string& asked = config.design.solver;
+  if (asked == "ipopt" || asked == "nlopt") return asked;
+  const std::vector<std::string> built = BuiltInIterativeSolvers();
+  if (built.empty()) return "";
+  return std::find(built.begin(), built.end(), "ipopt") != built.end() ? "ipopt" : built.front();
+}
+
+// The members' sizes and states of the design the sizing found: the linear analysis's
+// governing demand as each member's force and utilisation, and what bounds it.
+void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd& x, const std::vector<double>& floor) {
+  const std::vector<SizingProblem::MemberDemand> demands = problem.Demands(x);
+  const int nb = static_cast<int>(d.bars.size());
+  for (int j = 0; j < static_cast<int>(demands.size()); ++j) {
+    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    const SizingProblem::MemberDemand& dm = demands[j];
+    if (dm.row >= 0) {
+      const SizingRow& row = problem.rows()[dm.row];
+      m.force = std::max(dm.demand, 0.0);
+      m.utilisation = std::max(dm.utilisation, 0.0);
+      m.mode = SizingRowKindName(row.kind);
+      m.governing_case = problem.combinations()[row.combination].label;
+    }
+    // At its floor within the solver's tolerance: the minimum size binds, not a load.
+    m.governed_by = m.area <= floor[j] * (1 + 1e-6) ? "min_radius" : m.mode;
+  }
+}
+
+}  // namespace
+
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
+  Design first = RunDesign(config, progress);
+  RequireStable(first);
   Resizing record;
-  std::vector<double> floor;
+  const std::string solver = SizingSolver(config);
+  // The paper's design is the paper's: with its switches the checks report, and resize
+  // nothing. A build without an iterative solver checks the first design as it is.
+  if (KeepsPaperSwitches(config) || solver.empty() || first.unchecked_cases) {
+    RecordChecks(first, CheckStatics(first), CheckDynamics(first));
+    record.iterations = 1;
+    record.structure_mass_kg.push_back(first.mass.structure);
+    const Verdict verdict = DesignVerdict(first);
+    record.converged = verdict.pass;
+    if (!verdict.pass) record.why = verdict.summary;
+    first.resizing = record;
+    return first;
+  }
+
+  record.structure_mass_kg.push_back(first.mass.structure);
+  SizingCorrections corrections;
+  Design current = first;
+  std::vector<double> areas;
+  for (const auto* list : {&first.bars, &first.strings}) {
+    for (const MemberSizing& m : *list) areas.push_back(m.area);
+  }
+  Eigen::VectorXd alpha;
   for (record.iterations = 1;; ++record.iterations) {
-    Design d = RunDesign(config, record.iterations == 1 ? progress : nullptr, floor.empty() ? nullptr : &floor);
+    // The sizing about the current design's weight, from the current sizes and prestress.
+    const SizingProblem problem(current, corrections);
+    if (record.iterations == 1) alpha = problem.AlphaOf(first.reference_forces);  // the first design's prestress
+    Eigen::VectorXd x = problem.VariablesOf(areas, alpha);
+    Eigen::VectorXd lo, hi;
+    problem.VariableBounds(lo, hi);
+    x = x.cwiseMax(lo);
+    SolverOptions options;
+    options.tolerance = 1e-8;
+    options.max_iterations = config.design.max_iterations;
+    options.verbose = std::getenv("TBRIDGE_SIZING_VERBOSE") != nullptr;
+    options.nlopt_method = SolverOptions::NloptMethod::kMma;
+    const SolverOutcome outcome = SolveNlp(solver, problem, options, x);
+    areas = problem.Areas(x);
+    alpha = problem.Alpha(x);
+    Design d = SizedDesign(config, areas, alpha);
+    d.solver = outcome;
+    d.solver_form = "verified sizing";
     RequireStable(d);
-    RecordChecks(d, CheckStatics(d), CheckDynamics(d));
+    RecordSizing(d, problem, x, problem.Areas(lo));
+    const StaticCheck statics = CheckStatics(d);
+    const DynamicCheck dynamics = CheckDynamics(d);
+    RecordChecks(d, statics, dynamics);
     record.structure_mass_kg.push_back(d.mass.structure);
     const Verdict verdict = DesignVerdict(d);
     record.converged = verdict.pass;
-    // The paper's design is the paper's: with its switches the checks report, and resize nothing.
-    const bool stop =
-        KeepsPaperSwitches(config) || record.iterations >= max_iterations || d.unchecked_cases || !d.statics.all_converged;
-    // Resizing mends what fails; a check that could not run is not mended by it.
-    if (verdict.outcome != VerdictOutcome::kFail || stop) {
-      if (!verdict.pass) record.why = verdict.summary;
+    const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged;
+    if (verdict.outcome != VerdictOutcome::kFail || last) {
+      if (!verdict.pass) {
+        record.why = verdict.summary;
+        if (!outcome.success) record.why += "; the sizing's solver stopped with " + outcome.status;
+      }
       d.resizing = record;
       return d;
     }
+    // Correct the linear model by what the checks found, member by member: the ratio of the
+    // checks' utilisation to the linear one becomes a factor on the member's demand; a slack
+    // taut string asks for the tension it lacked; a deflection past the linear one scales
+    // the deflections.
+    const std::vector<SizingProblem::MemberDemand> linear = problem.Demands(x);
     const int nb = static_cast<int>(d.bars.size());
-    if (floor.empty()) floor.assign(d.bars.size() + d.strings.size(), 0.0);
-    // Stiffness: slack in service or too much deflection stiffens every string alike.
-    bool slack = false;
-    for (const MemberSizing& m : d.strings) slack = slack || (m.mode == "slack" && m.utilisation > 1.0 + 1e-9);
-    // The dynamic demand grows a member like a static one (by its utilisation, conservatively).
-    const double excess = d.statics.deflection_max_m / d.statics.deflection_limit_m;
-    const double stiffen = std::max(excess > 1.0 ? excess : 1.0, slack ? 1.1 : 1.0);
-    for (int j = 0; j < static_cast<int>(floor.size()); ++j) {
-      const MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
-      double grow = 1.0;
-      if (m.utilisation > 1.0 + 1e-9 && m.mode != "slack") grow = m.mode == "buckling" ? std::sqrt(m.utilisation) : m.utilisation;
-      if (j >= nb) grow = std::max(grow, stiffen);
-      // 1e-6 above the need, so a member sized exactly to it is not left a rounding short.
-      if (grow > 1.0) floor[j] = std::max(floor[j], m.area * grow * (1.0 + 1e-6));
+    corrections.demand_factor.resize(areas.size(), 1.0);
+    corrections.taut_margin_n.resize(areas.size(), 0.0);
+    for (size_t j = 0; j < areas.size(); ++j) {
+      for (const MemberFinding* f : {&statics.members[j], &dynamics.members[j]}) {
+        if (f->utilisation <= 0) continue;
+        if (f->mode == "slack") {
+          const MemberSizing& m = d.strings[j - nb];
+          corrections.taut_margin_n[j] += config.material.youngs_modulus * m.area * (f->demand - f->resistance) * 1.05;
+        } else if (linear[j].utilisation > 0 && f->utilisation > linear[j].utilisation) {
+          corrections.demand_factor[j] *= f->utilisation / linear[j].utilisation;
+        }
+      }
     }
+    const double linear_deflection = problem.LargestDeflection(x) * corrections.deflection_factor;
+    if (linear_deflection > 0 && d.statics.deflection_max_m > linear_deflection) {
+      corrections.deflection_factor *= d.statics.deflection_max_m / linear_deflection;
+    }
+    current = std::move(d);
   }
 }
 

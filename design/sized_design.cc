@@ -1,0 +1,77 @@
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "core/error.h"
+#include "design/design.h"
+#include "design/equilibrium.h"
+#include "design/equilibrium_basis.h"
+
+namespace tbridge {
+
+Design SizedDesign(const Config& config, const std::vector<double>& areas, const Eigen::VectorXd& alpha) {
+  DesignInputs in = PrepareDesign(config);
+  Design d;
+  d.config = config;
+  d.topology = std::move(in.topology);
+  d.deck = in.deck;
+  d.actions = std::move(in.actions);
+  d.cases = MakeLoadCases(config, d.deck, d.notes);
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars(), ns = s.num_strings();
+  if (static_cast<int>(areas.size()) != nb + ns) throw ModelError("SizedDesign: one area per member expected");
+
+  std::vector<double> masses(nb + ns);
+  for (int j = 0; j < nb + ns; ++j) masses[j] = config.material.density * areas[j] * s.Length(j < nb ? s.bars[j] : s.strings[j - nb]);
+  if (config.design.self_weight) d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, config.design.gravity);
+  d.reference = ReferenceCase(config, d.cases);
+  d.loads = d.actions.Loads(d.reference);
+
+  const EquilibriumSystem eq = BuildEquilibrium(s);
+  const EquilibriumSolver solver(eq);
+  d.self_stress_states = solver.states();
+  d.reference_forces = solver.Particular(FreeLoads(eq, d.loads)).col(0);
+  if (alpha.size()) d.reference_forces += solver.SelfStresses() * alpha;
+  d.alpha = alpha;
+
+  const BarRule rule = BarRuleOf(config);
+  const double sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
+  for (int j = 0; j < nb + ns; ++j) {
+    const bool bar = j < nb;
+    const Member& e = bar ? s.bars[j] : s.strings[j - nb];
+    const double force = d.reference_forces[j];
+    if (!bar && force < -1e-9 * d.reference_forces.cwiseAbs().maxCoeff()) {
+      std::ostringstream os;
+      os << "the sized design puts string " << Structure::Name(e) << " in compression (" << force
+         << " N) in its reference state";
+      throw ModelError(os.str());
+    }
+    // The sizers at zero force with the area as the floor give that area and what follows
+    // from it (radius, mass, rest length from the reference force, stiffness).
+    MemberSizing m = bar ? SizeBar(s.Length(e), 0.0, areas[j], rule, config.material)
+                         : SizeString(s.Length(e), 0.0, force, areas[j], sigma_w, config.material);
+    m.kind = bar ? MemberKind::kBar : StringKind(e);
+    m.i = e.i;
+    m.j = e.j;
+    m.name = Structure::Name(e);
+    m.reference_force = force;
+    m.force = force;
+    m.force_density = force / m.length;
+    m.stress = m.area > 0 ? force / m.area : 0.0;
+    (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
+    (bar ? d.bars : d.strings).push_back(m);
+  }
+  const Eigen::VectorXd residual = EquilibriumResidual(eq, d.reference_forces, d.loads);
+  d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
+  std::vector<double> string_stiffness(ns);
+  for (int k = 0; k < ns; ++k) string_stiffness[k] = d.strings[k].stiffness;
+  d.stability = AssessStability(s, d.reference_forces, string_stiffness, config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, d.reference_forces, d.loads);
+  d.reactions.array() += 0.0;  // -0 reads as 0 in the outputs
+  d.mass.deck_beams = d.deck.beams_mass;
+  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
+  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  return d;
+}
+
+}  // namespace tbridge

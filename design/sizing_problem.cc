@@ -1,0 +1,496 @@
+#include "design/sizing_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/error.h"
+#include "design/equilibrium.h"
+#include "design/equilibrium_basis.h"
+#include "design/linear_response.h"
+
+namespace tbridge {
+
+namespace {
+
+// Most self-stress states the problem takes as variables: the 3D bridge has 26 at n = 2; the
+// dense basis and one sensitivity solve per state stay cheap up to here.
+constexpr int kMaxStates = 64;
+// The smallest area any member may take [m^2] (a radius of 56 um): keeps T / (sigma_w A)
+// finite for a string the loads do not use.
+constexpr double kAreaFloor = 1e-8;
+// The variables' unit of area [m^2]: 1 cm^2, so that areas are O(1) to O(100).
+constexpr double kAreaScale = 1e-4;
+
+// Each member's mirror image across the bridge's planes of symmetry (x = span / 2; between
+// the planes of a 3D bridge), joined into groups: a member and its images share one area.
+std::vector<int> SymmetryGroups(const Structure& s, double span) {
+  const int nn = s.num_nodes(), nb = s.num_bars(), nm = nb + s.num_strings();
+  const double tol = 1e-9 * span;
+  const double z_mid = 0.5 * (s.nodes.row(2).minCoeff() + s.nodes.row(2).maxCoeff());
+  auto image = [&](int v, bool in_x, bool in_z) {
+    Eigen::Vector3d p = s.nodes.col(v);
+    if (in_x) p[0] = span - p[0];
+    if (in_z) p[2] = 2 * z_mid - p[2];
+    for (int w = 0; w < nn; ++w) {
+      if ((s.nodes.col(w) - p).cwiseAbs().maxCoeff() <= tol) return w;
+    }
+    return -1;
+  };
+  std::map<std::pair<int, int>, int> member_at;
+  for (int j = 0; j < nm; ++j) {
+    const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+    member_at[{std::min(m.i, m.j), std::max(m.i, m.j)}] = j;
+  }
+  std::vector<int> root(nm);
+  for (int j = 0; j < nm; ++j) root[j] = j;
+  auto find = [&root](int j) {
+    while (root[j] != j) j = root[j] = root[root[j]];
+    return j;
+  };
+  for (const auto& [in_x, in_z] : {std::pair{true, false}, std::pair{false, true}}) {
+    for (int j = 0; j < nm; ++j) {
+      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+      const int a = image(m.i, in_x, in_z), b = image(m.j, in_x, in_z);
+      if (a < 0 || b < 0) continue;
+      const auto it = member_at.find({std::min(a, b), std::max(a, b)});
+      if (it == member_at.end() || (it->second < nb) != (j < nb)) continue;
+      root[find(it->second)] = find(j);
+    }
+  }
+  std::vector<int> group(nm, -1), index(nm, -1);
+  int groups = 0;
+  for (int j = 0; j < nm; ++j) {
+    const int r = find(j);
+    if (index[r] < 0) index[r] = groups++;
+    group[j] = index[r];
+  }
+  return group;
+}
+
+}  // namespace
+
+const char* SizingRowKindName(SizingRow::Kind kind) {
+  switch (kind) {
+    case SizingRow::kStrength:
+      return "yield";
+    case SizingRow::kBuckling:
+      return "buckling";
+    case SizingRow::kYield:
+      return "yield";
+    case SizingRow::kTaut:
+      return "taut";
+    case SizingRow::kDeflectionDown:
+    case SizingRow::kDeflectionUp:
+      return "deflection";
+    case SizingRow::kReferenceTaut:
+      break;
+  }
+  return "reference_taut";
+}
+
+struct SizingProblem::Impl {
+  // The model: constant once built.
+  Structure s;
+  SizingCorrections corrections;
+  int nb = 0, ns = 0, nm = 0, states = 0, groups = 0;
+  double E = 0, rho = 0, sigma_w = 0, deflection_limit_m = 0, force_scale = 1, mass_scale = 1;
+  BarRule rule;
+  std::vector<double> length, min_area;
+  std::vector<int> group_of;
+  std::vector<std::vector<int>> members_of;
+  std::vector<bool> must_taut;
+  std::vector<int> deck_nodes;
+  Eigen::MatrixXd N;      // members x states, orthonormal self-stresses
+  Eigen::VectorXd x_g;    // the reference loads' particular forces [N]
+  Eigen::MatrixXd loads;  // free-DOF columns: each case's change from G, then a unit load per station
+  int station_column0 = 0;
+  std::vector<SizingCombination> combos;
+  std::vector<double> station_factor;  // per combination: its station load [N] (0: none)
+  std::vector<int> base_column;        // per combination
+  std::vector<SizingRow> rows;
+  Pattern jacobian, hessian;
+
+  // The workspace: the last point evaluated, its values and (on demand) its Jacobian.
+  struct State {
+    Eigen::VectorXd x;
+    bool valid = false;
+    Eigen::VectorXd g;
+    Eigen::MatrixXd jac;  // rows x variables
+    bool have_jac = false;
+    std::unique_ptr<LinearResponse> lin;
+    Eigen::MatrixXd u, dx;  // solutions and force changes per column
+    Eigen::VectorXd xr;
+    std::vector<double> a;
+  };
+  mutable State st;
+
+  int num_variables() const { return groups + states; }
+  std::vector<double> Areas(const Eigen::VectorXd& x) const {
+    std::vector<double> a(nm);
+    for (int j = 0; j < nm; ++j) a[j] = kAreaScale * x[group_of[j]];
+    return a;
+  }
+  Eigen::VectorXd Reference(const Eigen::VectorXd& x) const {
+    return states ? Eigen::VectorXd(x_g + N * (force_scale * x.tail(states))) : x_g;
+  }
+  // The member forces of combination c for force changes dx (members x columns) and the
+  // reference forces xr.
+  Eigen::VectorXd Forces(int c, const Eigen::VectorXd& xr, const Eigen::MatrixXd& dx) const {
+    Eigen::VectorXd f = xr + dx.col(base_column[c]);
+    if (station_factor[c] != 0) f += station_factor[c] * dx.col(station_column0 + combos[c].station);
+    return f;
+  }
+  double Vertical(int c, int node, const Eigen::MatrixXd& u) const {
+    const Eigen::RowVectorXd v = st.lin->Vertical(u, node);
+    double out = v[base_column[c]];
+    if (station_factor[c] != 0) out += station_factor[c] * v[station_column0 + combos[c].station];
+    return out;
+  }
+
+  void Evaluate(const Eigen::VectorXd& x) const {
+    if (st.valid && st.x.size() == x.size() && st.x == x) return;
+    st.x = x;
+    st.valid = true;
+    st.have_jac = false;
+    st.a = Areas(x);
+    st.xr = Reference(x);
+    Eigen::VectorXd k(ns);
+    for (int q = 0; q < ns; ++q) k[q] = (E * st.a[nb + q] + st.xr[nb + q]) / length[nb + q];
+    st.g.resize(static_cast<Eigen::Index>(rows.size()));
+    try {
+      st.lin = std::make_unique<LinearResponse>(s, st.xr, k);
+    } catch (const ModelError&) {
+      st.lin.reset();
+      st.g.setConstant(std::numeric_limits<double>::quiet_NaN());
+      return;
+    }
+    st.u = st.lin->Solve(loads);
+    st.dx = st.lin->ForceChanges(st.u);
+    std::vector<Eigen::VectorXd> forces(combos.size());
+    for (size_t c = 0; c < combos.size(); ++c) forces[c] = Forces(static_cast<int>(c), st.xr, st.dx);
+    for (size_t r = 0; r < rows.size(); ++r) st.g[r] = Row(rows[r], forces, st.u, nullptr);
+  }
+
+  // Row r's value, or with `d_area` (the derivative of the member's area, or null) its
+  // derivative from the forces' and deflections' derivatives passed in `forces` and `u`.
+  double Row(const SizingRow& row, const std::vector<Eigen::VectorXd>& forces, const Eigen::MatrixXd& u,
+             const double* d_area) const {
+    const int j = row.member, c = row.combination;
+    switch (row.kind) {
+      case SizingRow::kStrength:
+      case SizingRow::kBuckling:
+      case SizingRow::kYield:
+        return 0;  // handled by StrengthRow
+      case SizingRow::kTaut:
+        return (forces[c][j] - (d_area ? 0.0 : corrections.taut_margin_n[j])) / force_scale;
+      case SizingRow::kDeflectionDown:
+        return (d_area ? 0.0 : 1.0) + corrections.deflection_factor * Vertical(c, j, u) / deflection_limit_m;
+      case SizingRow::kDeflectionUp:
+        return (d_area ? 0.0 : 1.0) - corrections.deflection_factor * Vertical(c, j, u) / deflection_limit_m;
+      case SizingRow::kReferenceTaut:
+        break;
+    }
+    return 0;
+  }
+};
+
+// The strength rows need the area and its resistance; they are written out here, with their
+// derivatives, rather than through Row.
+namespace {
+
+struct Resistance {
+  double value = 0, derivative = 0;
+};
+
+}  // namespace
+
+SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections) : impl_(std::make_unique<Impl>()) {
+  Impl& p = *impl_;
+  p.s = d.topology.structure;
+  const Structure& s = p.s;
+  p.nb = s.num_bars();
+  p.ns = s.num_strings();
+  p.nm = p.nb + p.ns;
+  const Config& config = d.config;
+  p.E = config.material.youngs_modulus;
+  p.rho = config.material.density;
+  p.sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
+  p.rule = BarRuleOf(config);
+  p.deflection_limit_m = config.bridge.span / config.loads.deflection_limit;
+  corrections.demand_factor.resize(p.nm, 1.0);
+  corrections.taut_margin_n.resize(p.nm, 0.0);
+  p.corrections = std::move(corrections);
+  const DesignInputs in = PrepareDesign(config);
+  for (int j = 0; j < p.nm; ++j) {
+    const Member& m = j < p.nb ? s.bars[j] : s.strings[j - p.nb];
+    p.length.push_back(s.Length(m));
+    const double floor = j < p.nb ? in.settings.bar_min_area[j] : in.string_min_area[j - p.nb];
+    p.min_area.push_back(std::max(floor, kAreaFloor));
+    p.must_taut.push_back(j >= p.nb && MustStayTaut(d, j - p.nb));
+  }
+  p.group_of = SymmetryGroups(s, config.bridge.span);
+  p.groups = *std::max_element(p.group_of.begin(), p.group_of.end()) + 1;
+  p.members_of.resize(p.groups);
+  for (int j = 0; j < p.nm; ++j) p.members_of[p.group_of[j]].push_back(j);
+  p.deck_nodes = d.topology.deck_nodes;
+
+  // The reference state: the particular forces of G and the self-stresses.
+  const EquilibriumSystem eq = BuildEquilibrium(s);
+  const EquilibriumSolver solver(eq);
+  if (solver.states() > kMaxStates) {
+    throw ModelError("the verified sizing takes at most " + std::to_string(kMaxStates) + " self-stress states; this bridge has " +
+                     std::to_string(solver.states()));
+  }
+  p.states = solver.states();
+  p.x_g = solver.Particular(FreeLoads(eq, d.loads)).col(0);
+  if (p.states) p.N = solver.SelfStresses();
+  p.force_scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
+  p.mass_scale = std::max(d.mass.structure, 1e-3);
+
+  // The load columns: each case's change from the reference loads, then a unit station load.
+  const LinearResponse probe(s, d.reference_forces, Eigen::VectorXd::Ones(p.ns));  // only its DOF map
+  const int stations = static_cast<int>(d.actions.station_nodes.size());
+  p.loads.resize(probe.num_free_dofs(), static_cast<Eigen::Index>(d.cases.size()) + stations);
+  for (size_t c = 0; c < d.cases.size(); ++c) p.loads.col(c) = probe.FreeVector(d.actions.Loads(d.cases[c]) - d.loads);
+  p.station_column0 = static_cast<int>(d.cases.size());
+  for (int k = 0; k < stations; ++k) p.loads.col(p.station_column0 + k) = probe.FreeVector(d.actions.StationLoad(k, 1.0));
+  for (size_t c = 0; c < d.cases.size(); ++c) {
+    const LoadCase& lc = d.cases[c];
+    for (int k = lc.station_load != 0 ? 0 : -1; k < (lc.station_load != 0 ? stations : 0); ++k) {
+      SizingCombination combo;
+      combo.case_index = static_cast<int>(c);
+      combo.station = k;
+      combo.ultimate = lc.state == LimitState::kUltimate;
+      combo.label = k >= 0 ? lc.name + " at station " + std::to_string(k + 1) : lc.name;
+      p.combos.push_back(combo);
+      p.station_factor.push_back(k >= 0 ? lc.station_load : 0.0);
+      p.base_column.push_back(static_cast<int>(c));
+    }
+  }
+
+  // The rows.
+  for (int c = 0; c < static_cast<int>(p.combos.size()); ++c) {
+    if (p.combos[c].ultimate) {
+      for (int j = 0; j < p.nm; ++j) {
+        if (j < p.nb) {
+          p.rows.push_back({SizingRow::kBuckling, j, c});
+          p.rows.push_back({SizingRow::kYield, j, c});
+        } else {
+          p.rows.push_back({SizingRow::kStrength, j, c});
+        }
+      }
+    }
+    // Every string stays taut in every combination: the linear analysis holds only while no
+    // string goes slack (a slack string would carry compression in it).
+    for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kTaut, j, c});
+    if (!p.combos[c].ultimate) {
+      for (int v : p.deck_nodes) {
+        p.rows.push_back({SizingRow::kDeflectionDown, v, c});
+        p.rows.push_back({SizingRow::kDeflectionUp, v, c});
+      }
+    }
+  }
+  for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
+  for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
+    for (int v = 0; v < p.num_variables(); ++v) p.jacobian.emplace_back(r, v);
+  }
+}
+
+SizingProblem::~SizingProblem() = default;
+
+int SizingProblem::num_variables() const { return impl_->num_variables(); }
+int SizingProblem::num_constraints() const { return static_cast<int>(impl_->rows.size()); }
+
+void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
+  const Impl& p = *impl_;
+  lo.resize(p.num_variables());
+  hi.resize(p.num_variables());
+  for (int g = 0; g < p.groups; ++g) {
+    double floor = 0;
+    for (int j : p.members_of[g]) floor = std::max(floor, p.min_area[j]);
+    lo[g] = floor / kAreaScale;
+    hi[g] = std::numeric_limits<double>::infinity();
+  }
+  for (int m = 0; m < p.states; ++m) {
+    lo[p.groups + m] = -std::numeric_limits<double>::infinity();
+    hi[p.groups + m] = std::numeric_limits<double>::infinity();
+  }
+}
+
+void SizingProblem::ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
+  // A margin of 1e-7 on every row, so that a solver's tolerance on feasibility (1e-9 and
+  // looser) never leaves a utilisation a rounding step above 1.
+  lo = Eigen::VectorXd::Constant(num_constraints(), 1e-7);
+  hi = Eigen::VectorXd::Constant(num_constraints(), std::numeric_limits<double>::infinity());
+}
+
+double SizingProblem::Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  const Impl& p = *impl_;
+  double mass = 0;
+  for (int j = 0; j < p.nm; ++j) mass += p.rho * p.length[j] * kAreaScale * x[p.group_of[j]];
+  return mass / p.mass_scale;
+}
+
+void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                      Eigen::Ref<Eigen::VectorXd> grad) const {
+  const Impl& p = *impl_;
+  (void)x;
+  grad.setZero();
+  for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho * p.length[j] * kAreaScale / p.mass_scale;
+}
+
+namespace {
+
+// A strength row, g = 1 - kappa F / R(A), and its derivative for dF and dA.
+double StrengthRow(double kappa, double force, double d_force, const Resistance& r, double d_area) {
+  if (d_area == 0 && d_force == 0) return 0;
+  return -kappa * d_force / r.value + kappa * force * r.derivative * d_area / (r.value * r.value);
+}
+
+Resistance ResistanceOf(SizingRow::Kind kind, double area, double length, const BarRule& rule, double E,
+                        double sigma_w) {
+  if (kind == SizingRow::kStrength) return {sigma_w * area, sigma_w};
+  const BarCapacity cap = BarResistance(area, length, rule, E);
+  return kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling} : Resistance{cap.yield, cap.d_yield};
+}
+
+}  // namespace
+
+void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  g = p.st.g;
+  if (!p.st.lin) return;
+  for (size_t r = 0; r < p.rows.size(); ++r) {
+    const SizingRow& row = p.rows[r];
+    const int j = row.member;
+    if (row.kind == SizingRow::kReferenceTaut) {
+      g[r] = p.st.xr[j] / p.force_scale;
+    } else if (row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling || row.kind == SizingRow::kYield) {
+      const Resistance res = ResistanceOf(row.kind, p.st.a[j], p.length[j], p.rule, p.E, p.sigma_w);
+      const double force = p.Forces(row.combination, p.st.xr, p.st.dx)[j];
+      g[r] = 1.0 - p.corrections.demand_factor[j] * force / res.value;
+    }
+  }
+}
+
+const NlpProblem::Pattern& SizingProblem::JacobianPattern() const { return impl_->jacobian; }
+
+void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  const int nv = p.num_variables(), nr = static_cast<int>(p.rows.size());
+  if (!p.st.lin) {
+    std::fill(values, values + static_cast<size_t>(nr) * nv, std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  if (!p.st.have_jac) {
+    p.st.jac.resize(nr, nv);
+    for (int v = 0; v < nv; ++v) {
+      LinearResponse::Direction dp;
+      dp.stiffness = Eigen::VectorXd::Zero(p.ns);
+      dp.forces = Eigen::VectorXd::Zero(p.nm);
+      std::vector<double> d_area(p.nm, 0.0);
+      if (v < p.groups) {
+        for (int j : p.members_of[v]) {
+          d_area[j] = kAreaScale;
+          if (j >= p.nb) dp.stiffness[j - p.nb] = p.E * kAreaScale / p.length[j];
+        }
+      } else {
+        dp.forces = p.N.col(v - p.groups) * p.force_scale;
+        for (int q = 0; q < p.ns; ++q) dp.stiffness[q] = dp.forces[p.nb + q] / p.length[p.nb + q];
+      }
+      const Eigen::MatrixXd du = p.st.lin->SolveDerivative(p.st.u, dp);
+      const Eigen::MatrixXd ddx = p.st.lin->ForceChangeDerivative(p.st.u, du, dp);
+      std::vector<Eigen::VectorXd> dforces(p.combos.size());
+      for (size_t c = 0; c < p.combos.size(); ++c) dforces[c] = p.Forces(static_cast<int>(c), dp.forces, ddx);
+      const double one = 1.0;
+      for (int r = 0; r < nr; ++r) {
+        const SizingRow& row = p.rows[r];
+        const int j = row.member;
+        double value = 0;
+        if (row.kind == SizingRow::kReferenceTaut) {
+          value = dp.forces[j] / p.force_scale;
+        } else if (row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling ||
+                   row.kind == SizingRow::kYield) {
+          const Resistance res = ResistanceOf(row.kind, p.st.a[j], p.length[j], p.rule, p.E, p.sigma_w);
+          const double force = p.Forces(row.combination, p.st.xr, p.st.dx)[j];
+          value = StrengthRow(p.corrections.demand_factor[j], force, dforces[row.combination][j], res, d_area[j]);
+        } else {
+          value = p.Row(row, dforces, du, &one);
+        }
+        p.st.jac(r, v) = value;
+      }
+    }
+    p.st.have_jac = true;
+  }
+  // Row-major, as the pattern lists (r, v) pairs.
+  for (int r = 0; r < nr; ++r) {
+    for (int v = 0; v < nv; ++v) values[static_cast<size_t>(r) * nv + v] = p.st.jac(r, v);
+  }
+}
+
+const NlpProblem::Pattern& SizingProblem::HessianPattern() const { return impl_->hessian; }
+
+void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, double, const double*, double*) const {}
+
+Eigen::VectorXd SizingProblem::VariablesOf(const std::vector<double>& areas, const Eigen::VectorXd& alpha) const {
+  const Impl& p = *impl_;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(p.num_variables());
+  for (int j = 0; j < p.nm; ++j) x[p.group_of[j]] = std::max(x[p.group_of[j]], areas[j] / kAreaScale);
+  for (int m = 0; m < p.states && m < alpha.size(); ++m) x[p.groups + m] = alpha[m] / p.force_scale;
+  return x;
+}
+
+std::vector<double> SizingProblem::Areas(const Eigen::VectorXd& x) const { return impl_->Areas(x); }
+
+Eigen::VectorXd SizingProblem::Alpha(const Eigen::VectorXd& x) const {
+  return impl_->force_scale * x.tail(impl_->states);
+}
+
+Eigen::VectorXd SizingProblem::AlphaOf(const Eigen::VectorXd& reference_forces) const {
+  const Impl& p = *impl_;
+  if (!p.states) return Eigen::VectorXd();
+  return p.N.transpose() * (reference_forces - p.x_g);  // N is orthonormal
+}
+
+Eigen::VectorXd SizingProblem::ReferenceForces(const Eigen::VectorXd& x) const { return impl_->Reference(x); }
+
+std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::VectorXd& x) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  std::vector<MemberDemand> out(p.nm);
+  if (!p.st.lin) return out;
+  for (size_t r = 0; r < p.rows.size(); ++r) {
+    const SizingRow& row = p.rows[r];
+    if (row.kind != SizingRow::kStrength && row.kind != SizingRow::kBuckling && row.kind != SizingRow::kYield) continue;
+    const int j = row.member;
+    const Resistance res = ResistanceOf(row.kind, p.st.a[j], p.length[j], p.rule, p.E, p.sigma_w);
+    const double demand = p.corrections.demand_factor[j] * p.Forces(row.combination, p.st.xr, p.st.dx)[j];
+    if (demand / res.value > out[j].utilisation || out[j].row < 0) {
+      out[j] = {demand / res.value, demand, res.value, static_cast<int>(r)};
+    }
+  }
+  return out;
+}
+
+double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  double largest = 0;
+  if (!p.st.lin) return largest;
+  for (size_t c = 0; c < p.combos.size(); ++c) {
+    if (p.combos[c].ultimate) continue;
+    for (int v : p.deck_nodes) largest = std::max(largest, std::abs(p.Vertical(static_cast<int>(c), v, p.st.u)));
+  }
+  return largest;
+}
+
+const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
+const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }
+const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of; }
+double SizingProblem::MassScale() const { return impl_->mass_scale; }
+
+}  // namespace tbridge

@@ -1,0 +1,108 @@
+// The verified minimum-mass sizing as one nonlinear program (docs/verified_sizing.md): the
+// member areas and the prestress are the variables, and every load case's member forces
+// and deflections come from the linear stiffness analysis about the reference state
+// (design/linear_response.h), so the constraints see the forces the bridge carries.
+//
+//   min  sum_j rho l_j A_j
+//   over A_g (one per group of mirror-image members) and alpha (self-stress coefficients)
+//   s.t. for every ultimate combination c (each travelling station one combination):
+//          kappa_j C_cj <= R_j(A_j) (bars: buckling and yield), kappa_j T_cj <= sigma_w A_j,
+//        for every serviceability combination c:
+//          T_cs >= tau_s for the strings that must stay taut,
+//          kappa_d |v_cn| <= span / deflection_limit at each deck node,
+//        T_s >= 0 in the reference state, A_j >= the member's minimum area,
+//   x_c = x_G + N alpha + dx_c(A, alpha),  dx_c the linear response to f_c - f_G.
+//
+// kappa (per member, >= 1) and kappa_d correct the linear demand by what the nonlinear static
+// check and the dynamic runs found (verify/verified_design.h); tau_s the taut margin they ask.
+// The members' weight in G is held at the design the problem was built from (the outer
+// iterations update it). Gradients are exact (direct sensitivities); no Hessian: the solvers
+// approximate it (Ipopt's limited-memory BFGS, NLopt's MMA).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "design/design.h"
+#include "design/nlp.h"
+
+namespace tbridge {
+
+// What the outer iterations tell the problem (all sized by [bars; strings]).
+struct SizingCorrections {
+  std::vector<double> demand_factor;  // kappa_j >= 1 on each member's linear demand
+  std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
+  double deflection_factor = 1.0;     // kappa_d >= 1 on the linear deflections
+};
+
+// One constraint row's meaning, for the report: which member (or deck node), combination and
+// kind.
+struct SizingRow {
+  enum Kind { kStrength, kBuckling, kYield, kTaut, kDeflectionDown, kDeflectionUp, kReferenceTaut };
+  Kind kind = kStrength;
+  int member = -1;  // [bars; strings] index, or the deck node for a deflection row
+  int combination = -1;
+};
+const char* SizingRowKindName(SizingRow::Kind kind);
+
+// One combination of a case and (for a travelling family) a station.
+struct SizingCombination {
+  int case_index = 0;
+  int station = -1;
+  bool ultimate = true;
+  std::string label;
+};
+
+class SizingProblem final : public NlpProblem {
+ public:
+  // `design`: a design whose topology, actions, cases and reference loads the problem takes
+  // (its members' weight held). Throws ModelError when the self-stress basis is too large to
+  // form (more than 64 states) or the reference state has no stiffness.
+  SizingProblem(const Design& design, SizingCorrections corrections);
+  ~SizingProblem() override;
+
+  int num_variables() const override;
+  int num_constraints() const override;
+  void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
+  void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
+  double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
+  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> grad) const override;
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const override;
+  const Pattern& JacobianPattern() const override;
+  void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override;
+  const Pattern& HessianPattern() const override;  // empty: the solvers approximate it
+  void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma, const double* lambda,
+                     double* values) const override;
+
+  // The variables of a design's own areas and prestress (its start), and back.
+  Eigen::VectorXd VariablesOf(const std::vector<double>& areas, const Eigen::VectorXd& alpha) const;
+  std::vector<double> Areas(const Eigen::VectorXd& x) const;    // per member [bars; strings] [m^2]
+  Eigen::VectorXd Alpha(const Eigen::VectorXd& x) const;        // self-stress coefficients [N]
+  // The coefficients of the prestress in reference forces [N] carrying this problem's G.
+  Eigen::VectorXd AlphaOf(const Eigen::VectorXd& reference_forces) const;
+  Eigen::VectorXd ReferenceForces(const Eigen::VectorXd& x) const;  // x_G + N alpha [N]
+  // Each member's largest linear utilisation (with its correction) over the combinations,
+  // and the row that gives it.
+  struct MemberDemand {
+    double utilisation = 0;
+    double demand = 0;      // [N], corrected
+    double resistance = 0;  // [N]
+    int row = -1;
+  };
+  std::vector<MemberDemand> Demands(const Eigen::VectorXd& x) const;
+  // The largest vertical deck deflection over the serviceability combinations [m], as the
+  // linear analysis gives it (without kappa_d).
+  double LargestDeflection(const Eigen::VectorXd& x) const;
+  const std::vector<SizingRow>& rows() const;
+  const std::vector<SizingCombination>& combinations() const;
+  const std::vector<int>& group_of() const;  // per member
+  double MassScale() const;                  // [kg] per unit objective
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tbridge
