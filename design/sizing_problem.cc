@@ -206,7 +206,8 @@ struct Resistance {
 
 }  // namespace
 
-SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections) : impl_(std::make_unique<Impl>()) {
+SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, const std::vector<char>* keep)
+    : impl_(std::make_unique<Impl>()) {
   Impl& p = *impl_;
   p.s = d.topology.structure;
   const Structure& s = p.s;
@@ -293,6 +294,14 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections) : i
     }
   }
   for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
+  if (keep) {
+    if (keep->size() != p.rows.size()) throw ModelError("SizingProblem: one flag per row expected");
+    std::vector<SizingRow> kept;
+    for (size_t r = 0; r < p.rows.size(); ++r) {
+      if ((*keep)[r]) kept.push_back(p.rows[r]);
+    }
+    p.rows = std::move(kept);
+  }
   for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
     for (int v = 0; v < p.num_variables(); ++v) p.jacobian.emplace_back(r, v);
   }

@@ -60,7 +60,9 @@ class SizingProblem final : public NlpProblem {
   // `design`: a design whose topology, actions, cases and reference loads the problem takes
   // (its members' weight held). Throws ModelError when the self-stress basis is too large to
   // form (more than 64 states) or the reference state has no stiffness.
-  SizingProblem(const Design& design, SizingCorrections corrections);
+  // `keep` (optional, one flag per row of the whole problem, in rows() order of the whole
+  // problem): the rows this problem poses; the others are left out (an active set).
+  SizingProblem(const Design& design, SizingCorrections corrections, const std::vector<char>* keep = nullptr);
   ~SizingProblem() override;
 
   int num_variables() const override;

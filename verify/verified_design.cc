@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 #include "design/sizing_problem.h"
@@ -56,6 +57,56 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
   }
 }
 
+// Whether row r is near its limit: below `cap` (a utilisation above 0.3, a deflection above
+// 0.3 of its limit, a tension below 0.1 of the largest force) and within `band` of the
+// closest row of its member and kind (the combinations that govern it, not the others).
+std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g) {
+  const std::vector<SizingRow>& rows = full.rows();
+  std::map<std::pair<int, int>, double> closest;
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const auto key = std::make_pair(static_cast<int>(rows[r].kind), rows[r].member);
+    const auto it = closest.find(key);
+    if (it == closest.end() || g[r] < it->second) closest[key] = g[r];
+  }
+  std::vector<char> near(rows.size(), 0);
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const bool taut = rows[r].kind == SizingRow::kTaut || rows[r].kind == SizingRow::kReferenceTaut;
+    const double cap = taut ? 0.1 : 0.7, band = taut ? 0.02 : 0.1;
+    const double best = closest[{static_cast<int>(rows[r].kind), rows[r].member}];
+    near[r] = !(g[r] >= cap) && !(g[r] > best + band);
+  }
+  return near;
+}
+
+// Solves the sizing by active sets: the rows near their limits at the start are posed; after
+// each solve the whole problem is evaluated and the rows near their limits there join, until
+// the solution violates no row of the whole problem (at most 8 rounds). The posed problem is
+// about a hundred rows where the whole one has thousands, and the solver's linear algebra
+// shrinks with it.
+SolverOutcome SolveSizing(const Design& current, const SizingCorrections& corrections, const std::string& solver,
+                          const SolverOptions& options, const SizingProblem& full, Eigen::VectorXd& x) {
+  const int rows = full.num_constraints();
+  std::vector<char> keep(rows, 0);
+  Eigen::VectorXd g(rows), lo, hi;
+  full.ConstraintBounds(lo, hi);
+  SolverOutcome outcome;
+  for (int round = 0; round < 8; ++round) {
+    full.Constraints(x, g);
+    bool added = false, violated = false;
+    const std::vector<char> near = NearLimits(full, g);
+    for (int r = 0; r < rows; ++r) {
+      const bool bad = !(g[r] >= lo[r] - 1e-9);
+      violated = violated || bad;
+      if (!keep[r] && (near[r] || bad)) keep[r] = 1, added = true;
+    }
+    if (round > 0 && (!violated || !added)) break;
+    const SizingProblem posed(current, corrections, &keep);
+    outcome = SolveNlp(solver, posed, options, x);
+    if (!outcome.success) break;
+  }
+  return outcome;
+}
+
 }  // namespace
 
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
@@ -97,7 +148,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     options.max_iterations = config.design.max_iterations;
     options.verbose = std::getenv("TBRIDGE_SIZING_VERBOSE") != nullptr;
     options.nlopt_method = SolverOptions::NloptMethod::kMma;
-    const SolverOutcome outcome = SolveNlp(solver, problem, options, x);
+    const SolverOutcome outcome = SolveSizing(current, corrections, solver, options, problem, x);
     areas = problem.Areas(x);
     alpha = problem.Alpha(x);
     Design d = SizedDesign(config, areas, alpha);

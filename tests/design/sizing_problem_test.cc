@@ -1,0 +1,100 @@
+// The verified sizing problem: its gradients against central differences, its combinations
+// against the load cases, and its mirror-image groups.
+
+#include "design/sizing_problem.h"
+
+#include <catch2/catch.hpp>
+
+#include "design/design.h"
+
+namespace tbridge {
+namespace {
+
+Design SmallDesign() {
+  Config config;  // engineering defaults at n = 2: every case, travelling stations, prestress
+  config.bridge.n = 2;
+  return RunDesign(config);
+}
+
+std::vector<double> AreasOf(const Design& d) {
+  std::vector<double> a;
+  for (const auto* list : {&d.bars, &d.strings}) {
+    for (const MemberSizing& m : *list) a.push_back(m.area);
+  }
+  return a;
+}
+
+TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[design]") {
+  const Design d = SmallDesign();
+  SizingCorrections corrections;
+  corrections.demand_factor.assign(d.bars.size() + d.strings.size(), 1.3);  // kappa enters every row
+  corrections.deflection_factor = 1.2;
+  const SizingProblem problem(d, corrections);
+  const Eigen::VectorXd x = problem.VariablesOf(AreasOf(d), problem.AlphaOf(d.reference_forces));
+  const int n = problem.num_variables(), m = problem.num_constraints();
+  REQUIRE(n >= 2);
+  std::vector<double> values(problem.JacobianPattern().size());
+  problem.JacobianValues(x, values.data());
+  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(m, n);
+  for (size_t e = 0; e < values.size(); ++e) {
+    jac(problem.JacobianPattern()[e].first, problem.JacobianPattern()[e].second) = values[e];
+  }
+  // Central differences at 1e-6 of each variable (areas in cm^2 and the prestress in units of
+  // the largest member force are O(1)): truncation O(h^2) ~ 1e-12 times the curvature, rounding
+  // ~ 1e-16 / 1e-6 = 1e-10 per unit of g; 1e-6 of each column's largest entry holds both with
+  // room for the rows' curvature (the buckling resistance's 1/A^2 terms).
+  for (int v = 0; v < n; ++v) {
+    const double h = 1e-6 * std::max(1.0, std::abs(x[v]));
+    Eigen::VectorXd plus = x, minus = x, gp(m), gm(m);
+    plus[v] += h;
+    minus[v] -= h;
+    problem.Constraints(plus, gp);
+    problem.Constraints(minus, gm);
+    const Eigen::VectorXd fd = (gp - gm) / (2 * h);
+    INFO("variable " << v << " of " << n);
+    const double scale = std::max(jac.col(v).cwiseAbs().maxCoeff(), 1e-12);
+    CHECK((jac.col(v) - fd).cwiseAbs().maxCoeff() <= 1e-6 * scale);
+  }
+  // The objective's gradient: the mass is linear in the areas, so differences are exact to
+  // rounding.
+  Eigen::VectorXd grad(n);
+  problem.ObjectiveGradient(x, grad);
+  for (int v = 0; v < n; ++v) {
+    Eigen::VectorXd plus = x;
+    plus[v] += 1.0;
+    CHECK(problem.Objective(plus) - problem.Objective(x) == Approx(grad[v]).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("the sizing's mirror images share an area, and its stations are the load cases'", "[design]") {
+  const Design d = SmallDesign();
+  const SizingProblem problem(d, {});
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  // Every member's mirror image about mid-span (found here by coordinates) is in its group.
+  const double span = d.config.bridge.span;
+  for (int j = 0; j < nb + s.num_strings(); ++j) {
+    const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+    const double xi = span - s.nodes(0, m.i), xj = span - s.nodes(0, m.j);
+    for (int k = 0; k < nb + s.num_strings(); ++k) {
+      const Member& o = k < nb ? s.bars[k] : s.strings[k - nb];
+      const bool same_ends = (std::abs(s.nodes(0, o.i) - xi) < 1e-9 && std::abs(s.nodes(0, o.j) - xj) < 1e-9 &&
+                              std::abs(s.nodes(1, o.i) - s.nodes(1, m.i)) < 1e-9 &&
+                              std::abs(s.nodes(1, o.j) - s.nodes(1, m.j)) < 1e-9) ||
+                             (std::abs(s.nodes(0, o.j) - xi) < 1e-9 && std::abs(s.nodes(0, o.i) - xj) < 1e-9 &&
+                              std::abs(s.nodes(1, o.j) - s.nodes(1, m.i)) < 1e-9 &&
+                              std::abs(s.nodes(1, o.i) - s.nodes(1, m.j)) < 1e-9);
+      if (same_ends && (k < nb) == (j < nb)) {
+        INFO("member " << j << " and its image " << k);
+        CHECK(problem.group_of()[j] == problem.group_of()[k]);
+      }
+    }
+  }
+  // One combination per case, and one per station of each travelling family.
+  size_t expected = 0;
+  for (const LoadCase& c : d.cases) expected += c.station_load != 0 ? d.actions.station_nodes.size() : 1;
+  CHECK(problem.combinations().size() == expected);
+}
+
+}  // namespace
+}  // namespace tbridge
