@@ -33,6 +33,19 @@ void CheckLoadsRules(const LoadsConfig& l) {
   }
 }
 
+// bridge and loads together: the cases asked for must leave one this bridge carries ("wind"
+// is dropped on a planar bridge, design/load_cases.h).
+void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
+  const auto wind = [](const std::string& c) { return c == "wind"; };
+  if (b.planes == 1 && std::all_of(l.cases.begin(), l.cases.end(), wind)) {
+    throw ConfigError("loads.cases", nlohmann::json(l.cases).dump(),
+                      "leaves no load case to design for: a planar bridge (bridge.planes = 1) "
+                      "carries no transverse load, so \"wind\" is left out; list at least one of "
+                      "\"paper\", \"permanent\", \"payload\", \"travelling\", "
+                      "\"paper_travelling\" (or set bridge.planes = 2 for wind)");
+  }
+}
+
 }  // namespace
 
 void ApplyPaperSwitches(Config& c) {
@@ -74,6 +87,7 @@ Config ParseConfig(const nlohmann::json& root) {
     c.material = ParseSection<Material>(top.Section("material"));
     c.design = ParseSection<DesignConfig>(top.Section("design"));
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
+    CheckCasesForBridge(c.bridge, c.loads);
   }
   if (top.Has("dynamics")) {
     c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
@@ -115,6 +129,7 @@ void Validate(const Config& c) {
     ValidateFields(c.design, kDesignSection.name);
     ValidateFields(c.loads, kLoadsSection.name);
     CheckLoadsRules(c.loads);
+    CheckCasesForBridge(c.bridge, c.loads);
   }
   if (c.dynamics) {
     ValidateFields(*c.dynamics, kDynamicsSection.name);

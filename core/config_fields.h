@@ -26,8 +26,9 @@ inline const SectionInfo kMaterialSection{"material", "one material for bars, st
 inline const SectionInfo kDesignSection{"design", "minimum-mass problem and sizing", ""};
 inline const SectionInfo kLoadsSection{
     "loads", "actions and their combinations",
-    "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the others); "
-    "`gamma_g_inf` <= `gamma_g_sup`."};
+    "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the "
+    "others); `gamma_g_inf` <= `gamma_g_sup`; a planar bridge (`bridge.planes` = 1) needs a case "
+    "other than `\"wind\"`."};
 
 template <class B, class V>
 void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, BridgeConfig> {
