@@ -19,6 +19,17 @@ void CheckBridgeRules(const BridgeConfig& b) {
   }
 }
 
+// material: the rule across keys (kMaterialSection.rules).
+void CheckMaterialRules(const Material& m) {
+  if (!(m.youngs_modulus > m.yield_stress)) {
+    throw ConfigError("material.youngs_modulus", NumberText(m.youngs_modulus),
+                      "must exceed material.yield_stress = " + NumberText(m.yield_stress) +
+                          " Pa: a strain at yield of " +
+                          NumberText(m.yield_stress / m.youngs_modulus) +
+                          " is no structural material (steel: 0.0017); are both in Pa?");
+  }
+}
+
 // loads: the rules across keys (kLoadsSection.rules).
 void CheckLoadsRules(const LoadsConfig& l) {
   const auto& c = l.cases;
@@ -84,7 +95,7 @@ Config ParseConfig(const nlohmann::json& root) {
       throw ConfigError("bridge", "(missing)", "required section (or \"structure\" for a custom scene)");
     }
     c.bridge = ParseSection<BridgeConfig>(top.Section("bridge"), CheckBridgeRules);
-    c.material = ParseSection<Material>(top.Section("material"));
+    c.material = ParseSection<Material>(top.Section("material"), CheckMaterialRules);
     c.design = ParseSection<DesignConfig>(top.Section("design"));
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
     CheckCasesForBridge(c.bridge, c.loads);
@@ -126,6 +137,7 @@ void Validate(const Config& c) {
     ValidateFields(c.bridge, kBridgeSection.name);
     CheckBridgeRules(c.bridge);
     ValidateFields(c.material, kMaterialSection.name);
+    CheckMaterialRules(c.material);
     ValidateFields(c.design, kDesignSection.name);
     ValidateFields(c.loads, kLoadsSection.name);
     CheckLoadsRules(c.loads);

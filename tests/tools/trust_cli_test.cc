@@ -181,7 +181,7 @@ TEST_CASE("run limits: 1e7 steps fit the defaults, a history of 1e9 steps does n
 TEST_CASE("defect 4: overflowing inputs are bad input naming the key, not a solver failure") {
   const fs::path dir = FreshDir("trust_overflow");
   const std::pair<const char*, const char*> cases[] = {
-      {R"({"bridge": {"n": 3, "span": 1e300}})", "'bridge.span' = 1e+300"},
+      {R"({"bridge": {"n": 3, "deck_width": 1e300}})", "'bridge.deck_width' = 1e+300"},
       {R"({"bridge": {"n": 3}, "material": {"density": 1e300}})", "'material.density' = 1e+300"},
       {R"({"bridge": {"n": 3, "payload": 1e300}})", "'bridge.payload' = 1e+300"}};
   for (const auto& [text, named] : cases) {
