@@ -30,7 +30,9 @@ const CommandSpec& CheckSpec() {
       "OUT.json has the fields of a design file; it is written only when the checks ran, and\n"
       "never partially. Exit 0 when the design passes, 1 when it fails a check (the verdict\n"
       "says which), 2 when DESIGN.json is not a self-consistent design (the message names the\n"
-      "key: a member whose area was edited without re-deriving its rest length and forces)."};
+      "key: a member whose area was edited without re-deriving its rest length and forces, or\n"
+      "whose radius, mass or stiffness no longer is what its area gives: check reads a member\n"
+      "from its area and rest length, so such an edit would be ignored)."};
   return spec;
 }
 
