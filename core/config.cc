@@ -19,6 +19,17 @@ void CheckBridgeRules(const BridgeConfig& b) {
   }
 }
 
+// material: the rule across keys (kMaterialSection.rules).
+void CheckMaterialRules(const Material& m) {
+  if (!(m.youngs_modulus > m.yield_stress)) {
+    throw ConfigError("material.youngs_modulus", NumberText(m.youngs_modulus),
+                      "must exceed material.yield_stress = " + NumberText(m.yield_stress) +
+                          " Pa: a strain at yield of " +
+                          NumberText(m.yield_stress / m.youngs_modulus) +
+                          " is no structural material (steel: 0.0017); are both in Pa?");
+  }
+}
+
 // loads: the rules across keys (kLoadsSection.rules).
 void CheckLoadsRules(const LoadsConfig& l) {
   const auto& c = l.cases;
@@ -30,6 +41,19 @@ void CheckLoadsRules(const LoadsConfig& l) {
   if (l.gamma_g_inf > l.gamma_g_sup) {
     throw ConfigError("loads.gamma_g_inf", NumberText(l.gamma_g_inf),
                       "must not exceed loads.gamma_g_sup = " + NumberText(l.gamma_g_sup));
+  }
+}
+
+// bridge and loads together: the cases asked for must leave one this bridge carries ("wind"
+// is dropped on a planar bridge, design/load_cases.h).
+void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
+  const auto wind = [](const std::string& c) { return c == "wind"; };
+  if (b.planes == 1 && std::all_of(l.cases.begin(), l.cases.end(), wind)) {
+    throw ConfigError("loads.cases", nlohmann::json(l.cases).dump(),
+                      "leaves no load case to design for: a planar bridge (bridge.planes = 1) "
+                      "carries no transverse load, so \"wind\" is left out; list at least one of "
+                      "\"paper\", \"permanent\", \"payload\", \"travelling\", "
+                      "\"paper_travelling\" (or set bridge.planes = 2 for wind)");
   }
 }
 
@@ -71,9 +95,10 @@ Config ParseConfig(const nlohmann::json& root) {
       throw ConfigError("bridge", "(missing)", "required section (or \"structure\" for a custom scene)");
     }
     c.bridge = ParseSection<BridgeConfig>(top.Section("bridge"), CheckBridgeRules);
-    c.material = ParseSection<Material>(top.Section("material"));
+    c.material = ParseSection<Material>(top.Section("material"), CheckMaterialRules);
     c.design = ParseSection<DesignConfig>(top.Section("design"));
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
+    CheckCasesForBridge(c.bridge, c.loads);
   }
   if (top.Has("dynamics")) {
     c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
@@ -112,9 +137,11 @@ void Validate(const Config& c) {
     ValidateFields(c.bridge, kBridgeSection.name);
     CheckBridgeRules(c.bridge);
     ValidateFields(c.material, kMaterialSection.name);
+    CheckMaterialRules(c.material);
     ValidateFields(c.design, kDesignSection.name);
     ValidateFields(c.loads, kLoadsSection.name);
     CheckLoadsRules(c.loads);
+    CheckCasesForBridge(c.bridge, c.loads);
   }
   if (c.dynamics) {
     ValidateFields(*c.dynamics, kDynamicsSection.name);

@@ -8,6 +8,7 @@
 // Adding a key is one line of description and the struct member.
 #pragma once
 
+#include <numbers>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -22,12 +23,36 @@ namespace tbridge {
 
 inline const SectionInfo kBridgeSection{"bridge", "geometry and load",
                                         "`p` must be 1 when `planes` = 2 (the 3D bridge couples two p = 1 planes)."};
-inline const SectionInfo kMaterialSection{"material", "one material for bars, strings and deck beams", ""};
+inline const SectionInfo kMaterialSection{
+    "material", "one material for bars, strings and deck beams",
+    "`youngs_modulus` > `yield_stress` (a strain at yield of 1 or more is no structural material)."};
 inline const SectionInfo kDesignSection{"design", "minimum-mass problem and sizing", ""};
 inline const SectionInfo kLoadsSection{
     "loads", "actions and their combinations",
-    "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the others); "
-    "`gamma_g_inf` <= `gamma_g_sup`."};
+    "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the "
+    "others); `gamma_g_inf` <= `gamma_g_sup`; a planar bridge (`bridge.planes` = 1) needs a case "
+    "other than `\"wind\"`."};
+
+// Ranges whose ends catch unit slips: a value beyond them is no bridge in the key's unit, and
+// the refusal says which unit it was likely given in (configs/README.md, "Plausibility
+// warnings"). 2000 m is about the longest span ever built (suspension bridges); 1 deg of beta,
+// 100 kg/m^3, 1e6 Pa of yield stress and 1e9 Pa of modulus are below any structural material.
+inline const Range kBetaDegRange = Range{1.0, 90.0, false, true}.Below(
+    {"under 1 deg: was it given in radians? {v} rad is {as} deg", 180.0 / std::numbers::pi});
+inline const Range kSpanRange = Range{0.0, 2000.0, true, false}.Above(
+    {"longer than any bridge span: was it given in mm? {v} mm is {as} m", 1e-3});
+inline const Range kDensityRange = Range::AtLeast(100.0).Below(
+    {"lighter than any structural material: was it given in t/m^3 or g/cm^3? {v} t/m^3 is {as} "
+     "kg/m^3",
+     1e3});
+inline const Range kYieldStressRange = Range::AtLeast(1e6).Below(
+    {"weaker than any structural material: was it given in MPa (N/mm^2)? {v} MPa is {as} Pa", 1e6});
+inline const Range kModulusRange = Range::AtLeast(1e9).Below(
+    {"softer than any structural material: was it given in GPa (steel: 210) or in MPa = N/mm^2 "
+     "(steel: 210000)? The key is in Pa (steel: 2.1e+11)"});
+// A partial factor of 0 would leave its action out of the ultimate cases: no design for it.
+inline const Range kPartialFactorRange = Range{0.0, 10.0, true, false}.Below(
+    {"a partial factor of 0 leaves its action out of every ultimate combination"});
 
 template <class B, class V>
 void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, BridgeConfig> {
@@ -43,8 +68,8 @@ void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, 
   v.Number(KeyInfo{"beta_deg", "deg",
                    "aspect angle beta. Every cable of a module slopes at beta/2 from the horizontal: the node below a "
                    "sub-span [a, b] lies (b − a)/2 · tan(beta/2) under the deck"},
-           b.beta_deg, Range::Open(0.0, 90.0));
-  v.Number(KeyInfo{"span", "m", "L, distance between the two hinged supports"}, b.span, Range::Positive());
+           b.beta_deg, kBetaDegRange);
+  v.Number(KeyInfo{"span", "m", "L, distance between the two hinged supports"}, b.span, kSpanRange);
   v.Number(KeyInfo{"payload", "N", "F, total external payload on the deck (eq. 9: F_tot = F + 2^n·m_d·g)"},
            b.payload, Range::Positive());
   v.Number(KeyInfo{"deck_width", "m",
@@ -60,14 +85,14 @@ void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, 
 template <class M, class V>
 void DescribeFields(M& m, V& v) requires std::is_same_v<std::remove_const_t<M>, Material> {
   v.Number(KeyInfo{"density", "kg/m³", "rho: member mass rho·A·l, deck beam mass m_d (eq. 7)"}, m.density,
-           Range::Positive());
+           kDensityRange);
   v.Number(KeyInfo{"yield_stress", "Pa",
                    "sigma_yield. The working stress of every member and of the deck is sigma_w = `yield_stress` / "
                    "`yield_safety_factor`"},
-           m.yield_stress, Range::Positive());
+           m.yield_stress, kYieldStressRange);
   v.Number(KeyInfo{"youngs_modulus", "Pa",
                    "E: string rest length L0 = s/(1 + sigma/E), stiffness k_s = E·A/L0, Euler buckling of bars"},
-           m.youngs_modulus, Range::Positive());
+           m.youngs_modulus, kModulusRange);
 }
 
 template <class D, class V>
@@ -178,12 +203,14 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "1991-1-4's peak velocity pressure, so the run shows the overshoot a sudden gust would cause"},
            l.wind_rise_s, Range{0.0, 100.0, true, false});
   v.Number(KeyInfo{"gamma_g_sup", "–", "gamma_G,sup, unfavourable permanent action (EN 1990 A2, set B)"},
-           l.gamma_g_sup, Range::Closed(0.0, 10.0));
-  v.Number(KeyInfo{"gamma_g_inf", "–", "gamma_G,inf, favourable permanent action; the no-slack check uses it"},
+           l.gamma_g_sup, kPartialFactorRange);
+  v.Number(KeyInfo{"gamma_g_inf", "–",
+                   "gamma_G,inf, favourable permanent action; the no-slack check uses it. 0 leaves G out of "
+                   "the favourable cases, which no code does (a plausibility warning)"},
            l.gamma_g_inf, Range::Closed(0.0, 10.0));
   v.Number(KeyInfo{"gamma_q", "–", "gamma_Q on the payload and the travelling loads"}, l.gamma_q,
-           Range::Closed(0.0, 10.0));
-  v.Number(KeyInfo{"gamma_w", "–", "gamma_Q on wind"}, l.gamma_w, Range::Closed(0.0, 10.0));
+           kPartialFactorRange);
+  v.Number(KeyInfo{"gamma_w", "–", "gamma_Q on wind"}, l.gamma_w, kPartialFactorRange);
   v.Number(KeyInfo{"psi0_wind", "–",
                    "psi_0 of wind accompanying traffic (EN 1990 A2 table A2.2: 0.3 for footbridges, 0.6 road)"},
            l.psi0_wind, Range::Closed(0.0, 1.0));

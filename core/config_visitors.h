@@ -196,7 +196,7 @@ struct ValidateVisitor {
   }
   static void CheckNumber(const std::string& path, double field, Range range) {
     if (!std::isfinite(field) || !range.Contains(field)) {
-      throw ConfigError(path, NumberText(field), "must be " + range.Describe());
+      throw ConfigError(path, NumberText(field), range.Refusal(field));
     }
   }
   static void CheckInteger(const std::string& path, long long field, long long lo, long long hi) {

@@ -96,7 +96,8 @@ template <class F, class V>
 void DescribeFields(F& f, V& v) requires std::is_same_v<std::remove_const_t<F>, FrequencyConfig> {
   v.Bool(KeyInfo{"enabled", "–",
                  "measure the deck frequency (SPEC §9: dominant spectral peak of the summed "
-                 "vertical deck displacement)"},
+                 "vertical deck displacement); none, and the summary says why, where the record "
+                 "holds fewer than two periods of it or drifts (dynamics/response.h)"},
          f.enabled);
   v.Integer(KeyInfo{"every", "steps", "sampling of that signal"}, f.every, 1, 1 << 30);
 }

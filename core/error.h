@@ -1,10 +1,19 @@
 // Error types shared by every layer. Each carries enough context for the user to act on it.
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace tbridge {
+
+// A number as every message shows it: ostream's default, at most 6 significant digits ("1e+160",
+// not std::to_string's 161 characters), "inf", "nan".
+inline std::string NumberText(double value) {
+  std::ostringstream os;
+  os << value;
+  return os.str();
+}
 
 // `text` with every control character written as \u00XX (JSON's escape), so that a key
 // holding a NUL or a newline neither cuts an error message short (what() is a C string) nor

@@ -10,16 +10,11 @@
 #include <functional>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "core/error.h"
 
 namespace tbridge {
-
-std::string NumberText(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 namespace {
 std::string Num(double v) { return NumberText(v); }
@@ -43,6 +38,25 @@ std::string Range::Describe() const {
   const std::string interval = Interval();
   if (interval.empty()) return "a finite number";
   return std::string(interval[0] == '(' || interval[0] == '[' ? "a number in " : "a number ") + interval;
+}
+
+std::string Range::Refusal(double v) const {
+  std::string out = "must be " + Describe();
+  const bool beyond_lo = lo_open ? !(v > lo) : !(v >= lo);
+  const RangeNote& note = beyond_lo ? below : above;
+  if (note.text == nullptr || !std::isfinite(v) || v < 0) return out;
+  std::string text = note.text;
+  const bool numbers = text.find('{') != std::string::npos;
+  // A reading outside the range too is no slip of that unit ("1e+300 mm is 1e+297 m").
+  if (numbers && !Contains(v * note.factor)) return out;
+  for (const auto& [mark, value] : {std::pair{"{v}", v}, std::pair{"{as}", v * note.factor}}) {
+    for (std::size_t at = text.find(mark); at != std::string::npos; at = text.find(mark, at)) {
+      const std::string shown = NumberText(value);
+      text.replace(at, std::strlen(mark), shown);
+      at += shown.size();
+    }
+  }
+  return out + "; " + text;
 }
 
 std::string IntegerRangeText(long long lo, long long hi) {
@@ -85,9 +99,8 @@ double JsonSection::Number(const std::string& key, std::optional<double> fallbac
   const nlohmann::json& v = Get(key);
   if (!v.is_number()) throw ConfigError(PathOf(key), Show(v), "must be " + range.Describe());
   const double d = v.get<double>();
-  if (!std::isfinite(d) || !range.Contains(d)) {
-    throw ConfigError(PathOf(key), Show(v), "must be " + range.Describe());
-  }
+  if (!std::isfinite(d) || !range.Contains(d))
+    throw ConfigError(PathOf(key), Show(v), range.Refusal(d));
   return d;
 }
 
@@ -163,9 +176,8 @@ std::vector<double> JsonSection::Numbers(const std::string& key,
     const std::string item = PathOf(key) + "[" + std::to_string(k) + "]";
     if (!v[k].is_number()) throw ConfigError(item, Show(v[k]), "must be " + range.Describe());
     const double d = v[k].get<double>();
-    if (!std::isfinite(d) || !range.Contains(d)) {
-      throw ConfigError(item, Show(v[k]), "must be " + range.Describe());
-    }
+    if (!std::isfinite(d) || !range.Contains(d))
+      throw ConfigError(item, Show(v[k]), range.Refusal(d));
     out.push_back(d);
   }
   return out;

@@ -15,22 +15,50 @@
 
 namespace tbridge {
 
+// What a value beyond one end of a range most likely is, said in its refusal: a unit slip
+// ("was it given in mm? 30000 mm is 30 m"). In `text`, {v} stands for the value and {as} for
+// the value times `factor` (its reading in the key's own unit); a note that uses them is said
+// only when that reading lies in the range, any other for any value >= 0.
+struct RangeNote {
+  const char* text = nullptr;
+  double factor = 1;
+};
+
 // Closed or open numeric bounds for a config value.
 struct Range {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
   bool lo_open = false;
   bool hi_open = false;
+  RangeNote below, above;  // said for a value below lo, above hi
 
+  Range() = default;
+  Range(double lo_end, double hi_end, bool lo_excluded = false, bool hi_excluded = false)
+      : lo(lo_end), hi(hi_end), lo_open(lo_excluded), hi_open(hi_excluded) {}
   static Range Positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
   static Range NonNegative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range AtLeast(double a) {
+    return {a, std::numeric_limits<double>::infinity(), false, false};
+  }
   static Range Closed(double a, double b) { return {a, b, false, false}; }
   static Range Open(double a, double b) { return {a, b, true, true}; }
+  Range Below(RangeNote note) const {
+    Range r = *this;
+    r.below = note;
+    return r;
+  }
+  Range Above(RangeNote note) const {
+    Range r = *this;
+    r.above = note;
+    return r;
+  }
   bool Contains(double v) const;
   // "(0, 90)", "[1, 1000]", "> 0", ">= 0", "< 1"; "" when unbounded.
   std::string Interval() const;
   // "a number in (0, 90)", "a number > 0", "a finite number": what messages say is allowed.
   std::string Describe() const;
+  // Why `v` is refused: "must be " + Describe(), then the note of the end `v` lies beyond.
+  std::string Refusal(double v) const;
 };
 
 // "an integer in [lo, hi]", as messages and the README say it.
@@ -94,8 +122,6 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& source)
 // Reads and parses a file; unreadable files (missing, a directory, no permission) are a
 // ConfigError naming the path and the reason.
 nlohmann::json ReadJsonFile(const std::string& path);
-// A number as messages show it (ostream's default: 6 significant digits, "inf", "nan").
-std::string NumberText(double value);
 // Short rendering of a JSON value for messages (truncated).
 std::string Show(const nlohmann::json& value);
 

@@ -422,8 +422,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
       // minimum-mass problem has many optima (self-stresses), and a small change of weight
       // moves the solver from one to another.
       const bool growing = !std::isfinite(total) || total > 1.05 * previous_total;
-      throw ModelError("self-weight: the member mass did not settle in 200 sizings (" + std::to_string(previous_total) +
-                       " kg, then " + std::to_string(total) + " kg): " +
+      throw ModelError("self-weight: the member mass did not settle in 200 sizings (" + NumberText(previous_total) +
+                       " kg, then " + NumberText(total) + " kg): " +
                        (growing ? std::string("the members cannot carry their own weight at this span and material")
                                 : std::string("it moves between optima of the minimum-mass problem (" +
                                               std::to_string(d.self_stress_states) +

@@ -1,9 +1,10 @@
 #include "design/design_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
-#include <sstream>
+#include <string>
 
 #include "core/error.h"
 #include "core/string_law.h"
@@ -15,13 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string Text(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
 // file[key] as a number, or a ConfigError naming `where`.
 double Number(const json& j, const char* key, const std::string& where) {
   if (!j.is_object() || !j.contains(key) || !j.at(key).is_number()) {
@@ -29,6 +23,27 @@ double Number(const json& j, const char* key, const std::string& where) {
                       "a number, as tbridge design writes it");
   }
   return j.at(key).get<double>();
+}
+
+// A member property the file gives beside the area (radius, mass, stiffness, length) must be
+// what the area gives. tbridge design writes each double in the shortest form that reads back
+// exactly (std::to_chars), and derives them by the same expressions as here: a re-read design
+// differs by a few units in the last place at most. 1e-12 relative is thousands of those, and
+// catches an edit of any of the first 12 significant digits.
+constexpr double kDerivedTolerance = 1e-12;
+
+void RequireDerived(const json& member, const char* key, double derived, const std::string& where,
+                    const std::string& name, const std::string& how) {
+  const double given = Number(member, key, where);
+  const double difference = std::abs(given - derived);
+  if (difference <= kDerivedTolerance * std::abs(derived)) return;
+  throw ConfigError(
+      where + "." + key, NumberText(given),
+      "member " + name + ": its nodes, area and rest length give " + how + " = " +
+          NumberText(derived) + " (relative difference " +
+          NumberText(difference / std::max(std::abs(derived), 1e-300)) +
+          "); tbridge check reads a member from its area and rest length alone, so an edit "
+          "of this key would be ignored: edit the config and run tbridge design instead");
 }
 
 const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
@@ -77,8 +92,9 @@ Design ReadDesign(const json& file) {
     for (int a = 0; same && a < 3; ++a) same = p[a].is_number() && std::abs(p[a].get<double>() - s.nodes(a, v)) <= 1e-9;
     if (!same) {
       throw ConfigError("nodes[" + std::to_string(v) + "]", p.dump(),
-                        "the config draws node " + std::to_string(v + 1) + " at [" + Text(s.nodes(0, v)) + ", " +
-                            Text(s.nodes(1, v)) + ", " + Text(s.nodes(2, v)) + "]");
+                        "the config draws node " + std::to_string(v + 1) + " at [" +
+                            NumberText(s.nodes(0, v)) + ", " + NumberText(s.nodes(1, v)) + ", " +
+                            NumberText(s.nodes(2, v)) + "]");
     }
   }
 
@@ -101,23 +117,40 @@ Design ReadDesign(const json& file) {
     m.j = e.j;
     m.length = s.Length(e);
     m.area = Number(j, "area", where);
-    if (!(m.area >= 0) || !std::isfinite(m.area)) throw ConfigError(where + ".area", Text(m.area), "a finite area >= 0 [m^2]");
+    if (!(m.area >= 0) || !std::isfinite(m.area))
+      throw ConfigError(where + ".area", NumberText(m.area), "a finite area >= 0 [m^2]");
     m.radius = std::sqrt(m.area / std::numbers::pi);
     m.mass = mat.density * m.area * m.length;
     m.reference_force = Number(j, "reference_force", where);
     m.rest_length = bar ? m.length : Number(j, "rest_length", where);
     if (!bar) {
-      if (!(m.rest_length > 0)) throw ConfigError(where + ".rest_length", Text(m.rest_length), "a rest length > 0 [m]");
+      if (!(m.rest_length > 0))
+        throw ConfigError(where + ".rest_length", NumberText(m.rest_length),
+                          "a rest length > 0 [m]");
       m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
       // The string's tension at the drawn geometry is its reference force: 1e-6 relative
       // allows the file's rounding and the design's own sizing tolerance, and no real edit.
       const double tension = StringTension(m.stiffness, m.rest_length, m.length);
       if (std::abs(tension - m.reference_force) > 1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
-        throw ConfigError(where + ".rest_length", Text(m.rest_length),
-                          "with area " + Text(m.area) + " m^2 the string pulls " + Text(tension) +
-                              " N at its drawn length, not its reference_force " + Text(m.reference_force) +
-                              " N: re-derive the design with tbridge design after changing a member");
+        throw ConfigError(
+            where + ".rest_length", NumberText(m.rest_length),
+            "with area " + NumberText(m.area) + " m^2 the string pulls " + NumberText(tension) +
+                " N at its drawn length, not its reference_force " + NumberText(m.reference_force) +
+                " N: re-derive the design with tbridge design after changing a member");
       }
+    }
+    RequireDerived(j, "length", m.length, where, m.name, "the length between its nodes");
+    RequireDerived(j, "radius", m.radius, where, m.name, "sqrt(area / pi)");
+    RequireDerived(j, "mass", m.mass, where, m.name, "density x area x length");
+    if (bar) {
+      if (!j.contains("stiffness") || !j.at("stiffness").is_null()) {
+        throw ConfigError(where + ".stiffness",
+                          j.contains("stiffness") ? j.at("stiffness").dump() : "(missing)",
+                          "member " + m.name +
+                              " is a bar, rigid in the model: null, as tbridge design writes it");
+      }
+    } else {
+      RequireDerived(j, "stiffness", m.stiffness, where, m.name, "E x area / rest_length");
     }
     m.force = m.reference_force;
     m.force_density = m.force / m.length;
@@ -143,10 +176,11 @@ Design ReadDesign(const json& file) {
   // file's digits nothing; a member's weight changed by an edited area shows at once.
   const double scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
   if (!(d.equilibrium_residual <= 1e-8 * scale)) {
-    throw ConfigError("members[].reference_force", "(the reference forces)",
-                      "they leave " + Text(d.equilibrium_residual) +
-                          " N unbalanced at a node under the reference loads (the members' weight and the "
-                          "config's loads): re-derive the design with tbridge design after changing it");
+    throw ConfigError(
+        "members[].reference_force", "(the reference forces)",
+        "they leave " + NumberText(d.equilibrium_residual) +
+            " N unbalanced at a node under the reference loads (the members' weight and the "
+            "config's loads): re-derive the design with tbridge design after changing it");
   }
   std::vector<double> string_stiffness(ns);
   for (int k = 0; k < ns; ++k) string_stiffness[k] = d.strings[k].stiffness;

@@ -6,8 +6,10 @@
 // structure (stiffness E A / L0, mass rho A l, self-weight), and its reference force. The
 // file must be self-consistent: nodes and members as the config draws them, each string's
 // tension k (s - L0) at the drawn geometry its reference force, and the reference forces in
-// equilibrium with the reference loads. An area edited without re-deriving the rest lengths
-// and forces (tbridge design does that) is refused with the member and the mismatch.
+// equilibrium with the reference loads; each member's length, radius, mass and (strings)
+// stiffness what its nodes, area and rest length give (bars: stiffness null). An area edited
+// without re-deriving the rest lengths and forces (tbridge design does that), or a radius,
+// mass or stiffness edited at all, is refused with the member, the key and the mismatch.
 #pragma once
 
 #include <nlohmann/json_fwd.hpp>

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
+#include <string>
+
+#include "core/error.h"
 
 namespace tbridge {
 
@@ -19,6 +23,10 @@ const char* BaseActionName(int action) {
 double PayloadShare(const LoadCase& c) { return c.factor[kPayloadFull] + c.factor[kPaperLoad]; }
 
 Eigen::Matrix3Xd Actions::StationLoad(int station, double load) const {
+  if (station < 0 || station >= static_cast<int>(station_nodes.size())) {
+    throw std::out_of_range("StationLoad: station " + std::to_string(station) + " of " +
+                            std::to_string(station_nodes.size()));
+  }
   Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, base[0].cols());
   const std::vector<int>& nodes = station_nodes[station];
   for (int v : nodes) out(1, v) -= load / static_cast<double>(nodes.size());
@@ -178,6 +186,12 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std:
                " + Q_full + " + Factor(l.psi0_wind) + " W", uq, sq);
       }
     }
+  }
+  // Config validation refuses such a list (core/config.cc); a config built otherwise still
+  // gets the message rather than a design over no load.
+  if (cases.empty()) {
+    throw ConfigError("loads.cases", std::to_string(l.cases.size()) + " names",
+                      "leaves no load case for this bridge (\"wind\" needs bridge.planes = 2)");
   }
   return cases;
 }

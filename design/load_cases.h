@@ -50,8 +50,11 @@ struct Actions {
   // Per station (in order of x), the deck nodes it loads and each one's share (planes).
   std::vector<std::vector<int>> station_nodes;
   std::vector<double> station_x;  // [m]
-  Eigen::Matrix3Xd StationLoad(int station, double load) const;  // `load` [N] shared by its nodes
-  // The loads of `c` with its travelling load (if any) at `station` (-1: none).
+  // `load` [N] shared by the nodes of `station`; throws std::out_of_range for a station
+  // outside station_nodes.
+  Eigen::Matrix3Xd StationLoad(int station, double load) const;
+  // The loads of `c` with its travelling load (if any) at `station` (-1: none; else as
+  // StationLoad).
   Eigen::Matrix3Xd Loads(const LoadCase& c, int station = -1) const;
 };
 
@@ -61,8 +64,9 @@ Actions MakeActions(const Config& config, const BridgeTopology& topology, const 
 // Half of each member's weight rho A l g at each of its ends, downward [N].
 Eigen::Matrix3Xd SelfWeightLoads(const Structure& s, const std::vector<double>& member_mass_kg, double gravity);
 
-// The cases of config.loads.cases for this bridge. `notes` receives what was left out and why
-// (wind on a planar bridge).
+// The cases of config.loads.cases for this bridge, never none: a list that leaves none (only
+// "wind" on a planar bridge) throws ConfigError naming loads.cases. `notes` receives what was
+// left out and why (wind on a planar bridge).
 std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std::vector<std::string>& notes);
 
 }  // namespace tbridge

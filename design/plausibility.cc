@@ -35,8 +35,26 @@ void CountMembers(const Design& d, const std::function<bool(const MemberSizing&)
 
 }  // namespace
 
-std::vector<std::string> PlausibilityWarnings(const Design& d) {
+std::vector<std::string> ConfigWarnings(const Config& c) {
   std::vector<std::string> out;
+  if (c.material.density < kMinPlausibleDensity) {
+    out.push_back(
+        "material.density = " + Format("%g", c.material.density) + " kg/m^3 is below " +
+        Format("%g", kMinPlausibleDensity) +
+        " kg/m^3, lighter than water: timber is about 450, steel 7850; a density given in "
+        "t/m^3 or g/cm^3 is 1000 times too small");
+  }
+  // The paper's one case has no partial factors.
+  if (c.loads.gamma_g_inf == 0 && !KeepsPaperSwitches(c)) {
+    out.push_back(
+        "loads.gamma_g_inf = 0 leaves the permanent load out of the favourable cases, which no "
+        "code does (EN 1990 A2 set B: 1.0): did you mean 1?");
+  }
+  return out;
+}
+
+std::vector<std::string> PlausibilityWarnings(const Design& d) {
+  std::vector<std::string> out = ConfigWarnings(d.config);
   CountMembers(
       d, [](const MemberSizing& m) { return m.length < kMinMemberLength; },
       [](const MemberSizing& m) { return -m.length; }, false, "shorter than 1 mm",

@@ -20,8 +20,18 @@ inline constexpr double kMaxBarSlenderness = 500;
 // Masses are printed with three decimals in kg: below half a gram a mass prints as 0.000.
 inline constexpr double kMinPrintedMass = 5e-4;  // [kg]
 
-// One sentence per kind of implausibility found, empty when none; each names the count, the
-// worst member or value, and the threshold. Throws nothing.
+// Config values inside their ranges that are still no bridge material or practice (the ranges'
+// ends refuse the clear unit slips, core/config_fields.h):
+// a density below water's: timber is about 450 kg/m^3, but a metal given in t/m^3 is 1000
+// times too small.
+inline constexpr double kMinPlausibleDensity = 1000;  // [kg/m^3]
+
+// One sentence per implausible config value of a designed bridge, empty when none; each names
+// the key, the value, the threshold and the likely slip. Throws nothing.
+std::vector<std::string> ConfigWarnings(const Config& config);
+
+// One sentence per kind of implausibility found, the config's (ConfigWarnings) first, empty when
+// none; each names the count, the worst member or value, and the threshold. Throws nothing.
 std::vector<std::string> PlausibilityWarnings(const Design& design);
 
 }  // namespace tbridge

@@ -23,19 +23,20 @@ namespace {
 // of a material at the edge of its range; the check keeps a NaN from reaching the output.
 void CheckFinite(const MemberSizing& s, const Material& m) {
   if (!std::isfinite(s.area) || !std::isfinite(s.radius)) {
-    throw ConfigError("material.yield_stress", std::to_string(m.yield_stress),
-                      "with material.youngs_modulus = " + std::to_string(m.youngs_modulus) +
-                          " gives a member area of " + std::to_string(s.area) + " m^2 (force " +
-                          std::to_string(s.force) + " N), outside what can be computed");
+    throw ConfigError("material.yield_stress", NumberText(m.yield_stress),
+                      "with material.youngs_modulus = " + NumberText(m.youngs_modulus) +
+                          " gives a member area of " + NumberText(s.area) + " m^2 (force " +
+                          NumberText(s.force) + " N), outside what can be computed");
   }
   if (!std::isfinite(s.stiffness)) {
-    throw ConfigError("material.youngs_modulus", std::to_string(m.youngs_modulus),
-                      "gives a string stiffness of " + std::to_string(s.stiffness) + " N/m, outside what can be computed");
+    throw ConfigError("material.youngs_modulus", NumberText(m.youngs_modulus),
+                      "gives a string stiffness of " + NumberText(s.stiffness) +
+                          " N/m, outside what can be computed");
   }
   if (!std::isfinite(s.mass)) {
-    throw ConfigError("material.density", std::to_string(m.density),
-                      "gives a member mass of " + std::to_string(s.mass) + " kg (area " + std::to_string(s.area) +
-                          " m^2), outside what can be computed");
+    throw ConfigError("material.density", NumberText(m.density),
+                      "gives a member mass of " + NumberText(s.mass) + " kg (area " +
+                          NumberText(s.area) + " m^2), outside what can be computed");
   }
 }
 

@@ -19,10 +19,10 @@ void CheckParameters(int n, int p, double beta_deg, double span) {
                       "must be an integer in [1, " + std::to_string(kMaxBarsPerModule) + "]");
   }
   if (!(beta_deg > 0.0 && beta_deg < 90.0)) {
-    throw ConfigError("bridge.beta_deg", std::to_string(beta_deg), "must be in (0, 90)");
+    throw ConfigError("bridge.beta_deg", NumberText(beta_deg), "must be in (0, 90)");
   }
   if (!(span > 0.0) || !std::isfinite(span)) {
-    throw ConfigError("bridge.span", std::to_string(span), "must be a positive number");
+    throw ConfigError("bridge.span", NumberText(span), "must be a positive number");
   }
 }
 

@@ -34,7 +34,7 @@ namespace tbridge {
 
 BridgeTopology CoupledBridge3D(int n, double beta_deg, double span, double deck_width) {
   if (!(deck_width > 0.0) || !std::isfinite(deck_width)) {
-    throw ConfigError("bridge.deck_width", std::to_string(deck_width), "must be a positive number");
+    throw ConfigError("bridge.deck_width", NumberText(deck_width), "must be a positive number");
   }
   const BridgeTopology plane = PlanarSubstructure(n, 1, beta_deg, span);
   const Structure& ps = plane.structure;

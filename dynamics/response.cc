@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -184,6 +185,57 @@ FrequencyEstimate MeanPeriodFromCrossings(const Eigen::VectorXd& signal, double 
   e.amplitude = swing / crossings;
   e.cycles = 0.5 * (crossings - 1);
   return e;
+}
+
+double TrendShare(const Eigen::VectorXd& signal) {
+  const Eigen::Index n = signal.size();
+  if (n < 2) return 0;
+  // Sample index about its mean against the signal about its mean: slope = Sty / Stt.
+  const Eigen::ArrayXd t = Eigen::ArrayXd::LinSpaced(n, 0.0, static_cast<double>(n - 1)) -
+                           0.5 * static_cast<double>(n - 1);
+  const Eigen::ArrayXd y = signal.array() - signal.mean();
+  const double total = y.square().sum();
+  if (!(total > 0)) return 0;
+  const double sty = (t * y).sum();
+  return std::min(1.0, sty * sty / (t.square().sum() * total));
+}
+
+FrequencyReading MeasureFrequency(const Eigen::VectorXd& signal, double dt,
+                                  const SpectrumOptions& options) {
+  FrequencyReading out;
+  char text[200];
+  // Equal samples are no motion, though their mean's rounding leaves DominantFrequency a
+  // spectrum of last-place noise to find a peak in.
+  if (signal.size() > 0 && signal.maxCoeff() == signal.minCoeff()) {
+    out.note = "the record is constant: nothing moves";
+    return out;
+  }
+  try {
+    const FrequencyEstimate e = DominantFrequency(signal, dt, options);
+    const double trend = TrendShare(signal);
+    const double periods = static_cast<double>(signal.size() - 1) * dt * e.frequency_hz;
+    if (trend > kMaxTrendShare) {
+      std::snprintf(
+          text, sizeof text,
+          "the motion is a drift, not an oscillation: a straight line through the record explains "
+          "%.3g %% of its variance (more than %g %%)",
+          100 * trend, 100 * kMaxTrendShare);
+      out.note = text;
+    } else if (periods < kMinPeriodsForFrequency) {
+      std::snprintf(
+          text, sizeof text,
+          "the record (%.6g s) holds %.3g periods of its strongest component (%.6g Hz), fewer "
+          "than %g: a longer run would show whether it oscillates",
+          static_cast<double>(signal.size() - 1) * dt, periods, e.frequency_hz,
+          kMinPeriodsForFrequency);
+      out.note = text;
+    } else {
+      out.estimate = e;
+    }
+  } catch (const std::invalid_argument& error) {
+    out.note = error.what();
+  }
+  return out;
 }
 
 FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt, double duration,

@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace tbridge {
@@ -64,6 +66,33 @@ struct CrossingOptions {
 // crossings (less than one period).
 FrequencyEstimate MeanPeriodFromCrossings(const Eigen::VectorXd& signal, double dt,
                                           const CrossingOptions& options = {});
+
+// A record shows a frequency only when it holds at least this many periods of it: one period
+// cannot tell an oscillation from a single swing, and the spectral peak of a record shorter
+// than two periods lies within two resolution steps 1/T of zero, where the mean removal and
+// the window bend it most.
+inline constexpr double kMinPeriodsForFrequency = 2;
+// A motion is a drift, not an oscillation, when a straight line through the record explains
+// more than this share of its variance about its mean. A sine of N whole periods gives a
+// line 6 cos^2(phase) / (pi^2 N^2) of it, at most 0.15 at N = 2 (and no more for any N >= 2,
+// whole or not): a sine long enough for a frequency is never taken for a drift.
+inline constexpr double kMaxTrendShare = 0.5;
+
+// The share of the variance of `signal` about its mean that the least-squares straight line
+// through it explains (R^2 of a linear fit, in [0, 1]); 0 for a constant signal.
+double TrendShare(const Eigen::VectorXd& signal);
+
+// The dominant frequency of `signal` (DominantFrequency) when the record shows an oscillation
+// at it; none, with the reason in `note`, where the motion is a drift (TrendShare above
+// kMaxTrendShare: a quasi-static response, a deck sinking under a load applied slowly), where
+// the record spans fewer than kMinPeriodsForFrequency periods of it, where every sample is
+// the same, or where DominantFrequency throws (its reason). Throws nothing.
+struct FrequencyReading {
+  std::optional<FrequencyEstimate> estimate;
+  std::string note;  // why there is none; empty when there is one
+};
+FrequencyReading MeasureFrequency(const Eigen::VectorXd& signal, double dt,
+                                  const SpectrumOptions& options = {});
 
 // The paper's measurement: `deck_vertical` is samples x deck nodes (vertical displacement or
 // position, the mean is removed anyway), row k at t = k dt; the rows with t <= duration [s]

@@ -93,25 +93,25 @@ void MeasureDeckFrequency(const DynamicModel& model, const SimulationResult& res
   }
   const Eigen::VectorXd& even = result.deck_even;
   const Eigen::VectorXd& odd = result.deck_odd;
-  try {
-    s.frequency = DominantFrequency(even, result.deck_sample_dt);
-    s.has_frequency = true;
-    try {
-      s.crossing_frequency = MeanPeriodFromCrossings(even, result.deck_sample_dt);
-    } catch (const std::invalid_argument&) {
-      // fewer than three crossings: a record shorter than a period; the spectral estimate stands alone
-    }
-    const auto spread = [](const Eigen::VectorXd& v) { return (v.array() - v.mean()).abs().maxCoeff(); };
-    if (spread(odd) > 1e-6 * spread(even)) {
-      try {
-        s.antisymmetric_frequency = DominantFrequency(odd, result.deck_sample_dt);
-      } catch (const std::invalid_argument&) {
-        // no dominant peak in a record this short
-      }
-    }
-  } catch (const std::invalid_argument& e) {
-    s.frequency_note = std::string("no deck frequency: ") + e.what();
+  const FrequencyReading reading = MeasureFrequency(even, result.deck_sample_dt);
+  if (!reading.estimate) {
+    s.frequency_note = "no deck frequency: " + reading.note;
+    return;
   }
+  s.frequency = *reading.estimate;
+  s.has_frequency = true;
+  try {
+    s.crossing_frequency = MeanPeriodFromCrossings(even, result.deck_sample_dt);
+  } catch (const std::invalid_argument&) {
+    // fewer than three crossings: a record shorter than a period; the spectral estimate stands
+    // alone
+  }
+  const auto spread = [](const Eigen::VectorXd& v) {
+    return (v.array() - v.mean()).abs().maxCoeff();
+  };
+  // The antisymmetric modes by the same rules: none where the odd part drifts or is too short.
+  if (spread(odd) > 1e-6 * spread(even))
+    s.antisymmetric_frequency = MeasureFrequency(odd, result.deck_sample_dt).estimate;
 }
 
 }  // namespace tbridge

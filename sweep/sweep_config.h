@@ -62,7 +62,7 @@ struct SweepConfig {
   std::vector<int> n;                // complexities, each in [1, kMaxComplexity]; non-empty
   std::vector<int> p{1};             // bars per module, each in [1, kMaxBarsPerModule]
   std::vector<double>
-      beta_deg;  // aspect angles [deg], each in (0, 90); parse default: bridge.beta_deg
+      beta_deg;  // aspect angles [deg], each in [1, 90); parse default: bridge.beta_deg
   // Rest / stretched length of the deck strings; 1.0 = the design state (prestressed at
   // sigma_w by the minimum radius), each in (0, 1].
   std::vector<double> deck_prestrain{1.0};

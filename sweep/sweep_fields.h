@@ -5,6 +5,7 @@
 
 #include <type_traits>
 
+#include "core/config_fields.h"
 #include "core/config_visitors.h"
 #include "sweep/sweep_config.h"
 
@@ -120,7 +121,7 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
   v.Integers(KeyInfo{"n", "–", "complexities", true}, s.n, 1, kMaxComplexity);
   v.Integers(KeyInfo{"p", "–", "bars per module"}, s.p, 1, kMaxBarsPerModule);
   v.Numbers(KeyInfo{"beta_deg", "deg", "aspect angles", false, nullptr, "`[bridge.beta_deg]`"},
-            s.beta_deg, Range::Open(0.0, 90.0));
+            s.beta_deg, kBetaDegRange);
   v.Numbers(KeyInfo{"deck_prestrain", "–",
                     "rest/stretched length r of the deck strings; 1.0 = the design state "
                     "(prestressed at sigma_w by the minimum radius)"},

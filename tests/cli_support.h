@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -35,6 +36,27 @@ inline fs::path FreshDir(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+// Everything below `dir`, by relative path: a file's bytes, a link's target ("-> t"), a
+// FIFO ("(fifo)") or a folder ("(dir)"). Two equal snapshots mean nothing changed.
+inline std::map<std::string, std::string> Snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  if (!fs::exists(fs::symlink_status(dir))) return out;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) {
+    const std::string rel = fs::relative(e.path(), dir).string();
+    const fs::file_status s = fs::symlink_status(e.path());
+    if (fs::is_symlink(s)) {
+      out[rel] = "-> " + fs::read_symlink(e.path()).string();
+    } else if (fs::is_fifo(s)) {
+      out[rel] = "(fifo)";
+    } else if (fs::is_directory(s)) {
+      out[rel] = "(dir)";
+    } else {
+      out[rel] = ReadText(e.path());
+    }
+  }
+  return out;
 }
 
 inline std::string Quote(const std::string& s) { return "'" + s + "'"; }

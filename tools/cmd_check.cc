@@ -30,8 +30,11 @@ const CommandSpec& CheckSpec() {
       "Each member's utilisation is its largest over the ultimate static cases and the runs.\n"
       "OUT.json has the fields of a design file; it is written only when the checks ran, and\n"
       "never partially. Exit 0 when the design passes, 1 when it fails a check or a check was\n"
-      "not run (verdict FAIL or INCOMPLETE; it says which), 2 when DESIGN.json is not a self-consistent design (the message names the\n"
-      "key: a member whose area was edited without re-deriving its rest length and forces)."};
+      "not run (verdict FAIL or INCOMPLETE; it says which), 2 when DESIGN.json is not a\n"
+      "self-consistent design (the message names the key: a member whose area was edited\n"
+      "without re-deriving its rest length and forces, or whose radius, mass or stiffness no\n"
+      "longer is what its area gives: check reads a member from its area and rest length, so\n"
+      "such an edit would be ignored)."};
   return spec;
 }
 

@@ -337,6 +337,8 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     if (s.has_frequency) {
       std::cout << "deck frequency: T = " << s.frequency.period_s << " s, f = " << s.frequency.frequency_hz
                 << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
+    } else if (!s.frequency_note.empty()) {
+      std::cout << s.frequency_note << "\n";  // "no deck frequency: ..." and why
     }
     if (!model.deck_nodes.empty()) {
       std::cout << "peak deck displacement";

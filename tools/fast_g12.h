@@ -21,16 +21,24 @@ namespace tbridge::cli {
 
 namespace fast_g12_detail {
 
-// 10^(k - 300), filled before main (no guard on each call); std::pow's powers are within an
-// ulp, which the 1e-3 margin covers.
+// The shortcut takes |v| in [10^-kShortcut, 10^kShortcut]: its decimal exponent e then lies
+// in [-kShortcut - 1, kShortcut] (the first guess may be one low), and it asks for 10^(e + 1)
+// and 10^(11 - e), so for powers from 10^-kShortcut to 10^(12 + kShortcut).
+inline constexpr int kShortcut = 290;
+inline constexpr int kLowestPower = -300, kHighestPower = 308;  // 10^308 < DBL_MAX
+static_assert(kLowestPower <= -kShortcut && kHighestPower >= 12 + kShortcut,
+              "the table must hold every power asked for");
+
+// 10^k for k in [kLowestPower, kHighestPower], filled before main (no guard on each call);
+// std::pow's powers are within an ulp, which the 1e-3 margin covers.
 struct Powers {
-  double p[600];
+  double p[kHighestPower - kLowestPower + 1];
   Powers() {
-    for (int k = 0; k < 600; ++k) p[k] = std::pow(10.0, k - 300);
+    for (int k = kLowestPower; k <= kHighestPower; ++k) p[k - kLowestPower] = std::pow(10.0, k);
   }
 };
 inline const Powers kPowersOfTen;
-inline double Pow10(int k) { return kPowersOfTen.p[k + 300]; }
+inline double Pow10(int k) { return kPowersOfTen.p[k - kLowestPower]; }
 
 inline char* Fallback(char* p, char* end, double v) {
   return std::to_chars(p, end, v, std::chars_format::general, 12).ptr;
@@ -54,7 +62,7 @@ inline constexpr std::array<std::uint32_t, 10000> kFourDigits = MakeFourDigits()
 inline char* FormatG12(char* p, char* end, double v) {
   namespace d = fast_g12_detail;
   const double a = std::fabs(v);
-  if (!(a >= 1e-290 && a <= 1e290)) return d::Fallback(p, end, v);
+  if (!(a >= 1e-290 && a <= 1e290)) return d::Fallback(p, end, v);  // 10^±d::kShortcut
   std::uint64_t bits = 0;
   std::memcpy(&bits, &a, sizeof bits);
   const int e2 = static_cast<int>(bits >> 52) - 1023;  // a in [2^e2, 2^(e2 + 1)): a is normal here

@@ -116,7 +116,7 @@ TEST_CASE("wrong types are rejected") {
 
   json beta_text = GoodConfig();
   beta_text["bridge"]["beta_deg"] = "10";
-  ExpectRejected(beta_text, "bridge.beta_deg", "\"10\"", "(0, 90)");
+  ExpectRejected(beta_text, "bridge.beta_deg", "\"10\"", "[1, 90)");
 
   json solver_number = GoodConfig();
   solver_number["design"]["solver"] = 3;
@@ -152,31 +152,39 @@ TEST_CASE("complexity n outside [1, 16] is rejected") {
   }
 }
 
-TEST_CASE("beta outside the open interval (0, 90) deg is rejected") {
-  for (double beta : {0.0, 90.0, -5.0, 120.0}) {
+TEST_CASE("beta outside [1, 90) deg is rejected") {
+  // Below 1 deg is an angle given in radians (tests/core/unit_slip_test.cc); 90 deg and more
+  // draw no bridge.
+  for (double beta : {0.0, 0.5, 90.0, -5.0, 120.0}) {
     json c = GoodConfig();
     c["bridge"]["beta_deg"] = beta;
-    ExpectRejected(c, "bridge.beta_deg", json(beta).dump(), "a number in (0, 90)");
+    ExpectRejected(c, "bridge.beta_deg", json(beta).dump(), "a number in [1, 90)");
   }
-  // The interval is open, but anything strictly inside is a valid (if odd) bridge.
-  json inside = GoodConfig();
-  inside["bridge"]["beta_deg"] = 89.9;
-  CHECK(ParseConfig(inside).bridge.beta_deg == 89.9);  // exact: copied from JSON
+  // Anything inside, 1 deg included, is a valid (if odd) bridge.
+  for (double beta : {1.0, 89.9}) {
+    json inside = GoodConfig();
+    inside["bridge"]["beta_deg"] = beta;
+    CHECK(ParseConfig(inside).bridge.beta_deg == beta);  // exact: copied from JSON
+  }
 }
 
 TEST_CASE("zero or negative span, payload, stresses and moduli are rejected") {
   struct Case {
     const char* section;
     const char* key;
+    const char* allowed;  // the key's range: above 0, or above the end that catches unit slips
   };
-  const std::vector<Case> positive = {{"bridge", "span"},           {"bridge", "payload"},
-                                      {"bridge", "deck_width"},     {"material", "density"},
-                                      {"material", "yield_stress"}, {"material", "youngs_modulus"}};
+  const std::vector<Case> positive = {{"bridge", "span", "a number in (0, 2000]"},
+                                      {"bridge", "payload", "a number > 0"},
+                                      {"bridge", "deck_width", "a number > 0"},
+                                      {"material", "density", "a number >= 100"},
+                                      {"material", "yield_stress", "a number >= 1e+06"},
+                                      {"material", "youngs_modulus", "a number >= 1e+09"}};
   for (const Case& k : positive) {
     for (double v : {0.0, -12.0}) {
       json c = GoodConfig();
       c[k.section][k.key] = v;
-      ExpectRejected(c, std::string(k.section) + "." + k.key, json(v).dump(), "a number > 0");
+      ExpectRejected(c, std::string(k.section) + "." + k.key, json(v).dump(), k.allowed);
     }
   }
 }
@@ -197,7 +205,7 @@ TEST_CASE("NaN and infinite numbers are rejected") {
     json c = GoodConfig();
     c["bridge"]["span"] = bad;
     // nlohmann shows a non-finite number as null.
-    ExpectRejected(c, "bridge.span", "null", "a number > 0");
+    ExpectRejected(c, "bridge.span", "null", "a number in (0, 2000]");
   }
   json huge_n = GoodConfig();
   huge_n["bridge"]["n"] = 1e300;

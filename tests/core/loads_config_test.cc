@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "config_expect.h"
 #include "core/config.h"
@@ -41,6 +42,15 @@ TEST_CASE("bad loads input gets an error naming the key") {
   ExpectKeyNamed(json::parse(R"({"cases": ["paper", "payload"]})"), "loads.cases");
   ExpectKeyNamed(json::parse(R"({"cases": ["payload", "paper"]})"), "loads.cases");
   ExpectKeyNamed(json::parse(R"({"gamma_g_sup": 1.2, "gamma_g_inf": 1.3})"), "loads.gamma_g_inf");
+  // A planar bridge drops "wind" (design/load_cases.h), which would leave nothing to design for.
+  ExpectKeyNamed(json::parse(R"({"cases": ["wind"]})"), "loads.cases");
+}
+
+TEST_CASE("\"wind\" alone is a case list for the 3D bridge") {
+  // The control of the rule above: the 3D bridge carries wind, so the same list parses.
+  json root = WithLoads(json::parse(R"({"cases": ["wind"]})"));
+  root["bridge"]["planes"] = 2;
+  CHECK(ParseConfig(root).loads.cases == std::vector<std::string>{"wind"});
 }
 
 }  // namespace

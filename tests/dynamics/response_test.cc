@@ -160,5 +160,45 @@ TEST_CASE("Estimators reject unusable records", "[dynamics][response]") {
                     Catch::Contains("need 3"));
 }
 
+TEST_CASE("The trend share of a ramp is 1, of a sine of N periods 6 / (pi^2 N^2)",
+          "[dynamics][response]") {
+  const Eigen::VectorXd ramp = Eigen::VectorXd::LinSpaced(1001, 0.0, 0.2);
+  CHECK(TrendShare(ramp) == Approx(1.0).epsilon(1e-12));  // exactly a line; 1e-12 for rounding
+  for (const double periods : {2.0, 5.0}) {
+    // The continuous closed form: cov(t, sin(2 pi N t)) = -1/(2 pi N), var t = 1/12, var sin
+    // = 1/2 over [0, 1]. 1001 samples sum to the integral within O(1/n): 0.3 % here, so 1 %.
+    const Eigen::VectorXd sine = Signal({{1.0, 2 * kPi * periods, 0.0}}, 1e-3, 1001);
+    CHECK(TrendShare(sine) == Approx(6 / (kPi * kPi * periods * periods)).epsilon(0.01));
+  }
+  CHECK(TrendShare(Eigen::VectorXd::Constant(10, 3.0)) == 0);  // no variance to explain
+}
+
+TEST_CASE("A frequency is read only from an oscillation of at least two periods",
+          "[dynamics][response]") {
+  const double dt = 1e-3;
+  // 5 periods of 5 Hz over the 1 s record, on an offset: its frequency. The least-squares
+  // refinement is exact for a clean sinusoid, so 1e-4 as above; the FFT grid alone would be
+  // within half its step, 1 / (2 x 8 x 1 s) = 0.0625 Hz.
+  const FrequencyReading five =
+      MeasureFrequency(Signal({{0.02, 2 * kPi * 5.0, 0.3}}, dt, 1001, -0.1), dt);
+  INFO(five.note);
+  REQUIRE(five.estimate);
+  CHECK(five.estimate->frequency_hz == Approx(5.0).epsilon(1e-4));
+  CHECK(five.note.empty());
+  // 1.5 periods: one swing and a half tell no frequency.
+  const FrequencyReading short_record =
+      MeasureFrequency(Signal({{0.02, 2 * kPi * 1.5, 0.3}}, dt, 1001), dt);
+  CHECK_FALSE(short_record.estimate);
+  CHECK_THAT(short_record.note, Catch::Contains("periods") && Catch::Contains("fewer than 2"));
+  // A pure ramp, as a deck sinking under a slowly applied load: a drift, whatever its spectrum.
+  const FrequencyReading ramp = MeasureFrequency(Eigen::VectorXd::LinSpaced(1001, 0.0, -0.5), dt);
+  CHECK_FALSE(ramp.estimate);
+  CHECK_THAT(ramp.note, Catch::Contains("drift") && Catch::Contains("100 %"));
+  // A constant record, whose mean removal leaves only last-place noise: nothing moves.
+  const FrequencyReading still = MeasureFrequency(Eigen::VectorXd::Constant(1001, 0.1), dt);
+  CHECK_FALSE(still.estimate);
+  CHECK_THAT(still.note, Catch::Contains("constant"));
+}
+
 }  // namespace
 }  // namespace tbridge

@@ -34,27 +34,7 @@ using test::CliResult;
 using test::FreshDir;
 using test::Quote;
 using test::ReadText;
-
-// Everything below `dir`, by relative path: a file's bytes, a link's target ("-> t"), a
-// FIFO ("(fifo)") or a folder ("(dir)"). Two equal snapshots mean nothing changed.
-std::map<std::string, std::string> Snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  if (!fs::exists(fs::symlink_status(dir))) return out;
-  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) {
-    const std::string rel = fs::relative(e.path(), dir).string();
-    const fs::file_status s = fs::symlink_status(e.path());
-    if (fs::is_symlink(s)) {
-      out[rel] = "-> " + fs::read_symlink(e.path()).string();
-    } else if (fs::is_fifo(s)) {
-      out[rel] = "(fifo)";
-    } else if (fs::is_directory(s)) {
-      out[rel] = "(dir)";
-    } else {
-      out[rel] = ReadText(e.path());
-    }
-  }
-  return out;
-}
+using test::Snapshot;
 
 // `text`, a config, with the paper's switches (test::WithPaperSwitches), as JSON text.
 std::string Paper(const std::string& text) { return test::WithPaperSwitches(nlohmann::json::parse(text)).dump(); }
@@ -201,7 +181,7 @@ TEST_CASE("run limits: 1e7 steps fit the defaults, a history of 1e9 steps does n
 TEST_CASE("defect 4: overflowing inputs are bad input naming the key, not a solver failure") {
   const fs::path dir = FreshDir("trust_overflow");
   const std::pair<const char*, const char*> cases[] = {
-      {R"({"bridge": {"n": 3, "span": 1e300}})", "'bridge.span' = 1e+300"},
+      {R"({"bridge": {"n": 3, "deck_width": 1e300}})", "'bridge.deck_width' = 1e+300"},
       {R"({"bridge": {"n": 3}, "material": {"density": 1e300}})", "'material.density' = 1e+300"},
       {R"({"bridge": {"n": 3, "payload": 1e300}})", "'bridge.payload' = 1e+300"}};
   for (const auto& [text, named] : cases) {
