@@ -52,8 +52,9 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
       m.mode = SizingRowKindName(row.kind);
       m.governing_case = problem.combinations()[row.combination].label;
     }
-    // At its floor within the solver's tolerance: the minimum size binds, not a load.
-    m.governed_by = m.area <= floor[j] * (1 + 1e-6) ? "min_radius" : m.mode;
+    // What sizes it: its floor (within the solver's tolerance), its own strength where that
+    // is used up, else the stiffness it gives (the deflection and taut-string rows).
+    m.governed_by = m.area <= floor[j] * (1 + 1e-6) ? "min_radius" : m.utilisation >= 1 - 1e-3 ? m.mode : "stiffness";
   }
 }
 

@@ -152,7 +152,7 @@ TEST_CASE("complexity n outside [1, 16] is rejected") {
   }
 }
 
-TEST_CASE("beta outside [1, 90) deg is rejected") {
+TEST_CASE("beta outside the half-open interval from 1 to 90 deg is rejected") {
   // Below 1 deg is an angle given in radians (tests/core/unit_slip_test.cc); 90 deg and more
   // draw no bridge.
   for (double beta : {0.0, 0.5, 90.0, -5.0, 120.0}) {
