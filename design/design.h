@@ -93,8 +93,10 @@ Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
 // state is G (with the members' weight from these areas) carried by the particular forces
 // plus the prestress N alpha, and each string's rest length makes it carry its reference
 // force at the drawn geometry. The members' force, utilisation and governing case are the
-// reference state's; the caller's analysis sets them. Throws ModelError when a string would
-// be in compression in the reference state.
+// reference state's; the caller's analysis sets them. A string in compression in the
+// reference state gets the rest length of zero tension (its drawn length): such a design is
+// a start for the sizing, whose reference-taut rows mend it, not a bridge (its stability
+// verdict says so).
 Design SizedDesign(const Config& config, const std::vector<double>& areas, const Eigen::VectorXd& alpha);
 
 // The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over

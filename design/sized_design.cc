@@ -40,12 +40,6 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
     const bool bar = j < nb;
     const Member& e = bar ? s.bars[j] : s.strings[j - nb];
     const double force = d.reference_forces[j];
-    if (!bar && force < -1e-9 * d.reference_forces.cwiseAbs().maxCoeff()) {
-      std::ostringstream os;
-      os << "the sized design puts string " << Structure::Name(e) << " in compression (" << force
-         << " N) in its reference state";
-      throw ModelError(os.str());
-    }
     // The sizers at zero force with the area as the floor give that area and what follows
     // from it (radius, mass, rest length from the reference force, stiffness).
     MemberSizing m = bar ? SizeBar(s.Length(e), 0.0, areas[j], rule, config.material)

@@ -9,6 +9,7 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/linear_response.h"
+#include "design/stability.h"
 
 namespace tbridge {
 
@@ -159,7 +160,13 @@ struct SizingProblem::Impl {
     Eigen::VectorXd k(ns);
     for (int q = 0; q < ns; ++q) k[q] = (E * st.a[nb + q] + st.xr[nb + q]) / length[nb + q];
     st.g.resize(static_cast<Eigen::Index>(rows.size()));
+    // A reference state that is not stable (a negative stiffness on the motions that keep the
+    // bar lengths) has no meaningful linear response: the point is an evaluation error, and
+    // the solvers step back from it.
+    const std::vector<double> k_list(k.data(), k.data() + k.size());
+    const bool stable = AssessStability(s, st.xr, k_list, false).stable;
     try {
+      if (!stable) throw ModelError("unstable");
       st.lin = std::make_unique<LinearResponse>(s, st.xr, k);
     } catch (const ModelError&) {
       st.lin.reset();
@@ -283,9 +290,12 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
         }
       }
     }
-    // Every string stays taut in every combination: the linear analysis holds only while no
-    // string goes slack (a slack string would carry compression in it).
-    for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kTaut, j, c});
+    // The strings that must stay taut (the prestressed ones) do so in every combination. The
+    // others may go slack, as the checks allow: the linear analysis then reads them in
+    // compression, and the checks' corrections (kappa, kappa_d) carry the difference.
+    for (int j = p.nb; j < p.nm; ++j) {
+      if (p.must_taut[j]) p.rows.push_back({SizingRow::kTaut, j, c});
+    }
     if (!p.combos[c].ultimate) {
       for (int v : p.deck_nodes) {
         p.rows.push_back({SizingRow::kDeflectionDown, v, c});

@@ -7,14 +7,15 @@
 //   over A_g (one per group of mirror-image members) and alpha (self-stress coefficients)
 //   s.t. for every ultimate combination c (each travelling station one combination):
 //          kappa_j C_cj <= R_j(A_j) (bars: buckling and yield), kappa_j T_cj <= sigma_w A_j,
+//        for every combination c: T_cs >= tau_s for the strings that must stay taut,
 //        for every serviceability combination c:
-//          T_cs >= tau_s for the strings that must stay taut,
 //          kappa_d |v_cn| <= span / deflection_limit at each deck node,
 //        T_s >= 0 in the reference state, A_j >= the member's minimum area,
 //   x_c = x_G + N alpha + dx_c(A, alpha),  dx_c the linear response to f_c - f_G.
 //
-// kappa (per member, >= 1) and kappa_d correct the linear demand by what the nonlinear static
-// check and the dynamic runs found (verify/verified_design.h); tau_s the taut margin they ask.
+// kappa (per member) and kappa_d correct the linear demand by what the nonlinear static check
+// and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut margin
+// they ask.
 // The members' weight in G is held at the design the problem was built from (the outer
 // iterations update it). Gradients are exact (direct sensitivities); no Hessian: the solvers
 // approximate it (Ipopt's limited-memory BFGS, NLopt's MMA).
@@ -32,9 +33,9 @@ namespace tbridge {
 
 // What the outer iterations tell the problem (all sized by [bars; strings]).
 struct SizingCorrections {
-  std::vector<double> demand_factor;  // kappa_j >= 1 on each member's linear demand
+  std::vector<double> demand_factor;  // kappa_j on each member's linear demand (1: none)
   std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
-  double deflection_factor = 1.0;     // kappa_d >= 1 on the linear deflections
+  double deflection_factor = 1.0;     // kappa_d on the linear deflections
 };
 
 // One constraint row's meaning, for the report: which member (or deck node), combination and
