@@ -200,6 +200,14 @@ void RequireStable(const Design& d) {
   throw ModelError(os.str());
 }
 
+std::vector<double> MemberAreas(const Design& d) {
+  std::vector<double> areas;
+  for (const auto* list : {&d.bars, &d.strings}) {
+    for (const MemberSizing& m : *list) areas.push_back(m.area);
+  }
+  return areas;
+}
+
 Eigen::VectorXd MemberForces(const Design& d) {
   Eigen::VectorXd x(d.bars.size() + d.strings.size());
   for (size_t b = 0; b < d.bars.size(); ++b) x[b] = d.bars[b].force;

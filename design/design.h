@@ -142,6 +142,9 @@ Eigen::VectorXd PrestressForces(const Design& design);
 // A string's kind: a deck string (group "deck") or any other.
 MemberKind StringKind(const Member& string);
 
+// The members' areas [m^2], [bars; strings].
+std::vector<double> MemberAreas(const Design& design);
+
 // Member forces as one vector [C_bars; T_strings] in N (equilibrium unknown order).
 Eigen::VectorXd MemberForces(const Design& design);
 

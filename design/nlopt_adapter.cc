@@ -82,9 +82,7 @@ SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& opt
   }
   RowBlock inequalities{&context, m_eq, m_in, -1.0, g_lo.tail(m_in)};
 
-  const bool mma = options.nlopt_method == SolverOptions::NloptMethod::kMma;
-  if (mma && m_eq > 0) throw std::logic_error("NLopt adapter: MMA takes no equality constraints");
-  nlopt::opt opt(mma ? nlopt::LD_MMA : nlopt::LD_SLSQP, static_cast<unsigned>(n));
+  nlopt::opt opt(nlopt::LD_SLSQP, static_cast<unsigned>(n));
   opt.set_lower_bounds(std::vector<double>(lo.data(), lo.data() + n));
   opt.set_upper_bounds(std::vector<double>(hi.data(), hi.data() + n));
   opt.set_min_objective(ObjectiveFn, &context);

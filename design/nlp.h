@@ -50,10 +50,6 @@ struct SolverOptions {
   double tolerance = 1e-10;
   int max_iterations = 3000;
   bool verbose = false;
-  // NLopt's method: SLSQP (sequential quadratic programming), or MMA (Svanberg's method of
-  // moving asymptotes, the standard of structural sizing; inequalities only).
-  enum class NloptMethod { kSlsqp, kMma };
-  NloptMethod nlopt_method = NloptMethod::kSlsqp;
 };
 
 // Adapters: each is the only file that includes its solver's headers, and each is its own

@@ -339,9 +339,10 @@ void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) con
 }
 
 void SizingProblem::ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
-  // A margin of 1e-7 on every row, so that a solver's tolerance on feasibility (1e-9 and
-  // looser) never leaves a utilisation a rounding step above 1.
-  lo = Eigen::VectorXd::Constant(num_constraints(), 1e-7);
+  // A margin of 1e-4 on every row (a utilisation at most 0.9999): the outer iterations'
+  // corrections make the linear demand the checks' only up to the change of the last step,
+  // and a solver's feasibility tolerance (1e-8) must not leave a utilisation above 1.
+  lo = Eigen::VectorXd::Constant(num_constraints(), 1e-4);
   hi = Eigen::VectorXd::Constant(num_constraints(), std::numeric_limits<double>::infinity());
 }
 

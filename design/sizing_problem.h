@@ -18,7 +18,7 @@
 // they ask.
 // The members' weight in G is held at the design the problem was built from (the outer
 // iterations update it). Gradients are exact (direct sensitivities); no Hessian: the solvers
-// approximate it (Ipopt's limited-memory BFGS, NLopt's MMA).
+// approximate it (Ipopt's limited-memory BFGS, NLopt's SLSQP).
 #pragma once
 
 #include <Eigen/Core>

@@ -27,6 +27,6 @@ namespace tbridge {
 void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics);
 
 // The last design, with its static check and its `resizing` record.
-Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 30);
+Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 15);
 
 }  // namespace tbridge

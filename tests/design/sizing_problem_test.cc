@@ -16,21 +16,13 @@ Design SmallDesign() {
   return RunDesign(config);
 }
 
-std::vector<double> AreasOf(const Design& d) {
-  std::vector<double> a;
-  for (const auto* list : {&d.bars, &d.strings}) {
-    for (const MemberSizing& m : *list) a.push_back(m.area);
-  }
-  return a;
-}
-
 TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[design]") {
   const Design d = SmallDesign();
   SizingCorrections corrections;
   corrections.demand_factor.assign(d.bars.size() + d.strings.size(), 1.3);  // kappa enters every row
   corrections.deflection_factor = 1.2;
   const SizingProblem problem(d, corrections);
-  const Eigen::VectorXd x = problem.VariablesOf(AreasOf(d), problem.AlphaOf(d.reference_forces));
+  const Eigen::VectorXd x = problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
   const int n = problem.num_variables(), m = problem.num_constraints();
   REQUIRE(n >= 2);
   std::vector<double> values(problem.JacobianPattern().size());
