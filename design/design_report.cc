@@ -289,6 +289,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("resizing", {{"iterations", d.resizing.iterations},
                      {"converged", d.resizing.converged},
                      {"structure_mass_kg", d.resizing.structure_mass_kg},
+                     {"utilisation_max", d.resizing.utilisation_max},
                      {"why", d.resizing.why}});
   field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);

@@ -109,7 +109,8 @@ struct DynamicCheck {
 struct Resizing {
   int iterations = 0;                     // designs run
   bool converged = false;                 // the last one passed every check
-  std::vector<double> structure_mass_kg;  // per design
+  std::vector<double> structure_mass_kg;  // per design: the start, then each sizing
+  std::vector<double> utilisation_max;    // per sizing: the largest the checks found (a violation above 1)
   std::string why;                        // when not converged: the last verdict
 };
 

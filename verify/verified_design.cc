@@ -209,6 +209,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     RecordChecks(d, statics, dynamics);
     record.structure_mass_kg.push_back(d.mass.structure);
     const Verdict verdict = DesignVerdict(d);
+    record.utilisation_max.push_back(verdict.utilisation_max);
     // Converged: a design that passes after a design that passed, whose mass the last
     // correction (both ways, from a passing design) moved by less than kSettled: the linear
     // model says what the checks say.
