@@ -69,10 +69,13 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
   }
 }
 
-Eigen::VectorXd LinearResponse::FreeVector(const Eigen::Matrix3Xd& loads) const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(ndof_);
-  for (int a = 0; a < s_.num_nodes(); ++a) {
-    if (dof_[a] >= 0) f.segment(dof_[a], dim_) = loads.col(a).head(dim_);
+Eigen::VectorXd LinearResponse::FreeVector(const Structure& s, const Eigen::Matrix3Xd& loads) {
+  const int dim = s.dim();
+  int ndof = 0;
+  const std::vector<int> dof = FreeDofs(s.fixed, dim, ndof);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(ndof);
+  for (int a = 0; a < s.num_nodes(); ++a) {
+    if (dof[a] >= 0) f.segment(dof[a], dim) = loads.col(a).head(dim);
   }
   return f;
 }

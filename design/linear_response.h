@@ -39,8 +39,10 @@ class LinearResponse {
 
   int num_free_dofs() const { return ndof_; }
   int num_members() const { return nb_ + ns_; }
-  // The free-DOF vector (dim per free node, node order) of 3 x n_n node loads [N].
-  Eigen::VectorXd FreeVector(const Eigen::Matrix3Xd& loads) const;
+  // The free-DOF vector (dim per free node, node order) of 3 x n_n node loads [N]: the
+  // right-hand side Solve takes, for `structure` without a response built.
+  static Eigen::VectorXd FreeVector(const Structure& structure, const Eigen::Matrix3Xd& loads);
+  Eigen::VectorXd FreeVector(const Eigen::Matrix3Xd& loads) const { return FreeVector(s_, loads); }
   // [u; mu / s] for each column of free-DOF loads [N]: (n_dof + n_b) x columns (s the bar
   // rows' scale, which ForceChanges takes back out).
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& free_loads) const;

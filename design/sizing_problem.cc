@@ -70,6 +70,11 @@ std::vector<int> SymmetryGroups(const Structure& s, double span) {
   return group;
 }
 
+// A member's resistance [N] and its derivative by the area [N/m^2].
+struct Resistance {
+  double value = 0, derivative = 0;
+};
+
 }  // namespace
 
 const char* SizingRowKindName(SizingRow::Kind kind) {
@@ -124,6 +129,7 @@ struct SizingProblem::Impl {
     Eigen::MatrixXd u, dx;  // solutions and force changes per column
     Eigen::VectorXd xr;
     std::vector<double> a;
+    std::vector<Eigen::VectorXd> forces;  // per combination [N]
   };
   mutable State st;
 
@@ -175,43 +181,66 @@ struct SizingProblem::Impl {
     }
     st.u = st.lin->Solve(loads);
     st.dx = st.lin->ForceChanges(st.u);
-    std::vector<Eigen::VectorXd> forces(combos.size());
-    for (size_t c = 0; c < combos.size(); ++c) forces[c] = Forces(static_cast<int>(c), st.xr, st.dx);
-    for (size_t r = 0; r < rows.size(); ++r) st.g[r] = Row(rows[r], forces, st.u, nullptr);
+    st.forces.resize(combos.size());
+    for (size_t c = 0; c < combos.size(); ++c) st.forces[c] = Forces(static_cast<int>(c), st.xr, st.dx);
+    for (size_t r = 0; r < rows.size(); ++r) st.g[r] = Value(rows[r]);
   }
 
-  // Row r's value, or with `d_area` (the derivative of the member's area, or null) its
-  // derivative from the forces' and deflections' derivatives passed in `forces` and `u`.
-  double Row(const SizingRow& row, const std::vector<Eigen::VectorXd>& forces, const Eigen::MatrixXd& u,
-             const double* d_area) const {
+  // The resistance of row's member [N] and its derivative by the area [N/m^2] (strength rows).
+  Resistance ResistanceOf(const SizingRow& row) const {
+    const int j = row.member;
+    if (row.kind == SizingRow::kStrength) return {sigma_w * st.a[j], sigma_w};
+    const BarCapacity cap = BarResistance(st.a[j], length[j], rule, E);
+    return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
+                                            : Resistance{cap.yield, cap.d_yield};
+  }
+
+  // A row's value at the evaluated state.
+  double Value(const SizingRow& row) const {
     const int j = row.member, c = row.combination;
     switch (row.kind) {
       case SizingRow::kStrength:
       case SizingRow::kBuckling:
       case SizingRow::kYield:
-        return 0;  // handled by StrengthRow
+        return 1.0 - corrections.demand_factor[j] * st.forces[c][j] / ResistanceOf(row).value;
       case SizingRow::kTaut:
-        return (forces[c][j] - (d_area ? 0.0 : corrections.taut_margin_n[j])) / force_scale;
+        return (st.forces[c][j] - corrections.taut_margin_n[j]) / force_scale;
       case SizingRow::kDeflectionDown:
-        return (d_area ? 0.0 : 1.0) + corrections.deflection_factor * Vertical(c, j, u) / deflection_limit_m;
+        return 1.0 + corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kDeflectionUp:
-        return (d_area ? 0.0 : 1.0) - corrections.deflection_factor * Vertical(c, j, u) / deflection_limit_m;
+        return 1.0 - corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kReferenceTaut:
         break;
     }
-    return 0;
+    return st.xr[j] / force_scale;
+  }
+
+  // A row's derivative along a direction that moves the combinations' forces by `dforces`,
+  // the solutions by `du`, the reference forces by `dxr` and the row member's area by `d_area`.
+  double Derivative(const SizingRow& row, const std::vector<Eigen::VectorXd>& dforces, const Eigen::MatrixXd& du,
+                    const Eigen::VectorXd& dxr, double d_area) const {
+    const int j = row.member, c = row.combination;
+    switch (row.kind) {
+      case SizingRow::kStrength:
+      case SizingRow::kBuckling:
+      case SizingRow::kYield: {
+        // g = 1 - kappa F / R(A): dg = -kappa dF / R + kappa F R'(A) dA / R^2.
+        const Resistance r = ResistanceOf(row);
+        const double kappa = corrections.demand_factor[j];
+        return -kappa * dforces[c][j] / r.value + kappa * st.forces[c][j] * r.derivative * d_area / (r.value * r.value);
+      }
+      case SizingRow::kTaut:
+        return dforces[c][j] / force_scale;
+      case SizingRow::kDeflectionDown:
+        return corrections.deflection_factor * Vertical(c, j, du) / deflection_limit_m;
+      case SizingRow::kDeflectionUp:
+        return -corrections.deflection_factor * Vertical(c, j, du) / deflection_limit_m;
+      case SizingRow::kReferenceTaut:
+        break;
+    }
+    return dxr[j] / force_scale;
   }
 };
-
-// The strength rows need the area and its resistance; they are written out here, with their
-// derivatives, rather than through Row.
-namespace {
-
-struct Resistance {
-  double value = 0, derivative = 0;
-};
-
-}  // namespace
 
 SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, const std::vector<char>* keep)
     : impl_(std::make_unique<Impl>()) {
@@ -258,12 +287,13 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   p.mass_scale = std::max(d.mass.structure, 1e-3);
 
   // The load columns: each case's change from the reference loads, then a unit station load.
-  const LinearResponse probe(s, d.reference_forces, Eigen::VectorXd::Ones(p.ns));  // only its DOF map
   const int stations = static_cast<int>(d.actions.station_nodes.size());
-  p.loads.resize(probe.num_free_dofs(), static_cast<Eigen::Index>(d.cases.size()) + stations);
-  for (size_t c = 0; c < d.cases.size(); ++c) p.loads.col(c) = probe.FreeVector(d.actions.Loads(d.cases[c]) - d.loads);
+  auto free = [&s](const Eigen::Matrix3Xd& loads) { return LinearResponse::FreeVector(s, loads); };
+  const Eigen::VectorXd reference_free = free(d.loads);
+  p.loads.resize(reference_free.size(), static_cast<Eigen::Index>(d.cases.size()) + stations);
+  for (size_t c = 0; c < d.cases.size(); ++c) p.loads.col(c) = free(d.actions.Loads(d.cases[c])) - reference_free;
   p.station_column0 = static_cast<int>(d.cases.size());
-  for (int k = 0; k < stations; ++k) p.loads.col(p.station_column0 + k) = probe.FreeVector(d.actions.StationLoad(k, 1.0));
+  for (int k = 0; k < stations; ++k) p.loads.col(p.station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
     for (int k = lc.station_load != 0 ? 0 : -1; k < (lc.station_load != 0 ? stations : 0); ++k) {
@@ -361,39 +391,9 @@ void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x
   for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho * p.length[j] * kAreaScale / p.mass_scale;
 }
 
-namespace {
-
-// A strength row, g = 1 - kappa F / R(A), and its derivative for dF and dA.
-double StrengthRow(double kappa, double force, double d_force, const Resistance& r, double d_area) {
-  if (d_area == 0 && d_force == 0) return 0;
-  return -kappa * d_force / r.value + kappa * force * r.derivative * d_area / (r.value * r.value);
-}
-
-Resistance ResistanceOf(SizingRow::Kind kind, double area, double length, const BarRule& rule, double E,
-                        double sigma_w) {
-  if (kind == SizingRow::kStrength) return {sigma_w * area, sigma_w};
-  const BarCapacity cap = BarResistance(area, length, rule, E);
-  return kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling} : Resistance{cap.yield, cap.d_yield};
-}
-
-}  // namespace
-
 void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
-  g = p.st.g;
-  if (!p.st.lin) return;
-  for (size_t r = 0; r < p.rows.size(); ++r) {
-    const SizingRow& row = p.rows[r];
-    const int j = row.member;
-    if (row.kind == SizingRow::kReferenceTaut) {
-      g[r] = p.st.xr[j] / p.force_scale;
-    } else if (row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling || row.kind == SizingRow::kYield) {
-      const Resistance res = ResistanceOf(row.kind, p.st.a[j], p.length[j], p.rule, p.E, p.sigma_w);
-      const double force = p.Forces(row.combination, p.st.xr, p.st.dx)[j];
-      g[r] = 1.0 - p.corrections.demand_factor[j] * force / res.value;
-    }
-  }
+  impl_->Evaluate(x);
+  g = impl_->st.g;
 }
 
 const NlpProblem::Pattern& SizingProblem::JacobianPattern() const { return impl_->jacobian; }
@@ -426,22 +426,9 @@ void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, d
       const Eigen::MatrixXd ddx = p.st.lin->ForceChangeDerivative(p.st.u, du, dp);
       std::vector<Eigen::VectorXd> dforces(p.combos.size());
       for (size_t c = 0; c < p.combos.size(); ++c) dforces[c] = p.Forces(static_cast<int>(c), dp.forces, ddx);
-      const double one = 1.0;
       for (int r = 0; r < nr; ++r) {
         const SizingRow& row = p.rows[r];
-        const int j = row.member;
-        double value = 0;
-        if (row.kind == SizingRow::kReferenceTaut) {
-          value = dp.forces[j] / p.force_scale;
-        } else if (row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling ||
-                   row.kind == SizingRow::kYield) {
-          const Resistance res = ResistanceOf(row.kind, p.st.a[j], p.length[j], p.rule, p.E, p.sigma_w);
-          const double force = p.Forces(row.combination, p.st.xr, p.st.dx)[j];
-          value = StrengthRow(p.corrections.demand_factor[j], force, dforces[row.combination][j], res, d_area[j]);
-        } else {
-          value = p.Row(row, dforces, du, &one);
-        }
-        p.st.jac(r, v) = value;
+        p.st.jac(r, v) = p.Derivative(row, dforces, du, dp.forces, d_area[row.member]);
       }
     }
     p.st.have_jac = true;
@@ -476,8 +463,6 @@ Eigen::VectorXd SizingProblem::AlphaOf(const Eigen::VectorXd& reference_forces) 
   return p.N.transpose() * (reference_forces - p.x_g);  // N is orthonormal
 }
 
-Eigen::VectorXd SizingProblem::ReferenceForces(const Eigen::VectorXd& x) const { return impl_->Reference(x); }
-
 std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::VectorXd& x) const {
   const Impl& p = *impl_;
   p.Evaluate(x);
@@ -487,10 +472,10 @@ std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::Vec
     const SizingRow& row = p.rows[r];
     if (row.kind != SizingRow::kStrength && row.kind != SizingRow::kBuckling && row.kind != SizingRow::kYield) continue;
     const int j = row.member;
-    const Resistance res = ResistanceOf(row.kind, p.st.a[j], p.length[j], p.rule, p.E, p.sigma_w);
-    const double demand = p.corrections.demand_factor[j] * p.Forces(row.combination, p.st.xr, p.st.dx)[j];
-    if (demand / res.value > out[j].utilisation || out[j].row < 0) {
-      out[j] = {demand / res.value, demand, res.value, static_cast<int>(r)};
+    const double resistance = p.ResistanceOf(row).value;
+    const double demand = p.corrections.demand_factor[j] * p.st.forces[row.combination][j];
+    if (demand / resistance > out[j].utilisation || out[j].row < 0) {
+      out[j] = {demand / resistance, demand, resistance, static_cast<int>(r)};
     }
   }
   return out;
@@ -511,6 +496,5 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
 const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }
 const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of; }
-double SizingProblem::MassScale() const { return impl_->mass_scale; }
 
 }  // namespace tbridge

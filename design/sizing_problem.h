@@ -85,7 +85,6 @@ class SizingProblem final : public NlpProblem {
   Eigen::VectorXd Alpha(const Eigen::VectorXd& x) const;        // self-stress coefficients [N]
   // The coefficients of the prestress in reference forces [N] carrying this problem's G.
   Eigen::VectorXd AlphaOf(const Eigen::VectorXd& reference_forces) const;
-  Eigen::VectorXd ReferenceForces(const Eigen::VectorXd& x) const;  // x_G + N alpha [N]
   // Each member's largest linear utilisation (with its correction) over the combinations,
   // and the row that gives it.
   struct MemberDemand {
@@ -101,7 +100,6 @@ class SizingProblem final : public NlpProblem {
   const std::vector<SizingRow>& rows() const;
   const std::vector<SizingCombination>& combinations() const;
   const std::vector<int>& group_of() const;  // per member
-  double MassScale() const;                  // [kg] per unit objective
 
  private:
   struct Impl;
