@@ -73,6 +73,7 @@ struct LoadsConfig {
   double gamma_w = 1.5;                    // wind
   double psi0_wind = 0.3;                  // wind accompanying traffic (EN 1990 A2, footbridges)
   double deflection_limit = 500.0;         // serviceability: deflection <= span / this
+  double deck_sag_limit = 300.0;           // serviceability: a deck beam's sag <= its length / this
 };
 
 // A config describes either a designed bridge ("bridge", with "material" and "design") or a

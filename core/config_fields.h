@@ -218,6 +218,13 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "serviceability: the largest deflection from the permanent state, under any serviceability "
                    "case, must not exceed span / this"},
            l.deflection_limit, Range{0.0, 1e6, true, false});
+  v.Number(KeyInfo{"deck_sag_limit", "–",
+                   "serviceability: a deck beam's own sag between its deck nodes, under any serviceability "
+                   "case (its weight, the superimposed dead load, the payload per metre and Q_t at its middle), "
+                   "must not exceed its length / this. The bridge's deflection (`deflection_limit`) is measured "
+                   "at the deck nodes and does not see it. 300 is a common limit for a deck plate between "
+                   "supports"},
+           l.deck_sag_limit, Range{0.0, 1e6, true, false});
 }
 
 // The README's text of one section: SectionHeading, a blank line, then SectionBody: the rules

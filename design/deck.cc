@@ -9,6 +9,19 @@
 #include "core/json_reader.h"
 
 namespace tbridge {
+namespace {
+
+// Eq 9's loads from the beams' mass, then the check that all is computable.
+void FillLoads(Deck& deck, const BridgeConfig& b, const Material& m, const DesignConfig& d) {
+  const double stations = std::ldexp(1.0, b.n);
+  deck.beams_mass = stations * deck.section_mass;
+  deck.total_load = b.payload + deck.beams_mass * d.gravity;
+  deck.station_load = deck.total_load / stations;
+  deck.node_load = deck.station_load / b.planes;
+  CheckComputable(deck, b, m, d);
+}
+
+}  // namespace
 
 Deck ComputeDeck(const BridgeConfig& b, const Material& m, const DesignConfig& d) {
   const double sigma_d = m.yield_stress / d.yield_safety_factor;
@@ -31,11 +44,16 @@ Deck ComputeDeck(const BridgeConfig& b, const Material& m, const DesignConfig& d
     deck.section_mass = rho * w * l * t;
   }
   deck.thickness = deck.section_mass / (rho * w * deck.section_length);
-  deck.beams_mass = stations * deck.section_mass;
-  deck.total_load = b.payload + deck.beams_mass * g;
-  deck.station_load = deck.total_load / stations;
-  deck.node_load = deck.station_load / b.planes;
-  CheckComputable(deck, b, m, d);
+  FillLoads(deck, b, m, d);
+  return deck;
+}
+
+Deck DeckOfThickness(const BridgeConfig& b, const Material& m, const DesignConfig& d, double thickness_m) {
+  Deck deck;
+  deck.section_length = b.span / std::ldexp(1.0, b.n);
+  deck.thickness = thickness_m;
+  deck.section_mass = m.density * b.deck_width * deck.section_length * thickness_m;
+  FillLoads(deck, b, m, d);
   return deck;
 }
 

@@ -1,6 +1,8 @@
 // Deck beams and node loads (paper eqs 3-9, corrected per SPEC.md §3).
 #pragma once
 
+#include <string>
+
 #include "core/config.h"
 
 namespace tbridge {
@@ -13,6 +15,9 @@ struct Deck {
   double total_load = 0;      // F_tot = F + 2^n m_d g [N] (eq 9)
   double node_load = 0;       // load on each loaded deck node: F_tot / (2^n planes) [N]
   double station_load = 0;    // F_tot / 2^n, the paper's f for a planar bridge [N]
+  // What set the thickness: "eq 7" (the paper's deck: the payload and its own weight at
+  // sigma_d), or the deck-beam check that governs an engineering design (design/deck_beams.h).
+  std::string sized_by = "eq 7";
 };
 
 // Largest magnitude a derived load, length or mass may have: the solver forms products and
@@ -22,6 +27,10 @@ inline constexpr double kMaxComputable = 1e100;
 // sigma_d = yield_stress / yield_safety_factor. Throws ConfigError (CheckComputable) when the
 // inputs give a deck quantity that cannot be computed.
 Deck ComputeDeck(const BridgeConfig& bridge, const Material& material, const DesignConfig& design);
+// The deck of beams `thickness_m` thick, with the loads that follow (eqs 6 and 9). Throws
+// ConfigError (CheckComputable) as ComputeDeck does.
+Deck DeckOfThickness(const BridgeConfig& bridge, const Material& material, const DesignConfig& design,
+                     double thickness_m);
 
 // Throws ConfigError when a quantity of `deck` is not finite, not positive (underflow) or not
 // below kMaxComputable. It names the input farthest from its default in orders of magnitude

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "design/equilibrium.h"
 #include "design/case_envelope.h"
+#include "design/deck_beams.h"
 #include "design/equilibrium_basis.h"
 #include "design/reduced_min_mass.h"
 #include "design/solvers.h"
@@ -145,6 +146,23 @@ Verdict DesignVerdict(const Design& d) {
       fails.push_back(os.str());
     }
   }
+  // The deck beams: their bending at the ultimate cases and their sag between deck stations.
+  const DeckBeamCheck deck = CheckDeckBeams(d.config, d.deck, d.cases);
+  if (!deck.governing_case.empty() && deck.utilisation > v.utilisation_max) {
+    v.utilisation_max = deck.utilisation;
+    v.governing = "deck beams (bending, " + deck.governing_case + ")";
+  }
+  if (deck.utilisation > 1.0 + 1e-9) {
+    std::ostringstream os;
+    os << "deck beams: bending utilisation " << deck.utilisation << " > 1 (" << deck.governing_case << ")";
+    fails.push_back(os.str());
+  }
+  if (deck.SagRatio() > 1.0 + 1e-9) {
+    std::ostringstream os;
+    os << "deck beams: sag " << deck.sag_m << " m > l_d / " << d.config.loads.deck_sag_limit << " = "
+       << deck.sag_limit_m << " m (" << deck.sag_case << ")";
+    fails.push_back(os.str());
+  }
   if (!d.stability.stable) fails.push_back("unstable");
   if (d.statics.done && !d.statics.all_converged) fails.push_back("a static case found no equilibrium");
   if (d.statics.done && d.statics.deflection_max_m > d.statics.deflection_limit_m) {
@@ -238,7 +256,7 @@ DesignInputs PrepareDesign(const Config& config) {
   DesignInputs in;
   in.topology = MakeBridge(config.bridge);
   const Structure& s = in.topology.structure;
-  in.deck = ComputeDeck(config.bridge, config.material, config.design);
+  in.deck = SizeDeckBeams(config, ComputeDeck(config.bridge, config.material, config.design));
   in.actions = MakeActions(config, in.topology, in.deck);
   in.loads = in.actions.base[kPaperLoad];
 

@@ -46,6 +46,26 @@ void RequireDerived(const json& member, const char* key, double derived, const s
           "of this key would be ignored: edit the config and run tbridge design instead");
 }
 
+// The deck as the file gives it, which must be the config's: the members' reference forces
+// carry its weight, so a deck of another thickness is another design.
+void RequireDeck(const json& file, const Deck& deck) {
+  const json& j = file.contains("deck") ? file.at("deck") : json();
+  const std::pair<const char*, double> derived[] = {{"thickness", deck.thickness},
+                                                    {"section_length", deck.section_length},
+                                                    {"section_mass", deck.section_mass},
+                                                    {"beams_mass", deck.beams_mass},
+                                                    {"total_load", deck.total_load},
+                                                    {"node_load", deck.node_load}};
+  for (const auto& [key, value] : derived) {
+    const double given = Number(j, key, "deck");
+    if (std::abs(given - value) <= kDerivedTolerance * std::abs(value)) continue;
+    throw ConfigError(std::string("deck.") + key, NumberText(given),
+                      "the config gives " + NumberText(value) + " (" + deck.sized_by +
+                          "); the members' reference forces carry the deck's weight, so an edit of the deck is "
+                          "another design: edit the config (loads, deck_sag_limit) and run tbridge design");
+  }
+}
+
 const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
   const json& list = file.at("members");
   const std::string where = "members[" + std::to_string(index) + "]";
@@ -74,6 +94,7 @@ Design ReadDesign(const json& file) {
   if (d.config.structure) throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
   DesignInputs in = PrepareDesign(d.config);
   d.topology = std::move(in.topology);
+  RequireDeck(file, in.deck);
   d.deck = in.deck;
   d.actions = std::move(in.actions);
   d.cases = MakeLoadCases(d.config, d.deck, d.notes);

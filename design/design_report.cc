@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "design/deck_beams.h"
+
 namespace tbridge {
 
 namespace {
@@ -26,7 +28,9 @@ json Units() {
                     {"nodes", "1"}, {"bars", "1"}, {"strings", "1"}, {"class", "1"},
                     {"fixed_nodes", "1 (1-based node numbers)"}}},
       {"deck", {{"section_length", "m"}, {"section_mass", "kg"}, {"thickness", "m"},
-                {"node_load", "N"}, {"total_load", "N"}, {"beams_mass", "kg"}}},
+                {"node_load", "N"}, {"total_load", "N"}, {"beams_mass", "kg"},
+                {"check", {{"utilisation", "1"}, {"stress_ed", "Pa"}, {"stress_rd", "Pa"}, {"moment_ed", "N m"},
+                           {"lateral_moment_ed", "N m"}, {"sag", "m"}, {"sag_limit", "m"}}}}},
       {"nodes", "m"},
       {"members", {{"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"}, {"force_min", "N"},
                    {"reference_force", "N"}, {"utilisation", "1"},
@@ -216,7 +220,9 @@ json VerdictJson(const Design& d, const Verdict& v) {
           {"summary", v.summary},
           {"scope", v.scope},
           {"checks",
-           {{"static", CheckStatusName(d.statics.Status())}, {"dynamic", CheckStatusName(d.dynamics.Status())}}},
+           {{"static", CheckStatusName(d.statics.Status())},
+            {"dynamic", CheckStatusName(d.dynamics.Status())},
+            {"deck_beams", CheckStatusName(CheckDeckBeams(d.config, d.deck, d.cases).Status())}}},
           {"notes", d.notes}};
 }
 
@@ -235,9 +241,21 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                          {"nodes", s.num_nodes()},       {"bars", s.num_bars()},
                          {"strings", s.num_strings()},   {"class", s.TensegrityClass()},
                          {"fixed_nodes", fixed}};
+  const DeckBeamCheck beams = CheckDeckBeams(d.config, d.deck, d.cases);
+  const json deck_check = {{"status", CheckStatusName(beams.Status())},
+                           {"utilisation", beams.utilisation},
+                           {"stress_ed", beams.stress_ed_pa},
+                           {"stress_rd", beams.stress_rd_pa},
+                           {"moment_ed", beams.moment_ed_nm},
+                           {"lateral_moment_ed", beams.lateral_moment_ed_nm},
+                           {"governing_case", beams.governing_case},
+                           {"sag", beams.sag_m},
+                           {"sag_limit", beams.sag_limit_m},
+                           {"sag_case", beams.sag_case}};
   const json deck = {{"section_length", d.deck.section_length}, {"section_mass", d.deck.section_mass},
                      {"thickness", d.deck.thickness},           {"node_load", d.deck.node_load},
-                     {"total_load", d.deck.total_load},         {"beams_mass", d.deck.beams_mass}};
+                     {"total_load", d.deck.total_load},         {"beams_mass", d.deck.beams_mass},
+                     {"sized_by", d.deck.sized_by},             {"check", deck_check}};
   const json mass = {{"bars", d.mass.bars},
                      {"strings", d.mass.strings},
                      {"deck_strings", d.mass.deck_strings},
@@ -319,6 +337,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
               "node, F_tot = %.6g N",
               d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3,
               d.deck.node_load, d.deck.total_load));
+  const DeckBeamCheck beams = CheckDeckBeams(d.config, d.deck, d.cases);
+  line(Format("deck beams: thickness set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / %g = %.4g mm (%s)",
+              d.deck.sized_by.c_str(), beams.utilisation, beams.governing_case.c_str(), beams.sag_m * 1e3,
+              d.config.loads.deck_sag_limit, beams.sag_limit_m * 1e3,
+              beams.sag_case.empty() ? "no serviceability case" : beams.sag_case.c_str()));
   if (d.solver_form == kReadFromFile) {
     line(Format("design: read from its file, checked as written; equilibrium residual %.2e N", d.equilibrium_residual));
   } else {

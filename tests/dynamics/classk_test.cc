@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <string>
@@ -265,7 +266,15 @@ TEST_CASE("at rest the support reactions carry the applied load") {
               << applied.transpose() << " N, largest acceleration " << dy.tail(system.coordinates()).cwiseAbs().maxCoeff());
     // Equilibrium holds to the design optimiser's residual (~1e-8 N per node).
     CHECK((reaction + applied).norm() <= 1e-9 * applied.norm());
-    CHECK(dy.tail(system.coordinates()).cwiseAbs().maxCoeff() <= 1e-7);  // [m/s^2]: at rest
+    // At rest: each node's unbalanced force is at most what the design's solve leaves,
+    // design.tolerance of the largest member force r. A force r at one end of a free rod of
+    // mass m accelerates that end by 4 r / m (r / m in translation, 3 r / m in rotation); both
+    // ends may carry one: 8 r / m for the lightest bar.
+    double lightest_bar_kg = std::numeric_limits<double>::infinity();
+    for (const DynamicBar& b : model.bars) lightest_bar_kg = std::min(lightest_bar_kg, b.mass);
+    const Design& design = DesignOf(n, p, planes);
+    const double residual_n = design.config.design.tolerance * design.reference_forces.cwiseAbs().maxCoeff();
+    CHECK(dy.tail(system.coordinates()).cwiseAbs().maxCoeff() <= 8.0 * residual_n / lightest_bar_kg);  // [m/s^2]
     if (planes == 2) {
       // Independently: six deck nodes at f = F_tot / (2^n 2) = 3701.43 N (docs/topology.md).
       CHECK(reaction.y() == Approx(6 * 3701.4338721644413).epsilon(1e-12));
@@ -366,7 +375,7 @@ TEST_CASE("planar p = 2 and p = 3 bridges stay at rest and have stable modes") {
 
 TEST_CASE("a p = 2 bridge's modal and time-history frequencies agree") {
   DynamicsConfig run;
-  run.duration = 3.0;  // ~40 cycles: with 1 s the spectral estimate is off by 1e-4
+  run.duration = 20.0;  // ~40 cycles of the lowest mode near 12 rad/s: with 7 the estimate is off by 1e-4
   run.dt = 1e-4;       // 7x below the RK4 limit of p = 2, n = 2
   run.perturbation.bar_class = 1;
   run.perturbation.delta = 1e-4;  // [m]: strings stay taut, the motion is linear

@@ -121,13 +121,34 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
                Catch::Contains("'members[0].stiffness'") && Catch::Contains("member " + bar_name));
   }
   {
-    // The config's payload changed: the reference forces no longer balance the loads.
+    // The members' weight switched on: the reference forces no longer balance the loads.
+    json edited = original;
+    REQUIRE_FALSE(original["config"]["design"]["self_weight"].get<bool>());
+    edited["config"]["design"]["self_weight"] = true;
+    WriteJson(dir / "dead.json", edited);
+    const auto r = RunTbridge(dir, "check " + Quote((dir / "dead.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("members[].reference_force"));
+    CHECK_FALSE(fs::exists(out));
+  }
+  {
+    // The config's payload changed: the deck sized for it is another.
     json edited = original;
     edited["config"]["bridge"]["payload"] = 2 * original["config"]["bridge"]["payload"].get<double>();
     WriteJson(dir / "payload.json", edited);
     const auto r = RunTbridge(dir, "check " + Quote((dir / "payload.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Contains("members[].reference_force"));
+    CHECK_THAT(r.err, Catch::Contains("'deck.thickness'"));
+    CHECK_FALSE(fs::exists(out));
+  }
+  {
+    // A deck quantity edited is refused: the deck follows from the config.
+    json edited = original;
+    edited["deck"]["section_mass"] = original["deck"]["section_mass"].get<double>() * (1 + 1e-9);
+    WriteJson(dir / "deck.json", edited);
+    const auto r = RunTbridge(dir, "check " + Quote((dir / "deck.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("'deck.section_mass'") && Catch::Contains("tbridge design"));
     CHECK_FALSE(fs::exists(out));
   }
   {
