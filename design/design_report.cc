@@ -306,6 +306,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("reactions", ReactionsJson(d));
   field("resizing", {{"iterations", d.resizing.iterations},
                      {"converged", d.resizing.converged},
+                     {"tolerance", d.resizing.tolerance},
                      {"structure_mass_kg", d.resizing.structure_mass_kg},
                      {"utilisation_max", d.resizing.utilisation_max},
                      {"why", d.resizing.why}});
@@ -381,9 +382,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
   }
   if (d.resizing.iterations > 1) {
-    line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg%s", d.resizing.iterations,
-                d.resizing.structure_mass_kg.front(), d.resizing.structure_mass_kg.back(),
-                d.resizing.converged ? "" : " (did not converge)"));
+    line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg (the lightest that passed); %s",
+                d.resizing.iterations, d.resizing.structure_mass_kg.front(), d.mass.structure,
+                d.resizing.converged
+                    ? Format("converged: two passing designs within %g of the mass", d.resizing.tolerance).c_str()
+                    : "did not converge"));
   }
   if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {

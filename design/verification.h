@@ -108,7 +108,8 @@ struct DynamicCheck {
 // The resizing loop's record (verify/verified_design.h).
 struct Resizing {
   int iterations = 0;                     // designs run
-  bool converged = false;                 // the last one passed every check
+  bool converged = false;                 // two passing designs within `tolerance` of the mass
+  double tolerance = 0;                   // relative, on the structure's mass
   std::vector<double> structure_mass_kg;  // per design: the start, then each sizing
   std::vector<double> utilisation_max;    // per sizing: the largest the checks found (a violation above 1)
   std::string why;                        // when not converged: the last verdict

@@ -161,6 +161,7 @@ Eigen::VectorXd PrestressCoefficients(const Design& d) {
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
   const std::string solver = SizingSolver(config);
   Resizing record;
+  record.tolerance = kSettled;
   // The paper's design is the paper's: with its switches the checks report, and resize
   // nothing. A build without an iterative solver checks the first design as it is, and so
   // does the 3D bridge: its 26 and more self-stress states make the sizing's dense program
@@ -185,7 +186,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
   record.structure_mass_kg.push_back(current.mass.structure);
   SizingCorrections corrections;
   std::optional<Design> best;  // the lightest design that passed
-  bool previous_passed = false;
+  std::optional<double> last_passing_kg;  // the structure's mass of the last design that passed
   for (record.iterations = 1;; ++record.iterations) {
     // The sizing about the current design's weight, from the current sizes and prestress.
     const SizingProblem problem(current, corrections);
@@ -210,12 +211,12 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     record.structure_mass_kg.push_back(d.mass.structure);
     const Verdict verdict = DesignVerdict(d);
     record.utilisation_max.push_back(verdict.utilisation_max);
-    // Converged: a design that passes after a design that passed, whose mass the last
-    // correction (both ways, from a passing design) moved by less than kSettled: the linear
-    // model says what the checks say.
-    const double previous = record.structure_mass_kg[record.structure_mass_kg.size() - 2];
-    const bool settled = verdict.pass && previous_passed && std::abs(d.mass.structure - previous) <= kSettled * d.mass.structure;
-    previous_passed = verdict.pass;
+    // Converged: a design that passes within kSettled of the mass of the last design that
+    // passed: the linear model says what the checks say. A design between them that fails by
+    // a hair (the corrections move both ways) does not reset it.
+    const bool settled = verdict.pass && last_passing_kg &&
+                         std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
+    if (verdict.pass) last_passing_kg = d.mass.structure;
     if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) best = d;
     const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
                       verdict.outcome == VerdictOutcome::kIncomplete;
