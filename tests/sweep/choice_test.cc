@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "design/design.h"
+#include "mass_support.h"
 #include "sweep/sweep.h"
 #include "test_support.h"
 
@@ -122,7 +123,8 @@ TEST_CASE("joint mass makes the optimum interior, as an independent scan finds",
 }
 
 TEST_CASE("without joints or constraints the mass decides at the largest n", "[sweep]") {
-  const std::vector<CandidateRow> rows = RunAll(Spec(R"({"n": [1, 2, 3]})"));
+  const SweepSpec spec = Spec(R"({"n": [1, 2, 3]})");
+  const std::vector<CandidateRow> rows = RunAll(spec);
   const SweepChoice c = Choose(rows);
   REQUIRE(c.found);
   CHECK(rows[c.index].candidate.n == 3);
@@ -133,7 +135,21 @@ TEST_CASE("without joints or constraints the mass decides at the largest n", "[s
   for (const auto& [k, mass] : {std::pair{0, 5516.0}, {1, 1972.0}, {2, 853.0}}) {
     const CandidateRow& r = rows[k];
     CHECK(r.bars + r.strings + r.deck_beams == Approx(mass).margin(1.0));
-    CHECK(r.total == Approx(r.bars + r.strings + r.deck_strings + r.deck_beams).epsilon(1e-12));
+    // Each part against the candidate's design recomputed from its members (rho pi r^2 times
+    // the node-to-node length, deck strings found on the deck line) and its deck beams against
+    // Navier's stress at sigma_w (eqs 4-6). 1e-9 relative: the same design computed twice,
+    // summed in another order.
+    Config config = spec.base;
+    config.bridge.n = r.candidate.n;
+    const Design d = RunDesign(config);
+    const test::MemberMasses members = test::MassFromMembers(d);
+    INFO("n = " << r.candidate.n << ": from the members, bars " << members.bars << ", strings " << members.strings
+                << ", deck strings " << members.deck_strings << " kg");
+    CHECK(r.bars == Approx(members.bars).epsilon(1e-9));
+    CHECK(r.strings == Approx(members.strings).epsilon(1e-9));
+    CHECK(r.deck_strings == Approx(members.deck_strings).epsilon(1e-9));
+    CHECK(test::DeckBeamStress(d, r.deck_beams) == Approx(test::WorkingStress(d)).epsilon(1e-9));
+    CHECK(r.total == Approx(members.bars + members.strings + members.deck_strings + r.deck_beams).epsilon(1e-9));
   }
 }
 
