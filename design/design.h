@@ -49,6 +49,7 @@ struct Design {
   StaticCheck statics;               // the nonlinear static check, when it was run (verify/)
   Resizing resizing;                 // the verification's resizing, when it was run (verify/)
   DynamicCheck dynamics;             // the dynamic check, when it was run (verify/)
+  MassAttribution attribution;       // what drives the verified sizing's mass; members empty when not sized
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;

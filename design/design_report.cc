@@ -32,7 +32,9 @@ json Units() {
                 {"check", {{"utilisation", "1"}, {"stress_ed", "Pa"}, {"stress_rd", "Pa"}, {"moment_ed", "N m"},
                            {"lateral_moment_ed", "N m"}, {"sag", "m"}, {"sag_limit", "m"}}}}},
       {"nodes", "m"},
-      {"members", {{"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"}, {"force_min", "N"},
+      {"mass_attribution", {{"by_constraint_kg", "kg"}, {"premium_by_constraint_kg", "kg"}, {"structure_kg", "kg"},
+                            {"stationarity_residual", "1"}, {"active_rows", "1"}}},
+      {"members", {{"binding", {{"multiplier", "as its unit says"}}}, {"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"}, {"force_min", "N"},
                    {"reference_force", "N"}, {"utilisation", "1"},
                    {"force_density", "N/m"}, {"area", "m^2"}, {"radius", "m"},
                    {"mass", "kg"}, {"rest_length", "m"}, {"stiffness", "N/m"},
@@ -110,7 +112,27 @@ void WriteString(std::ostream& os, const std::string& text) {
   os << '"';
 }
 
-void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology_member) {
+const MemberBinding* BindingOf(const Design& d, size_t member) {
+  return member < d.attribution.members.size() ? &d.attribution.members[member] : nullptr;
+}
+
+// The mass split among the kinds of constraint, or null when the design was not sized.
+json AttributionJson(const Design& d) {
+  const MassAttribution& a = d.attribution;
+  if (a.members.empty()) return nullptr;
+  json by = json::object(), premium = json::object();
+  for (int k = 0; k < kNumConstraintKinds; ++k) {
+    by[kConstraintKinds[k]] = a.mass_by_kind_kg[k];
+    premium[kConstraintKinds[k]] = a.premium_by_kind_kg[k];
+  }
+  return {{"by_constraint_kg", by},
+          {"premium_by_constraint_kg", premium},
+          {"structure_kg", a.structure_kg},
+          {"stationarity_residual", a.stationarity_residual},
+          {"active_rows", a.active_rows}};
+}
+
+void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology_member, const MemberBinding* binding) {
   // Keys in the alphabetical order a JSON library writes them in.
   auto number = [&os](const char* key, double v) {
     os << ", \"" << key << "\": ";
@@ -122,6 +144,20 @@ void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology
   };
   os << "{\"area\": ";
   WriteNumber(os, m.area);
+  // The constraint that costs the member's group most, and its multiplier (mass attribution).
+  if (binding && !binding->kind.empty()) {
+    os << ", \"binding\": {\"case\": ";
+    WriteString(os, binding->case_label);
+    os << ", \"kind\": ";
+    WriteString(os, binding->kind);
+    os << ", \"multiplier\": ";
+    WriteNumber(os, binding->multiplier);
+    os << ", \"unit\": ";
+    WriteString(os, binding->unit);
+    os << "}";
+  } else {
+    os << ", \"binding\": null";
+  }
   number("force", m.force);
   number("force_density", m.force_density);
   number("force_min", m.force_min);
@@ -280,16 +316,17 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("dynamic_check", DynamicsJson(d));
   field("equilibrium_residual_N", d.equilibrium_residual);
   field("mass", mass);
+  field("mass_attribution", AttributionJson(d));
   os << "  \"members\": [";
   const char* separator = "\n    ";
   for (size_t b = 0; b < d.bars.size(); ++b) {
     os << separator;
-    WriteMember(os, d.bars[b], s.bars[b]);
+    WriteMember(os, d.bars[b], s.bars[b], BindingOf(d, b));
     separator = ",\n    ";
   }
   for (size_t k = 0; k < d.strings.size(); ++k) {
     os << separator;
-    WriteMember(os, d.strings[k], s.strings[k]);
+    WriteMember(os, d.strings[k], s.strings[k], BindingOf(d, d.bars.size() + k));
     separator = ",\n    ";
   }
   os << "\n  ],\n  \"nodes\": [";
@@ -435,6 +472,17 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   line(Format("  structure                    %12.3f", d.mass.structure));
   line(Format("  deck beams                   %12.3f", d.mass.deck_beams));
   line(Format("  total                        %12.3f", d.mass.total));
+  const MassAttribution& a = d.attribution;
+  if (!a.members.empty()) {
+    line("");
+    line(Format("what the structure's mass pays for [kg] (the verified sizing's multipliers; stationarity residual "
+                "%.1e):",
+                a.stationarity_residual));
+    line(Format("  %-14s %12s %22s", "constraint", "mass", "premium over first"));
+    for (int k = 0; k < kNumConstraintKinds; ++k) {
+      line(Format("  %-14s %12.3f %22.3f", kConstraintKinds[k], a.mass_by_kind_kg[k], a.premium_by_kind_kg[k]));
+    }
+  }
   return out;
 }
 

@@ -493,6 +493,10 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
   return largest;
 }
 
+double SizingProblem::mass_scale_kg() const { return impl_->mass_scale; }
+double SizingProblem::force_scale_n() const { return impl_->force_scale; }
+double SizingProblem::area_scale_m2() { return kAreaScale; }
+
 const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }
 const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of; }

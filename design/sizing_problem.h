@@ -98,6 +98,11 @@ class SizingProblem final : public NlpProblem {
   // linear analysis gives it (without kappa_d).
   double LargestDeflection(const Eigen::VectorXd& x) const;
   const std::vector<SizingRow>& rows() const;
+  // The scales of the program: objective = mass / mass_scale_kg; a tension row = force /
+  // force_scale_n; an area variable = area / area_scale_m2.
+  double mass_scale_kg() const;
+  double force_scale_n() const;
+  static double area_scale_m2();
   const std::vector<SizingCombination>& combinations() const;
   const std::vector<int>& group_of() const;  // per member
 

@@ -105,6 +105,32 @@ struct DynamicCheck {
   }
 };
 
+// What drives the verified sizing's mass (design/sizing_attribution.h).
+// The kinds of constraint, in the order the outputs list them.
+inline constexpr const char* kConstraintKinds[] = {"strength", "buckling",      "yield",        "deflection",
+                                                  "taut_strings", "minimum_sizes", "dynamics"};
+inline constexpr int kNumConstraintKinds = 7;
+
+struct MemberBinding {
+  std::string kind;         // one of kConstraintKinds: the constraint that costs its group most
+  std::string case_label;   // its combination ("uls_travelling at station 3"), empty for a size
+  double multiplier = 0;    // lambda of that constraint, in `unit`
+  std::string unit;         // "kg per unit utilisation", "kg per unit deflection / limit", "kg/N", "kg/m^2"
+};
+
+struct MassAttribution {
+  std::vector<MemberBinding> members;  // per member [bars; strings]
+  double mass_by_kind_kg[kNumConstraintKinds] = {};
+  // The same split of the change from the first design.
+  double premium_by_kind_kg[kNumConstraintKinds] = {};
+  double structure_kg = 0;         // the sized members' mass
+  double stationarity_residual = 0;  // |grad f - J^T lambda - mu| / |grad f|
+  int active_rows = 0;
+  // lambda per posed row, then mu per variable at its floor, in the program's scaled units
+  // (design/sizing_problem.h): the raw multipliers, for checks of the split.
+  Eigen::VectorXd multipliers;
+};
+
 // The resizing loop's record (verify/verified_design.h).
 struct Resizing {
   int iterations = 0;                     // designs run

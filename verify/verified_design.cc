@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "design/sizing_attribution.h"
 #include "design/sizing_problem.h"
 #include "core/error.h"
 #include "design/equilibrium.h"
@@ -156,6 +157,25 @@ Eigen::VectorXd PrestressCoefficients(const Design& d) {
   return basis.SelfStresses().transpose() * PrestressForces(d);
 }
 
+// What drives the sized design's mass: the multipliers of the rows active at `x` (within 1e-4
+// of their margin: the solver's tolerance is far below it) on the problem that posed them.
+MassAttribution Attribution(const Design& current, const SizingCorrections& corrections, const SizingProblem& full,
+                            const Eigen::VectorXd& x, const StaticCheck& statics, const DynamicCheck& dynamics,
+                            const Design& first) {
+  Eigen::VectorXd g(full.num_constraints()), lo, hi;
+  full.Constraints(x, g);
+  full.ConstraintBounds(lo, hi);
+  std::vector<char> active(static_cast<size_t>(g.size()), 0);
+  for (Eigen::Index r = 0; r < g.size(); ++r) active[r] = g[r] <= lo[r] + 1e-4;
+  const SizingProblem posed(current, corrections, &active);
+  std::vector<double> dynamic(statics.members.size(), 0.0);
+  for (size_t j = 0; j < dynamic.size() && j < dynamics.members.size(); ++j) {
+    const double s = statics.members[j].utilisation, u = dynamics.members[j].utilisation;
+    if (u > s && u > 0) dynamic[j] = 1 - s / u;
+  }
+  return AttributeMass(posed, x, dynamic, posed.VariablesOf(MemberAreas(first), PrestressCoefficients(first)));
+}
+
 }  // namespace
 
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
@@ -217,7 +237,10 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     const bool settled = verdict.pass && last_passing_kg &&
                          std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
     if (verdict.pass) last_passing_kg = d.mass.structure;
-    if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) best = d;
+    if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) {
+      d.attribution = Attribution(current, corrections, problem, x, statics, dynamics, first);
+      best = d;
+    }
     const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
                       verdict.outcome == VerdictOutcome::kIncomplete;
     if (settled || last) {

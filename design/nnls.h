@@ -1,0 +1,15 @@
+// Non-negative least squares, min |A z - b| subject to z >= 0, by Lawson and Hanson's active
+// set method (Solving Least Squares Problems, 1974, ch. 23). Eigen has no such solver, and the
+// sizing's multipliers need one small dense problem per design (a few dozen unknowns), so a
+// direct transcription of the method serves better than a general NLP.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace tbridge {
+
+// The solution z (size A.cols()); `residual` (optional) gets |A z - b|. At most 3 A.cols()
+// outer steps.
+Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* residual = nullptr);
+
+}  // namespace tbridge
