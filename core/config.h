@@ -73,6 +73,7 @@ struct LoadsConfig {
   double gamma_w = 1.5;                    // wind
   double psi0_wind = 0.3;                  // wind accompanying traffic (EN 1990 A2, footbridges)
   double deflection_limit = 500.0;         // serviceability: deflection <= span / this
+  double station_margin = 1.0;             // the static check's nonlinear stations (config_fields.h)
 };
 
 // A config describes either a designed bridge ("bridge", with "material" and "design") or a
