@@ -74,6 +74,7 @@ struct LoadsConfig {
   double psi0_wind = 0.3;                  // wind accompanying traffic (EN 1990 A2, footbridges)
   double deflection_limit = 500.0;         // serviceability: deflection <= span / this
   double deck_sag_limit = 300.0;           // serviceability: a deck beam's sag <= its length / this
+  double station_margin = 1.0;             // the static check's nonlinear stations (config_fields.h)
 };
 
 // A config describes either a designed bridge ("bridge", with "material" and "design") or a

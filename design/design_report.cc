@@ -412,9 +412,15 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   if (d.statics.done) {
     double worst_balance = 0;
     for (const CaseResponse& c : d.statics.cases) worst_balance = std::max(worst_balance, c.balance);
-    line(Format("static check: %zu nonlinear solves (travelling loads at %d stations per family); largest "
+    const double margin = d.config.loads.station_margin;
+    const std::string stations =
+        margin >= 1 ? Format("travelling loads at all %d stations", d.statics.stations)
+                    : Format("travelling loads at all %d stations linearly, nonlinearly within loads.station_margin = "
+                             "%g of a largest or a limit",
+                             d.statics.stations, margin);
+    line(Format("static check: %d nonlinear solves (%s); largest "
                 "deflection %.4g m (%s), limit span / %g = %.4g m; reactions balance the loads to %.1e",
-                d.statics.cases.size(), d.statics.stations_per_family, d.statics.deflection_max_m,
+                d.statics.nonlinear_solves, stations.c_str(), d.statics.deflection_max_m,
                 d.statics.deflection_case.empty() ? "no serviceability case" : d.statics.deflection_case.c_str(),
                 d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
   }

@@ -23,14 +23,18 @@ const char* BaseActionName(int action) {
 double PayloadShare(const LoadCase& c) { return c.factor[kPayloadFull] + c.factor[kPaperLoad]; }
 
 Eigen::Matrix3Xd Actions::StationLoad(int station, double load) const {
+  Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, base[0].cols());
+  AddStationLoad(station, load, out);
+  return out;
+}
+
+void Actions::AddStationLoad(int station, double load, Eigen::Matrix3Xd& loads) const {
   if (station < 0 || station >= static_cast<int>(station_nodes.size())) {
     throw std::out_of_range("StationLoad: station " + std::to_string(station) + " of " +
                             std::to_string(station_nodes.size()));
   }
-  Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, base[0].cols());
   const std::vector<int>& nodes = station_nodes[station];
-  for (int v : nodes) out(1, v) -= load / static_cast<double>(nodes.size());
-  return out;
+  for (int v : nodes) loads(1, v) -= load / static_cast<double>(nodes.size());
 }
 
 Eigen::Matrix3Xd Actions::Loads(const LoadCase& c, int station) const {
@@ -38,7 +42,7 @@ Eigen::Matrix3Xd Actions::Loads(const LoadCase& c, int station) const {
   for (int a = 0; a < kNumBaseActions; ++a) {
     if (c.factor[a] != 0) out += c.factor[a] * base[a];
   }
-  if (station >= 0 && c.station_load != 0) out += StationLoad(station, c.station_load);
+  if (station >= 0 && c.station_load != 0) AddStationLoad(station, c.station_load, out);
   return out;
 }
 

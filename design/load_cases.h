@@ -53,6 +53,9 @@ struct Actions {
   // `load` [N] shared by the nodes of `station`; throws std::out_of_range for a station
   // outside station_nodes.
   Eigen::Matrix3Xd StationLoad(int station, double load) const;
+  // Adds StationLoad(station, load) to `loads` (3 x n_n) in place, touching only the
+  // station's nodes: a station at a time in O(planes), where StationLoad is O(n_n).
+  void AddStationLoad(int station, double load, Eigen::Matrix3Xd& loads) const;
   // The loads of `c` with its travelling load (if any) at `station` (-1: none; else as
   // StationLoad).
   Eigen::Matrix3Xd Loads(const LoadCase& c, int station = -1) const;

@@ -56,7 +56,8 @@ struct StaticCheck {
   double deflection_limit_m = 0;  // span / loads.deflection_limit
   double deflection_max_m = 0;    // over the serviceability cases
   std::string deflection_case;
-  int stations_per_family = 0;    // travelling stations solved per family
+  int stations = 0;               // deck stations of a travelling family, each solved linearly
+  int nonlinear_solves = 0;       // cases and stations solved nonlinearly (each in `cases`)
   bool all_converged = true;
   // Not run when not done; failed when a case found no equilibrium, a deflection exceeds its
   // limit or a member's finding exceeds 1 (1e-9 allows for a member sized exactly to it).

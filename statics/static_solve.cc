@@ -149,14 +149,60 @@ StaticState StateAt(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const E
   return out;
 }
 
+namespace {
+
+// The multipliers of bar compressions C: lambda_b = C_b / (2 l_b).
+Eigen::VectorXd Multipliers(const Structure& s, const Eigen::VectorXd& bar_compression) {
+  Eigen::VectorXd lambda(s.num_bars());
+  for (int b = 0; b < s.num_bars(); ++b) lambda[b] = bar_compression[b] / (2.0 * s.Length(s.bars[b]));
+  return lambda;
+}
+
+}  // namespace
+
+StaticTangent::StaticTangent(const StaticModel& model, const StaticState& state) : model_(model), state_(state) {
+  const DofMap map = MapDofs(model.structure);
+  first_ = map.first;
+  dim_ = map.dim;
+  free_ = map.count;
+  lu_.compute(Jacobian(model, map, state.nodes, Multipliers(model.structure, state.bar_compression)));
+  ok_ = lu_.info() == Eigen::Success;
+  rhs_.setZero(free_ + model.structure.num_bars());
+}
+
+void StaticTangent::Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& displacement,
+                          Eigen::VectorXd& force_change) {
+  const Structure& s = model_.structure;
+  const int nb = s.num_bars(), ns = s.num_strings();
+  rhs_.setZero();
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (first_[v] >= 0) rhs_.segment(first_[v], dim_) = -dloads.col(v).head(dim_);
+  }
+  step_ = lu_.solve(rhs_);
+  displacement.setZero(3, s.num_nodes());
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (first_[v] >= 0) displacement.col(v).head(dim_) = step_.segment(first_[v], dim_);
+  }
+  force_change.resize(nb + ns);
+  for (int b = 0; b < nb; ++b) force_change[b] = 2.0 * s.Length(s.bars[b]) * step_[free_ + b];
+  for (int k = 0; k < ns; ++k) {
+    const Member& e = s.strings[k];
+    const Eigen::Vector3d d = state_.nodes.col(e.j) - state_.nodes.col(e.i);
+    const double len = d.norm();
+    const bool taut = len > model_.string_rest_length[k];
+    force_change[nb + k] =
+        taut ? model_.string_stiffness[k] * d.dot(displacement.col(e.j) - displacement.col(e.i)) / len : 0.0;
+  }
+}
+
 StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-                         const Eigen::Matrix3Xd& loads) {
+                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent) {
   const Structure& s = m.structure;
   const DofMap map = MapDofs(s);
   const int nb = s.num_bars();
   Eigen::Matrix3Xd x = start.nodes;
-  Eigen::VectorXd lambda(nb);
-  for (int b = 0; b < nb; ++b) lambda[b] = start.bar_compression[b] / (2.0 * s.Length(s.bars[b]));
+  Eigen::VectorXd lambda = Multipliers(s, start.bar_compression);
+  const bool reuse = tangent != nullptr && tangent->ok();
   // Tolerances: forces to 1e-10 of the largest load or member force (a few hundred rounding
   // steps of the sums at a node); bar lengths to 1e-12 relative.
   double force_scale = std::max(loads.cwiseAbs().maxCoeff(), start_loads.cwiseAbs().maxCoeff());
@@ -188,10 +234,14 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
         break;
       }
       ++out.newton_iterations;
-      lu.compute(Jacobian(m, map, x, lambda));
-      if (lu.info() != Eigen::Success) break;
       rhs << -r, -g;
-      step = lu.solve(rhs);
+      if (reuse && done == 0 && it == 0) {
+        step = tangent->lu_.solve(rhs);  // at `start`, whose matrix the tangent holds
+      } else {
+        lu.compute(Jacobian(m, map, x, lambda));
+        if (lu.info() != Eigen::Success) break;
+        step = lu.solve(rhs);
+      }
       if (!step.allFinite()) break;
       // Limit a step to a tenth of the shortest bar, so a slack switch cannot throw the
       // structure across a configuration.

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 #include <string>
 #include <vector>
 
@@ -43,10 +45,39 @@ struct StaticResult {
   std::string message;  // why it did not converge
 };
 
+// The linear response about a state in equilibrium: SolveStatic's Newton matrix at `state`
+// (its bar forces as the multipliers, the strings' tangent at its geometry), factorised once,
+// so that each load change costs a pair of triangular solves. The first-order change of the
+// state under a load change df: [dx; dlambda] = -J^-1 [df; 0], a bar's compression changing by
+// 2 l_b dlambda_b and a taut string's tension by k_s e_s . (dx_j - dx_i) (a string slack in
+// `state` stays at 0). The model and state must outlive it.
+class StaticTangent {
+ public:
+  StaticTangent(const StaticModel& model, const StaticState& state);
+  // Whether the matrix factorised (a mechanism the state's forces do not hold does not).
+  bool ok() const { return ok_; }
+  // The changes under `dloads` (3 x n_n [N]): node displacements (3 x n_n [m], zero at fixed
+  // nodes) and member forces [dC_bars; dT_strings] [N]; the outputs are sized on first use.
+  void Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& displacement, Eigen::VectorXd& force_change);
+
+ private:
+  friend StaticResult SolveStatic(const StaticModel&, const StaticState&, const Eigen::Matrix3Xd&,
+                                  const Eigen::Matrix3Xd&, const StaticTangent*);
+  const StaticModel& model_;
+  const StaticState& state_;
+  std::vector<int> first_;  // per node, its first free coordinate or -1 (fixed)
+  int dim_ = 3, free_ = 0;
+  bool ok_ = false;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  Eigen::VectorXd rhs_, step_;  // the solves' workspace
+};
+
 // Equilibrium under `loads` (3 x n_n [N]), starting from `start`, a state in equilibrium under
 // `start_loads` (its bar forces seed the multipliers). Planar structures move in x-y only.
+// `tangent`, when given, is a StaticTangent of this model at `start`: its factorisation serves
+// the Newton steps taken from `start` (the same matrix, not factorised again).
 StaticResult SolveStatic(const StaticModel& model, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-                         const Eigen::Matrix3Xd& loads);
+                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent = nullptr);
 
 // The force every member exerts on the nodes of `nodes` with the given bar compressions,
 // string tensions from the model (slack = 0), and the reactions that balance `loads`.

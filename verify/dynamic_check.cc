@@ -17,21 +17,22 @@ namespace tbridge {
 namespace {
 
 // One dynamic load: its scenario, the static loads it is compared with (each on top of the
-// model's standing loads), and the factor on what it adds to the permanent forces.
+// model's standing loads), and the factor on what it adds to the permanent forces. The static
+// loads are described, not formed: `station_force` [N] standing at each deck station in turn,
+// or with 0 the full wind; StaticPeaks forms one at a time, and only for a run that is done.
 struct LoadRun {
   DynamicRun record;
   DynamicsConfig scenario;
-  std::vector<Eigen::Matrix3Xd> static_counterparts;
+  double station_force = 0;
   double gamma = 1.0;
 };
 
-LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, std::vector<Eigen::Matrix3Xd> statics,
-                double gamma) {
+LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, double station_force, double gamma) {
   LoadRun run;
   run.record.name = name;
   run.record.load = std::move(load);
   run.scenario = std::move(scenario);
-  run.static_counterparts = std::move(statics);
+  run.station_force = station_force;
   run.gamma = gamma;
   return run;
 }
@@ -49,11 +50,6 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
   const LoadsConfig& l = d.config.loads;
   const double gamma_g_q = paper ? 1.0 : l.gamma_q;
   std::vector<LoadRun> runs;
-  auto stations = [&d](double force) {
-    std::vector<Eigen::Matrix3Xd> out;
-    for (size_t k = 0; k < d.actions.station_nodes.size(); ++k) out.push_back(d.actions.StationLoad(static_cast<int>(k), force));
-    return out;
-  };
   const auto& cases = l.cases;
   const auto asked = [&cases](const char* name) { return std::find(cases.begin(), cases.end(), name) != cases.end(); };
   if (paper || asked("paper_travelling")) {
@@ -61,21 +57,33 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
     runs.push_back(MakeRun("paper_travelling",
                            Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
                            PaperTravellingScenario(d, paper_duration, 1e-4, IntegratorKind::kRk4, d.deck.station_load),
-                           stations(d.deck.station_load), gamma_g_q));
+                           d.deck.station_load, gamma_g_q));
   }
   if (asked("travelling") && l.travelling_load_n > 0) {
     runs.push_back(MakeRun("moving_load",
                            Describe("Q_t = ", l.travelling_load_n, " N") +
                                Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
                            MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, 1e-4),
-                           stations(l.travelling_load_n), gamma_g_q));
+                           l.travelling_load_n, gamma_g_q));
   }
   if (asked("wind") && d.topology.planes == 2 && l.wind_n_per_m > 0) {
     runs.push_back(MakeRun("wind_gust",
                            Describe("W = ", l.wind_n_per_m, " N/m") + Describe(" rising over ", l.wind_rise_s, " s, then held"),
-                           WindGustScenario(d, l.wind_rise_s, 1e-4), {d.actions.base[kWind]}, l.gamma_w));
+                           WindGustScenario(d, l.wind_rise_s, 1e-4), 0.0, l.gamma_w));
   }
   return runs;
+}
+
+// Whether `run` at its present step stays within `max_member_steps`; if not, says so in its
+// note, with `why_dt` after the step.
+bool WithinBudget(double members, double max_member_steps, const char* why_dt, LoadRun& run) {
+  const double steps = run.scenario.duration / run.scenario.dt;
+  if (steps * members <= max_member_steps) return true;
+  std::ostringstream os;
+  os << "skipped: " << steps << " RK4 steps of " << members << " members at dt = " << run.scenario.dt << " s"
+     << why_dt << " exceed the " << max_member_steps << " member-steps the check allows";
+  run.record.note = os.str();
+  return false;
 }
 
 // Runs `run` on `model`. Its step is first brought within RK4's stability limit for this
@@ -88,14 +96,7 @@ bool Run(const DynamicModel& model, double stable_dt, double members, double max
   DynamicRun& r = run.record;
   if (run.scenario.dt > stable_dt) run.scenario.dt /= std::ceil(run.scenario.dt / stable_dt);
   for (int attempt = 0;; ++attempt) {
-    const double steps = run.scenario.duration / run.scenario.dt;
-    if (steps * members > max_member_steps) {
-      std::ostringstream os;
-      os << "skipped: " << steps << " RK4 steps of " << members << " members at dt = " << run.scenario.dt
-         << " s exceed the " << max_member_steps << " member-steps the check allows";
-      r.note = os.str();
-      return false;
-    }
+    if (!WithinBudget(members, max_member_steps, "", run)) return false;
     try {
       summary = Simulate(model, run.scenario).summary;
       break;
@@ -117,20 +118,33 @@ bool Run(const DynamicModel& model, double stable_dt, double members, double max
   return true;
 }
 
-// Each member's largest force [C_bars; T_strings] over the static counterparts and the
-// standing loads alone, where every run starts [N].
-Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, std::vector<Eigen::Matrix3Xd> loads) {
+// Each member's largest force [C_bars; T_strings] over the static counterparts of `run` and
+// the standing loads alone, where every run starts [N]. The loads are formed in one matrix,
+// a station at a time: O(n_n) memory however many stations.
+Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const LoadRun& run) {
   const StaticModel statics = StaticModelOf(d);
   const StaticState start = ReferenceState(statics, d);
   const int nb = d.topology.structure.num_bars(), ns = d.topology.structure.num_strings();
   Eigen::VectorXd peak = Eigen::VectorXd::Zero(nb + ns);
-  loads.push_back(Eigen::Matrix3Xd::Zero(3, model.loads.cols()));
-  for (const Eigen::Matrix3Xd& extra : loads) {
-    const StaticResult r = SolveStatic(statics, start, d.loads, model.loads + extra);
-    if (!r.converged) continue;
+  Eigen::Matrix3Xd loads = model.loads;
+  const auto solve = [&]() {
+    const StaticResult r = SolveStatic(statics, start, d.loads, loads);
+    if (!r.converged) return;
     peak.head(nb) = peak.head(nb).cwiseMax(r.state.bar_compression);
     peak.tail(ns) = peak.tail(ns).cwiseMax(r.state.string_tension);
+  };
+  if (run.station_force != 0) {
+    for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
+      d.actions.AddStationLoad(k, run.station_force, loads);
+      solve();
+      for (const int v : d.actions.station_nodes[k]) loads(1, v) = model.loads(1, v);
+    }
+  } else {
+    loads += d.actions.base[kWind];
+    solve();
+    loads = model.loads;
   }
+  solve();
   return peak;
 }
 
@@ -145,13 +159,21 @@ DynamicCheck CheckDynamics(const Design& d, double max_member_steps) {
   const bool paper = KeepsPaperSwitches(d.config);
   std::vector<LoadRun> runs = LoadRuns(d, paper);
   if (runs.empty()) return out;
+  // A run over the budget at its asked step is over it at any stable one (no longer): it is
+  // skipped before anything is built for it, and with no run left nothing is.
+  const double members = static_cast<double>(d.bars.size() + d.strings.size());
+  bool any = false;
+  for (LoadRun& run : runs) any = WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)", run) || any;
+  if (!any) {
+    for (LoadRun& run : runs) out.runs.push_back(std::move(run.record));
+    return out;
+  }
   // The model a run of this design gets (tbridge simulate with the defaults): the design
   // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
   ModelOptions options;
   options.gravity_on_structure = d.config.design.self_weight;
   options.deck_inertia = !paper;
   const DynamicModel model = BuildDynamicModel(d, options);
-  const double members = static_cast<double>(d.bars.size() + d.strings.size());
 
   const LoadsConfig& l = d.config.loads;
   const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
@@ -165,9 +187,9 @@ DynamicCheck CheckDynamics(const Design& d, double max_member_steps) {
   const double stable_dt = Rk4StableStep(model, runs.front().scenario);
   for (LoadRun& run : runs) {
     SimulationSummary summary;
-    if (Run(model, stable_dt, members, max_member_steps, run, summary)) {
+    if (run.record.note.empty() && Run(model, stable_dt, members, max_member_steps, run, summary)) {
       const std::string label = "dynamic: " + run.record.name;
-      const Eigen::VectorXd static_peak = StaticPeaks(d, model, run.static_counterparts);
+      const Eigen::VectorXd static_peak = StaticPeaks(d, model, run);
       std::map<std::string, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {
         const bool bar = j < nb;

@@ -28,7 +28,8 @@ namespace tbridge {
 // Runs the check and reports each member's largest dynamic utilisation (DynamicCheck::members,
 // mode "dynamic" or "slack", case "dynamic: <run>"). Skips a run, saying why in its note,
 // when it would take more than `max_member_steps` member-steps: the check is then not run
-// (CheckStatus::kNotRun). With no dynamic load among the cases it is done with no run.
+// (CheckStatus::kNotRun). A run over that at its asked step is skipped before anything is
+// built for it (no dynamic model, no static counterpart). With no dynamic load among the cases it is done with no run.
 // Changes nothing in `design`.
 DynamicCheck CheckDynamics(const Design& design, double max_member_steps = 5e7);
 

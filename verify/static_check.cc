@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "design/case_envelope.h"
 #include "design/static_model.h"
@@ -10,23 +12,117 @@ namespace tbridge {
 
 namespace {
 
-// Up to `max` stations evenly spread over `count`, both ends included.
-std::vector<int> SpreadStations(int count, int max) {
-  std::vector<int> out;
-  if (count <= max) {
-    for (int k = 0; k < count; ++k) out.push_back(k);
-    return out;
+// What the check measures of a state, as utilisations: per member [bars; strings] what its
+// finding would be (an ultimate case: yield or buckling of a bar, yield of a string; a
+// serviceability case: 1 - T / (A sigma_w) of a string that must stay taut, over 1 where it is
+// slack), then the largest deck deflection over its limit (serviceability). -inf where the
+// case measures nothing.
+class Measures {
+ public:
+  explicit Measures(const Design& d)
+      : d_(d),
+        rule_(BarRuleOf(d.config)),
+        E_(d.config.material.youngs_modulus),
+        sigma_w_(d.config.material.yield_stress / d.config.design.yield_safety_factor),
+        limit_m_(d.config.bridge.span / d.config.loads.deflection_limit) {}
+
+  int size() const { return static_cast<int>(d_.bars.size() + d_.strings.size()) + 1; }
+
+  // Of member forces [C; T] and node positions `nodes` under a case of limit state `state`,
+  // into `out` (size()).
+  void Of(LimitState state, const Eigen::VectorXd& forces, const Eigen::Matrix3Xd& nodes, Eigen::VectorXd& out) const {
+    const int nb = static_cast<int>(d_.bars.size());
+    out.setConstant(size(), -std::numeric_limits<double>::infinity());
+    if (state == LimitState::kUltimate) {
+      for (int b = 0; b < nb; ++b) {
+        const BarCapacity cap = BarResistance(d_.bars[b].area, d_.bars[b].length, rule_, E_);
+        const double f = forces[b];
+        out[b] = std::max(std::abs(f) / cap.yield, f > 0 ? f / cap.buckling : 0.0);
+      }
+      for (size_t k = 0; k < d_.strings.size(); ++k) {
+        const double area = d_.strings[k].area;
+        if (area > 0) out[nb + k] = std::max(forces[nb + k], 0.0) / (area * sigma_w_);
+      }
+      return;
+    }
+    for (size_t k = 0; k < d_.strings.size(); ++k) {
+      const double area = d_.strings[k].area;
+      if (area > 0 && MustStayTaut(d_, static_cast<int>(k))) out[nb + k] = 1.0 - forces[nb + k] / (area * sigma_w_);
+    }
+    const Structure& s = d_.topology.structure;
+    double deflection = 0;
+    for (int v : d_.topology.deck_nodes) deflection = std::max(deflection, std::abs(nodes(1, v) - s.nodes(1, v)));
+    out[size() - 1] = deflection / limit_m_;
   }
-  for (int k = 0; k < max; ++k) {
-    const int s = static_cast<int>(std::lround(static_cast<double>(k) * (count - 1) / (max - 1)));
-    if (out.empty() || out.back() != s) out.push_back(s);
+
+ private:
+  const Design& d_;
+  BarRule rule_;
+  double E_, sigma_w_, limit_m_;
+};
+
+// The linear pass over every station of every travelling family: the response about the
+// reference state to each family's loads without its travelling load, once per family, and
+// to a unit load at each station, once per station (shared by the families), combined.
+// `visit(c, k, measures)` sees each family c at each station k, station by station, in
+// O(members + nodes) memory.
+template <class Visit>
+void LinearStations(const Design& d, const std::vector<int>& families, StaticTangent& tangent, const StaticState& start,
+                    const Measures& measures, Visit visit) {
+  const int stations = static_cast<int>(d.actions.station_nodes.size());
+  const Structure& s = d.topology.structure;
+  Eigen::VectorXd start_forces(s.num_bars() + s.num_strings());
+  start_forces << start.bar_compression, start.string_tension;
+  std::vector<Eigen::VectorXd> base_forces(families.size());
+  std::vector<Eigen::Matrix3Xd> base_nodes(families.size());
+  Eigen::Matrix3Xd du, nodes, unit = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
+  Eigen::VectorXd dx, forces, m;
+  for (size_t f = 0; f < families.size(); ++f) {
+    tangent.Solve(d.actions.Loads(d.cases[families[f]]) - d.loads, du, dx);
+    base_forces[f] = start_forces + dx;
+    base_nodes[f] = start.nodes + du;
   }
-  return out;
+  for (int k = 0; k < stations; ++k) {
+    d.actions.AddStationLoad(k, 1.0, unit);
+    tangent.Solve(unit, du, dx);
+    unit.setZero();
+    for (size_t f = 0; f < families.size(); ++f) {
+      const LoadCase& c = d.cases[families[f]];
+      forces = base_forces[f] + c.station_load * dx;
+      nodes = base_nodes[f] + c.station_load * du;
+      measures.Of(c.state, forces, nodes, m);
+      visit(static_cast<int>(f), k, m);
+    }
+  }
+}
+
+// Which stations of each travelling family are solved nonlinearly (selected[f][k]): the
+// linear pass's largest measure of each member and of the deflection over every family and
+// station, and the stations where a measure comes within `margin` of it or of its limit 1.
+std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector<int>& families, StaticTangent& tangent,
+                                              const StaticState& start, double margin) {
+  const int stations = static_cast<int>(d.actions.station_nodes.size());
+  std::vector<std::vector<char>> selected(families.size(), std::vector<char>(stations, 0));
+  if (margin >= 1 || !tangent.ok()) {
+    for (std::vector<char>& f : selected) std::fill(f.begin(), f.end(), 1);
+    return selected;
+  }
+  const Measures measures(d);
+  Eigen::VectorXd largest = Eigen::VectorXd::Constant(measures.size(), -std::numeric_limits<double>::infinity());
+  LinearStations(d, families, tangent, start, measures,
+                 [&largest](int, int, const Eigen::VectorXd& m) { largest = largest.cwiseMax(m); });
+  LinearStations(d, families, tangent, start, measures, [&](int f, int k, const Eigen::VectorXd& m) {
+    for (int i = 0; i < m.size() && !selected[f][k]; ++i) {
+      if (m[i] == -std::numeric_limits<double>::infinity()) continue;
+      selected[f][k] = m[i] >= largest[i] - margin * std::abs(largest[i]) || m[i] >= 1 - margin;
+    }
+  });
+  return selected;
 }
 
 }  // namespace
 
-StaticCheck CheckStatics(const Design& d, int max_stations) {
+StaticCheck CheckStatics(const Design& d) {
   const Structure& s = d.topology.structure;
   const StaticModel model = StaticModelOf(d);
   const int nb = s.num_bars();
@@ -39,18 +135,41 @@ StaticCheck CheckStatics(const Design& d, int max_stations) {
   out.done = true;
   out.members.resize(d.bars.size() + d.strings.size());
   out.deflection_limit_m = d.config.bridge.span / d.config.loads.deflection_limit;
-  const std::vector<int> stations = SpreadStations(static_cast<int>(d.actions.station_nodes.size()), max_stations);
-  out.stations_per_family = static_cast<int>(stations.size());
+  out.stations = static_cast<int>(d.actions.station_nodes.size());
+
+  // The travelling families, screened by the linear pass.
+  std::vector<int> families, family_of(d.cases.size(), -1);
+  for (size_t c = 0; c < d.cases.size(); ++c) {
+    if (d.cases[c].station_load == 0) continue;
+    family_of[c] = static_cast<int>(families.size());
+    families.push_back(static_cast<int>(c));
+  }
+  // Factorised only for a travelling family, whose many solves it serves (a second
+  // factorisation held beside the solve's own: 8 % more memory on the paper's n = 16).
+  std::optional<StaticTangent> tangent;
+  std::vector<std::vector<char>> selected;
+  if (!families.empty()) {
+    tangent.emplace(model, start);
+    selected = SelectStations(d, families, *tangent, start, d.config.loads.station_margin);
+  }
+
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
-    const std::vector<int> at = lc.station_load != 0 ? stations : std::vector<int>{-1};
+    std::vector<int> at{-1};
+    if (family_of[c] >= 0) {
+      at.clear();
+      for (int k = 0; k < out.stations; ++k) {
+        if (selected[family_of[c]][k]) at.push_back(k);
+      }
+    }
     for (int station : at) {
       CaseResponse r;
       r.case_index = static_cast<int>(c);
       r.station = station;
       r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), station});
       const Eigen::Matrix3Xd loads = d.actions.Loads(lc, station);
-      const StaticResult result = SolveStatic(model, start, d.loads, loads);
+      const StaticResult result = SolveStatic(model, start, d.loads, loads, tangent ? &*tangent : nullptr);
+      ++out.nonlinear_solves;
       r.converged = result.converged;
       r.message = result.message;
       r.slack_strings = result.slack_strings;

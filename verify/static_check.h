@@ -14,10 +14,14 @@
 
 namespace tbridge {
 
-// Solves every case (travelling families at up to `max_stations` evenly spaced stations) and
-// reports each member's largest utilisation under them (StaticCheck::members): bars and
-// strings under the ultimate cases, slack strings that must stay taut under the
-// serviceability cases (mode "slack"). Changes nothing in `design`.
-StaticCheck CheckStatics(const Design& design, int max_stations = 16);
+// Solves every case and reports each member's largest utilisation under them
+// (StaticCheck::members): bars and strings under the ultimate cases, slack strings that must
+// stay taut under the serviceability cases (mode "slack"), and the largest deflection.
+// A travelling family is solved at every deck station, first linearly about the reference
+// state (statics/static_solve.h StaticTangent: one factorisation, a solve per station and one
+// per family), then nonlinearly where the linear pass comes within loads.station_margin of
+// the largest it found (of a member's utilisation, of the deflection) or of the limit 1
+// (core/config_fields.h says why the default margin holds). Changes nothing in `design`.
+StaticCheck CheckStatics(const Design& design);
 
 }  // namespace tbridge

@@ -4,9 +4,13 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <map>
 
 #include "core/config.h"
 #include "app/scenario.h"
+#include "bridge/design_model.h"
+#include "design/static_model.h"
+#include "verify/dynamic_check.h"
 #include "verify/verified_design.h"
 
 namespace tbridge {
@@ -69,6 +73,76 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
   }
   CHECK(s.max_string_stress <= d.config.material.yield_stress / d.config.design.yield_safety_factor);
   CHECK(DesignVerdict(r.design).utilisation_max <= 1.0 + 1e-9);
+}
+
+TEST_CASE("the dynamic check's static counterparts are the load standing at each station in turn",
+          "[verify][dynamics]") {
+  // The moving load of the default config at n = 2, its run done; the check forms each
+  // station's load in place. Against it: every station's full load matrix (Actions::
+  // StationLoad) on the run's standing loads, solved one by one, and the standing loads alone.
+  Config config;
+  config.bridge.n = 2;
+  const Design d = RunDesign(config);
+  const DynamicCheck check = CheckDynamics(d);
+  REQUIRE(check.runs.size() == 1);
+  const DynamicRun& run = check.runs.front();
+  REQUIRE(run.name == "moving_load");
+  REQUIRE(run.done);
+
+  ModelOptions options;
+  options.gravity_on_structure = true;
+  options.deck_inertia = true;
+  const DynamicModel model = BuildDynamicModel(d, options);
+  const StaticModel statics = StaticModelOf(d);
+  const StaticState start = ReferenceState(statics, d);
+  const Structure& st = d.topology.structure;
+  std::vector<Eigen::Matrix3Xd> loads{model.loads};
+  for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
+    loads.push_back(model.loads + d.actions.StationLoad(k, config.loads.travelling_load_n));
+  }
+  REQUIRE(loads.size() > 2);
+  std::map<std::string, double> peak;
+  for (const Eigen::Matrix3Xd& l : loads) {
+    const StaticResult r = SolveStatic(statics, start, d.loads, l);
+    REQUIRE(r.converged);
+    for (int b = 0; b < st.num_bars(); ++b) peak[st.bars[b].group] = std::max(peak[st.bars[b].group], r.state.bar_compression[b]);
+    for (int k = 0; k < st.num_strings(); ++k) {
+      peak[st.strings[k].group] = std::max(peak[st.strings[k].group], r.state.string_tension[k]);
+    }
+  }
+  REQUIRE(run.groups.size() == peak.size());
+  for (const GroupAmplification& g : run.groups) {
+    INFO("group " << g.group);
+    REQUIRE(peak.count(g.group) == 1);
+    REQUIRE(g.static_peak > 0);
+    // 1e-12 relative: the same solves from the same loads (a + (-f) and a - f round alike).
+    CHECK(g.static_peak == Approx(peak[g.group]).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("a dynamic run over the budget at its asked step is skipped before its model is built", "[verify][dynamics]") {
+  Config config;
+  config.bridge.n = 2;
+  const Design d = RunDesign(config);
+  const DynamicCheck full = CheckDynamics(d);
+  REQUIRE(full.runs.size() == 1);
+  REQUIRE(full.runs.front().done);
+  // The run's member-steps at the asked step (the scenario's 1e-4 s), which here is stable.
+  const double members = static_cast<double>(d.bars.size() + d.strings.size());
+  const double asked = full.runs.front().duration / 1e-4 * members;
+  REQUIRE(static_cast<double>(full.runs.front().steps) * members == Approx(asked).epsilon(1e-12));
+  // Below it: skipped up front, the note naming the asked step.
+  const DynamicCheck early = CheckDynamics(d, 0.5 * asked);
+  REQUIRE(early.runs.size() == 1);
+  CHECK_FALSE(early.runs.front().done);
+  CHECK(early.Status() == CheckStatus::kNotRun);
+  CHECK(early.runs.front().note.find("the asked step") != std::string::npos);
+  // At it (and a hair above, for the rounding of the step count): not skipped, done as with
+  // the default budget, to the same peaks.
+  const DynamicCheck exact = CheckDynamics(d, asked * (1 + 1e-9));
+  REQUIRE(exact.runs.front().done);
+  CHECK(exact.runs.front().steps == full.runs.front().steps);
+  CHECK(exact.members.front().utilisation == full.members.front().utilisation);
 }
 
 }  // namespace
