@@ -346,6 +346,9 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"tolerance", d.resizing.tolerance},
                      {"structure_mass_kg", d.resizing.structure_mass_kg},
                      {"utilisation_max", d.resizing.utilisation_max},
+                     {"changes", d.resizing.changes},
+                     {"second_start_kg", d.resizing.second_start_kg},
+                     {"optima", d.resizing.optima},
                      {"why", d.resizing.why}});
   field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);
@@ -430,6 +433,14 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 d.resizing.converged
                     ? Format("converged: two passing designs within %g of the mass", d.resizing.tolerance).c_str()
                     : "did not converge"));
+    // Each sizing: its mass, its largest utilisation under the checks, and what that changed.
+    const Resizing& r = d.resizing;
+    for (size_t k = 0; k < r.utilisation_max.size() && k + 1 < r.structure_mass_kg.size(); ++k) {
+      line(Format("  sizing %zu: %.6g kg, utilisation_max %.6f%s%s", k + 1, r.structure_mass_kg[k + 1],
+                  r.utilisation_max[k], k < r.changes.size() ? "; then " : "",
+                  k < r.changes.size() ? r.changes[k].c_str() : ""));
+    }
+    if (!r.optima.empty()) line("  " + r.optima);
   }
   if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {

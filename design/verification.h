@@ -139,6 +139,9 @@ struct Resizing {
   double tolerance = 0;                   // relative, on the structure's mass
   std::vector<double> structure_mass_kg;  // per design: the start, then each sizing
   std::vector<double> utilisation_max;    // per sizing: the largest the checks found (a violation above 1)
+  std::vector<std::string> changes;       // per sizing but the last: how its checks corrected the next
+  double second_start_kg = 0;             // the last sizing from twice the first design's areas
+  std::string optima;                     // what that second start found, and which design was kept
   std::string why;                        // when not converged: the last verdict
 };
 
