@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "design/comfort_report.h"
 #include "design/deck_beams.h"
 
 namespace tbridge {
@@ -47,7 +48,8 @@ json Units() {
       {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}},
       {"deflection_max", {{"deflection", "m"}, {"limit", "m"}, {"node", "1 (1-based node number)"}}},
       {"utilisation_max", "1"},
-      {"self_weight_iterations", "1"}};
+      {"self_weight_iterations", "1"},
+      {"comfort", ComfortUnits()}};
 }
 
 // printf into a std::string; the attribute lets the compiler check every format string.
@@ -222,7 +224,8 @@ json VerdictJson(const Design& d, const Verdict& v) {
           {"checks",
            {{"static", CheckStatusName(d.statics.Status())},
             {"dynamic", CheckStatusName(d.dynamics.Status())},
-            {"deck_beams", CheckStatusName(CheckDeckBeams(d.config, d.deck, d.cases).Status())}}},
+            {"deck_beams", CheckStatusName(CheckDeckBeams(d.config, d.deck, d.cases).Status())},
+            {"comfort", CheckStatusName(d.comfort.Status())}}},
           {"notes", d.notes}};
 }
 
@@ -274,6 +277,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
 
   os << "{\n";
   field("cases", CasesJson(d));
+  field("comfort", ComfortJson(d));
   field("config", ToJson(d.config));
   field("deck", deck);
   field("deflection_max", DeflectionsJson(d));
@@ -309,7 +313,9 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"tolerance", d.resizing.tolerance},
                      {"structure_mass_kg", d.resizing.structure_mass_kg},
                      {"utilisation_max", d.resizing.utilisation_max},
-                     {"why", d.resizing.why}});
+                     {"why", d.resizing.why},
+                     {"comfort_stiffness_factor", d.resizing.comfort_stiffness_factor},
+                     {"comfort_governs", d.resizing.comfort_governs}});
   field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);
   field("solver", solver);
@@ -388,6 +394,10 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                     ? Format("converged: two passing designs within %g of the mass", d.resizing.tolerance).c_str()
                     : "did not converge"));
   }
+  if (d.resizing.comfort_stiffness_factor != 1.0) {
+    line(Format("resizing for comfort: %.4g times the stiffness the deflection limit asks for; governs: %s",
+                d.resizing.comfort_stiffness_factor, d.resizing.comfort_governs.c_str()));
+  }
   if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {
     if (!r.done) {
@@ -401,6 +411,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps, r.peak_deck_displacement,
                 amp.c_str()));
   }
+  for (const std::string& text : ComfortSummaryLines(d)) line(text);
   const Verdict verdict = DesignVerdict(d);
   line(verdict.summary);
   line("scope: " + verdict.scope);

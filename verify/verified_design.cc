@@ -11,12 +11,14 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/solvers.h"
+#include "verify/comfort_check.h"
+#include "verify/comfort_sizing.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 
 namespace tbridge {
 
-void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
+void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, ComfortCheck comfort) {
   const int nb = static_cast<int>(d.bars.size());
   for (const std::vector<MemberFinding>* found : {&statics.members, &dynamics.members}) {
     for (int j = 0; j < static_cast<int>(found->size()); ++j) {
@@ -27,6 +29,7 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
   }
   d.statics = std::move(statics);
   d.dynamics = std::move(dynamics);
+  d.comfort = std::move(comfort);
 }
 
 namespace {
@@ -169,7 +172,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
   if (KeepsPaperSwitches(config) || solver.empty() || config.bridge.planes == 2) {
     Design first = RunDesign(config, progress);
     RequireStable(first);
-    RecordChecks(first, CheckStatics(first), CheckDynamics(first));
+    RecordChecks(first, CheckStatics(first), CheckDynamics(first), CheckComfort(first));
     record.iterations = 1;
     record.structure_mass_kg.push_back(first.mass.structure);
     const Verdict verdict = DesignVerdict(first);
@@ -207,7 +210,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     RecordSizing(d, problem, x, problem.Areas(lo));
     const StaticCheck statics = CheckStatics(d);
     const DynamicCheck dynamics = CheckDynamics(d);
-    RecordChecks(d, statics, dynamics);
+    RecordChecks(d, statics, dynamics, CheckComfort(d));
     record.structure_mass_kg.push_back(d.mass.structure);
     const Verdict verdict = DesignVerdict(d);
     record.utilisation_max.push_back(verdict.utilisation_max);
@@ -259,6 +262,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     if (linear_deflection > 0 && d.statics.deflection_max_m > 0) {
       corrections.deflection_factor *= Step(d.statics.deflection_max_m / linear_deflection, verdict.pass);
     }
+    CorrectForComfort(d, corrections, record);
     current = std::move(d);
   }
 }

@@ -5,6 +5,7 @@
 
 #include "core/config.h"
 #include "design/sizing_problem.h"
+#include "verify/comfort_check.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 #include "verify/verified_design.h"
@@ -63,7 +64,7 @@ TEST_CASE("the verified design is locally minimal: a lighter member group fails 
     // The probe as `tbridge check` sees it: the same loads, config and prestress.
     Design probe = SizedDesign(config, thinner, d.alpha);
     REQUIRE(probe.mass.structure == Approx(0.995 * d.mass.structure).epsilon(1e-9));
-    RecordChecks(probe, CheckStatics(probe), CheckDynamics(probe));
+    RecordChecks(probe, CheckStatics(probe), CheckDynamics(probe), CheckComfort(probe));
     INFO("group " << g << " scaled by " << factor << ": " << DesignVerdict(probe).summary);
     CHECK(DesignVerdict(probe).outcome == VerdictOutcome::kFail);
     ++probed;
