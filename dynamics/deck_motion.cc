@@ -63,6 +63,7 @@ DeckMotionReport ProjectOnDeckMotions(const DynamicModel& model, const Eigen::Ma
   const double whole = shape.squaredNorm();
   if (!(deck_total > kLocalDeckShare * whole)) return r;
   for (int k = 0; k < 4; ++k) r.share[k] = squares[k] / deck_total;
+  if (r.share[0] + r.share[1] + r.share[2] + r.share[3] < kSectionShare) return r;
   const int best = static_cast<int>(std::max_element(r.share.begin(), r.share.end()) - r.share.begin());
   r.motion = static_cast<DeckMotion>(best);
   r.axis = r.motion == DeckMotion::kLateral ? 2 : r.motion == DeckMotion::kLongitudinal ? 0 : 1;

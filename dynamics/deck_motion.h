@@ -11,7 +11,8 @@
 // squared lever arms for torsion) over the sum of squares of every deck-node displacement. The
 // four shares add up to at most 1; the rest deforms the sections. A mode is named after its
 // largest share, or "local" when the deck hardly takes part (its deck displacements hold under
-// kLocalDeckShare of the shape's squares): a string or bar mode.
+// kLocalDeckShare of the shape's squares: a string or bar mode) or mostly deforms its sections
+// (the four shares add up to less than kSectionShare: the planes moving against each other).
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +26,7 @@ enum class DeckMotion { kVertical, kLateral, kLongitudinal, kTorsional, kLocal }
 const char* DeckMotionName(DeckMotion motion);  // "vertical" | "lateral" | "longitudinal" | "torsional" | "local"
 
 inline constexpr double kLocalDeckShare = 1e-3;
+inline constexpr double kSectionShare = 0.5;
 
 struct DeckMotionReport {
   DeckMotion motion = DeckMotion::kLocal;
