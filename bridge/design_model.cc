@@ -63,7 +63,7 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   // A run carries the design loads: the permanent load and the payload (the paper's design
   // load). An engineering design's reference state is the permanent load alone, so the
   // payload is added, and the run starts from the equilibrium under it.
-  const double payload = 1.0 - PayloadShare(design.reference);
+  const double payload = options.payload_share - PayloadShare(design.reference);
   if (payload != 0 && design.actions.base[kPayloadFull].size() == m.loads.size()) {
     m.loads += payload * design.actions.base[kPayloadFull];
   }
@@ -73,7 +73,7 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   // added starts in the design's own equilibrium. Otherwise the members' weight is added here,
   // before the deck's masses join the node masses (their weight is in the loads already).
   if (options.gravity_on_structure && design.reference.factor[kSelfWeight] == 0) AddStructureWeight(m);
-  if (options.deck_inertia) AddDeckInertia(m, design, 1.0);
+  if (options.deck_inertia) AddDeckInertia(m, design, options.payload_share);
   SettleAtEquilibrium(m, design);
   CheckModel(m, "design model");
   return m;

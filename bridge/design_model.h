@@ -19,15 +19,15 @@ namespace tbridge {
 //   (pinned nodes get no mass);
 // - prestrain: L0 = ratio x design length, k = E A / L0; the mass stays rho A L0 of the
 //   design string (what SPEC.md §9's prestrained frequencies assume);
-// - loads: the design's constant loads, each weight once (the members' own added when asked
-//   and the design did not count it);
+// - loads: the design's constant loads and options.payload_share of the payload (1: all of
+//   it), each weight once (the members' own added when asked and the design did not count it);
 // - dim 2 for planar designs (x-y), 3 otherwise; supports are the fixed nodes.
 // Throws ConfigError for a prestrain group that names no string or a negative damping.
 DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options = {});
 
 // Adds the deck beams' mass (and the superimposed dead load's) at the deck nodes of a designed
 // bridge, and `payload_factor` times the payload's: mass, not weight, which the loads carry.
-// BuildDynamicModel's loads carry the whole payload, so it takes 1.
+// BuildDynamicModel's loads carry options.payload_share of the payload, and so does its mass.
 void AddDeckInertia(DynamicModel& model, const Design& design, double payload_factor);
 
 // Moves `model.positions` to the static equilibrium under `model.loads` (statics/), from the

@@ -82,7 +82,7 @@ Config ParseConfig(const nlohmann::json& root) {
                         "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
                         "not both");
     }
-    for (const char* section : {"material", "design", "loads"}) {
+    for (const char* section : {"material", "design", "loads", "comfort"}) {
       if (top.Has(section)) {
         throw ConfigError(section, "(section)",
                           "not allowed with \"structure\": a custom scene gives its masses, stiffnesses and rest "
@@ -99,6 +99,7 @@ Config ParseConfig(const nlohmann::json& root) {
     c.design = ParseSection<DesignConfig>(top.Section("design"));
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
     CheckCasesForBridge(c.bridge, c.loads);
+    c.comfort = ParseSection<ComfortConfig>(top.Section("comfort"));
   }
   if (top.Has("dynamics")) {
     c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
@@ -125,6 +126,7 @@ nlohmann::json ToJson(const Config& c) {
   j["material"] = EchoFields(c.material);
   j["design"] = EchoFields(c.design);
   j["loads"] = EchoFields(c.loads);
+  j["comfort"] = EchoFields(c.comfort);
   if (c.dynamics) j["dynamics"] = ToJson(*c.dynamics);
   return j;
 }
@@ -142,6 +144,7 @@ void Validate(const Config& c) {
     ValidateFields(c.loads, kLoadsSection.name);
     CheckLoadsRules(c.loads);
     CheckCasesForBridge(c.bridge, c.loads);
+    ValidateFields(c.comfort, kComfortSection.name);
   }
   if (c.dynamics) {
     ValidateFields(*c.dynamics, kDynamicsSection.name);
@@ -158,6 +161,7 @@ std::string ConfigKeyTable(const std::string& section) {
   if (section == kMaterialSection.name) return KeyTableOf(Material{});
   if (section == kDesignSection.name) return KeyTableOf(DesignConfig{});
   if (section == kLoadsSection.name) return KeyTableOf(LoadsConfig{});
+  if (section == kComfortSection.name) return KeyTableOf(ComfortConfig{});
   if (section == kDynamicsSection.name) return KeyTableOf(DynamicsConfig{});
   if (section == kStructureSection.name) return KeyTableOf(StructureConfig{});
   throw std::invalid_argument("ConfigKeyTable: no described section '" + section + "'");

@@ -77,6 +77,24 @@ struct LoadsConfig {
   double station_margin = 1.0;             // the static check's nonlinear stations (config_fields.h)
 };
 
+// Footbridge comfort under pedestrians (verify/comfort_check.h): the Sétra footbridge guide
+// (2006) and HiVoSS (2008) load models, and EN 1990 A2.4.3.2's triggers and limits. Each
+// constant's source is beside it in design/pedestrian_loads.h.
+struct ComfortConfig {
+  bool check = true;                    // checked (never with the paper's switches)
+  bool sizing_constraint = true;        // the verified sizing designs to it
+  std::string traffic_class = "II";     // Sétra Stage 1: "I" | "II" | "III" | "IV"
+  std::string comfort_level = "mean";   // Sétra Stage 2: "maximum" | "mean" | "minimum"
+  std::string construction = "steel";   // the damping ratio's default (Sétra, HiVoSS 4.4.2)
+  std::optional<double> damping_ratio;  // xi, (0, 1); absent: the construction's
+  double pedestrian_mass_kg = 70.0;     // one pedestrian's mass [kg] (Sétra: 700 N)
+  double vertical_trigger_hz = 5.0;     // EN 1990 A2.4.3.2(2): check below this (vertical)
+  double horizontal_trigger_hz = 2.5;   // EN 1990 A2.4.3.2(2): lateral and torsional
+  double vertical_limit_m_s2 = 0.7;     // EN 1990 A2.4.3.2(1)
+  double horizontal_limit_m_s2 = 0.2;   // EN 1990 A2.4.3.2(1), normal use
+  double crowd_horizontal_limit_m_s2 = 0.4;  // EN 1990 A2.4.3.2(1), exceptional crowd conditions
+};
+
 // A config describes either a designed bridge ("bridge", with "material" and "design") or a
 // custom scene ("structure"); `structure` is set exactly in the second case, and then
 // `bridge`, `material` and `design` keep their defaults and are not echoed.
@@ -85,6 +103,7 @@ struct Config {
   Material material;
   DesignConfig design;
   LoadsConfig loads;
+  ComfortConfig comfort;
   std::optional<StructureConfig> structure;  // present when the file has a "structure" section
   std::optional<DynamicsConfig> dynamics;    // present when the file has a "dynamics" section
 };
@@ -97,7 +116,7 @@ inline constexpr int kMaxBarsPerModule = 8;
 Config ParseConfig(const nlohmann::json& root);
 Config LoadConfig(const std::string& path);
 // Checks a config built in code as ParseConfig checks a file: every described key of
-// `bridge`, `material`, `design` and `loads` (or `structure`) and of `dynamics` in its range, and the
+// `bridge`, `material`, `design`, `loads` and `comfort` (or `structure`) and of `dynamics` in its range, and the
 // rules across keys. Throws ConfigError naming the key path, the value and what is allowed.
 void Validate(const Config& config);
 // The paper's switches (SPEC.md): its one unfactored load case, no self-weight, yield factor

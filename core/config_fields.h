@@ -33,6 +33,9 @@ inline const SectionInfo kLoadsSection{
     "others); `gamma_g_inf` <= `gamma_g_sup`; a planar bridge (`bridge.planes` = 1) needs a case "
     "other than `\"wind\"`."};
 
+inline const SectionInfo kComfortSection{
+    "comfort", "footbridge comfort under pedestrians (Sétra 2006, HiVoSS 2008, EN 1990 A2.4.3.2)", ""};
+
 // Ranges whose ends catch unit slips: a value beyond them is no bridge in the key's unit, and
 // the refusal says which unit it was likely given in (configs/README.md, "Plausibility
 // warnings"). 2000 m is about the longest span ever built (suspension bridges); 1 deg of beta,
@@ -236,6 +239,64 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "0.27 of the largest below it in the linear pass, and 0.3 still solved 89 to 100 % of the "
                    "stations nonlinearly, hence the default 1 (BENCHMARKS.md, the static check at every deck station)"},
            l.station_margin, Range::Closed(0.0, 1.0));
+}
+
+template <class C, class V>
+void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, ComfortConfig> {
+  v.Bool(KeyInfo{"check", "–",
+                 "the comfort check: the deck's vertical, lateral, longitudinal and torsional modes (the mode "
+                 "shapes projected on the deck's motions), with the deck, the superimposed dead load and the "
+                 "class's pedestrians as mass, and the steady peak acceleration of each mode in a frequency "
+                 "range of resonance risk under the Sétra crowd load in the shape's sign pattern, against the "
+                 "limit. Never with the paper's switches (`loads.cases` `[\"paper\"]`)"},
+         c.check);
+  v.Bool(KeyInfo{"sizing_constraint", "–",
+                 "the verified sizing designs to the comfort check: where it fails, the stiffness is raised "
+                 "until the failing mode's frequency leaves the range where its acceleration exceeds the limit"},
+         c.sizing_constraint);
+  v.Choice(KeyInfo{"traffic_class", "–",
+                   "Sétra Stage 1 class, and its crowd density d: `\"IV\"` seldom used (no check), `\"III\"` "
+                   "standard use (0.5 pedestrian/m², load case 1 in frequency range 1), `\"II\"` urban (0.8/m², "
+                   "case 1 in ranges 1 and 2, case 3 in range 3), `\"I\"` very dense crowds (1.0/m², case 2 in "
+                   "ranges 1 and 2, case 3 in range 3)"},
+           c.traffic_class, {"I", "II", "III", "IV"});
+  v.Choice(KeyInfo{"comfort_level", "–",
+                   "Sétra Stage 2 level asked for; its upper acceleration bound is a limit beside EN 1990's: "
+                   "`\"maximum\"` (vertical 0.5 m/s², horizontal 0.15), `\"mean\"` (1.0, 0.3), `\"minimum\"` "
+                   "(2.5, 0.8)"},
+           c.comfort_level, {"maximum", "mean", "minimum"});
+  v.Choice(KeyInfo{"construction", "–",
+                   "sets the structural damping ratio when `damping_ratio` is not given (Sétra; HiVoSS 4.4.2 "
+                   "mean values): steel 0.4 %, composite 0.6 %, prestressed concrete 1.0 %, reinforced concrete "
+                   "1.3 %, timber 1.0 % (HiVoSS 1.5 %)"},
+           c.construction, {"steel", "composite", "prestressed_concrete", "reinforced_concrete", "timber"});
+  v.OptionalNumber(KeyInfo{"damping_ratio", "–",
+                           "xi, the structural damping ratio of every mode (null: the `construction`'s). It enters "
+                           "the steady resonant acceleration a = F*/(2 xi M*) and the equivalent pedestrian numbers "
+                           "10.8 sqrt(xi n)",
+                           false, nullptr, "from `construction`"},
+                   c.damping_ratio, Range::Open(0.0, 1.0), Absent::kNull);
+  v.Number(KeyInfo{"pedestrian_mass_kg", "kg",
+                   "one pedestrian's mass (Sétra: 700 N): d · deck area · this is the crowd's mass on the deck"},
+           c.pedestrian_mass_kg, Range::Closed(0.0, 500.0));
+  v.Number(KeyInfo{"vertical_trigger_hz", "Hz",
+                   "EN 1990 A2.4.3.2(2): comfort is checked when a vertical or longitudinal deck frequency is "
+                   "below this"},
+           c.vertical_trigger_hz, Range{0.0, 100.0, true, false});
+  v.Number(KeyInfo{"horizontal_trigger_hz", "Hz",
+                   "EN 1990 A2.4.3.2(2): the same for a lateral or torsional deck frequency"},
+           c.horizontal_trigger_hz, Range{0.0, 100.0, true, false});
+  v.Number(KeyInfo{"vertical_limit_m_s2", "m/s²",
+                   "EN 1990 A2.4.3.2(1): largest vertical deck acceleration (torsional modes too); the "
+                   "smaller of this and the `comfort_level`'s bound applies"},
+           c.vertical_limit_m_s2, Range{0.0, 100.0, true, false});
+  v.Number(KeyInfo{"horizontal_limit_m_s2", "m/s²",
+                   "EN 1990 A2.4.3.2(1): largest horizontal (lateral, longitudinal) deck acceleration in normal "
+                   "use (traffic class III)"},
+           c.horizontal_limit_m_s2, Range{0.0, 100.0, true, false});
+  v.Number(KeyInfo{"crowd_horizontal_limit_m_s2", "m/s²",
+                   "EN 1990 A2.4.3.2(1): the same in exceptional crowd conditions (traffic classes I and II)"},
+           c.crowd_horizontal_limit_m_s2, Range{0.0, 100.0, true, false});
 }
 
 // The README's text of one section: SectionHeading, a blank line, then SectionBody: the rules

@@ -52,6 +52,7 @@ struct LoadStepConfig {
   std::array<double, 3> force{0, 0, 0};  // [N]
   double rise_s = 0;   // [s], >= 0; rise_s + fall_s <= t_end - t_start
   double fall_s = 0;   // [s], >= 0
+  double frequency_hz = 0;  // [Hz], >= 0; > 0: the force times sin(2 pi frequency_hz t)
 };
 
 struct RecordConfig {

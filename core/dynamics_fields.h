@@ -77,6 +77,10 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "A load moving at speed v between deck nodes h apart is, on each node, a ramp "
                    "with rise_s = fall_s = h/v"},
            l.fall_s, Range::NonNegative());
+  v.Number(KeyInfo{"frequency_hz", "Hz",
+                   "0: the force as given; f > 0: the force times sin(2·pi·f·t), a harmonic load such as a "
+                   "pedestrian crowd's (the comfort check's load, `comfort`)"},
+           l.frequency_hz, Range::Closed(0.0, 1e6));
 }
 
 template <class R, class V>

@@ -171,6 +171,12 @@ Verdict DesignVerdict(const Design& d) {
        << d.statics.deflection_limit_m << " m (" << d.statics.deflection_case << ")";
     fails.push_back(os.str());
   }
+  const CheckStatus comfort = d.comfort.Status();
+  if (comfort == CheckStatus::kFailed) fails.push_back("comfort: " + d.comfort.Failures());
+  const bool comfort_asked = d.config.comfort.check && !KeepsPaperSwitches(d.config);
+  if (comfort_asked && comfort == CheckStatus::kNotRun) {
+    not_done.push_back("comfort check not run" + (d.comfort.note.empty() ? "" : " (" + d.comfort.note + ")"));
+  }
   if (d.unchecked_cases) not_done.push_back("some asked-for cases were not checked (notes)");
   if (!d.statics.done) not_done.push_back("static check not run");
   if (!d.dynamics.done) not_done.push_back("dynamic check not run");
@@ -187,8 +193,12 @@ Verdict DesignVerdict(const Design& d) {
   v.summary = os.str();
   v.scope = d.topology.planes == 1
                 ? "in-plane only: a planar bridge is checked in its own plane; its lateral system (bracing, "
-                  "wind, lateral-torsional motion) is not checked"
+                  "wind, lateral-torsional motion) is not checked, nor its lateral and torsional comfort"
                 : "both planes and the transverse strings, wind included where loads.cases asks for it";
+  if (!comfort_asked) {
+    v.scope += KeepsPaperSwitches(d.config) ? "; comfort not checked (the paper's switches)"
+                                            : "; comfort not checked (comfort.check is false)";
+  }
   return v;
 }
 

@@ -50,6 +50,7 @@ struct Design {
   Resizing resizing;                 // the verification's resizing, when it was run (verify/)
   DynamicCheck dynamics;             // the dynamic check, when it was run (verify/)
   MassAttribution attribution;       // what drives the verified sizing's mass; members empty when not sized
+  ComfortCheck comfort;              // the footbridge comfort check, when it was run (verify/)
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;
@@ -102,8 +103,9 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
 
 // The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over
 // 1 (1e-9 allows for the rounding of a member sized exactly to its resistance), unstable, a
-// static case with no equilibrium or a deflection over its limit. Otherwise INCOMPLETE when a
-// check, a run or an asked-for case was not done, else PASS.
+// static case with no equilibrium, a deflection over its limit or a deck mode over its comfort
+// limit. Otherwise INCOMPLETE when a check, a run or an asked-for case was not done (comfort
+// counts when comfort.check asks for it and the paper's switches are off), else PASS.
 enum class VerdictOutcome { kPass, kFail, kIncomplete };
 const char* VerdictName(VerdictOutcome outcome);  // "PASS" | "FAIL" | "INCOMPLETE"
 struct Verdict {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "design/comfort_report.h"
 #include "design/deck_beams.h"
 
 namespace tbridge {
@@ -49,7 +50,8 @@ json Units() {
       {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}},
       {"deflection_max", {{"deflection", "m"}, {"limit", "m"}, {"node", "1 (1-based node number)"}}},
       {"utilisation_max", "1"},
-      {"self_weight_iterations", "1"}};
+      {"self_weight_iterations", "1"},
+      {"comfort", ComfortUnits()}};
 }
 
 // printf into a std::string; the attribute lets the compiler check every format string.
@@ -258,7 +260,8 @@ json VerdictJson(const Design& d, const Verdict& v) {
           {"checks",
            {{"static", CheckStatusName(d.statics.Status())},
             {"dynamic", CheckStatusName(d.dynamics.Status())},
-            {"deck_beams", CheckStatusName(CheckDeckBeams(d.config, d.deck, d.cases).Status())}}},
+            {"deck_beams", CheckStatusName(CheckDeckBeams(d.config, d.deck, d.cases).Status())},
+            {"comfort", CheckStatusName(d.comfort.Status())}}},
           {"notes", d.notes}};
 }
 
@@ -310,6 +313,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
 
   os << "{\n";
   field("cases", CasesJson(d));
+  field("comfort", ComfortJson(d));
   field("config", ToJson(d.config));
   field("deck", deck);
   field("deflection_max", DeflectionsJson(d));
@@ -349,7 +353,9 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"changes", d.resizing.changes},
                      {"second_start_kg", d.resizing.second_start_kg},
                      {"optima", d.resizing.optima},
-                     {"why", d.resizing.why}});
+                     {"why", d.resizing.why},
+                     {"comfort_stiffness_factor", d.resizing.comfort_stiffness_factor},
+                     {"comfort_governs", d.resizing.comfort_governs}});
   field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);
   field("solver", solver);
@@ -442,6 +448,10 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     }
     if (!r.optima.empty()) line("  " + r.optima);
   }
+  if (d.resizing.comfort_stiffness_factor != 1.0) {
+    line(Format("resizing for comfort: %.4g times the stiffness the deflection limit asks for; governs: %s",
+                d.resizing.comfort_stiffness_factor, d.resizing.comfort_governs.c_str()));
+  }
   if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {
     if (!r.done) {
@@ -455,6 +465,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps, r.peak_deck_displacement,
                 amp.c_str()));
   }
+  for (const std::string& text : ComfortSummaryLines(d)) line(text);
   const Verdict verdict = DesignVerdict(d);
   line(verdict.summary);
   line("scope: " + verdict.scope);

@@ -206,9 +206,9 @@ struct SizingProblem::Impl {
       case SizingRow::kTaut:
         return (st.forces[c][j] - corrections.taut_margin_n[j]) / force_scale;
       case SizingRow::kDeflectionDown:
-        return 1.0 + corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
+        return 1.0 + corrections.deflection_factor * corrections.stiffness_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kDeflectionUp:
-        return 1.0 - corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
+        return 1.0 - corrections.deflection_factor * corrections.stiffness_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kReferenceTaut:
         break;
     }
@@ -232,9 +232,9 @@ struct SizingProblem::Impl {
       case SizingRow::kTaut:
         return dforces[c][j] / force_scale;
       case SizingRow::kDeflectionDown:
-        return corrections.deflection_factor * Vertical(c, j, du) / deflection_limit_m;
+        return corrections.deflection_factor * corrections.stiffness_factor * Vertical(c, j, du) / deflection_limit_m;
       case SizingRow::kDeflectionUp:
-        return -corrections.deflection_factor * Vertical(c, j, du) / deflection_limit_m;
+        return -corrections.deflection_factor * corrections.stiffness_factor * Vertical(c, j, du) / deflection_limit_m;
       case SizingRow::kReferenceTaut:
         break;
     }

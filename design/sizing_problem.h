@@ -36,6 +36,9 @@ struct SizingCorrections {
   std::vector<double> demand_factor;  // kappa_j on each member's linear demand (1: none)
   std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
   double deflection_factor = 1.0;     // kappa_d on the linear deflections
+  // kappa_k >= 1, also on the deflections: a stiffer bridge than the deflection limit asks, for
+  // the frequency the comfort check needs (verify/comfort_sizing.h).
+  double stiffness_factor = 1.0;
 };
 
 // One constraint row's meaning, for the report: which member (or deck node), combination and

@@ -1,6 +1,7 @@
 #include "design/verification.h"
 
 #include <algorithm>
+#include <sstream>
 
 namespace tbridge {
 
@@ -22,6 +23,8 @@ const char* CheckStatusName(CheckStatus status) {
       return "passed";
     case CheckStatus::kFailed:
       return "failed";
+    case CheckStatus::kNotRequired:
+      return "not_required";
     case CheckStatus::kNotRun:
       break;
   }
@@ -55,6 +58,30 @@ CheckStatus DynamicCheck::Status() const {
   if (AnyOver(members)) return CheckStatus::kFailed;
   if (!done || !NotDone().empty()) return CheckStatus::kNotRun;
   return CheckStatus::kPassed;
+}
+
+CheckStatus ComfortCheck::Status() const {
+  if (!done) return CheckStatus::kNotRun;
+  if (!required) return CheckStatus::kNotRequired;
+  for (const ComfortMode& m : modes) {
+    if (!m.pass) return CheckStatus::kFailed;
+  }
+  return CheckStatus::kPassed;
+}
+
+std::string ComfortCheck::Failures() const {
+  std::ostringstream os;
+  for (const ComfortMode& m : modes) {
+    if (m.pass) continue;
+    if (os.tellp() > 0) os << "; ";
+    os << m.direction << " mode " << m.index << " at " << m.frequency_hz << " Hz: ";
+    if (m.acceleration_m_s2 > m.limit_m_s2) {
+      os << m.acceleration_m_s2 << " m/s^2 > " << m.limit_m_s2 << " m/s^2 (" << m.load_model << ")";
+    } else {
+      os << pedestrians << " pedestrians > the " << m.lock_in_pedestrians << " that lock in";
+    }
+  }
+  return os.str();
 }
 
 }  // namespace tbridge

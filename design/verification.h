@@ -8,10 +8,12 @@
 
 namespace tbridge {
 
-// What a check found: it ran and everything it checks holds, it ran and something fails, or
-// it (or part of it) was not run. A design is PASS only when every check passed.
-enum class CheckStatus { kPassed, kFailed, kNotRun };
-const char* CheckStatusName(CheckStatus status);  // "passed" | "failed" | "not_run"
+// What a check found: it ran and everything it checks holds, it ran and something fails, it
+// (or part of it) was not run, or the code does not ask for it (comfort, when every deck
+// frequency is above EN 1990 A2's triggers). A design is PASS only when every check passed or
+// was not required.
+enum class CheckStatus { kPassed, kFailed, kNotRun, kNotRequired };
+const char* CheckStatusName(CheckStatus status);  // "passed" | "failed" | "not_run" | "not_required"
 
 // One member's governing finding in a check: the largest demand / resistance over what the
 // check ran, and where. A slack string that must stay taut is measured by its strain instead
@@ -132,6 +134,48 @@ struct MassAttribution {
   Eigen::VectorXd multipliers;
 };
 
+// One deck mode of the comfort check (verify/comfort_check.h): its motion, frequencies, modal
+// mass and, in a range of resonance risk, its steady peak acceleration under the crowd load.
+struct ComfortMode {
+  int index = 0;                   // 1-based, in ascending frequency with the pedestrians on the deck
+  std::string direction;           // "vertical" | "lateral" | "longitudinal" | "torsional"
+  double share = 0;                // of the deck's motion in `direction` (DeckMotionReport)
+  double frequency_hz = 0;         // with the class's pedestrians on the deck
+  double frequency_empty_hz = 0;   // without them
+  double modal_mass_kg = 0;        // for the shape scaled to a largest deck displacement of 1 along its axis
+  double load_weight_m2 = 0;       // sum of deck area x |shape| over the deck nodes, scaled shape [m^2]
+  int range = 4;                   // Sétra's frequency range (1-4), the riskiest between empty and crowded
+  std::string load_model;          // the Sétra load case applied, or why none
+  double psi = 0;                  // Sétra's psi, the largest between the two frequencies
+  double equivalent_pedestrians = 0;
+  double modal_force_n = 0;        // F*, the crowd load's amplitude on the scaled shape [N]
+  double acceleration_m_s2 = 0;    // steady peak a = F* / (2 xi M*) at `node`
+  double limit_m_s2 = 0;
+  int node = -1;                   // 0-based deck node of the largest displacement along the axis
+  std::string comfort_class;       // Sétra's comfort level reached ("maximum" ... "unacceptable")
+  double lock_in_pedestrians = 0;  // lateral: the critical number N_L (0 for the other motions)
+  bool pass = true;                // acceleration within the limit (and, lateral, fewer pedestrians than N_L)
+};
+
+// The comfort check: plain data filled by verify/comfort_check.h.
+struct ComfortCheck {
+  bool done = false;        // carried out (not with the paper's switches or comfort.check false)
+  bool required = false;    // a deck frequency below EN 1990 A2's trigger for its motion
+  std::string note;         // why not done, or what it left out
+  std::string traffic_class, comfort_level;
+  double damping_ratio = 0;
+  double density_per_m2 = 0;     // the class's crowd density d
+  double pedestrians = 0;        // n = d x deck area
+  double crowd_mass_kg = 0;      // their mass on the deck
+  bool planar = false;           // a planar bridge: lateral and torsional motions not checked
+  std::vector<ComfortMode> modes;  // the deck modes below their trigger
+  // not_run when not done; not_required when done and no mode is below its trigger; failed
+  // when a mode does not pass; else passed.
+  CheckStatus Status() const;
+  // The failing modes, as the verdict names them; empty when none.
+  std::string Failures() const;
+};
+
 // The resizing loop's record (verify/verified_design.h).
 struct Resizing {
   int iterations = 0;                     // designs run
@@ -143,6 +187,10 @@ struct Resizing {
   double second_start_kg = 0;             // the last sizing from twice the first design's areas
   std::string optima;                     // what that second start found, and which design was kept
   std::string why;                        // when not converged: the last verdict
+  // The comfort correction (verify/comfort_sizing.h): the factor on the stiffness the sizing
+  // asks for (1: none), and the failing mode that asked for it last.
+  double comfort_stiffness_factor = 1.0;
+  std::string comfort_governs;
 };
 
 }  // namespace tbridge

@@ -136,6 +136,7 @@ void Class1System::DerivativeImpl(double t, const double* y, double* dy, Class1W
   }
 
   FinishDerivative<D>(f, dy);
+  ws.damper_power += MassDamping<D>(y, dy);
 }
 
 void Class1System::Derivative(double t, const double* y, double* dy, Class1Workspace& ws) const {

@@ -370,6 +370,7 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
     }
   }
   FinishDerivative<D>(f, dy);
+  ws.damper_power += MassDamping<D>(y, dy);
 }
 
 void ClassKSystem::Derivative(double t, const double* y, double* dy, ClassKWorkspace& ws) const {

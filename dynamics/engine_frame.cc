@@ -13,6 +13,7 @@ EngineFrame::EngineFrame(const DynamicModel& model, const EngineOptions& options
     throw ModelError(where + ": stabilisation needs omega > 0 and zeta >= 0");
   }
   node_mass_ = model.node_mass;
+  mass_damping_ = model.mass_damping_per_s;
   loads_ = NodeLoads(model, timed, engine);
   strings_ = PackStrings(model, damped_);
   rest_positions_.resize(coordinates());

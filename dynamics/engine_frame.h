@@ -80,6 +80,19 @@ class EngineFrame {
                              : AccumulateStringForces<D, Damped>(strings_, y, y + c, f);
   }
 
+  // Mass-proportional damping (DynamicModel::mass_damping_per_s): the force -alpha M v takes
+  // alpha v off every acceleration. The bar forces need no change: the force's share along a
+  // bar is -alpha m (b . b_dot) / l, zero while its length is held. Returns its power
+  // alpha v^T M v = 2 alpha (kinetic energy) [W]; 0 without it. Call after FinishDerivative
+  // (pinned coordinates have no velocity, so they stay at rest).
+  template <int D>
+  double MassDamping(const double* y, double* dy) const {
+    if (mass_damping_ == 0.0) return 0.0;
+    const int c = coordinates();
+    for (int i = 0; i < c; ++i) dy[c + i] -= mass_damping_ * y[c + i];
+    return 2.0 * mass_damping_ * KineticEnergy(y);
+  }
+
   // The end of every evaluation: the lone nodes' accelerations F / m, and zero rate for the
   // pinned coordinates. CAUTION: performance-sensitive.
   template <int D>
@@ -99,6 +112,7 @@ class EngineFrame {
   const char* engine_;
   int dim_ = 2, n_n_ = 0;
   bool damped_ = false;
+  double mass_damping_ = 0;  // alpha [1/s]
   EngineOptions options_;
   NodeLoads loads_;
   std::vector<PackedString> strings_;

@@ -27,6 +27,9 @@ void CheckModel(const DynamicModel& m, const std::string& where) {
   if (m.node_mass.size() != 0) nodes(static_cast<std::size_t>(m.node_mass.size()), "node_mass");
   if (m.loads.size() != 0) nodes(static_cast<std::size_t>(m.loads.cols()), "loads");
   if (m.node_mass.size() != 0 && !(m.node_mass.minCoeff() >= 0)) fail("node_mass must be >= 0");
+  if (!(m.mass_damping_per_s >= 0) || !std::isfinite(m.mass_damping_per_s)) {
+    fail("mass_damping_per_s must be finite and >= 0");
+  }
   const BarColumns& b = m.bars;
   for (const std::size_t size : {b.j.size(), b.mass.size(), b.length.size()}) {
     if (size != b.size()) fail("the bar columns differ in length");

@@ -117,6 +117,10 @@ struct DynamicModel {
   std::vector<int> deck_nodes;        // free deck nodes (0-based, in order of x), for the
                                       // deck measurement of SPEC.md §9; may be empty
   double gravity = 9.81;              // g [m/s^2] used when gravity acts on the structure
+  // alpha [1/s] of mass-proportional (Rayleigh) damping C = alpha M: every mode of frequency
+  // omega is damped at alpha / (2 omega) of critical, so alpha = 2 xi omega gives one mode the
+  // damping ratio xi exactly (the comfort check's time-history run). 0: none.
+  double mass_damping_per_s = 0;
 
   int num_nodes() const { return static_cast<int>(positions.cols()); }
   // Adds a string with its name and group.
@@ -147,6 +151,10 @@ struct ModelOptions {
   std::vector<StringPrestrain> prestrain;  // at most one entry per group
   bool gravity_on_structure = false;       // add -m g (y) of bars and node masses to the loads
   bool deck_inertia = false;               // deck beams (and payload in the loads) as deck-node masses
+  // The share of a designed bridge's payload the model carries as load and, with deck_inertia,
+  // as mass (bridge/design_model.h): 1 for a run under the design loads; the comfort check
+  // puts the pedestrians' weight there instead (0 for the empty deck).
+  double payload_share = 1.0;
 };
 
 // What a prestrain implies (SPEC.md §7): the stress E (s - L0) / L0 at the design length s.

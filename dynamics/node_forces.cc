@@ -1,5 +1,6 @@
 #include "dynamics/node_forces.h"
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -21,14 +22,16 @@ NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& ti
       throw ModelError(std::string(engine) + ": a timed load names node " + std::to_string(l.node + 1) +
                        " out of range");
     }
-    timed_.push_back({l.t_start, l.t_end, l.rise_s, l.fall_s, l.node * dim_, {l.force.x(), l.force.y(), l.force.z()}});
+    timed_.push_back({l.t_start, l.t_end, l.rise_s, l.fall_s, l.omega_rad_s, l.node * dim_,
+                      {l.force.x(), l.force.y(), l.force.z()}});
   }
 }
 
 void NodeLoads::At(double t, double* force) const {
   std::memcpy(force, constant_.data(), sizeof(double) * static_cast<size_t>(constant_.size()));
   for (const PackedLoad& l : timed_) {
-    const double shape = LoadShape(t, l.t_start, l.t_end, l.rise_s, l.fall_s);
+    double shape = LoadShape(t, l.t_start, l.t_end, l.rise_s, l.fall_s);
+    if (l.omega != 0.0) shape *= std::sin(l.omega * t);
     if (shape != 0.0) {
       for (int d = 0; d < dim_; ++d) force[l.o + d] += shape * l.f[d];
     }

@@ -13,12 +13,14 @@
 namespace tbridge {
 
 // A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads,
-// ramped up over rise_s and down over fall_s (LoadStepConfig).
+// ramped up over rise_s and down over fall_s (LoadStepConfig); with omega_rad_s > 0 it is
+// harmonic, force sin(omega_rad_s t) (a pedestrian crowd's load, verify/comfort_check.h).
 struct TimedLoad {
   double t_start = 0, t_end = 0;
   int node = 0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]; z ignored when dim = 2
   double rise_s = 0, fall_s = 0;
+  double omega_rad_s = 0;  // [rad/s]; 0: the force as given
 };
 
 // The fraction of a timed load's force acting at t: 0 outside [t_start, t_end), linear over
@@ -63,7 +65,7 @@ class NodeLoads {
 
  private:
   struct PackedLoad {
-    double t_start, t_end, rise_s, fall_s;
+    double t_start, t_end, rise_s, fall_s, omega;
     int o;
     double f[3];
   };

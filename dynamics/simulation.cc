@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -201,7 +202,7 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
       throw ConfigError(key + ".force", NumberText(l.force[2]), "z must be 0 for a planar bridge");
     }
     timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2]), l.rise_s,
-                     l.fall_s});
+                     l.fall_s, 2.0 * std::numbers::pi * l.frequency_hz});
   }
   SimulationResult result;
   result.dim = dim;

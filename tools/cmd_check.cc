@@ -10,6 +10,7 @@
 #include "design/design_report.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "verify/comfort_check.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 #include "verify/verified_design.h"
@@ -58,7 +59,7 @@ int RunCheckCommand(const std::vector<std::string>& args) {
       m.governing_case.clear();
     }
   }
-  RecordChecks(design, CheckStatics(design), CheckDynamics(design));
+  RecordChecks(design, CheckStatics(design), CheckDynamics(design), CheckComfort(design));
   WriteDesignJson(design, json);
   outputs.Commit();
   if (!parsed.Flag("-q")) std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";

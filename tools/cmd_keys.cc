@@ -35,6 +35,7 @@ int RunKeysCommand(const std::vector<std::string>& args) {
     return 0;
   }
   for (const SectionInfo* section : {&kBridgeSection, &kMaterialSection, &kDesignSection, &kLoadsSection,
+                                     &kComfortSection,
                                      &kDynamicsSection, &kStructureSection}) {
     std::cout << ConfigSectionText(*section) << "\n";
   }

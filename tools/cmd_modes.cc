@@ -16,12 +16,14 @@
 #include "core/progress.h"
 #include "design/design.h"
 #include "design/plausibility.h"
+#include "dynamics/deck_motion.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "dynamics/structure_model.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "verify/comfort_check.h"
 #include "verify/verified_design.h"
 
 namespace tbridge::cli {
@@ -44,6 +46,11 @@ const CommandSpec& ModesSpec() {
         "modes to compute, lowest first (0 = all; default all up to 600 free DOFs, else the lowest 20)", false},
        {{"-k", "--count"}, "K", "mode shapes to write, lowest first (default 6; 0 = none)", false},
        {{"-q", "--quiet"}, "", "do not print the frequency table", false},
+       {{"-M", "--mass"}, "MODEL",
+        "a bridge's mass model: design (default: the deck, the superimposed dead load and the payload), "
+        "crowd (the comfort check's: the traffic class's pedestrians in place of the payload) or empty "
+        "(neither)",
+        false},
        ProgressOption(),
        StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
@@ -51,7 +58,9 @@ const CommandSpec& ModesSpec() {
       "and writes its linearised natural frequencies about the static equilibrium, with the bar\n"
       "lengths held, to OUT.json (a structure out of equilibrium is linearised where it stands\n"
       "and its force imbalance reported as equilibrium_residual_N):\n"
-      "omega [rad/s], f [Hz], T [s], the symmetry about mid-span, the shapes of the first K\n"
+      "omega [rad/s], f [Hz], T [s], the symmetry about mid-span, the deck motion each mode is\n"
+      "(vertical, lateral, longitudinal, torsional, or local when the deck hardly moves: the shape\n"
+      "projected on the deck's section motions), the shapes of the first K\n"
       "modes and the largest stable RK4 step (from the highest mode, computed in any case).\n"
       "Every mode is computed densely up to 600 free DOFs (planar n <= 7); larger models get\n"
       "the lowest 20 by a sparse Lanczos solver unless --modes says otherwise (all_modes in\n"
@@ -100,8 +109,19 @@ std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model,
   return out;
 }
 
+// The deck motion of every mode of a model with deck nodes (a designed bridge); nothing for a
+// custom structure.
+std::vector<std::optional<DeckMotionReport>> Motions(const DynamicModel& model, const ModalResult& modes) {
+  std::vector<std::optional<DeckMotionReport>> out(modes.modes.size());
+  if (model.deck_nodes.empty()) return out;
+  for (size_t k = 0; k < modes.modes.size(); ++k) out[k] = ProjectOnDeckMotions(model, modes.modes[k].shape);
+  return out;
+}
+
 nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, const ModalResult& result,
-                           const std::vector<std::optional<SymmetryReport>>& symmetry, int shapes) {
+                           const std::vector<std::optional<SymmetryReport>>& symmetry,
+                           const std::vector<std::optional<DeckMotionReport>>& motion, int shapes,
+                           const std::string& mass_model) {
   nlohmann::json modes = nlohmann::json::array();
   bool stable = true;
   for (size_t k = 0; k < result.modes.size(); ++k) {
@@ -112,7 +132,14 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
                             {"frequency_hz", m.frequency_hz},
                             {"period_s", m.period_s},
                             {"symmetry", nullptr},
-                            {"symmetry_correlation", nullptr}};
+                            {"symmetry_correlation", nullptr},
+                            {"motion", nullptr},
+                            {"motion_share", nullptr}};
+    if (motion[k]) {
+      entry["motion"] = DeckMotionName(motion[k]->motion);
+      const int which = static_cast<int>(motion[k]->motion);
+      entry["motion_share"] = which < 4 ? motion[k]->share[which] : 0.0;
+    }
     if (symmetry[k]) {
       entry["symmetry"] = SymmetryName(symmetry[k]->symmetry);
       entry["symmetry_correlation"] = symmetry[k]->correlation;
@@ -128,7 +155,8 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
   }
   nlohmann::json out;
   out["config"] = ToJson(config);
-  out["model"] = {{"dim", model.dim},
+  out["model"] = {{"mass", mass_model},
+                  {"dim", model.dim},
                   {"nodes", model.num_nodes()},
                   {"bars", model.bars.size()},
                   {"strings", model.strings.size()},
@@ -153,17 +181,18 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
 }
 
 std::string ModesTable(const ModalResult& result, const std::vector<std::optional<SymmetryReport>>& symmetry,
-                       int max_rows) {
+                       const std::vector<std::optional<DeckMotionReport>>& motion, int max_rows) {
   std::ostringstream out;
   if (!result.all_modes) out << "lowest " << result.modes.size() << " of ";
   out << result.total_modes << " modes (" << result.free_dofs << " free DOFs, " << result.constraints
       << " bar lengths held)\n";
-  out << "  mode   omega [rad/s]      f [Hz]       T [s]  symmetry\n";
+  out << "  mode   omega [rad/s]      f [Hz]       T [s]  symmetry       motion\n";
   char line[160];
   for (size_t k = 0; k < result.modes.size() && static_cast<int>(k) < max_rows; ++k) {
     const Mode& m = result.modes[k];
-    std::snprintf(line, sizeof line, "%6zu %15.4g %11.4g %11.4g  %s\n", k + 1, m.omega_rad_s, m.frequency_hz,
-                  m.period_s, symmetry[k] ? SymmetryName(symmetry[k]->symmetry) : "-");
+    std::snprintf(line, sizeof line, "%6zu %15.4g %11.4g %11.4g  %-13s  %s\n", k + 1, m.omega_rad_s, m.frequency_hz,
+                  m.period_s, symmetry[k] ? SymmetryName(symmetry[k]->symmetry) : "-",
+                  motion[k] ? DeckMotionName(motion[k]->motion) : "-");
     out << line;
   }
   if (static_cast<int>(result.modes.size()) > max_rows) {
@@ -193,20 +222,30 @@ int RunModesCommand(const std::vector<std::string>& args) {
   // switches (its one load case).
   ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
   if (!config.dynamics && !config.structure) options.deck_inertia = !KeepsPaperSwitches(config);
+  const std::string mass_model = parsed.Value("-M").value_or("design");
+  if (mass_model != "design" && mass_model != "crowd" && mass_model != "empty") {
+    throw UsageError("--mass expects design, crowd or empty, got '" + mass_model + "'");
+  }
+  if (mass_model != "design" && config.structure) {
+    throw UsageError("--mass " + mass_model + " needs a bridge config (a custom structure gives its own masses)");
+  }
   std::optional<Design> design;
   // The bridge tbridge design writes (verified, resized where its checks asked), so that the
   // modes are those of the bridge the other commands analyse.
   if (!config.structure) design = DesignAndVerify(config, &progress);
-  const DynamicModel model =
-      config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(*design, options);
+  const DynamicModel model = config.structure          ? BuildStructureModel(*config.structure, options)
+                             : mass_model == "design" ? BuildDynamicModel(*design, options)
+                                                      : ComfortModel(*design, mass_model == "crowd");
   progress.Stage("modes");
   const ModalResult result = ComputeModes(model, ModalOptionsOf(parsed, model));
   progress.Finish();
   if (design) ReportWarnings(PlausibilityWarnings(*design), parsed.Flag("--strict"));
   const auto symmetry = Symmetries(model, result);
-  json << ModesToJson(config, model, result, symmetry, shapes).dump(2) << "\n";
+  const auto motion = Motions(model, result);
+  json << ModesToJson(config, model, result, symmetry, motion, shapes, config.structure ? "structure" : mass_model).dump(2)
+       << "\n";
   outputs.Commit();
-  if (!parsed.Flag("-q")) std::cout << ModesTable(result, symmetry, 20) << "wrote " << out_path << "\n";
+  if (!parsed.Flag("-q")) std::cout << ModesTable(result, symmetry, motion, 20) << "wrote " << out_path << "\n";
   return 0;
 }
 

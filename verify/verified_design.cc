@@ -12,12 +12,14 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/solvers.h"
+#include "verify/comfort_check.h"
+#include "verify/comfort_sizing.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 
 namespace tbridge {
 
-void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
+void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, ComfortCheck comfort) {
   const int nb = static_cast<int>(d.bars.size());
   for (const std::vector<MemberFinding>* found : {&statics.members, &dynamics.members}) {
     for (int j = 0; j < static_cast<int>(found->size()); ++j) {
@@ -28,6 +30,7 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
   }
   d.statics = std::move(statics);
   d.dynamics = std::move(dynamics);
+  d.comfort = std::move(comfort);
 }
 
 namespace {
@@ -140,7 +143,7 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   RecordSizing(d, problem, x, problem.Areas(lo));
   out.statics = CheckStatics(d);
   out.dynamics = CheckDynamics(d);
-  RecordChecks(d, out.statics, out.dynamics);
+  RecordChecks(d, out.statics, out.dynamics, CheckComfort(d));
   return out;
 }
 
@@ -294,7 +297,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
   if (KeepsPaperSwitches(config) || solver.empty() || config.bridge.planes == 2) {
     Design first = RunDesign(config, progress);
     RequireStable(first);
-    RecordChecks(first, CheckStatics(first), CheckDynamics(first));
+    RecordChecks(first, CheckStatics(first), CheckDynamics(first), CheckComfort(first));
     record.iterations = 1;
     record.structure_mass_kg.push_back(first.mass.structure);
     const Verdict verdict = DesignVerdict(first);
@@ -353,6 +356,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
       return out;
     }
     record.changes.push_back(Correct(corrections, problem, x, d, statics, dynamics, verdict.pass));
+    CorrectForComfort(d, corrections, record);
     current = std::move(d);
   }
 }

@@ -24,7 +24,7 @@ namespace tbridge {
 // Records the checks' reports in the design: each member's utilisation rises to the largest
 // the checks found (with its case and mode), and the reports are kept for the outputs. The
 // checks themselves change nothing; this is the one place their findings enter a design.
-void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics);
+void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics, ComfortCheck comfort);
 
 // The last design, with its static check and its `resizing` record.
 Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 15);

@@ -72,6 +72,7 @@ TEST_CASE("parse, echo, Validate and the README agree on every described key", "
   CheckDescribedSection(CoreSection(kMaterialSection, &Config::material, Material{}), readme);
   CheckDescribedSection(CoreSection(kDesignSection, &Config::design, DesignConfig{}), readme);
   CheckDescribedSection(CoreSection(kLoadsSection, &Config::loads, LoadsConfig{}), readme);
+  CheckDescribedSection(CoreSection(kComfortSection, &Config::comfort, ComfortConfig{}), readme);
   CheckDescribedSection(
       DescribedSection<DynamicsConfig>{
           kDynamicsSection, ConfigSectionText(kDynamicsSection),

@@ -95,3 +95,47 @@ TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default"
 }
 
 }  // namespace
+
+namespace {
+
+// Exit code of `tbridge <command> <args>`, output discarded.
+int RunCommand(const std::string& command_and_args) {
+  const std::string command = std::string("'") + TBRIDGE_BINARY + "' " + command_and_args + " > /dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST_CASE("tbridge modes --mass crowd gives the comfort check's frequencies and names each mode's motion",
+          "[tools][modes][comfort]") {
+  const fs::path dir = fs::temp_directory_path() / "tbridge_modes_comfort_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path config = dir / "n2.json";
+  std::ofstream(config) << R"({"bridge": {"n": 2}})";
+  const fs::path design = dir / "design.json", modes = dir / "modes.json";
+  REQUIRE(RunCommand("design '" + config.string() + "' -o '" + design.string() + "' -q") <= 1);
+  REQUIRE(RunCommand("modes '" + config.string() + "' -o '" + modes.string() + "' --mass crowd -q") == 0);
+  std::ifstream design_in(design), modes_in(modes);
+  const nlohmann::json d = nlohmann::json::parse(design_in), m = nlohmann::json::parse(modes_in);
+  CHECK(m["model"]["mass"] == "crowd");
+  const nlohmann::json& comfort = d.at("comfort");
+  REQUIRE(comfort["done"] == true);
+  REQUIRE(!comfort["modes"].empty());
+  for (const nlohmann::json& mode : comfort["modes"]) {
+    const nlohmann::json& same = m["modes"][mode["index"].get<int>() - 1];
+    // The same model, the same dense eigen-decomposition: the design file's shortest
+    // round-trip digits give the frequency back to 1e-9 (the contract of the comfort report).
+    CHECK(same["frequency_hz"].get<double>() == Approx(mode["frequency_hz"].get<double>()).epsilon(1e-9));
+    CHECK(same["motion"] == mode["direction"]);
+  }
+  // A planar bridge: only vertical, longitudinal or local motions.
+  for (const nlohmann::json& mode : m["modes"]) {
+    const std::string motion = mode["motion"];
+    CHECK((motion == "vertical" || motion == "longitudinal" || motion == "local"));
+  }
+  // A mass model the command does not know is a usage error.
+  CHECK(RunCommand("modes '" + config.string() + "' -o '" + modes.string() + "' --mass full") == 2);
+  fs::remove_all(dir);
+}

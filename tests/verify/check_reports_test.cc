@@ -9,6 +9,7 @@
 #include "design/design_report.h"
 #include "design/equilibrium.h"
 #include "design/static_model.h"
+#include "verify/comfort_check.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
 #include "verify/verified_design.h"
@@ -76,12 +77,14 @@ TEST_CASE("the checks change nothing in the design they check", "[verify]") {
   Design copy = d;
   const StaticCheck statics = CheckStatics(copy);
   const DynamicCheck dynamics = CheckDynamics(copy);
+  const ComfortCheck comfort = CheckComfort(copy);
   CHECK(JsonOf(copy) == before);
   // They did find something: the control that the comparison above can fail. Recording their
   // reports changes the design's outputs (its utilisations, its checks).
   REQUIRE(statics.done);
   REQUIRE(dynamics.done);
-  RecordChecks(copy, statics, dynamics);
+  REQUIRE(comfort.done);
+  RecordChecks(copy, statics, dynamics, comfort);
   CHECK(JsonOf(copy) != before);
 }
 

@@ -1,0 +1,161 @@
+#include "design/pedestrian_loads.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace tbridge {
+
+namespace {
+
+bool Horizontal(LoadAxis axis) { return axis == LoadAxis::kLateral; }
+
+// psi's trapezoid: 0 below a, rising to 1 at b, 1 to c, falling to 0 at d [Hz].
+struct Trapezoid {
+  double a, b, c, d;
+  double At(double f) const {
+    if (f <= a || f >= d) return 0.0;
+    if (f < b) return (f - a) / (b - a);
+    if (f <= c) return 1.0;
+    return (d - f) / (d - c);
+  }
+};
+
+// Sétra Stage 4, the figures of psi: vertical and longitudinal, first and second harmonic;
+// the lateral ones at half the pace (HiVoSS 4.5.1 draws the same).
+Trapezoid PsiShape(LoadAxis axis, int harmonic) {
+  if (axis == LoadAxis::kLateral) return harmonic == 1 ? Trapezoid{0.5, 0.7, 1.0, 1.2} : Trapezoid{1.25, 1.7, 2.1, 2.3};
+  return harmonic == 1 ? Trapezoid{1.25, 1.7, 2.1, 2.3} : Trapezoid{2.5, 3.4, 4.2, 4.6};
+}
+
+// Sétra Stage 3, the tables of frequency ranges [Hz]: range 1 [r1_lo, r1_hi]; range 2 down to
+// r2_lo and up to r2_hi; range 3 up to r3_hi.
+struct Ranges {
+  double r2_lo, r1_lo, r1_hi, r2_hi, r3_hi;
+};
+Ranges RangesOf(LoadAxis axis) {
+  return Horizontal(axis) ? Ranges{0.3, 0.5, 1.1, 1.3, 2.5} : Ranges{1.0, 1.7, 2.1, 2.6, 5.0};
+}
+
+}  // namespace
+
+double TrafficDensity(const std::string& traffic_class) {
+  // Sétra Stage 1, the classes and their crowd densities (load cases 1 and 2).
+  if (traffic_class == "I") return 1.0;
+  if (traffic_class == "II") return 0.8;
+  if (traffic_class == "III") return 0.5;
+  if (traffic_class == "IV") return 0.0;
+  throw std::invalid_argument("TrafficDensity: no traffic class '" + traffic_class + "'");
+}
+
+int RiskRange(LoadAxis axis, double f) {
+  const Ranges r = RangesOf(axis);
+  if (f >= r.r1_lo && f <= r.r1_hi) return 1;
+  if (f >= r.r2_lo && f <= r.r2_hi) return 2;
+  if (f > r.r2_hi && f <= r.r3_hi) return 3;
+  return 4;
+}
+
+int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi) {
+  if (f_hi < f_lo) std::swap(f_lo, f_hi);
+  const Ranges r = RangesOf(axis);
+  int best = std::min(RiskRange(axis, f_lo), RiskRange(axis, f_hi));
+  // The ranges are intervals: the riskiest one met lies at an end or at a bound inside.
+  for (const double f : {r.r2_lo, r.r1_lo, r.r1_hi, r.r2_hi, r.r3_hi}) {
+    if (f > f_lo && f < f_hi) best = std::min(best, RiskRange(axis, f));
+  }
+  return best;
+}
+
+double Psi(LoadAxis axis, int harmonic, double f) { return PsiShape(axis, harmonic).At(f); }
+
+double PsiOver(LoadAxis axis, int harmonic, double f_lo, double f_hi) {
+  if (f_hi < f_lo) std::swap(f_lo, f_hi);
+  const Trapezoid t = PsiShape(axis, harmonic);
+  double best = std::max(t.At(f_lo), t.At(f_hi));
+  // Piecewise linear: its largest value is at an end or at a corner inside.
+  for (const double f : {t.b, t.c}) {
+    if (f > f_lo && f < f_hi) best = std::max(best, t.At(f));
+  }
+  return best;
+}
+
+double PedestrianForceN(LoadAxis axis, int harmonic) {
+  // Sétra Stage 4, load cases 1 and 2 (first harmonic) and 3 (second harmonic).
+  switch (axis) {
+    case LoadAxis::kVertical:
+      return harmonic == 1 ? 280.0 : 70.0;
+    case LoadAxis::kLongitudinal:
+      return harmonic == 1 ? 140.0 : 35.0;
+    case LoadAxis::kLateral:
+      break;
+  }
+  return harmonic == 1 ? 35.0 : 7.0;
+}
+
+double EquivalentPedestrians(double xi, double n, bool very_dense) {
+  // Sétra Stage 4, load cases 1 and 2; HiVoSS 4.5.1: the 95th percentile of random phases.
+  return very_dense ? 1.85 * std::sqrt(n) : 10.8 * std::sqrt(xi * n);
+}
+
+std::optional<CrowdLoadCase> LoadCaseFor(const std::string& traffic_class, int range) {
+  // Sétra Stage 4, its table of the load cases to check per class and range.
+  const bool dense = TrafficDensity(traffic_class) >= 1.0;
+  if (traffic_class == "III" && range == 1) return CrowdLoadCase{1, 1, false};
+  if (traffic_class == "II" || traffic_class == "I") {
+    if (range == 1 || range == 2) return CrowdLoadCase{dense ? 2 : 1, 1, dense};
+    if (range == 3) return CrowdLoadCase{3, 2, dense};
+  }
+  return std::nullopt;
+}
+
+int ComfortLevelReached(LoadAxis axis, double a) {
+  // Sétra Stage 2, the tables of acceleration ranges (vertical; horizontal).
+  const std::array<double, 3> bounds =
+      axis == LoadAxis::kVertical ? std::array<double, 3>{0.5, 1.0, 2.5} : std::array<double, 3>{0.15, 0.3, 0.8};
+  for (int level = 0; level < 3; ++level) {
+    if (a <= bounds[level]) return level + 1;
+  }
+  return 4;
+}
+
+const char* ComfortLevelName(int level) {
+  switch (level) {
+    case 1:
+      return "maximum";
+    case 2:
+      return "mean";
+    case 3:
+      return "minimum";
+    default:
+      break;
+  }
+  return "unacceptable";
+}
+
+double ComfortLevelBound(LoadAxis axis, const std::string& level) {
+  const bool vertical = axis == LoadAxis::kVertical;
+  if (level == "maximum") return vertical ? 0.5 : 0.15;
+  if (level == "mean") return vertical ? 1.0 : 0.3;
+  if (level == "minimum") return vertical ? 2.5 : 0.8;
+  throw std::invalid_argument("ComfortLevelBound: no comfort level '" + level + "'");
+}
+
+double ConstructionDamping(const std::string& construction) {
+  // Sétra Stage 4, structural damping for the serviceability check (HiVoSS 4.4.2, mean).
+  if (construction == "steel") return 0.004;
+  if (construction == "composite") return 0.006;
+  if (construction == "prestressed_concrete") return 0.010;
+  if (construction == "reinforced_concrete") return 0.013;
+  if (construction == "timber") return 0.010;
+  throw std::invalid_argument("ConstructionDamping: no construction '" + construction + "'");
+}
+
+double LockInPedestrians(double xi, double f_hz, double modal_mass_kg) {
+  constexpr double kLateralGain = 300.0;  // k [N s/m]: Sétra; HiVoSS 4.6
+  return 8.0 * std::numbers::pi * xi * f_hz * modal_mass_kg / kLateralGain;
+}
+
+}  // namespace tbridge
