@@ -15,9 +15,7 @@ namespace tbridge {
 
 namespace {
 
-// Most self-stress states the problem takes as variables: the 3D bridge has 26 at n = 2; the
-// dense basis and one sensitivity solve per state stay cheap up to here.
-constexpr int kMaxStates = 64;
+constexpr int kMaxStates = SizingProblem::kMaxStates;
 // The smallest area any member may take [m^2] (a radius of 56 um): keeps T / (sigma_w A)
 // finite for a string the loads do not use.
 constexpr double kAreaFloor = 1e-8;

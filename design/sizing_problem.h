@@ -61,6 +61,9 @@ struct SizingCombination {
 
 class SizingProblem final : public NlpProblem {
  public:
+  // Most self-stress states the problem takes as variables: the 3D bridge has 26 at n = 2 and
+  // 58 at n = 3; the dense basis and one sensitivity solve per state stay affordable up to here.
+  static constexpr int kMaxStates = 64;
   // `design`: a design whose topology, actions, cases and reference loads the problem takes
   // (its members' weight held). Throws ModelError when the self-stress basis is too large to
   // form (more than 64 states) or the reference state has no stiffness.

@@ -97,6 +97,7 @@ std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g
 SolverOutcome SolveSizing(const Design& current, const SizingCorrections& corrections, const std::string& solver,
                           const SolverOptions& options, const SizingProblem& full, Eigen::VectorXd& x) {
   const int rows = full.num_constraints();
+  const Eigen::VectorXd start = x;
   std::vector<char> keep(rows, 0);
   Eigen::VectorXd g(rows), lo, hi;
   full.ConstraintBounds(lo, hi);
@@ -113,7 +114,14 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     if (round > 0 && (!violated || !added)) break;
     const SizingProblem posed(current, corrections, &keep);
     outcome = SolveNlp(solver, posed, options, x);
-    if (!outcome.success) break;
+    if (!outcome.success) {
+      // The rows left out let the solver wander (the 3D bridge's bars, far from their limits
+      // at the start, shrank to nothing and SLSQP ran out of evaluations): every row, from
+      // the sizing's start.
+      x = start;
+      outcome = SolveNlp(solver, full, options, x);
+      break;
+    }
   }
   return outcome;
 }
@@ -211,23 +219,25 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
 // many self-stress states, or the cases leave no prestress above the floors sigma_w A_min)
 // the start is designed without the members' weight, then with the paper's switches:
 // only its areas and prestress are used, and the sizing keeps the config's floors and cases.
-Design FirstDesign(const Config& config, ProgressReporter* progress) {
+Design FirstDesign(const Config& config, ProgressReporter* progress, bool* relaxed = nullptr) {
+  if (relaxed) *relaxed = false;
   try {
     return RunDesign(config, progress);
   } catch (const ModelError&) {
     if (KeepsPaperSwitches(config)) throw;
   }
-  Config relaxed = config;
-  relaxed.design.self_weight = false;
+  if (relaxed) *relaxed = true;
+  Config relaxed_config = config;
+  relaxed_config.design.self_weight = false;
   try {
-    return RunDesign(relaxed, progress);
+    return RunDesign(relaxed_config, progress);
   } catch (const ModelError&) {
   }
   // The paper's switches: its one case and its yield factor 10, which puts the prestress
   // floors at a ninth.
-  relaxed = config;
-  ApplyPaperSwitches(relaxed);
-  return RunDesign(relaxed, progress);
+  relaxed_config = config;
+  ApplyPaperSwitches(relaxed_config);
+  return RunDesign(relaxed_config, progress);
 }
 
 // The coefficients of a design's prestress on the orthonormal self-stress basis.
@@ -284,6 +294,19 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   record.optima = os.str();
 }
 
+// A design checked as it is, with no sizing: the paper's, or one the sizing cannot take.
+Design CheckedAsDesigned(Design d, Resizing record) {
+  RequireStable(d);
+  RecordChecks(d, CheckStatics(d), CheckDynamics(d), CheckComfort(d));
+  record.iterations = 1;
+  record.structure_mass_kg.push_back(d.mass.structure);
+  const Verdict verdict = DesignVerdict(d);
+  record.converged = verdict.pass;
+  if (!verdict.pass) record.why = verdict.summary;
+  d.resizing = record;
+  return d;
+}
+
 }  // namespace
 
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
@@ -292,21 +315,18 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
   record.tolerance = kSettled;
   // The paper's design is the paper's: with its switches the checks report, and resize
   // nothing. A build without an iterative solver checks the first design as it is, and so
-  // does the 3D bridge: its 26 and more self-stress states make the sizing's dense program
-  // take minutes (n = 2: over 5), so its design is the equilibrium design, checked.
-  if (KeepsPaperSwitches(config) || solver.empty() || config.bridge.planes == 2) {
-    Design first = RunDesign(config, progress);
-    RequireStable(first);
-    RecordChecks(first, CheckStatics(first), CheckDynamics(first), CheckComfort(first));
-    record.iterations = 1;
-    record.structure_mass_kg.push_back(first.mass.structure);
-    const Verdict verdict = DesignVerdict(first);
-    record.converged = verdict.pass;
-    if (!verdict.pass) record.why = verdict.summary;
-    first.resizing = record;
-    return first;
+  // does a bridge with more self-stress states than the sizing takes as variables (the 3D
+  // bridge from n = 4), saying so.
+  if (KeepsPaperSwitches(config) || solver.empty()) return CheckedAsDesigned(RunDesign(config, progress), record);
+  bool relaxed = false;
+  const Design first = FirstDesign(config, progress, &relaxed);
+  if (first.self_stress_states > SizingProblem::kMaxStates) {
+    Design d = relaxed ? RunDesign(config, progress) : first;
+    d.notes.push_back("design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
+                      " self-stress states as variables and this bridge has " +
+                      std::to_string(first.self_stress_states) + ": its equilibrium design is checked as it is");
+    return CheckedAsDesigned(std::move(d), record);
   }
-  const Design first = FirstDesign(config, progress);
   std::vector<double> areas = MemberAreas(first);
   Eigen::VectorXd alpha = PrestressCoefficients(first);
   // The start: the first design's areas and prestress under the config's own loads and weight.

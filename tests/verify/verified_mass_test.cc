@@ -97,6 +97,21 @@ TEST_CASE("two solvers give the same verified mass", "[verify]") {
   CHECK(ipopt.mass.structure == Approx(slsqp.mass.structure).epsilon(1e-4));
 }
 
+TEST_CASE("the 3D bridge designs and passes with the engineering defaults", "[verify]") {
+  // Both planes, the transverse strings, wind, the walking load and comfort (lateral and
+  // torsional included) at n = 1, sized by the verified sizing over its 10 self-stress states.
+  Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
+  config.bridge.n = 1;
+  config.bridge.planes = 2;
+  const Design d = DesignAndVerify(config);
+  const Verdict verdict = DesignVerdict(d);
+  INFO(verdict.summary);
+  CHECK(verdict.outcome == VerdictOutcome::kPass);
+  CHECK(d.resizing.iterations > 1);  // sized, not only checked
+  CHECK(d.dynamics.runs.size() == 2);  // the walking load and the wind gust
+  CHECK(d.comfort.Status() != CheckStatus::kNotRun);
+}
+
 TEST_CASE("two starts give the same verified mass where the program has one optimum", "[verify]") {
   // The last sizing repeated from twice the first design's areas (DesignAndVerify's second
   // start) against the run from the first design. 1e-4 relative: the same program, so the two
