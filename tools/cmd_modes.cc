@@ -59,21 +59,6 @@ const CommandSpec& ModesSpec() {
   return spec;
 }
 
-// The whole number >= 0 given to option `name` (canonical short name, long name for messages),
-// or `fallback` when absent.
-int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name,
-                     int fallback) {
-  const std::optional<std::string> text = parsed.Value(name);
-  if (!text) return fallback;
-  try {
-    size_t used = 0;
-    const int count = std::stoi(*text, &used);
-    if (used == text->size() && count >= 0) return count;
-  } catch (const std::exception&) {
-  }
-  throw UsageError(long_name + " expects a whole number >= 0, got '" + *text + "'");
-}
-
 // Which modes to compute: --modes K, else all of a small model and the lowest
 // kDefaultLowestModes of a large one.
 ModalOptions ModalOptionsOf(const ParsedArgs& parsed, const DynamicModel& model) {
@@ -188,11 +173,8 @@ int RunModesCommand(const std::vector<std::string>& args) {
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
-  // A "dynamics" section sets the model (string mass, prestrain, gravity, deck inertia);
-  // otherwise the paper's model, with the deck's inertia unless the config keeps the paper's
-  // switches (its one load case).
-  ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
-  if (!config.dynamics && !config.structure) options.deck_inertia = !KeepsPaperSwitches(config);
+  // A "dynamics" section sets the model (string mass, prestrain, gravity, deck inertia).
+  const ModelOptions options = ModalModelOptions(config);
   std::optional<Design> design;
   // The bridge tbridge design writes (verified, resized where its checks asked), so that the
   // modes are those of the bridge the other commands analyse.
