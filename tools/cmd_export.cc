@@ -7,8 +7,7 @@
 
 #include "core/json_reader.h"
 #include "design/design_reader.h"
-#include "export/calculix.h"
-#include "export/opensees.h"
+#include "export/export.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 
@@ -43,9 +42,7 @@ int RunExportCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string format = parsed.Required("-f");
-  if (format != "calculix" && format != "opensees") {
-    throw UsageError("--format: '" + format + "' is not a format; expected calculix or opensees");
-  }
+  if (!IsExportFormat(format)) throw OptionError("--format", "'" + format + "'", std::string("expected ") + kExportFormats);
   CalculixOptions options;
   options.rigid_bars = parsed.Flag("--rigid-bars");
   options.modes = ParseWholeNumber(parsed, "-m", "--modes", options.modes, 1);
@@ -55,14 +52,9 @@ int RunExportCommand(const std::vector<std::string>& args) {
   OutputTransaction outputs;
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& out = outputs.Stage(out_path);
-  const FeModel model = FeModelOf(design);
-  if (format == "calculix") {
-    WriteCalculix(model, options, out);
-  } else {
-    WriteOpenSees(model, options.rigid_bars, out);
-  }
+  WriteExport(design, format, options, out);
   outputs.Commit();
-  std::cout << "wrote " << out_path << " (" << format << ": " << model.cases.size() << " load cases and stations)\n";
+  std::cout << "wrote " << out_path << " (" << format << ")\n";
   return kExitOk;
 }
 

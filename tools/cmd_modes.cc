@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/design_model.h"
+#include "app/modal_scene.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/progress.h"
@@ -18,11 +18,8 @@
 #include "design/plausibility.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
-#include "dynamics/simulation.h"
-#include "dynamics/structure_model.h"
 #include "tools/commands.h"
 #include "tools/output.h"
-#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 
@@ -173,14 +170,11 @@ int RunModesCommand(const std::vector<std::string>& args) {
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
-  // A "dynamics" section sets the model (string mass, prestrain, gravity, deck inertia).
-  const ModelOptions options = ModalModelOptions(config);
-  std::optional<Design> design;
-  // The bridge tbridge design writes (verified, resized where its checks asked), so that the
-  // modes are those of the bridge the other commands analyse.
-  if (!config.structure) design = DesignAndVerify(config, &progress);
-  const DynamicModel model =
-      config.structure ? BuildStructureModel(*config.structure, options) : BuildDynamicModel(*design, options);
+  // The verified bridge tbridge design writes, so that the modes are those of the bridge the
+  // other commands analyse; or the custom structure.
+  const ModalScene scene = ModalSceneOf(config, &progress);
+  const DynamicModel& model = scene.model;
+  const std::optional<Design>& design = scene.design;
   progress.Stage("modes");
   const ModalResult result = ComputeModes(model, ModalOptionsOf(parsed, model));
   progress.Finish();

@@ -30,6 +30,17 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics) {
   d.dynamics = std::move(dynamics);
 }
 
+void CheckAgain(Design& design) {
+  for (auto* list : {&design.bars, &design.strings}) {
+    for (MemberSizing& m : *list) {
+      m.utilisation = 0;
+      m.mode.clear();
+      m.governing_case.clear();
+    }
+  }
+  RecordChecks(design, CheckStatics(design), CheckDynamics(design));
+}
+
 namespace {
 
 // The solver of the sizing: Ipopt when the config asks for it, else NLopt's SLSQP. Its dense
