@@ -99,11 +99,11 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
   }
   os << "*BOUNDARY\nSUPPORTS, 1, 3\n";
   if (dim == 2) os << "NALL, 3, 3\n";  // a planar bridge moves in its own plane
-  // Residual and correction within 1e-6 of the average force and of the increment (defaults
+  // Residual and correction within 1e-5 of the average force and of the increment (defaults
   // 5e-3 and 1e-2). Tighter would not converge with rigid bars: their stiffness times the
-  // rounding of the coordinates leaves about 3e-8 of the average force. The Newton steps end
-  // far below it, and the comparison with tbridge is at 1e-5.
-  os << "*CONTROLS, PARAMETERS=FIELD\n1e-6, 1e-6, , , 1e-6\n";
+  // rounding of the coordinates leaves up to 6e-6 of the average force (3D n = 2); Newton's
+  // last step lands there, far below what the criterion allows.
+  os << "*CONTROLS, PARAMETERS=FIELD\n1e-5, 1e-5, , , 1e-5\n";
 
   std::set<std::pair<int, int>> loaded;
   auto collect = [&](const Eigen::Matrix3Xd& loads) {
