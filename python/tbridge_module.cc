@@ -8,12 +8,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "app/modal_scene.h"
+#include "app/scenario.h"
+#include "app/simulation_report.h"
 #include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/error.h"
@@ -101,6 +104,40 @@ Modes ModesOf(const DynamicModel& model, int count) {
   out.all_modes = result.all_modes;
   return out;
 }
+
+// Raised inside a run when Python has a signal to handle (Ctrl-C): the run unwinds, and the
+// Python error PyErr_CheckSignals set (KeyboardInterrupt) is raised once the GIL is back.
+struct Interrupted {};
+
+// Keeps the recorded rows of a run in memory, and gives Python its signals during the run:
+// every 50 ms of recording it takes the GIL for PyErr_CheckSignals.
+class PythonHistory : public HistorySink {
+ public:
+  void Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) override {
+    width_ = static_cast<size_t>(model.dim) * recorded_nodes.size();
+  }
+  void Row(double t, const double* coordinates) override {
+    times.push_back(t);
+    rows.insert(rows.end(), coordinates, coordinates + width_);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - polled_ < std::chrono::milliseconds(50)) return;
+    polled_ = now;
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw Interrupted{};
+  }
+  std::vector<double> times, rows;
+
+ private:
+  size_t width_ = 0;
+  std::chrono::steady_clock::time_point polled_ = std::chrono::steady_clock::now();
+};
+
+struct Run {
+  py::dict summary;                 // summary.json of tbridge simulate
+  py::array_t<double> time;         // [s], one per record
+  py::array_t<double> positions;    // records x recorded nodes x dim [m]
+  py::array_t<int> recorded_nodes;  // 0-based
+};
 
 }  // namespace
 
@@ -202,6 +239,38 @@ PYBIND11_MODULE(tbridge, m) {
       },
       py::arg("design"), py::arg("format"), py::arg("rigid_bars") = false, py::arg("modes") = 10,
       "the text tbridge export writes: format \"calculix\" or \"opensees\"");
+  py::class_<Run>(m, "Run", "A dynamic run: its summary and its recorded history.")
+      .def_readonly("summary", &Run::summary)
+      .def_readonly("time", &Run::time)
+      .def_readonly("positions", &Run::positions)
+      .def_readonly("recorded_nodes", &Run::recorded_nodes);
+
+  m.def(
+      "simulate",
+      [](const py::object& config) {
+        const Config c = ConfigOf(config);
+        PythonHistory history;
+        RunHooks hooks;
+        hooks.history = {&history};
+        ScenarioResult scenario;
+        try {
+          py::gil_scoped_release release;
+          scenario = RunSimulateScenario(c, hooks);
+        } catch (const Interrupted&) {
+          throw py::error_already_set();
+        }
+        const SimulationResult& result = scenario.simulation;
+        Run out;
+        out.summary = py::module_::import("json").attr("loads")(SummaryJson(c, scenario.model, result).dump());
+        const auto records = static_cast<py::ssize_t>(history.times.size());
+        const auto nodes = static_cast<py::ssize_t>(result.recorded_nodes.size());
+        out.time = py::array_t<double>(records, history.times.data());
+        out.positions = py::array_t<double>({records, nodes, static_cast<py::ssize_t>(result.dim)}, history.rows.data());
+        out.recorded_nodes = py::array_t<int>(nodes, result.recorded_nodes.data());
+        return out;
+      },
+      py::arg("config"),
+      "the dynamic run of a config's \"dynamics\" section, as tbridge simulate; Ctrl-C stops it (KeyboardInterrupt)");
   m.def(
       "modes",
       [](const py::object& config_or_design, int count) {

@@ -1,11 +1,13 @@
 """The Python module against the command-line tool: the same library, so the same numbers, bit
 for bit; bad input raises with the key named, as the tool reports it."""
 
+import _thread
 import json
 import os
 import subprocess
 import sys
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -139,3 +141,35 @@ def test_importing_loads_no_solver_until_a_design_needs_one():
     before, after = r.stdout.splitlines()
     assert before == "[]"
     assert after != "[]"  # the default design is solved by NLopt (design.solver "auto")
+
+
+def test_simulate_is_tbridge_simulate(tmp_path):
+    config = os.path.join(SOURCE, "configs", "motes_dbar.json")
+    code, err = cli("simulate", config, "-q", "-o", str(tmp_path))
+    assert code == 0, err
+    run = tbridge.simulate(config)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    # Every number but the wall-clock time of the run.
+    del summary["run"]["wall_s"], run.summary["run"]["wall_s"]
+    assert run.summary == summary
+    # history.csv holds 12 digits; the run's own numbers are what it rounds.
+    csv = np.loadtxt(tmp_path / "history.csv", delimiter=",", skiprows=1)
+    assert run.positions.shape == (len(csv), 4, 2)
+    assert np.allclose(run.time, csv[:, 0], rtol=1e-11, atol=0)
+    assert np.allclose(run.positions.reshape(len(csv), -1), csv[:, 1:], rtol=1e-11, atol=1e-12)
+    assert list(run.recorded_nodes) == [0, 1, 2, 3]
+
+
+def test_ctrl_c_stops_a_long_run():
+    with open(os.path.join(SOURCE, "configs", "paper_t5_n1.json")) as f:
+        config = json.load(f)
+    config["dynamics"]["duration"] = 1000.0  # 1e8 steps: hours, were it not stopped
+    config["dynamics"]["record"]["every"] = 1000
+    config["dynamics"]["frequency"]["enabled"] = False
+    timer = threading.Timer(1.0, _thread.interrupt_main)  # as Ctrl-C does
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        tbridge.simulate(config)
+    timer.join()
+    assert time.monotonic() - start < 30
