@@ -1,5 +1,7 @@
 #include "app/scenario.h"
 
+#include "verify/verified_design.h"
+
 #include "bridge/design_model.h"
 #include "core/error.h"
 #include "core/progress.h"
@@ -30,6 +32,13 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "simulate");
   r.simulation = Simulate(r.model, dc, ReportPrestrain(r.model, r.design, options), hooks);
   return r;
+}
+
+ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks,
+                                   const std::function<void(const Design&)>& on_design) {
+  const auto verified = [](const Config& c) { return DesignAndVerify(c); };
+  return RunScenario(config, hooks, on_design,
+                     KeepsPaperSwitches(config) ? std::function<Design(const Config&)>{} : verified);
 }
 
 }  // namespace tbridge

@@ -30,4 +30,10 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks = {},
                            const std::function<void(const Design&)>& on_design = {},
                            const std::function<Design(const Config&)>& make_design = {});
 
+// `tbridge simulate`'s scenario: RunScenario on the bridge tbridge design writes, verified and
+// resized (a config with the paper's switches keeps the paper's design, which needs no check to
+// be simulated), or on the config's custom structure.
+ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks = {},
+                                   const std::function<void(const Design&)>& on_design = {});
+
 }  // namespace tbridge

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "design/static_model.h"
+#include "dynamics/simulation.h"
 
 namespace tbridge {
 
@@ -77,6 +78,12 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   SettleAtEquilibrium(m, design);
   CheckModel(m, "design model");
   return m;
+}
+
+ModelOptions ModalModelOptions(const Config& config) {
+  ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
+  if (!config.dynamics && !config.structure) options.deck_inertia = !KeepsPaperSwitches(config);
+  return options;
 }
 
 void AddDeckInertia(DynamicModel& m, const Design& d, double payload_factor) {

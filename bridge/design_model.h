@@ -25,6 +25,11 @@ namespace tbridge {
 // Throws ConfigError for a prestrain group that names no string or a negative damping.
 DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options = {});
 
+// The model options of a config's modal analysis (`tbridge modes`): its "dynamics" section's,
+// else the paper's model, with the deck's inertia unless the config keeps the paper's switches
+// (its one load case).
+ModelOptions ModalModelOptions(const Config& config);
+
 // Adds the deck beams' mass (and the superimposed dead load's) at the deck nodes of a designed
 // bridge, and `payload_factor` times the payload's: mass, not weight, which the loads carry.
 // BuildDynamicModel's loads carry options.payload_share of the payload, and so does its mass.

@@ -10,9 +10,6 @@
 #include "design/design_report.h"
 #include "tools/commands.h"
 #include "tools/output.h"
-#include "verify/comfort_check.h"
-#include "verify/dynamic_check.h"
-#include "verify/static_check.h"
 #include "verify/verified_design.h"
 
 namespace tbridge::cli {
@@ -51,15 +48,7 @@ int RunCheckCommand(const std::vector<std::string>& args) {
   OutputTransaction outputs;
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
-  // The utilisations are this check's own, not the file's.
-  for (auto* list : {&design.bars, &design.strings}) {
-    for (MemberSizing& m : *list) {
-      m.utilisation = 0;
-      m.mode.clear();
-      m.governing_case.clear();
-    }
-  }
-  RecordChecks(design, CheckStatics(design), CheckDynamics(design), CheckComfort(design));
+  CheckAgain(design);
   WriteDesignJson(design, json);
   outputs.Commit();
   if (!parsed.Flag("-q")) std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/design_model.h"
+#include "app/modal_scene.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/progress.h"
@@ -19,12 +19,8 @@
 #include "dynamics/deck_motion.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
-#include "dynamics/simulation.h"
-#include "dynamics/structure_model.h"
 #include "tools/commands.h"
 #include "tools/output.h"
-#include "verify/comfort_check.h"
-#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 
@@ -66,21 +62,6 @@ const CommandSpec& ModesSpec() {
       "the lowest 20 by a sparse Lanczos solver unless --modes says otherwise (all_modes in\n"
       "OUT.json says which). --modes 0 asks for every mode whatever the size: O(n_dof^3)."};
   return spec;
-}
-
-// The whole number >= 0 given to option `name` (canonical short name, long name for messages),
-// or `fallback` when absent.
-int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name,
-                     int fallback) {
-  const std::optional<std::string> text = parsed.Value(name);
-  if (!text) return fallback;
-  try {
-    size_t used = 0;
-    const int count = std::stoi(*text, &used);
-    if (used == text->size() && count >= 0) return count;
-  } catch (const std::exception&) {
-  }
-  throw UsageError(long_name + " expects a whole number >= 0, got '" + *text + "'");
 }
 
 // Which modes to compute: --modes K, else all of a small model and the lowest
@@ -217,11 +198,6 @@ int RunModesCommand(const std::vector<std::string>& args) {
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
-  // A "dynamics" section sets the model (string mass, prestrain, gravity, deck inertia);
-  // otherwise the paper's model, with the deck's inertia unless the config keeps the paper's
-  // switches (its one load case).
-  ModelOptions options = config.dynamics ? ModelOptionsOf(*config.dynamics) : ModelOptions{};
-  if (!config.dynamics && !config.structure) options.deck_inertia = !KeepsPaperSwitches(config);
   const std::string mass_model = parsed.Value("-M").value_or("design");
   if (mass_model != "design" && mass_model != "crowd" && mass_model != "empty") {
     throw UsageError("--mass expects design, crowd or empty, got '" + mass_model + "'");
@@ -229,13 +205,11 @@ int RunModesCommand(const std::vector<std::string>& args) {
   if (mass_model != "design" && config.structure) {
     throw UsageError("--mass " + mass_model + " needs a bridge config (a custom structure gives its own masses)");
   }
-  std::optional<Design> design;
-  // The bridge tbridge design writes (verified, resized where its checks asked), so that the
-  // modes are those of the bridge the other commands analyse.
-  if (!config.structure) design = DesignAndVerify(config, &progress);
-  const DynamicModel model = config.structure          ? BuildStructureModel(*config.structure, options)
-                             : mass_model == "design" ? BuildDynamicModel(*design, options)
-                                                      : ComfortModel(*design, mass_model == "crowd");
+  // The verified bridge tbridge design writes, so that the modes are those of the bridge the
+  // other commands analyse; or the custom structure.
+  const ModalScene scene = ModalSceneOf(config, &progress, mass_model);
+  const DynamicModel& model = scene.model;
+  const std::optional<Design>& design = scene.design;
   progress.Stage("modes");
   const ModalResult result = ComputeModes(model, ModalOptionsOf(parsed, model));
   progress.Finish();

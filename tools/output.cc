@@ -308,6 +308,19 @@ std::string OptionUsage(const OptionSpec& o) {
 
 }  // namespace
 
+int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name, int fallback,
+                     int minimum) {
+  const std::optional<std::string> text = parsed.Value(name);
+  if (!text) return fallback;
+  try {
+    size_t used = 0;
+    const int count = std::stoi(*text, &used);
+    if (used == text->size() && count >= minimum) return count;
+  } catch (const std::exception&) {
+  }
+  throw UsageError(long_name + " expects a whole number >= " + std::to_string(minimum) + ", got '" + *text + "'");
+}
+
 ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& spec) {
   ParsedArgs out;
   for (const std::string& a : args) {

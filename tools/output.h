@@ -129,6 +129,11 @@ struct ParsedArgs {
   std::string Required(const std::string& name) const;
 };
 
+// The whole number >= `minimum` given to option `name` (canonical name; `long_name` for the
+// message), or `fallback` when absent; UsageError naming the option otherwise.
+int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name, int fallback,
+                     int minimum = 0);
+
 // Parses `args` against `spec`. Throws UsageError naming the offending argument for an
 // unknown option, a repeated option, a missing option value, a missing required option, or
 // a wrong number of positionals. With -h/--help only `help` is set and nothing else is checked. "--" ends the

@@ -17,6 +17,10 @@ packages=(
   catch2               # unit tests (Catch2 v2)
   python3
   python3-matplotlib   # figures from the outputs
+  python3-numpy        # the Python module's arrays
+  python3-pytest       # the Python module's tests
+  pybind11-dev         # builds the Python module
+  calculix-ccx         # CalculiX, the FE program the export is tested against
   time                 # GNU time: peak memory of whole-process benchmarks
 )
 

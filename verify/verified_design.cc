@@ -33,6 +33,17 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
   d.comfort = std::move(comfort);
 }
 
+void CheckAgain(Design& design) {
+  for (auto* list : {&design.bars, &design.strings}) {
+    for (MemberSizing& m : *list) {
+      m.utilisation = 0;
+      m.mode.clear();
+      m.governing_case.clear();
+    }
+  }
+  RecordChecks(design, CheckStatics(design), CheckDynamics(design), CheckComfort(design));
+}
+
 namespace {
 
 // The solver of the sizing: Ipopt when the config asks for it, else NLopt's SLSQP. Its dense

@@ -26,6 +26,10 @@ namespace tbridge {
 // checks themselves change nothing; this is the one place their findings enter a design.
 void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics, ComfortCheck comfort);
 
+// `tbridge check`: the checks run again on a design as given (read from its file), nothing
+// resized. The utilisations the design carried are dropped first: they become the checks' own.
+void CheckAgain(Design& design);
+
 // The last design, with its static check and its `resizing` record.
 Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 15);
 

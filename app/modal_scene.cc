@@ -1,0 +1,23 @@
+#include "app/modal_scene.h"
+
+#include "bridge/design_model.h"
+#include "dynamics/structure_model.h"
+#include "verify/comfort_check.h"
+#include "verify/verified_design.h"
+
+namespace tbridge {
+
+ModalScene ModalSceneOf(const Config& config, ProgressReporter* progress, const std::string& mass_model) {
+  const ModelOptions options = ModalModelOptions(config);
+  ModalScene scene;
+  if (config.structure) {
+    scene.model = BuildStructureModel(*config.structure, options);
+    return scene;
+  }
+  scene.design = DesignAndVerify(config, progress);
+  scene.model = mass_model == "design" ? BuildDynamicModel(*scene.design, options)
+                                       : ComfortModel(*scene.design, mass_model == "crowd");
+  return scene;
+}
+
+}  // namespace tbridge

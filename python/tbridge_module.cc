@@ -1,0 +1,291 @@
+// The Python module `tbridge`: the library the command-line tool runs, called from Python. It
+// holds no logic of its own: each function is a path a command runs (design, check, export,
+// modes), and each property a field of the design the JSON output writes. Arrays are owned
+// copies: editing one changes nothing in the design. Long work runs with the GIL released.
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/modal_scene.h"
+#include "app/scenario.h"
+#include "app/simulation_report.h"
+#include "bridge/design_model.h"
+#include "core/config.h"
+#include "core/error.h"
+#include "core/json_reader.h"
+#include "design/design.h"
+#include "design/design_reader.h"
+#include "design/design_report.h"
+#include "dynamics/modal.h"
+#include "export/export.h"
+#include "verify/verified_design.h"
+
+namespace py = pybind11;
+
+namespace tbridge {
+
+namespace {
+
+// A config given as a dict (read as its JSON text, which Python writes with every float exact)
+// or as a path to its file.
+Config ConfigOf(const py::object& config) {
+  if (py::isinstance<py::dict>(config)) {
+    const std::string text = py::module_::import("json").attr("dumps")(config).cast<std::string>();
+    return ParseConfig(nlohmann::json::parse(text));
+  }
+  return LoadConfig(py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>());
+}
+
+// Members in the order of the JSON output's "members": bars, then strings.
+std::vector<const MemberSizing*> Members(const Design& d) {
+  std::vector<const MemberSizing*> out;
+  for (const MemberSizing& m : d.bars) out.push_back(&m);
+  for (const MemberSizing& m : d.strings) out.push_back(&m);
+  return out;
+}
+
+template <class Field>
+py::array_t<double> MemberColumn(const Design& d, Field field) {
+  const std::vector<const MemberSizing*> members = Members(d);
+  py::array_t<double> out(static_cast<py::ssize_t>(members.size()));
+  auto view = out.mutable_unchecked<1>();
+  for (size_t k = 0; k < members.size(); ++k) view(static_cast<py::ssize_t>(k)) = field(*members[k]);
+  return out;
+}
+
+// A 3 x n matrix as an n x 3 array.
+py::array_t<double> Rows(const Eigen::Matrix3Xd& m) {
+  py::array_t<double> out({static_cast<py::ssize_t>(m.cols()), py::ssize_t{3}});
+  auto view = out.mutable_unchecked<2>();
+  for (Eigen::Index v = 0; v < m.cols(); ++v) {
+    for (int a = 0; a < 3; ++a) view(v, a) = m(a, v);
+  }
+  return out;
+}
+
+struct Modes {
+  py::array_t<double> omega_rad_s, frequency_hz, period_s;
+  py::array_t<double> shapes;  // modes x nodes x 3, mass-normalised [m / sqrt(kg)]
+  bool all_modes = true;
+};
+
+Modes ModesOf(const DynamicModel& model, int count) {
+  ModalOptions options;
+  options.count = count;
+  ModalResult result;
+  {
+    py::gil_scoped_release release;
+    result = ComputeModes(model, options);
+  }
+  Modes out;
+  const auto n = static_cast<py::ssize_t>(result.modes.size());
+  out.omega_rad_s = py::array_t<double>(n);
+  out.frequency_hz = py::array_t<double>(n);
+  out.period_s = py::array_t<double>(n);
+  out.shapes = py::array_t<double>({n, static_cast<py::ssize_t>(model.num_nodes()), py::ssize_t{3}});
+  auto shapes = out.shapes.mutable_unchecked<3>();
+  for (py::ssize_t k = 0; k < n; ++k) {
+    const Mode& m = result.modes[k];
+    out.omega_rad_s.mutable_at(k) = m.omega_rad_s;
+    out.frequency_hz.mutable_at(k) = m.frequency_hz;
+    out.period_s.mutable_at(k) = m.period_s;
+    for (py::ssize_t v = 0; v < model.num_nodes(); ++v) {
+      for (int a = 0; a < 3; ++a) shapes(k, v, a) = m.shape(a, v);
+    }
+  }
+  out.all_modes = result.all_modes;
+  return out;
+}
+
+// Raised inside a run when Python has a signal to handle (Ctrl-C): the run unwinds, and the
+// Python error PyErr_CheckSignals set (KeyboardInterrupt) is raised once the GIL is back.
+struct Interrupted {};
+
+// Keeps the recorded rows of a run in memory, and gives Python its signals during the run:
+// every 50 ms of recording it takes the GIL for PyErr_CheckSignals.
+class PythonHistory : public HistorySink {
+ public:
+  void Begin(const DynamicModel& model, const std::vector<int>& recorded_nodes) override {
+    width_ = static_cast<size_t>(model.dim) * recorded_nodes.size();
+  }
+  void Row(double t, const double* coordinates) override {
+    times.push_back(t);
+    rows.insert(rows.end(), coordinates, coordinates + width_);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - polled_ < std::chrono::milliseconds(50)) return;
+    polled_ = now;
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw Interrupted{};
+  }
+  std::vector<double> times, rows;
+
+ private:
+  size_t width_ = 0;
+  std::chrono::steady_clock::time_point polled_ = std::chrono::steady_clock::now();
+};
+
+struct Run {
+  py::dict summary;                 // summary.json of tbridge simulate
+  py::array_t<double> time;         // [s], one per record
+  py::array_t<double> positions;    // records x recorded nodes x dim [m]
+  py::array_t<int> recorded_nodes;  // 0-based
+};
+
+}  // namespace
+
+}  // namespace tbridge
+
+PYBIND11_MODULE(tbridge, m) {
+  using namespace tbridge;
+  m.doc() = "Minimum-mass tensegrity bridges: the library of the tbridge command-line tool (README.md, \"Python\").";
+  py::register_exception<ConfigError>(m, "ConfigError", PyExc_ValueError);
+  py::register_exception<ModelError>(m, "ModelError", PyExc_RuntimeError);
+
+  py::class_<Design>(m, "Design", "A sized bridge, as tbridge design writes it. Arrays are owned copies.")
+      .def_property_readonly("nodes", [](const Design& d) { return Rows(d.topology.structure.nodes); },
+                             "node positions, n x 3 [m]")
+      .def_property_readonly(
+          "member_ends",
+          [](const Design& d) {
+            const std::vector<const MemberSizing*> members = Members(d);
+            py::array_t<int> out({static_cast<py::ssize_t>(members.size()), py::ssize_t{2}});
+            auto view = out.mutable_unchecked<2>();
+            for (size_t k = 0; k < members.size(); ++k) {
+              view(static_cast<py::ssize_t>(k), 0) = members[k]->i;
+              view(static_cast<py::ssize_t>(k), 1) = members[k]->j;
+            }
+            return out;
+          },
+          "each member's end nodes, 0-based rows of `nodes`; bars first, then strings, as in the JSON's members")
+      .def_property_readonly("member_names",
+                             [](const Design& d) {
+                               std::vector<std::string> out;
+                               for (const MemberSizing* s : Members(d)) out.push_back(s->name);
+                               return out;
+                             })
+      .def_property_readonly("num_bars", [](const Design& d) { return d.bars.size(); })
+      .def_property_readonly("areas", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.area; }); },
+                             "[m^2]")
+      .def_property_readonly("forces", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.force; }); },
+                             "design force: compression of a bar, tension of a string [N]")
+      .def_property_readonly(
+          "rest_lengths", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.rest_length; }); },
+          "[m]; a bar's is its length")
+      .def_property_readonly(
+          "utilisation", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.utilisation; }); })
+      .def_property_readonly("verdict", [](const Design& d) { return std::string(VerdictName(DesignVerdict(d).outcome)); },
+                             "PASS, FAIL or INCOMPLETE")
+      .def_property_readonly("verdict_summary", [](const Design& d) { return DesignVerdict(d).summary; })
+      .def_property_readonly("cases",
+                             [](const Design& d) {
+                               std::vector<std::string> out;
+                               for (const LoadCase& c : d.cases) out.push_back(c.name);
+                               return out;
+                             })
+      .def_property_readonly("structure_mass", [](const Design& d) { return d.mass.structure; }, "[kg]")
+      .def("to_json",
+           [](const Design& d) {
+             std::ostringstream os;
+             WriteDesignJson(d, os);
+             return os.str();
+           },
+           "the design file tbridge design writes, as text")
+      .def("summary", [](const Design& d) { return DesignSummary(d); }, "the summary tbridge design prints");
+
+  py::class_<Modes>(m, "Modes", "Natural frequencies and mass-normalised shapes (modes x nodes x 3), lowest first.")
+      .def_readonly("omega_rad_s", &Modes::omega_rad_s)
+      .def_readonly("frequency_hz", &Modes::frequency_hz)
+      .def_readonly("period_s", &Modes::period_s)
+      .def_readonly("shapes", &Modes::shapes)
+      .def_readonly("all_modes", &Modes::all_modes);
+
+  m.def(
+      "design",
+      [](const py::object& config) {
+        const Config c = ConfigOf(config);
+        py::gil_scoped_release release;
+        return DesignAndVerify(c);
+      },
+      py::arg("config"), "the verified design of a config (a dict, or the path of its JSON file), as tbridge design");
+  m.def(
+      "load_design", [](const std::string& path) { return ReadDesign(ReadJsonFile(path)); }, py::arg("path"),
+      "a design file written by tbridge design or check, read as tbridge check reads it");
+  m.def(
+      "check",
+      [](const Design& design) {
+        Design out = design;
+        py::gil_scoped_release release;
+        CheckAgain(out);
+        return out;
+      },
+      py::arg("design"), "the design with its checks run again, as tbridge check");
+  m.def(
+      "export",
+      [](const Design& design, const std::string& format, bool rigid_bars, int modes) {
+        CalculixOptions options;
+        options.rigid_bars = rigid_bars;
+        options.modes = modes;
+        std::ostringstream os;
+        WriteExport(design, format, options, os);
+        return os.str();
+      },
+      py::arg("design"), py::arg("format"), py::arg("rigid_bars") = false, py::arg("modes") = 10,
+      "the text tbridge export writes: format \"calculix\" or \"opensees\"");
+  py::class_<Run>(m, "Run", "A dynamic run: its summary and its recorded history.")
+      .def_readonly("summary", &Run::summary)
+      .def_readonly("time", &Run::time)
+      .def_readonly("positions", &Run::positions)
+      .def_readonly("recorded_nodes", &Run::recorded_nodes);
+
+  m.def(
+      "simulate",
+      [](const py::object& config) {
+        const Config c = ConfigOf(config);
+        PythonHistory history;
+        RunHooks hooks;
+        hooks.history = {&history};
+        ScenarioResult scenario;
+        try {
+          py::gil_scoped_release release;
+          scenario = RunSimulateScenario(c, hooks);
+        } catch (const Interrupted&) {
+          throw py::error_already_set();
+        }
+        const SimulationResult& result = scenario.simulation;
+        Run out;
+        out.summary = py::module_::import("json").attr("loads")(SummaryJson(c, scenario.model, result).dump());
+        const auto records = static_cast<py::ssize_t>(history.times.size());
+        const auto nodes = static_cast<py::ssize_t>(result.recorded_nodes.size());
+        out.time = py::array_t<double>(records, history.times.data());
+        out.positions = py::array_t<double>({records, nodes, static_cast<py::ssize_t>(result.dim)}, history.rows.data());
+        out.recorded_nodes = py::array_t<int>(nodes, result.recorded_nodes.data());
+        return out;
+      },
+      py::arg("config"),
+      "the dynamic run of a config's \"dynamics\" section, as tbridge simulate; Ctrl-C stops it (KeyboardInterrupt)");
+  m.def(
+      "modes",
+      [](const py::object& config_or_design, int count) {
+        if (py::isinstance<Design>(config_or_design)) {
+          const Design& d = config_or_design.cast<const Design&>();
+          return ModesOf(BuildDynamicModel(d, ModalModelOptions(d.config)), count);
+        }
+        const Config c = ConfigOf(config_or_design);
+        ModalScene scene;
+        {
+          py::gil_scoped_release release;
+          scene = ModalSceneOf(c);
+        }
+        return ModesOf(scene.model, count);
+      },
+      py::arg("config_or_design"), py::arg("count") = 0,
+      "the linearised modes tbridge modes computes: the lowest `count` (0: every mode)");
+}

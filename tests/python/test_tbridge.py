@@ -1,0 +1,175 @@
+"""The Python module against the command-line tool: the same library, so the same numbers, bit
+for bit; bad input raises with the key named, as the tool reports it."""
+
+import _thread
+import json
+import os
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import tbridge
+
+SOURCE = os.environ["TBRIDGE_SOURCE_DIR"]
+BINARY = os.environ["TBRIDGE_BINARY"]
+DEFAULT = os.path.join(SOURCE, "configs", "default.json")
+
+
+def cli(*args):
+    """Runs tbridge with `args`; returns (exit code, stderr)."""
+    r = subprocess.run([BINARY, *args], capture_output=True, text=True)
+    return r.returncode, r.stderr
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    """The default design as tbridge design writes it, and its path."""
+    path = tmp_path_factory.mktemp("cli") / "design.json"
+    code, err = cli("design", DEFAULT, "-q", "-o", str(path))
+    assert code in (0, 1), err
+    return path
+
+
+@pytest.fixture(scope="module")
+def design():
+    return tbridge.design(DEFAULT)
+
+
+def test_design_is_the_cli_design_bit_for_bit(design, written):
+    text = written.read_text()
+    assert design.to_json() == text
+    cli_json = json.loads(text)
+    assert np.array_equal(design.nodes, np.array(cli_json["nodes"]))
+    members = cli_json["members"]
+    assert design.member_names == [m["name"] for m in members]
+    for key, array in [("area", design.areas), ("force", design.forces), ("rest_length", design.rest_lengths),
+                       ("utilisation", design.utilisation)]:
+        column = np.array([m[key] if m[key] is not None else m["length"] for m in members])
+        assert np.array_equal(array, column), key
+    names = ["%d-%d" % (i + 1, j + 1) for i, j in design.member_ends]
+    assert names == design.member_names
+    assert design.verdict == cli_json["verdict"]["outcome"]
+    assert design.cases == [c["name"] for c in cli_json["cases"]]
+
+
+def test_a_dict_config_is_the_file_config(design):
+    with open(DEFAULT) as f:
+        config = json.load(f)
+    assert tbridge.design(config).to_json() == design.to_json()
+
+
+def test_arrays_are_owned_copies(design):
+    areas = design.areas
+    areas[:] = 0
+    assert np.all(design.areas > 0)
+
+
+def test_bad_config_raises_with_the_key_named_as_the_cli_says(tmp_path):
+    with open(DEFAULT) as f:
+        config = json.load(f)
+    config["bridge"]["n"] = -3
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(config))
+    code, err = cli("design", str(path), "-q", "-o", str(tmp_path / "out.json"))
+    assert code == 2
+    with pytest.raises(tbridge.ConfigError) as raised:
+        tbridge.design(config)
+    assert "bridge.n" in str(raised.value)
+    assert str(raised.value) in err
+
+
+def test_bad_export_format_raises_with_the_key_named(design):
+    with pytest.raises(tbridge.ConfigError, match="'format' = 'abaqus': expected calculix or opensees"):
+        tbridge.export(design, "abaqus")
+
+
+def test_load_design_then_check_is_tbridge_check(written, tmp_path):
+    out = tmp_path / "checked.json"
+    code, err = cli("check", str(written), "-q", "-o", str(out))
+    assert code in (0, 1), err
+    assert tbridge.check(tbridge.load_design(str(written))).to_json() == out.read_text()
+
+
+def test_export_is_tbridge_export(design, written, tmp_path):
+    for fmt in ("calculix", "opensees"):
+        out = tmp_path / ("bridge." + fmt)
+        code, err = cli("export", str(written), "--format", fmt, "--rigid-bars", "-o", str(out))
+        assert code == 0, err
+        assert tbridge.export(design, fmt, rigid_bars=True) == out.read_text()
+
+
+def test_modes_are_tbridge_modes(design, tmp_path):
+    out = tmp_path / "modes.json"
+    code, err = cli("modes", DEFAULT, "-q", "-o", str(out))
+    assert code == 0, err
+    cli_modes = json.loads(out.read_text())
+    omega = np.array([m["omega_rad_s"] for m in cli_modes["modes"]])
+    for modes in (tbridge.modes(DEFAULT), tbridge.modes(design)):
+        assert np.array_equal(modes.omega_rad_s, omega)
+        shapes = np.array([s["displacements"] for s in cli_modes["mode_shapes"]])
+        assert np.array_equal(modes.shapes[: len(shapes)], shapes)
+
+
+def test_the_gil_is_released_while_designing():
+    # A design takes about a second; a thread holding the GIL throughout would let this loop
+    # run only between the design's own Python calls, a handful of times.
+    worker = threading.Thread(target=tbridge.design, args=(DEFAULT,))
+    worker.start()
+    turns = 0
+    while worker.is_alive():
+        turns += 1
+    worker.join()
+    assert turns > 10000
+
+
+def test_importing_loads_no_solver_until_a_design_needs_one():
+    script = (
+        "import tbridge\n"
+        "def solvers():\n"
+        "    maps = open('/proc/self/maps').read()\n"
+        "    return [s for s in ('tbridge_ipopt', 'tbridge_nlopt') if s in maps]\n"
+        "print(solvers())\n"
+        "tbridge.design(%r)\n"
+        "print(solvers())\n" % DEFAULT
+    )
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    before, after = r.stdout.splitlines()
+    assert before == "[]"
+    assert after != "[]"  # the default design is solved by NLopt (design.solver "auto")
+
+
+def test_simulate_is_tbridge_simulate(tmp_path):
+    config = os.path.join(SOURCE, "configs", "motes_dbar.json")
+    code, err = cli("simulate", config, "-q", "-o", str(tmp_path))
+    assert code == 0, err
+    run = tbridge.simulate(config)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    # Every number but the wall-clock time of the run.
+    del summary["run"]["wall_s"], run.summary["run"]["wall_s"]
+    assert run.summary == summary
+    # history.csv holds 12 digits; the run's own numbers are what it rounds.
+    csv = np.loadtxt(tmp_path / "history.csv", delimiter=",", skiprows=1)
+    assert run.positions.shape == (len(csv), 4, 2)
+    assert np.allclose(run.time, csv[:, 0], rtol=1e-11, atol=0)
+    assert np.allclose(run.positions.reshape(len(csv), -1), csv[:, 1:], rtol=1e-11, atol=1e-12)
+    assert list(run.recorded_nodes) == [0, 1, 2, 3]
+
+
+def test_ctrl_c_stops_a_long_run():
+    with open(os.path.join(SOURCE, "configs", "paper_t5_n1.json")) as f:
+        config = json.load(f)
+    config["dynamics"]["duration"] = 1000.0  # 1e8 steps: hours, were it not stopped
+    config["dynamics"]["record"]["every"] = 1000
+    config["dynamics"]["frequency"]["enabled"] = False
+    timer = threading.Timer(1.0, _thread.interrupt_main)  # as Ctrl-C does
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        tbridge.simulate(config)
+    timer.join()
+    assert time.monotonic() - start < 30

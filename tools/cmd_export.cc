@@ -1,0 +1,66 @@
+// `tbridge export DESIGN.json --format calculix|opensees -o FILE [--rigid-bars] [--modes K]`:
+// a written design as an input file of an FE program (export/calculix.h, export/opensees.h).
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "core/json_reader.h"
+#include "design/design_reader.h"
+#include "export/export.h"
+#include "tools/commands.h"
+#include "tools/output.h"
+
+namespace tbridge::cli {
+
+namespace {
+
+const CommandSpec& ExportSpec() {
+  static const CommandSpec spec{
+      "export",
+      {"DESIGN.json"},
+      {{{"-f", "--format"}, "FORMAT", "calculix (an .inp deck) or opensees (a Tcl script)", true},
+       {{"-o", "--output"}, "FILE", "where to write it", true},
+       {{"--rigid-bars"}, "", "bars 1e6 times stiffer than E A / l, as tbridge's rigid bars", false},
+       {{"-m", "--modes"}, "K", "calculix: eigenmodes asked of *FREQUENCY (default 10)", false}},
+      "Reads DESIGN.json, a design written by tbridge design or check, as tbridge check reads\n"
+      "it, and writes the bridge for an FE program: nodes, supports, strings that carry no\n"
+      "compression with their prestress, bars with their reference compression, the masses of\n"
+      "the modal model, and every load case (each travelling station its own) as a static\n"
+      "analysis from the prestressed reference state; CalculiX also gets the natural\n"
+      "frequencies about the state `tbridge modes` analyses (README.md, \"Export\"). FILE is\n"
+      "written whole or not at all. Exit 2 for a bad option or a DESIGN.json that is not a\n"
+      "self-consistent design."};
+  return spec;
+}
+
+int RunExportCommand(const std::vector<std::string>& args) {
+  const CommandSpec& spec = ExportSpec();
+  const ParsedArgs parsed = ParseArgs(args, spec);
+  if (parsed.help) {
+    std::cout << Usage(spec);
+    return 0;
+  }
+  const std::string format = parsed.Required("-f");
+  if (!IsExportFormat(format)) throw OptionError("--format", "'" + format + "'", std::string("expected ") + kExportFormats);
+  CalculixOptions options;
+  options.rigid_bars = parsed.Flag("--rigid-bars");
+  options.modes = ParseWholeNumber(parsed, "-m", "--modes", options.modes, 1);
+  if (parsed.Value("-m") && format != "calculix") throw UsageError("--modes: only the calculix format computes modes");
+  const std::string out_path = parsed.Required("-o");
+  const Design design = ReadDesign(ReadJsonFile(parsed.positionals[0]));
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& out = outputs.Stage(out_path);
+  WriteExport(design, format, options, out);
+  outputs.Commit();
+  std::cout << "wrote " << out_path << " (" << format << ")\n";
+  return kExitOk;
+}
+
+const CommandRegistrar kRegisterExport("export", "a written design as a CalculiX or OpenSees input file",
+                                       &RunExportCommand);
+
+}  // namespace
+
+}  // namespace tbridge::cli
