@@ -137,6 +137,17 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
   return outcome;
 }
 
+// The verdict the sizing steers by: the design's, but without comfort where the config does
+// not size for it (comfort.sizing_constraint false): comfort is then checked and reported, and
+// a failing comfort check fails the design, but the sizing does not chase it.
+Verdict SizingVerdict(const Design& d) {
+  if (d.config.comfort.sizing_constraint) return DesignVerdict(d);
+  Design structural = d;
+  structural.config.comfort.check = false;
+  structural.comfort = ComfortCheck{};
+  return DesignVerdict(structural);
+}
+
 // One sizing from `x` (its start, then its solution) and the design it gives, checked.
 struct Sized {
   Design design;
@@ -288,7 +299,7 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   for (double& a : doubled) a *= 2;
   Eigen::VectorXd x = problem.VariablesOf(doubled, PrestressCoefficients(first));
   Sized other = SizeAndCheck(config, current, corrections, solver, problem, x);
-  const Verdict verdict = DesignVerdict(other.design);
+  const Verdict verdict = SizingVerdict(other.design);
   const double mass = other.design.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
   std::ostringstream os;
@@ -358,7 +369,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     areas = problem.Areas(x);
     alpha = problem.Alpha(x);
     record.structure_mass_kg.push_back(d.mass.structure);
-    const Verdict verdict = DesignVerdict(d);
+    const Verdict verdict = SizingVerdict(d);
     record.utilisation_max.push_back(verdict.utilisation_max);
     // Converged: a design that passes within kSettled of the mass of the last design that
     // passed: the linear model says what the checks say. A design between them that fails by

@@ -112,6 +112,24 @@ TEST_CASE("the 3D bridge designs and passes with the engineering defaults", "[ve
   CHECK(d.comfort.Status() != CheckStatus::kNotRun);
 }
 
+TEST_CASE("comfort checked but not sized for: the sizing converges and the verdict fails on comfort", "[verify]") {
+  // comfort.sizing_constraint false: the sizing steers by the structural checks alone, so it
+  // settles where comfort off settles (the same program and corrections: to 1e-9), and the
+  // design's own verdict still names the comfort failure (the default bridge's deck at 0.85
+  // m/s^2 against 0.7).
+  Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
+  config.comfort.sizing_constraint = false;
+  const Design d = DesignAndVerify(config);
+  config.comfort.check = false;
+  const Design off = DesignAndVerify(config);
+  const Verdict verdict = DesignVerdict(d);
+  INFO(verdict.summary);
+  CHECK(d.resizing.converged);
+  CHECK(d.mass.structure == Approx(off.mass.structure).epsilon(1e-9));
+  CHECK(verdict.outcome == VerdictOutcome::kFail);
+  CHECK_THAT(verdict.summary, Catch::Contains("comfort"));
+}
+
 TEST_CASE("two starts give the same verified mass where the program has one optimum", "[verify]") {
   // The last sizing repeated from twice the first design's areas (DesignAndVerify's second
   // start) against the run from the first design. 1e-4 relative: the same program, so the two
