@@ -147,7 +147,8 @@ Verdict DesignVerdict(const Design& d) {
     }
   }
   // The deck beams: their bending at the ultimate cases and their sag between deck stations.
-  const DeckBeamCheck deck = CheckDeckBeams(d.config, d.deck, d.cases);
+  v.deck_beams = CheckDeckBeams(d.config, d.deck, d.cases);
+  const DeckBeamCheck& deck = v.deck_beams;
   if (!deck.governing_case.empty() && deck.utilisation > v.utilisation_max) {
     v.utilisation_max = deck.utilisation;
     v.governing = "deck beams (bending, " + deck.governing_case + ")";

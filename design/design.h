@@ -8,6 +8,7 @@
 #include "core/config.h"
 #include "core/progress.h"
 #include "design/deck.h"
+#include "design/deck_beams.h"
 #include "design/load_cases.h"
 #include "design/min_mass.h"
 #include "design/sizing.h"
@@ -115,6 +116,7 @@ struct Verdict {
   std::string governing;  // "member 3-5 (buckling, uls_payload_full)"
   std::string summary;    // "PASS: ...", "FAIL: ...; ..." or "INCOMPLETE: ...; ..."
   std::string scope;      // what the checks cover, and what they do not
+  DeckBeamCheck deck_beams;  // the deck beams' check the verdict read (design/deck_beams.h)
 };
 Verdict DesignVerdict(const Design& design);
 

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "design/comfort_report.h"
-#include "design/deck_beams.h"
 
 namespace tbridge {
 
@@ -260,7 +259,7 @@ json VerdictJson(const Design& d, const Verdict& v) {
           {"checks",
            {{"static", CheckStatusName(d.statics.Status())},
             {"dynamic", CheckStatusName(d.dynamics.Status())},
-            {"deck_beams", CheckStatusName(CheckDeckBeams(d.config, d.deck, d.cases).Status())},
+            {"deck_beams", CheckStatusName(v.deck_beams.Status())},
             {"comfort", CheckStatusName(d.comfort.Status())}}},
           {"notes", d.notes}};
 }
@@ -280,7 +279,8 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                          {"nodes", s.num_nodes()},       {"bars", s.num_bars()},
                          {"strings", s.num_strings()},   {"class", s.TensegrityClass()},
                          {"fixed_nodes", fixed}};
-  const DeckBeamCheck beams = CheckDeckBeams(d.config, d.deck, d.cases);
+  const Verdict verdict = DesignVerdict(d);
+  const DeckBeamCheck& beams = verdict.deck_beams;
   const json deck_check = {{"status", CheckStatusName(beams.Status())},
                            {"utilisation", beams.utilisation},
                            {"stress_ed", beams.stress_ed_pa},
@@ -362,7 +362,6 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("stability", StabilityJson(d.stability));
   field("topology", topology);
   field("units", Units());
-  const Verdict verdict = DesignVerdict(d);
   field("utilisation_max", verdict.utilisation_max);
   field("verdict", VerdictJson(d, verdict), true);
   os << "}\n";
@@ -384,7 +383,8 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
               "node, F_tot = %.6g N",
               d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3,
               d.deck.node_load, d.deck.total_load));
-  const DeckBeamCheck beams = CheckDeckBeams(d.config, d.deck, d.cases);
+  const Verdict verdict = DesignVerdict(d);
+  const DeckBeamCheck& beams = verdict.deck_beams;
   line(Format("deck beams: thickness set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / %g = %.4g mm (%s)",
               d.deck.sized_by.c_str(), beams.utilisation, beams.governing_case.c_str(), beams.sag_m * 1e3,
               d.config.loads.deck_sag_limit, beams.sag_limit_m * 1e3,
@@ -466,7 +466,6 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 amp.c_str()));
   }
   for (const std::string& text : ComfortSummaryLines(d)) line(text);
-  const Verdict verdict = DesignVerdict(d);
   line(verdict.summary);
   line("scope: " + verdict.scope);
   line("");

@@ -37,9 +37,12 @@ double DynamicShare(const SizingRow& row, const std::vector<double>& dynamic) {
 }
 
 // The multiplier of a row in physical units: the rows are scaled (problem.h), utilisation and
-// deflection rows as fractions of their limits, tension rows by the force scale.
+// deflection rows as fractions of their limits, tension rows by the force scale, areas by
+// the area scale.
 double Physical(int kind, double lambda, const SizingProblem& p) {
-  return kind == kTautKind ? lambda * p.mass_scale_kg() / p.force_scale_n() : lambda * p.mass_scale_kg();
+  if (kind == kTautKind) return lambda * p.mass_scale_kg() / p.force_scale_n();
+  if (kind == kMinimumKind) return lambda * p.mass_scale_kg() / p.area_scale_m2();
+  return lambda * p.mass_scale_kg();
 }
 
 const char* UnitOf(int kind) {
@@ -132,7 +135,7 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
       b.unit = UnitOf(kind);
     } else if (r <= -2) {
       b.kind = kConstraintKinds[kMinimumKind];
-      b.multiplier = z[nr - 2 - r] * p.mass_scale_kg() / p.area_scale_m2();
+      b.multiplier = Physical(kMinimumKind, z[nr - 2 - r], p);
       b.unit = UnitOf(kMinimumKind);
     }
   }

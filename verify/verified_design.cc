@@ -270,11 +270,17 @@ Eigen::VectorXd PrestressCoefficients(const Design& d) {
   return basis.SelfStresses().transpose() * PrestressForces(d);
 }
 
+// The first design's member areas and prestress coefficients, computed once.
+struct FirstSizes {
+  std::vector<double> areas;
+  Eigen::VectorXd alpha;
+};
+
 // What drives the sized design's mass: the multipliers of the rows active at `x` (within 1e-4
 // of their margin: the solver's tolerance is far below it) on the problem that posed them.
 MassAttribution Attribution(const Design& current, const SizingCorrections& corrections, const SizingProblem& full,
                             const Eigen::VectorXd& x, const StaticCheck& statics, const DynamicCheck& dynamics,
-                            const Design& first) {
+                            const FirstSizes& first) {
   Eigen::VectorXd g(full.num_constraints()), lo, hi;
   full.Constraints(x, g);
   full.ConstraintBounds(lo, hi);
@@ -286,18 +292,18 @@ MassAttribution Attribution(const Design& current, const SizingCorrections& corr
     const double s = statics.members[j].utilisation, u = dynamics.members[j].utilisation;
     if (u > s && u > 0) dynamic[j] = 1 - s / u;
   }
-  return AttributeMass(posed, x, dynamic, posed.VariablesOf(MemberAreas(first), PrestressCoefficients(first)));
+  return AttributeMass(posed, x, dynamic, posed.VariablesOf(first.areas, first.alpha));
 }
 
 // The last sizing again from a second start, twice the first design's areas: the program is
 // not convex, and another optimum may be lighter. A lighter one that passes is kept in `best`;
 // either way `record` says what the second start found.
 void SecondStart(const Config& config, const Design& current, const SizingCorrections& corrections,
-                 const std::string& solver, const SizingProblem& problem, const Design& first, Design& best,
+                 const std::string& solver, const SizingProblem& problem, const FirstSizes& first, Design& best,
                  Resizing& record) {
-  std::vector<double> doubled = MemberAreas(first);
+  std::vector<double> doubled = first.areas;
   for (double& a : doubled) a *= 2;
-  Eigen::VectorXd x = problem.VariablesOf(doubled, PrestressCoefficients(first));
+  Eigen::VectorXd x = problem.VariablesOf(doubled, first.alpha);
   Sized other = SizeAndCheck(config, current, corrections, solver, problem, x);
   const Verdict verdict = SizingVerdict(other.design);
   const double mass = other.design.mass.structure, kept = best.mass.structure;
@@ -349,8 +355,10 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
                       std::to_string(first.self_stress_states) + ": its equilibrium design is checked as it is");
     return CheckedAsDesigned(std::move(d), record);
   }
-  std::vector<double> areas = MemberAreas(first);
-  Eigen::VectorXd alpha = PrestressCoefficients(first);
+  // The first design's sizes: the start, the second start's base and the premium's reference.
+  const FirstSizes first_sizes{MemberAreas(first), PrestressCoefficients(first)};
+  std::vector<double> areas = first_sizes.areas;
+  Eigen::VectorXd alpha = first_sizes.alpha;
   // The start: the first design's areas and prestress under the config's own loads and weight.
   Design current = SizedDesign(config, areas, alpha);
   record.structure_mass_kg.push_back(current.mass.structure);
@@ -378,13 +386,13 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
                          std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
     if (verdict.pass) last_passing_kg = d.mass.structure;
     if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) {
-      d.attribution = Attribution(current, corrections, problem, x, statics, dynamics, first);
+      d.attribution = Attribution(current, corrections, problem, x, statics, dynamics, first_sizes);
       best = d;
     }
     const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
                       verdict.outcome == VerdictOutcome::kIncomplete;
     if (settled || last) {
-      if (best) SecondStart(config, current, corrections, solver, problem, first, *best, record);
+      if (best) SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record);
       Design out = best ? *best : d;
       record.converged = settled;
       if (!settled) {
