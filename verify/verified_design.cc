@@ -309,7 +309,9 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   const double mass = other.design.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
   std::ostringstream os;
-  os << "second start (twice the first design's areas): " << mass << " kg, " << VerdictName(verdict.outcome);
+  // The design's own verdict in the record (comfort included), whatever the sizing steers by.
+  os << "second start (twice the first design's areas): " << mass << " kg, "
+     << VerdictName(DesignVerdict(other.design).outcome);
   if (std::abs(mass - kept) <= kSettled * kept) {
     os << ": the same optimum to " << kSettled;
   } else if (verdict.pass && mass < kept) {
