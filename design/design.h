@@ -30,6 +30,20 @@ struct MassBreakdown {
 // Design::solver_form of a design read back from its file (design/design_reader.h).
 inline constexpr const char* kReadFromFile = "read from file";
 
+// What `tbridge check` re-derived of a design whose members were edited in its file
+// (design/design_reader.h): the reference state the members carry as built.
+struct AsBuilt {
+  bool re_derived = false;
+  // The members whose reference force in the file is not what they carry as read (an edited
+  // area or rest length), in the file's order; empty when only the weight changed.
+  std::vector<std::string> edited;
+  double node_move_m = 0;        // the largest move of a node from the drawn geometry [m]
+  int node = -1;                 // 0-based, where it is
+  double force_change_n = 0;     // the largest change of a member's reference force [N]
+  std::string force_member;      // where it is
+  int slack_strings = 0;         // strings slack in the re-derived reference state
+};
+
 struct Design {
   Config config;             // resolved
   BridgeTopology topology;
@@ -65,6 +79,7 @@ struct Design {
   // 3 x n_n support reactions [N], zero at free nodes: with the applied loads they balance
   // the whole structure (SupportReactions, design/equilibrium.h).
   Eigen::Matrix3Xd reactions;
+  AsBuilt as_built;  // what check re-derived, when it did
 };
 
 // What the minimum-mass problem of a bridge config is made of: the drawn bridge, its deck and

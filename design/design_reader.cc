@@ -4,11 +4,14 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
 #include "core/string_law.h"
+#include "design/design_report.h"
 #include "design/equilibrium.h"
+#include "statics/static_solve.h"
 
 namespace tbridge {
 
@@ -82,6 +85,98 @@ const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
   return m;
 }
 
+// The members' masses (rho A s, at the geometry of `s`) and, from them, the reference loads.
+void WeighMembers(Design& d, std::vector<double>& masses) {
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  const double density = d.config.material.density;
+  d.mass.bars = d.mass.strings = d.mass.deck_strings = 0;
+  for (int k = 0; k < nb + s.num_strings(); ++k) {
+    const bool bar = k < nb;
+    MemberSizing& m = bar ? d.bars[k] : d.strings[k - nb];
+    m.length = s.Length(bar ? s.bars[k] : s.strings[k - nb]);
+    m.mass = density * m.area * m.length;
+    masses[k] = m.mass;
+    (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
+  }
+  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
+  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, d.config.design.gravity);
+  d.loads = d.actions.Loads(d.reference);
+}
+
+// The reference state the members carry as built, for a file whose members were edited (an
+// area, with its radius, mass and stiffness, or a rest length): the strings keep their rest
+// lengths and the bars their lengths, each member weighs what its area gives, and the state
+// is the nonlinear static solve (statics/static_solve.h) from the file's geometry under the
+// reference loads. A string's weight follows its length (rho A s), so the solve is repeated
+// with the weight at the solved geometry until the loads change by less than 1e-12 of the
+// largest (two or three solves: a string's length moves by its strain, ~1e-4). Throws
+// ConfigError naming the edited members when the structure as built does not stand.
+void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::string> edited,
+                  const Eigen::Matrix3Xd& drawn) {
+  Structure& s = d.topology.structure;
+  const int nb = s.num_bars(), ns = s.num_strings();
+  StaticModel model;
+  model.structure = s;
+  for (const MemberSizing& m : d.strings) {
+    model.string_stiffness.push_back(m.stiffness);
+    model.string_rest_length.push_back(m.rest_length);
+  }
+  // The start: the file's geometry and bar forces, the strings' tensions there as read, in
+  // equilibrium under the loads those forces balance.
+  Eigen::VectorXd forces = d.reference_forces;
+  for (int k = 0; k < ns; ++k) {
+    forces[nb + k] = StringTension(d.strings[k].stiffness, d.strings[k].rest_length, d.strings[k].length);
+  }
+  const EquilibriumSystem eq = BuildEquilibrium(s);
+  const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
+  Eigen::Matrix3Xd from_loads = d.loads;
+  for (Eigen::Index r = 0; r < residual.size(); ++r) from_loads(eq.row_axis[r], eq.row_node[r]) -= residual[r];
+  StaticState state = StateAt(model, s.nodes, forces.head(nb), from_loads);
+  const Eigen::VectorXd file_forces = d.reference_forces;
+  auto names = [&edited] {
+    std::string out;
+    for (size_t k = 0; k < edited.size() && k < 5; ++k) out += (k ? ", " : "") + edited[k];
+    return out + (edited.size() > 5 ? ", ..." : "");
+  };
+  for (int pass = 0;; ++pass) {
+    const StaticResult result = SolveStatic(model, state, from_loads, d.loads);
+    if (!result.converged) {
+      throw ConfigError("members[].area", edited.empty() ? "(the members' weight)" : names(),
+                        "the structure as edited has no reference state under its permanent load (" +
+                            result.message + "): it does not stand as built");
+    }
+    state = result.state;
+    from_loads = d.loads;
+    s.nodes = model.structure.nodes = state.nodes;
+    WeighMembers(d, masses);
+    const double change = (d.loads - from_loads).cwiseAbs().maxCoeff();
+    if (change <= 1e-12 * std::max(d.loads.cwiseAbs().maxCoeff(), 1.0)) break;
+    if (pass == 4) {
+      throw ConfigError("members[].area", names(), "the strings' weight at the solved geometry did not settle in five solves");
+    }
+  }
+  d.reference_forces.resize(nb + ns);
+  d.reference_forces << state.bar_compression, state.string_tension;
+  AsBuilt& a = d.as_built;
+  a.re_derived = true;
+  a.edited = std::move(edited);
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    const double move = (s.nodes.col(v) - drawn.col(v)).norm();
+    if (move > a.node_move_m) a.node_move_m = move, a.node = v;
+  }
+  for (int k = 0; k < nb + ns; ++k) {
+    MemberSizing& m = k < nb ? d.bars[k] : d.strings[k - nb];
+    const double change = std::abs(d.reference_forces[k] - file_forces[k]);
+    if (change > a.force_change_n) a.force_change_n = change, a.force_member = m.name;
+    m.reference_force = m.force = d.reference_forces[k];
+    m.force_density = m.force / m.length;
+    m.stress = m.area > 0 ? m.force / m.area : 0.0;
+  }
+  for (int k = 0; k < ns; ++k) a.slack_strings += state.string_tension[k] <= 0 ? 1 : 0;
+}
+
 }  // namespace
 
 Design ReadDesign(const json& file) {
@@ -102,20 +197,44 @@ Design ReadDesign(const json& file) {
   const int nb = s.num_bars(), ns = s.num_strings();
   const Material& mat = d.config.material;
 
-  // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it exactly).
+  // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it
+  // exactly); or, in a file check wrote with its reference state re-derived ("as_built"), the
+  // as-built geometry, with every bar of its drawn length (to 1e-9 m: bars are rigid).
   const json& nodes = file.at("nodes");
   if (static_cast<int>(nodes.size()) != s.num_nodes()) {
     throw ConfigError("nodes", std::to_string(nodes.size()) + " nodes", "the config draws " + std::to_string(s.num_nodes()));
   }
+  const bool as_built = file.contains("as_built") && file.at("as_built").is_object() &&
+                        file.at("as_built").value("re_derived", false);
+  const Eigen::Matrix3Xd drawn = s.nodes;
   for (int v = 0; v < s.num_nodes(); ++v) {
     const json& p = nodes[v];
     bool same = p.is_array() && p.size() == 3;
     for (int a = 0; same && a < 3; ++a) same = p[a].is_number() && std::abs(p[a].get<double>() - s.nodes(a, v)) <= 1e-9;
+    if (!same && as_built && p.is_array() && p.size() == 3 && p[0].is_number() && p[1].is_number() && p[2].is_number()) {
+      d.topology.structure.nodes.col(v) = Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+      continue;
+    }
     if (!same) {
       throw ConfigError("nodes[" + std::to_string(v) + "]", p.dump(),
                         "the config draws node " + std::to_string(v + 1) + " at [" +
                             NumberText(s.nodes(0, v)) + ", " + NumberText(s.nodes(1, v)) + ", " +
                             NumberText(s.nodes(2, v)) + "]");
+    }
+  }
+  if (as_built) {
+    for (int v = 0; v < s.num_nodes(); ++v) {
+      if (s.fixed[v] && (s.nodes.col(v) - drawn.col(v)).norm() > 1e-9) {
+        throw ConfigError("nodes[" + std::to_string(v) + "]", "(a support moved)",
+                          "node " + std::to_string(v + 1) + " is a support: where the config draws it");
+      }
+    }
+    for (const ::tbridge::Member& e : s.bars) {
+      const double drawn_length = (drawn.col(e.j) - drawn.col(e.i)).norm();
+      if (std::abs(s.Length(e) - drawn_length) > 1e-9) {
+        throw ConfigError("nodes", "(bar " + Structure::Name(e) + " " + NumberText(s.Length(e)) + " m long)",
+                          "an as-built geometry keeps every bar at its drawn length, " + NumberText(drawn_length) + " m");
+      }
     }
   }
 
@@ -125,6 +244,7 @@ Design ReadDesign(const json& file) {
                       "the config draws " + std::to_string(nb + ns));
   }
   std::vector<double> masses(nb + ns);
+  std::vector<std::string> edited;  // members whose reference force is not what they carry as read
   d.reference_forces.resize(nb + ns);
   for (int k = 0; k < nb + ns; ++k) {
     const json& j = MemberOf(file, k, s);
@@ -151,13 +271,10 @@ Design ReadDesign(const json& file) {
       m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
       // The string's tension at the drawn geometry is its reference force: 1e-6 relative
       // allows the file's rounding and the design's own sizing tolerance, and no real edit.
+      // Otherwise its area or rest length was edited: the reference state is re-derived.
       const double tension = StringTension(m.stiffness, m.rest_length, m.length);
       if (std::abs(tension - m.reference_force) > 1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
-        throw ConfigError(
-            where + ".rest_length", NumberText(m.rest_length),
-            "with area " + NumberText(m.area) + " m^2 the string pulls " + NumberText(tension) +
-                " N at its drawn length, not its reference_force " + NumberText(m.reference_force) +
-                " N: re-derive the design with tbridge design after changing a member");
+        edited.push_back(m.name);
       }
     }
     RequireDerived(j, "length", m.length, where, m.name, "the length between its nodes");
@@ -190,18 +307,33 @@ Design ReadDesign(const json& file) {
   d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, d.config.design.gravity);
   d.reference = ReferenceCase(d.config, d.cases);
   d.loads = d.actions.Loads(d.reference);
-  const EquilibriumSystem eq = BuildEquilibrium(s);
-  const Eigen::VectorXd residual = EquilibriumResidual(eq, d.reference_forces, d.loads);
-  d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   // 1e-8 of the largest member force: the design leaves 1e-10 of it (design.tolerance), the
   // file's digits nothing; a member's weight changed by an edited area shows at once.
-  const double scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
-  if (!(d.equilibrium_residual <= 1e-8 * scale)) {
-    throw ConfigError(
-        "members[].reference_force", "(the reference forces)",
-        "they leave " + NumberText(d.equilibrium_residual) +
-            " N unbalanced at a node under the reference loads (the members' weight and the "
-            "config's loads): re-derive the design with tbridge design after changing it");
+  auto residual_of = [&d] {
+    const Eigen::VectorXd residual =
+        EquilibriumResidual(BuildEquilibrium(d.topology.structure), d.reference_forces, d.loads);
+    d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
+    return d.equilibrium_residual <= 1e-8 * std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
+  };
+  // Edited members (an area with its radius, mass and stiffness; a rest length), or a weight
+  // the forces no longer balance: the reference state they carry as built is re-derived.
+  if (!edited.empty() || !residual_of()) {
+    SolveAsBuilt(d, masses, std::move(edited), drawn);
+    if (!residual_of()) {
+      throw ConfigError("members[].reference_force", "(the re-derived reference forces)",
+                        "they leave " + NumberText(d.equilibrium_residual) +
+                            " N unbalanced at a node: the as-built reference state did not converge");
+    }
+  } else if (as_built) {
+    // A file check wrote with its reference state re-derived: as built, and it says so again.
+    const json& a = file.at("as_built");
+    d.as_built.re_derived = true;
+    d.as_built.edited = a.value("edited", std::vector<std::string>{});
+    for (int v = 0; v < s.num_nodes(); ++v) {
+      const double move = (s.nodes.col(v) - drawn.col(v)).norm();
+      if (move > d.as_built.node_move_m) d.as_built.node_move_m = move, d.as_built.node = v;
+    }
+    for (int k = 0; k < ns; ++k) d.as_built.slack_strings += d.strings[k].reference_force <= 0 ? 1 : 0;
   }
   std::vector<double> string_stiffness(ns);
   for (int k = 0; k < ns; ++k) string_stiffness[k] = d.strings[k].stiffness;
@@ -213,6 +345,29 @@ Design ReadDesign(const json& file) {
   d.solver.success = true;
   d.solver_form = kReadFromFile;
   return d;
+}
+
+Design WithAreas(const Design& design, const std::vector<double>& areas) {
+  std::ostringstream text;
+  WriteDesignJson(design, text);
+  json file = json::parse(text.str());
+  json& members = file.at("members");
+  if (areas.size() != members.size()) {
+    throw ConfigError("areas", std::to_string(areas.size()) + " areas", "one per member: " + std::to_string(members.size()));
+  }
+  const Material& mat = design.config.material;
+  for (size_t k = 0; k < areas.size(); ++k) {
+    const double a = areas[k];
+    if (!(a >= 0) || !std::isfinite(a)) {
+      throw ConfigError("areas[" + std::to_string(k) + "]", NumberText(a), "a finite area >= 0 [m^2]");
+    }
+    json& m = members[k];
+    m["area"] = a;
+    m["radius"] = std::sqrt(a / std::numbers::pi);
+    m["mass"] = mat.density * a * m.at("length").get<double>();
+    if (!m.at("stiffness").is_null()) m["stiffness"] = mat.youngs_modulus * a / m.at("rest_length").get<double>();
+  }
+  return ReadDesign(file);
 }
 
 }  // namespace tbridge

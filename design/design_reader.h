@@ -22,4 +22,11 @@ namespace tbridge {
 // for a file that is malformed, not a tbridge design, or not self-consistent.
 Design ReadDesign(const nlohmann::json& file);
 
+// `design` with its members' areas replaced by `areas` [m^2] (bars first, then strings, in
+// the file's order), as an engineer edits the design file: each member's radius, mass and
+// stiffness from its new area, the rest lengths kept; then read back by ReadDesign, which
+// re-derives the reference state as built. Throws ConfigError naming the member and key for
+// an area < 0 or not finite, or `areas` of the wrong size.
+Design WithAreas(const Design& design, const std::vector<double>& areas);
+
 }  // namespace tbridge

@@ -251,6 +251,30 @@ json DynamicsJson(const Design& d) {
   return {{"done", d.dynamics.done}, {"ran", d.dynamics.ran()}, {"runs", runs}};
 }
 
+// "as_built": what check re-derived of an edited design, or null.
+json AsBuiltJson(const Design& d) {
+  const AsBuilt& a = d.as_built;
+  if (!a.re_derived) return nullptr;
+  return {{"re_derived", true},
+          {"edited", a.edited},
+          {"node_move_max", a.node_move_m},
+          {"node", a.node >= 0 ? json(a.node + 1) : json(nullptr)},
+          {"force_change_max", a.force_change_n},
+          {"force_member", a.force_member},
+          {"slack_strings", a.slack_strings}};
+}
+
+std::string AsBuiltLine(const AsBuilt& a) {
+  std::string edited;
+  for (size_t k = 0; k < a.edited.size(); ++k) edited += (k ? ", " : "") + a.edited[k];
+  return Format("as built: reference state re-derived (rest lengths and bar lengths kept, each member's weight from its "
+                "area%s%s); nodes moved up to %.4g mm from the drawn geometry%s%s, reference forces changed up to "
+                "%.6g N%s%s; %d strings slack in it",
+                edited.empty() ? "" : "; edited: ", edited.c_str(), a.node_move_m * 1e3,
+                a.node >= 0 ? " at node " : "", a.node >= 0 ? std::to_string(a.node + 1).c_str() : "",
+                a.force_change_n, a.force_member.empty() ? "" : " in ", a.force_member.c_str(), a.slack_strings);
+}
+
 json VerdictJson(const Design& d, const Verdict& v) {
   return {{"outcome", VerdictName(v.outcome)},
           {"pass", v.pass},
@@ -312,6 +336,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   };
 
   os << "{\n";
+  field("as_built", AsBuiltJson(d));
   field("cases", CasesJson(d));
   field("comfort", ComfortJson(d));
   field("config", ToJson(d.config));
@@ -391,6 +416,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
               beams.sag_case.empty() ? "no serviceability case" : beams.sag_case.c_str()));
   if (d.solver_form == kReadFromFile) {
     line(Format("design: read from its file, checked as written; equilibrium residual %.2e N", d.equilibrium_residual));
+    if (d.as_built.re_derived) line(AsBuiltLine(d.as_built));
   } else {
     line(Format("solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
                 "self-stress states: %d",

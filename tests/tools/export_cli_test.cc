@@ -308,7 +308,7 @@ TEST_CASE("export: a bad format or option is refused with exit 2 and nothing wri
   }
   // A design file that is not self-consistent: the key is named.
   json design = json::parse(ReadText(design_file));
-  design["members"][8]["rest_length"] = design["members"][8]["rest_length"].get<double>() * 0.99;
+  design["members"][8]["radius"] = design["members"][8]["radius"].get<double>() * 0.99;
   std::ofstream(dir / "edited.json") << design.dump(2);
   const auto r = RunTbridge(dir, "export " + Quote((dir / "edited.json").string()) + " --format calculix -o " +
                                      Quote(out.string()));
