@@ -57,15 +57,17 @@ ProgressReporter::~ProgressReporter() { Finish(); }
 bool ProgressReporter::Wanted(bool forced) { return forced || ::isatty(STDERR_FILENO) == 1; }
 
 void ProgressReporter::Stage(const std::string& name) {
+  if (cancel_) cancel_();
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  stage_ = name;
+  stage_ = prefix_ + name;
   stage_start_ = std::chrono::steady_clock::now();
   done_ = total_ = 0;
   first_done_ = -1;
 }
 
 void ProgressReporter::Update(double done, double total) {
+  if (cancel_) cancel_();
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   done_ = done;

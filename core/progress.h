@@ -25,6 +25,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -53,6 +54,15 @@ class ProgressReporter {
   // `done` of `total` units of the current stage (any unit: steps, seconds, candidates).
   // total <= 0: unknown total.
   void Update(double done, double total);
+  // A hook the work polls through this reporter: called, in the working thread, by every
+  // Stage and Update, drawn or not (a disabled reporter calls it too). It may throw to stop
+  // the work (the Python module raises KeyboardInterrupt so on Ctrl-C); the exception leaves
+  // the work as any error does. Set it before the work starts.
+  void SetCancelHook(std::function<void()> hook) { cancel_ = std::move(hook); }
+  // Put before every later stage's name ("sizing 3: " + "static check"), so that work nested
+  // in a larger loop says where in the loop it is. Call from the thread that owns the reporter.
+  void SetStagePrefix(std::string prefix) { prefix_ = std::move(prefix); }
+
   // Stops drawing for good and ends the line if one was drawn, e.g. before printing warnings
   // or results; later calls do nothing. Call from the thread that owns the reporter.
   void Finish();
@@ -80,6 +90,8 @@ class ProgressReporter {
   double first_done_ = -1;  // done at the stage's first update (baseline for the rate)
   std::chrono::steady_clock::time_point first_time_;
   std::thread thread_;
+  std::function<void()> cancel_;
+  std::string prefix_;
 };
 
 // "h:mm:ss" of a non-negative number of seconds (negative counts as 0).

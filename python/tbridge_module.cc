@@ -10,8 +10,10 @@
 
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app/modal_scene.h"
@@ -21,11 +23,13 @@
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/progress.h"
 #include "design/design.h"
 #include "design/design_reader.h"
 #include "design/design_report.h"
 #include "dynamics/modal.h"
 #include "export/export.h"
+#include "sweep/sweep.h"
 #include "verify/verified_design.h"
 
 namespace py = pybind11;
@@ -109,6 +113,53 @@ Modes ModesOf(const DynamicModel& model, int count) {
 // Python error PyErr_CheckSignals set (KeyboardInterrupt) is raised once the GIL is back.
 struct Interrupted {};
 
+// Gives Python its signals during long work, at most every 50 ms: takes the GIL for
+// PyErr_CheckSignals and throws Interrupted when a handler raised (Ctrl-C: KeyboardInterrupt).
+// Python runs its handlers on its main thread only, so a poll from another thread finds none.
+class SignalPoll {
+ public:
+  void operator()() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - polled_ < std::chrono::milliseconds(50)) return;
+    polled_ = now;
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) throw Interrupted{};
+  }
+
+ private:
+  std::chrono::steady_clock::time_point polled_ = std::chrono::steady_clock::now();
+};
+
+// A silent progress reporter whose cancel hook is a SignalPoll: the work it follows (a design,
+// a check, a sweep) stops at its next progress report after Ctrl-C.
+struct Interruptible {
+  Interruptible() {
+    progress.SetCancelHook([this] { poll(); });
+  }
+  SignalPoll poll;
+  ProgressReporter progress;
+};
+
+// Runs `work` with the GIL released and Ctrl-C polled through `progress`; an interruption
+// raises Python's KeyboardInterrupt once the GIL is back.
+template <class Work>
+auto Interruptibly(Work work) {
+  Interruptible on;
+  try {
+    py::gil_scoped_release release;
+    return work(&on.progress);
+  } catch (const Interrupted&) {
+    throw py::error_already_set();
+  }
+}
+
+// The rows of a sweep and its choice, as tbridge sweep writes them in sweep.json and sweep.csv.
+struct SweepResult {
+  py::list rows;
+  py::object choice;  // dict, or None for a shard
+  std::string json_text, csv_text;
+};
+
 // Keeps the recorded rows of a run in memory, and gives Python its signals during the run:
 // every 50 ms of recording it takes the GIL for PyErr_CheckSignals.
 class PythonHistory : public HistorySink {
@@ -119,17 +170,13 @@ class PythonHistory : public HistorySink {
   void Row(double t, const double* coordinates) override {
     times.push_back(t);
     rows.insert(rows.end(), coordinates, coordinates + width_);
-    const auto now = std::chrono::steady_clock::now();
-    if (now - polled_ < std::chrono::milliseconds(50)) return;
-    polled_ = now;
-    py::gil_scoped_acquire acquire;
-    if (PyErr_CheckSignals() != 0) throw Interrupted{};
+    poll_();
   }
   std::vector<double> times, rows;
 
  private:
   size_t width_ = 0;
-  std::chrono::steady_clock::time_point polled_ = std::chrono::steady_clock::now();
+  SignalPoll poll_;
 };
 
 struct Run {
@@ -172,8 +219,16 @@ PYBIND11_MODULE(tbridge, m) {
                                return out;
                              })
       .def_property_readonly("num_bars", [](const Design& d) { return d.bars.size(); })
-      .def_property_readonly("areas", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.area; }); },
-                             "[m^2]")
+      .def_property(
+          "areas", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.area; }); },
+          [](Design& d, const std::vector<double>& areas) { d = WithAreas(d, areas); },
+          "[m^2]. Assigning areas edits the design as an engineer edits its file (with_areas); "
+          "tbridge.check(design) then checks it")
+      .def("with_areas", [](const Design& d, const std::vector<double>& areas) { return WithAreas(d, areas); },
+           py::arg("areas"),
+           "a new design with these member areas [m^2] (bars first, then strings): each member's radius, mass and "
+           "stiffness from its area, the rest lengths kept, and the reference state re-derived as built, as tbridge "
+           "check reads an edited design file (the design's as_built says what moved)")
       .def_property_readonly("forces", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.force; }); },
                              "design force: compression of a bar, tension of a string [N]")
       .def_property_readonly(
@@ -211,22 +266,24 @@ PYBIND11_MODULE(tbridge, m) {
       "design",
       [](const py::object& config) {
         const Config c = ConfigOf(config);
-        py::gil_scoped_release release;
-        return DesignAndVerify(c);
+        return Interruptibly([&c](ProgressReporter* progress) { return DesignAndVerify(c, progress); });
       },
-      py::arg("config"), "the verified design of a config (a dict, or the path of its JSON file), as tbridge design");
+      py::arg("config"),
+      "the verified design of a config (a dict, or the path of its JSON file), as tbridge design; Ctrl-C stops it "
+      "(KeyboardInterrupt)");
   m.def(
       "load_design", [](const std::string& path) { return ReadDesign(ReadJsonFile(path)); }, py::arg("path"),
       "a design file written by tbridge design or check, read as tbridge check reads it");
   m.def(
       "check",
       [](const Design& design) {
-        Design out = design;
-        py::gil_scoped_release release;
-        CheckAgain(out);
-        return out;
+        return Interruptibly([&design](ProgressReporter* progress) {
+          Design out = design;
+          CheckAgain(out, progress);
+          return out;
+        });
       },
-      py::arg("design"), "the design with its checks run again, as tbridge check");
+      py::arg("design"), "the design with its checks run again, as tbridge check; Ctrl-C stops it (KeyboardInterrupt)");
   m.def(
       "export",
       [](const Design& design, const std::string& format, bool rigid_bars, int modes) {
@@ -271,6 +328,42 @@ PYBIND11_MODULE(tbridge, m) {
       },
       py::arg("config"),
       "the dynamic run of a config's \"dynamics\" section, as tbridge simulate; Ctrl-C stops it (KeyboardInterrupt)");
+  py::class_<SweepResult>(m, "Sweep", "The rows of a sweep and its choice, as tbridge sweep writes them.")
+      .def_readonly("rows", &SweepResult::rows, "one dict per candidate of the run, as sweep.json's \"rows\"")
+      .def_readonly("choice", &SweepResult::choice,
+                    "sweep.json's \"choice\" (the lightest feasible candidate and what decided it); None for a shard")
+      .def("to_json", [](const SweepResult& s) { return s.json_text; }, "the sweep.json tbridge sweep writes")
+      .def("to_csv", [](const SweepResult& s) { return s.csv_text; }, "the sweep.csv tbridge sweep writes");
+
+  m.def(
+      "sweep",
+      [](const py::object& config, std::optional<int> threads, std::optional<std::string> shard_text) {
+        const SweepSpec spec = py::isinstance<py::dict>(config)
+                                   ? ParseSweepSpec(nlohmann::json::parse(
+                                         py::module_::import("json").attr("dumps")(config).cast<std::string>()))
+                                   : LoadSweepSpec(py::str(py::module_::import("os").attr("fspath")(config)));
+        SweepRunOptions options;
+        options.threads = threads ? *threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        if (options.threads < 1) throw ConfigError("threads", std::to_string(options.threads), "a whole number >= 1");
+        std::optional<Shard> shard;
+        if (shard_text) shard = ParseShard(*shard_text, "shard");
+        if (shard) options.shard = *shard;
+        const std::vector<CandidateRow> rows = Interruptibly([&](ProgressReporter* progress) {
+          options.on_progress = [progress](int done, int total) { progress->Update(done, total); };
+          return RunSweep(spec, options);
+        });
+        SweepResult out;
+        out.json_text = SweepJson(spec, rows, shard);
+        out.csv_text = SweepCsv(rows);
+        const py::dict parsed = py::module_::import("json").attr("loads")(out.json_text);
+        out.rows = parsed["rows"];
+        out.choice = parsed["choice"];
+        return out;
+      },
+      py::arg("config"), py::arg("threads") = py::none(), py::arg("shard") = py::none(),
+      "the sweep of a config's \"sweep\" grid (a dict, or the path of its JSON file), as tbridge sweep: `threads` "
+      "workers (None: the number of cores), `shard` \"i/N\" for the candidates with index % N == i - 1 (no "
+      "choice then). Ctrl-C stops it once the candidate in the calling thread is done (KeyboardInterrupt)");
   m.def(
       "modes",
       [](const py::object& config_or_design, int count) {

@@ -78,6 +78,9 @@ SweepSpec ParseSweepSpec(const nlohmann::json& root) {
     base["bridge"]["n"] = spec.sweep.n.empty() ? 1 : spec.sweep.n.front();
   }
   spec.base = ParseConfig(base);
+  if (spec.base.structure) {
+    throw ConfigError("structure", "(custom scene)", "a sweep designs bridges: give a \"bridge\" section instead");
+  }
   CheckSweepRules(spec.sweep, spec.base.bridge);
   return spec;
 }

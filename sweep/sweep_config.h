@@ -97,7 +97,7 @@ struct SweepSpec {
 
 // Strict parse. bridge.n may be omitted (the grid sets it). Throws ConfigError naming the key
 // path, the value and what is allowed: unknown keys, empty or repeated grid values, values out
-// of range, a "dynamics" section, p > 1 with planes = 2.
+// of range, a "dynamics" section, a "structure" section (a custom scene), p > 1 with planes = 2.
 SweepSpec ParseSweepSpec(const nlohmann::json& root);
 SweepSpec LoadSweepSpec(const std::string& path);
 // Checks a spec built in code as ParseSweepSpec checks a file: Validate(base), every sweep key

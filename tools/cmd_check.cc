@@ -1,4 +1,4 @@
-// `tbridge check DESIGN.json -o OUT.json [--quiet]`: the checks of a written design run again
+// `tbridge check DESIGN.json -o OUT.json [--quiet] [--progress]`: the checks of a written design run again
 // on the design as written: the nonlinear static solve of every case and the dynamic runs.
 
 #include <iostream>
@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/json_reader.h"
+#include "core/progress.h"
 #include "design/design_reader.h"
 #include "design/design_report.h"
 #include "tools/commands.h"
@@ -21,6 +22,7 @@ const CommandSpec& CheckSpec() {
       "check",
       {"DESIGN.json"},
       {{{"-o", "--output"}, "OUT.json", "where to write the checked design, a JSON file", true},
+       ProgressOption(),
        {{"-q", "--quiet"}, "", "do not print the summary", false}},
       "Reads DESIGN.json, a design written by tbridge design, and checks it as written: every\n"
       "load case solved as a nonlinear static problem (deflections, reactions, member forces,\n"
@@ -48,7 +50,9 @@ int RunCheckCommand(const std::vector<std::string>& args) {
   OutputTransaction outputs;
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
-  CheckAgain(design);
+  ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
+  CheckAgain(design, &progress);
+  progress.Finish();
   WriteDesignJson(design, json);
   outputs.Commit();
   if (!parsed.Flag("-q")) std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";

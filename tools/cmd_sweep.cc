@@ -82,9 +82,6 @@ int RunSweepCommand(const std::vector<std::string>& args) {
   std::optional<Shard> shard;
   if (const auto text = parsed.Value("--shard")) shard = ParseShard(*text, "--shard");
   const SweepSpec sweep = LoadSweepSpec(parsed.positionals[0]);
-  if (sweep.base.structure) {
-    throw ConfigError("structure", "(custom scene)", "a sweep designs bridges: give a \"bridge\" section instead");
-  }
   const std::string fingerprint = SweepFingerprint(sweep);
 
   SweepRunOptions options;

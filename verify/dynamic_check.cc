@@ -92,13 +92,16 @@ bool WithinBudget(double members, double max_member_steps, const char* why_dt, L
 // from the linearised one) is tried at a quarter of the step, twice. Fills the record's run
 // fields, or its note when skipped or failed.
 bool Run(const DynamicModel& model, double stable_dt, double members, double max_member_steps, LoadRun& run,
-         SimulationSummary& summary) {
+         SimulationSummary& summary, ProgressReporter* progress) {
   DynamicRun& r = run.record;
   if (run.scenario.dt > stable_dt) run.scenario.dt /= std::ceil(run.scenario.dt / stable_dt);
   for (int attempt = 0;; ++attempt) {
     if (!WithinBudget(members, max_member_steps, "", run)) return false;
     try {
-      summary = Simulate(model, run.scenario).summary;
+      RunHooks hooks;
+      hooks.progress = progress;
+      if (progress != nullptr) progress->Stage("dynamic check: " + run.record.name);
+      summary = Simulate(model, run.scenario, {}, hooks).summary;
       break;
     } catch (const ModelError& e) {
       if (attempt == 2) {
@@ -150,7 +153,7 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const Lo
 
 }  // namespace
 
-DynamicCheck CheckDynamics(const Design& d, double max_member_steps) {
+DynamicCheck CheckDynamics(const Design& d, double max_member_steps, ProgressReporter* progress) {
   DynamicCheck out;
   out.done = true;
   const Structure& s = d.topology.structure;
@@ -187,7 +190,7 @@ DynamicCheck CheckDynamics(const Design& d, double max_member_steps) {
   const double stable_dt = Rk4StableStep(model, runs.front().scenario);
   for (LoadRun& run : runs) {
     SimulationSummary summary;
-    if (run.record.note.empty() && Run(model, stable_dt, members, max_member_steps, run, summary)) {
+    if (run.record.note.empty() && Run(model, stable_dt, members, max_member_steps, run, summary, progress)) {
       const std::string label = "dynamic: " + run.record.name;
       const Eigen::VectorXd static_peak = StaticPeaks(d, model, run);
       std::map<std::string, GroupAmplification> groups;

@@ -21,6 +21,7 @@
 // station, or the full wind) for the dynamic amplification.
 #pragma once
 
+#include "core/progress.h"
 #include "design/design.h"
 
 namespace tbridge {
@@ -30,7 +31,10 @@ namespace tbridge {
 // when it would take more than `max_member_steps` member-steps: the check is then not run
 // (CheckStatus::kNotRun). A run over that at its asked step is skipped before anything is
 // built for it (no dynamic model, no static counterpart). With no dynamic load among the cases it is done with no run.
-// Changes nothing in `design`.
-DynamicCheck CheckDynamics(const Design& design, double max_member_steps = 5e7);
+// Changes nothing in `design`. `progress` (optional) is told each run's simulated time against
+// its duration, as stage "dynamic check: <run>".
+inline constexpr double kMaxMemberSteps = 5e7;
+DynamicCheck CheckDynamics(const Design& design, double max_member_steps = kMaxMemberSteps,
+                           ProgressReporter* progress = nullptr);
 
 }  // namespace tbridge

@@ -122,7 +122,8 @@ std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector
 
 }  // namespace
 
-StaticCheck CheckStatics(const Design& d) {
+StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
+  if (progress != nullptr) progress->Stage("static check");
   const Structure& s = d.topology.structure;
   const StaticModel model = StaticModelOf(d);
   const int nb = s.num_bars();
@@ -153,16 +154,23 @@ StaticCheck CheckStatics(const Design& d) {
     selected = SelectStations(d, families, *tangent, start, d.config.loads.station_margin);
   }
 
+  // The stations solved per case (-1: a case that does not travel), counted for the progress.
+  std::vector<std::vector<int>> stations_of(d.cases.size(), std::vector<int>{-1});
+  int solves = 0;
   for (size_t c = 0; c < d.cases.size(); ++c) {
-    const LoadCase& lc = d.cases[c];
-    std::vector<int> at{-1};
     if (family_of[c] >= 0) {
-      at.clear();
+      stations_of[c].clear();
       for (int k = 0; k < out.stations; ++k) {
-        if (selected[family_of[c]][k]) at.push_back(k);
+        if (selected[family_of[c]][k]) stations_of[c].push_back(k);
       }
     }
-    for (int station : at) {
+    solves += static_cast<int>(stations_of[c].size());
+  }
+
+  for (size_t c = 0; c < d.cases.size(); ++c) {
+    const LoadCase& lc = d.cases[c];
+    for (int station : stations_of[c]) {
+      if (progress != nullptr) progress->Update(out.nonlinear_solves, solves);
       CaseResponse r;
       r.case_index = static_cast<int>(c);
       r.station = station;

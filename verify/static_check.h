@@ -10,6 +10,7 @@
 
 #include "design/design.h"
 #include "design/verification.h"
+#include "core/progress.h"
 #include "statics/static_solve.h"
 
 namespace tbridge {
@@ -22,6 +23,8 @@ namespace tbridge {
 // per family), then nonlinearly where the linear pass comes within loads.station_margin of
 // the largest it found (of a member's utilisation, of the deflection) or of the limit 1
 // (core/config_fields.h says why the default margin holds). Changes nothing in `design`.
-StaticCheck CheckStatics(const Design& design);
+// `progress` (optional) is told the nonlinear solves done against their number, as stage
+// "static check".
+StaticCheck CheckStatics(const Design& design, ProgressReporter* progress = nullptr);
 
 }  // namespace tbridge

@@ -33,7 +33,7 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
   d.comfort = std::move(comfort);
 }
 
-void CheckAgain(Design& design) {
+void CheckAgain(Design& design, ProgressReporter* progress) {
   for (auto* list : {&design.bars, &design.strings}) {
     for (MemberSizing& m : *list) {
       m.utilisation = 0;
@@ -41,7 +41,10 @@ void CheckAgain(Design& design) {
       m.governing_case.clear();
     }
   }
-  RecordChecks(design, CheckStatics(design), CheckDynamics(design), CheckComfort(design));
+  const StaticCheck statics = CheckStatics(design, progress);
+  const DynamicCheck dynamics = CheckDynamics(design, kMaxMemberSteps, progress);
+  if (progress != nullptr) progress->Stage("comfort check");
+  RecordChecks(design, statics, dynamics, CheckComfort(design));
 }
 
 namespace {
@@ -156,7 +159,8 @@ struct Sized {
   DynamicCheck dynamics;
 };
 Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorrections& corrections,
-                   const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x) {
+                   const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x,
+                   ProgressReporter* progress) {
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
   x = x.cwiseMax(lo);
@@ -164,6 +168,7 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   options.tolerance = 1e-8;
   options.max_iterations = config.design.max_iterations;
   Sized out;
+  if (progress != nullptr) progress->Stage("optimisation");
   out.outcome = SolveSizing(current, corrections, solver, options, problem, x);
   Design& d = out.design;
   d = SizedDesign(config, problem.Areas(x), problem.Alpha(x));
@@ -171,8 +176,9 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   d.solver_form = "verified sizing";
   RequireStable(d);
   RecordSizing(d, problem, x, problem.Areas(lo));
-  out.statics = CheckStatics(d);
-  out.dynamics = CheckDynamics(d);
+  out.statics = CheckStatics(d, progress);
+  out.dynamics = CheckDynamics(d, kMaxMemberSteps, progress);
+  if (progress != nullptr) progress->Stage("comfort check");
   RecordChecks(d, out.statics, out.dynamics, CheckComfort(d));
   return out;
 }
@@ -300,11 +306,12 @@ MassAttribution Attribution(const Design& current, const SizingCorrections& corr
 // either way `record` says what the second start found.
 void SecondStart(const Config& config, const Design& current, const SizingCorrections& corrections,
                  const std::string& solver, const SizingProblem& problem, const FirstSizes& first, Design& best,
-                 Resizing& record) {
+                 Resizing& record, ProgressReporter* progress) {
+  if (progress != nullptr) progress->SetStagePrefix("second start: ");
   std::vector<double> doubled = first.areas;
   for (double& a : doubled) a *= 2;
   Eigen::VectorXd x = problem.VariablesOf(doubled, first.alpha);
-  Sized other = SizeAndCheck(config, current, corrections, solver, problem, x);
+  Sized other = SizeAndCheck(config, current, corrections, solver, problem, x, progress);
   const Verdict verdict = SizingVerdict(other.design);
   const double mass = other.design.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
@@ -325,9 +332,11 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
 }
 
 // A design checked as it is, with no sizing: the paper's, or one the sizing cannot take.
-Design CheckedAsDesigned(Design d, Resizing record) {
+Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) {
   RequireStable(d);
-  RecordChecks(d, CheckStatics(d), CheckDynamics(d), CheckComfort(d));
+  const StaticCheck statics = CheckStatics(d, progress);
+  const DynamicCheck dynamics = CheckDynamics(d, kMaxMemberSteps, progress);
+  RecordChecks(d, statics, dynamics, CheckComfort(d));
   record.iterations = 1;
   record.structure_mass_kg.push_back(d.mass.structure);
   const Verdict verdict = DesignVerdict(d);
@@ -347,7 +356,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
   // nothing. A build without an iterative solver checks the first design as it is, and so
   // does a bridge with more self-stress states than the sizing takes as variables (the 3D
   // bridge from n = 4), saying so.
-  if (KeepsPaperSwitches(config) || solver.empty()) return CheckedAsDesigned(RunDesign(config, progress), record);
+  if (KeepsPaperSwitches(config) || solver.empty()) return CheckedAsDesigned(RunDesign(config, progress), record, progress);
   bool relaxed = false;
   const Design first = FirstDesign(config, progress, &relaxed);
   if (first.self_stress_states > SizingProblem::kMaxStates) {
@@ -355,7 +364,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     d.notes.push_back("design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
                       " self-stress states as variables and this bridge has " +
                       std::to_string(first.self_stress_states) + ": its equilibrium design is checked as it is");
-    return CheckedAsDesigned(std::move(d), record);
+    return CheckedAsDesigned(std::move(d), record, progress);
   }
   // The first design's sizes: the start, the second start's base and the premium's reference.
   const FirstSizes first_sizes{MemberAreas(first), PrestressCoefficients(first)};
@@ -371,7 +380,11 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     // The sizing about the current design's weight, from the current sizes and prestress.
     const SizingProblem problem(current, corrections);
     Eigen::VectorXd x = problem.VariablesOf(areas, alpha);
-    Sized sized = SizeAndCheck(config, current, corrections, solver, problem, x);
+    if (progress != nullptr) {
+      progress->SetStagePrefix("sizing " + std::to_string(record.iterations) + " (of at most " +
+                               std::to_string(max_iterations) + "): ");
+    }
+    Sized sized = SizeAndCheck(config, current, corrections, solver, problem, x, progress);
     const SolverOutcome& outcome = sized.outcome;
     const StaticCheck& statics = sized.statics;
     const DynamicCheck& dynamics = sized.dynamics;
@@ -394,7 +407,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
     const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
                       verdict.outcome == VerdictOutcome::kIncomplete;
     if (settled || last) {
-      if (best) SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record);
+      if (best) SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record, progress);
       Design out = best ? *best : d;
       record.converged = settled;
       if (!settled) {
@@ -405,6 +418,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max
         record.why = why.str();
       }
       out.resizing = record;
+      if (progress != nullptr) progress->SetStagePrefix("");
       return out;
     }
     record.changes.push_back(Correct(corrections, problem, x, d, statics, dynamics, verdict.pass));

@@ -28,7 +28,8 @@ void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics, Co
 
 // `tbridge check`: the checks run again on a design as given (read from its file), nothing
 // resized. The utilisations the design carried are dropped first: they become the checks' own.
-void CheckAgain(Design& design);
+// `progress` (optional) follows the checks, stage by stage.
+void CheckAgain(Design& design, ProgressReporter* progress = nullptr);
 
 // The last design, with its static check and its `resizing` record.
 Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 15);

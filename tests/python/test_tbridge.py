@@ -166,10 +166,66 @@ def test_ctrl_c_stops_a_long_run():
     config["dynamics"]["duration"] = 1000.0  # 1e8 steps: hours, were it not stopped
     config["dynamics"]["record"]["every"] = 1000
     config["dynamics"]["frequency"]["enabled"] = False
-    timer = threading.Timer(1.0, _thread.interrupt_main)  # as Ctrl-C does
+    assert seconds_to_interrupt(tbridge.simulate, config) < 30
+
+
+def seconds_to_interrupt(work, *args):
+    """Runs work(*args) with Ctrl-C after 1 s (as a terminal sends it); returns how long it ran."""
+    timer = threading.Timer(1.0, _thread.interrupt_main)
     start = time.monotonic()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        tbridge.simulate(config)
+        work(*args)
     timer.join()
-    assert time.monotonic() - start < 30
+    return time.monotonic() - start
+
+
+def test_ctrl_c_stops_a_design():
+    # The default at n = 5 takes tens of seconds; the design polls Python's signals at every
+    # progress report (each sizing's stages, each static solve, every 1024 steps of a run), so
+    # it stops within a second or two of Ctrl-C. 30 s: far below the design's own time, far
+    # above a poll's interval on a loaded machine.
+    with open(DEFAULT) as f:
+        config = json.load(f)
+    config["bridge"]["n"] = 5
+    assert seconds_to_interrupt(tbridge.design, config) < 30
+
+
+SWEEP = {
+    "bridge": {"beta_deg": 10},
+    "design": {"yield_safety_factor": 10, "buckling_safety_factor": 1, "self_weight": False, "bar_resistance": "euler"},
+    "loads": {"cases": ["paper"]},
+    "sweep": {"n": [1, 2], "beta_deg": [10, 20], "verified": False, "joint_mass": {"per_node_kg": 2.0},
+              "report": {"first_frequency": True},
+              # No travelling-load run: the constraints read from it are off.
+              "constraints": {"min_first_frequency_rad_s": 10, "no_slack_under_service": False,
+                              "bar_capacity_during_motion": False}},
+}
+
+
+def test_sweep_is_tbridge_sweep_and_shards_partition_it(tmp_path):
+    path = tmp_path / "sweep.json"
+    path.write_text(json.dumps(SWEEP))
+    code, err = cli("sweep", str(path), "-q", "-j", "2", "-o", str(tmp_path / "out"))
+    assert code == 0, err
+    whole = tbridge.sweep(SWEEP, threads=2)
+    assert whole.to_json() == (tmp_path / "out" / "sweep.json").read_text()
+    assert whole.to_csv() == (tmp_path / "out" / "sweep.csv").read_text()
+    cli_json = json.loads(whole.to_json())
+    assert whole.rows == cli_json["rows"] and whole.choice == cli_json["choice"]
+    assert whole.choice["found"]
+    # --shard semantics: shard i of N holds the candidates with index % N == i - 1, no choice.
+    first, second = tbridge.sweep(str(path), threads=1, shard="1/2"), tbridge.sweep(SWEEP, shard="2/2")
+    assert first.choice is None and second.choice is None
+    assert [r["index"] for r in first.rows] == [0, 2] and [r["index"] for r in second.rows] == [1, 3]
+    merged = sorted(first.rows + second.rows, key=lambda r: r["index"])
+    assert merged == whole.rows
+
+
+def test_bad_sweep_input_raises_with_the_key_named():
+    with pytest.raises(tbridge.ConfigError, match="shard"):
+        tbridge.sweep(SWEEP, shard="3/2")
+    bad = json.loads(json.dumps(SWEEP))
+    bad["sweep"]["n"] = []
+    with pytest.raises(tbridge.ConfigError, match="sweep.n"):
+        tbridge.sweep(bad)
