@@ -3,6 +3,7 @@
 // model; the verdict it enters; the paper's switches; bad input.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -111,6 +112,56 @@ TEST_CASE("comfort enters the verdict: a failing footbridge FAILS, naming comfor
   // Not run where asked for: INCOMPLETE, naming it.
   d.comfort = ComfortCheck{};
   CHECK(DesignVerdict(d).summary.find("comfort check not run") != std::string::npos);
+}
+
+TEST_CASE("the 3D bridge: lateral and torsional modes checked, lateral lock-in by the critical number",
+          "[comfort][verify]") {
+  // The 3D bridge of two planes at n = 1 with the engineering defaults: its first mode sways
+  // the deck sideways (2.46 Hz with the crowd, under EN 1990's 2.5 Hz trigger), its third
+  // twists it.
+  Config config;
+  config.bridge.n = 1;
+  config.bridge.planes = 2;
+  const Design d = DesignAndVerify(config);
+  const ComfortCheck& check = d.comfort;
+  REQUIRE(check.done);
+  CHECK_FALSE(check.planar);
+  std::map<std::string, int> seen;
+  const double xi = check.damping_ratio;
+  for (const ComfortMode& m : check.modes) {
+    ++seen[m.direction];
+    if (m.direction != "lateral") continue;
+    // Sétra's critical number (Arup's Millennium Bridge measurements, k = 300 N s/m):
+    // N_L = 8 pi xi f M* / k, typed here from the closed form with the report's own frequency
+    // and modal mass; 1e-12 relative: the same five products.
+    CHECK(m.lock_in_pedestrians ==
+          Approx(8 * std::numbers::pi * xi * m.frequency_hz * m.modal_mass_kg / 300).epsilon(1e-12));
+    CHECK(m.frequency_hz < config.comfort.horizontal_trigger_hz);
+  }
+  CHECK(seen["lateral"] >= 1);
+  // The torsional mode near the vertical one (4.75 Hz) is above the 2.5 Hz trigger for
+  // torsion, so it is not among the modes that must be checked.
+  CHECK(seen["torsional"] == 0);
+
+  // Lock-in on this bridge: its lateral mode moved into range 1 (0.9 Hz, as a softer deck
+  // would have it) with a modal mass M*. The crowd (check.pedestrians) locks in once it reaches
+  // N_L: a light deck (M* = 2 t: N_L = 0.6) fails whatever its acceleration, a heavy one
+  // (M* = 200 t: N_L = 60) does not lock in, and then passes or fails by acceleration alone.
+  ComfortMode sway;
+  sway.direction = "lateral";
+  sway.load_weight_m2 = 0;  // no crowd force: only lock-in can fail it
+  for (const double modal_mass_kg : {2e3, 2e5}) {
+    sway.modal_mass_kg = modal_mass_kg;
+    RespondAt(sway, check, d, 0.9, 0.95);
+    const double n_l = 8 * std::numbers::pi * xi * 0.9 * modal_mass_kg / 300;
+    INFO("M* = " << modal_mass_kg << " kg: N_L = " << n_l << ", crowd " << check.pedestrians);
+    CHECK(sway.range == 1);
+    CHECK(sway.lock_in_pedestrians == Approx(n_l).epsilon(1e-12));
+    CHECK(sway.acceleration_m_s2 == 0.0);
+    CHECK(sway.pass == (check.pedestrians < n_l));
+  }
+  CHECK(check.pedestrians > 8 * std::numbers::pi * xi * 0.9 * 2e3 / 300);  // the light deck does lock in
+  CHECK(check.pedestrians < 8 * std::numbers::pi * xi * 0.9 * 2e5 / 300);  // the heavy one does not
 }
 
 TEST_CASE("the verified sizing designs to comfort, and says which mode governs", "[comfort][verify]") {
