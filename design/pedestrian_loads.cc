@@ -23,11 +23,15 @@ struct Trapezoid {
   }
 };
 
-// Sétra Stage 4, the figures of psi: vertical and longitudinal, first and second harmonic;
-// the lateral ones at half the pace (HiVoSS 4.5.1 draws the same).
+// Sétra Stage 4, the figures of psi of load cases 1-2 (first harmonic) and 3 (second): 1 over
+// the first harmonic's range 1 of Stage 3 and falling to 0 across its range 2; the second
+// harmonic's at twice those frequencies, over range 3. HiVoSS 4.5.1 draws narrower ones
+// (vertical 1.25, [1.7, 2.1], 2.3 Hz; lateral 0.5, [0.7, 1.0], 1.2 Hz; no lateral second
+// harmonic): with Sétra's ranges and load cases they would leave modes in range 2 unloaded,
+// so the tool takes Sétra's throughout.
 Trapezoid PsiShape(LoadAxis axis, int harmonic) {
-  if (axis == LoadAxis::kLateral) return harmonic == 1 ? Trapezoid{0.5, 0.7, 1.0, 1.2} : Trapezoid{1.25, 1.7, 2.1, 2.3};
-  return harmonic == 1 ? Trapezoid{1.25, 1.7, 2.1, 2.3} : Trapezoid{2.5, 3.4, 4.2, 4.6};
+  if (axis == LoadAxis::kLateral) return harmonic == 1 ? Trapezoid{0.3, 0.5, 1.1, 1.3} : Trapezoid{1.3, 1.7, 2.1, 2.5};
+  return harmonic == 1 ? Trapezoid{1.0, 1.7, 2.1, 2.6} : Trapezoid{2.6, 3.4, 4.2, 5.0};
 }
 
 // Sétra Stage 3, the tables of frequency ranges [Hz]: range 1 [r1_lo, r1_hi]; range 2 down to
@@ -83,7 +87,8 @@ double PsiOver(LoadAxis axis, int harmonic, double f_lo, double f_hi) {
 }
 
 double PedestrianForceN(LoadAxis axis, int harmonic) {
-  // Sétra Stage 4, load cases 1 and 2 (first harmonic) and 3 (second harmonic).
+  // Sétra Stage 4, load cases 1 and 2 (first harmonic) and 3 (second harmonic). HiVoSS 4.5.1
+  // has the same first harmonic; its second is psi's plateau 0.25 on 280 N, Sétra's 70 N.
   switch (axis) {
     case LoadAxis::kVertical:
       return harmonic == 1 ? 280.0 : 70.0;

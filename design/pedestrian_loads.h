@@ -2,8 +2,9 @@
 // - Sétra, "Footbridges: assessment of vibrational behaviour of footbridges under pedestrian
 //   loading", technical guide, 2006 (its Stages 1-4: class, comfort level, frequency ranges,
 //   dynamic load cases);
-// - HiVoSS, "Design of Footbridges" guideline (RFS2-CT-2007-00033, 2008), where it differs
-//   (steps 3-6 of its section 4);
+// - HiVoSS, "Design of Footbridges" guideline (RFS2-CT-2007-00033, 2008), for what Sétra
+//   leaves out (the traffic classes TC1-TC5 of its step 3, the damping of its step 4,
+//   lock-in in its step 6), and named where it differs;
 // - EN 1990 Annex A2, A2.4.3.2 (the triggers and limits, config keys `comfort.*`).
 // Plain functions of frequencies and densities: no model, no dynamics.
 #pragma once
@@ -33,16 +34,19 @@ int RiskRange(LoadAxis axis, double f_hz);
 int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi);
 
 // Sétra Stage 4: psi(f), the factor on the harmonic load for the chance that the pedestrians'
-// pace meets f (a trapezoid: 0 outside, rising linearly to 1, 1 on its plateau). Vertical and
-// longitudinal, first harmonic: 0 up to 1.25 Hz, 1 over [1.7, 2.1], 0 from 2.3 Hz; second
-// harmonic: 2.5, [3.4, 4.2], 4.6 Hz. Lateral (half the pace): first harmonic 0.5, [0.7, 1.0],
-// 1.2 Hz; second: 1.25, [1.7, 2.1], 2.3 Hz. `harmonic` is 1 or 2.
+// pace meets f (a trapezoid: 0 outside, rising linearly to 1, 1 on its plateau: 1 over range 1
+// of Stage 3, falling to 0 across range 2). Vertical and longitudinal, first harmonic: 0 up to
+// 1 Hz, 1 over [1.7, 2.1], 0 from 2.6 Hz; second harmonic: 2.6, [3.4, 4.2], 5 Hz. Lateral
+// (half the pace): first harmonic 0.3, [0.5, 1.1], 1.3 Hz; second: 1.3, [1.7, 2.1], 2.5 Hz.
+// HiVoSS 4.5.1's narrower trapezoids are not used (pedestrian_loads.cc says why). `harmonic`
+// is 1 or 2.
 double Psi(LoadAxis axis, int harmonic, double f_hz);
 // Its largest value over [f_lo, f_hi].
 double PsiOver(LoadAxis axis, int harmonic, double f_lo, double f_hi);
 
-// Sétra Stage 4 (HiVoSS 4.5.1): one pedestrian's harmonic force amplitude [N]. First harmonic:
-// 280 vertical, 140 longitudinal, 35 lateral; second (load case 3): 70, 35, 7.
+// Sétra Stage 4: one pedestrian's harmonic force amplitude [N]. First harmonic (load cases 1
+// and 2; HiVoSS 4.5.1 the same): 280 vertical, 140 longitudinal, 35 lateral; second (load
+// case 3): 70, 35, 7.
 double PedestrianForceN(LoadAxis axis, int harmonic);
 
 // Sétra Stage 4 (HiVoSS 4.5.1): the number of pedestrians in step and in phase that stand for

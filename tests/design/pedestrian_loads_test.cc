@@ -8,30 +8,44 @@
 namespace tbridge {
 
 TEST_CASE("psi(f) at the corners of Sétra's figures, and half-way up each flank", "[comfort]") {
-  // The corners are the guide's own numbers: exact (0 and 1). Half-way along a flank the
-  // trapezoid is 1/2; 1e-12 allows for the division.
+  // The corners are the guide's own numbers (Sétra 2006, Stage 4, the figures of psi for load
+  // cases 1 and 3): exact (0 and 1). Half-way along a flank the trapezoid is 1/2; 1e-12
+  // allows for the division. Each plateau is Stage 3's range 1 (of the harmonic), each flank
+  // its range 2: psi is 1 wherever the risk is greatest.
   for (const LoadAxis axis : {LoadAxis::kVertical, LoadAxis::kLongitudinal}) {
-    CHECK(Psi(axis, 1, 1.25) == 0.0);
+    CHECK(Psi(axis, 1, 1.0) == 0.0);
     CHECK(Psi(axis, 1, 1.7) == 1.0);
     CHECK(Psi(axis, 1, 1.9) == 1.0);
     CHECK(Psi(axis, 1, 2.1) == 1.0);
-    CHECK(Psi(axis, 1, 2.3) == 0.0);
-    CHECK(Psi(axis, 1, 1.475) == Approx(0.5).margin(1e-12));
-    CHECK(Psi(axis, 1, 2.2) == Approx(0.5).margin(1e-12));
+    CHECK(Psi(axis, 1, 2.6) == 0.0);
+    CHECK(Psi(axis, 1, 1.35) == Approx(0.5).margin(1e-12));
+    CHECK(Psi(axis, 1, 2.35) == Approx(0.5).margin(1e-12));
     CHECK(Psi(axis, 1, 3.0) == 0.0);
-    CHECK(Psi(axis, 2, 2.5) == 0.0);
+    CHECK(Psi(axis, 2, 2.6) == 0.0);
     CHECK(Psi(axis, 2, 3.4) == 1.0);
     CHECK(Psi(axis, 2, 4.2) == 1.0);
-    CHECK(Psi(axis, 2, 4.6) == 0.0);
-    CHECK(Psi(axis, 2, 2.95) == Approx(0.5).margin(1e-12));
-    CHECK(Psi(axis, 2, 4.4) == Approx(0.5).margin(1e-12));
+    CHECK(Psi(axis, 2, 5.0) == 0.0);
+    CHECK(Psi(axis, 2, 3.0) == Approx(0.5).margin(1e-12));
+    CHECK(Psi(axis, 2, 4.6) == Approx(0.5).margin(1e-12));
   }
-  CHECK(Psi(LoadAxis::kLateral, 1, 0.5) == 0.0);
-  CHECK(Psi(LoadAxis::kLateral, 1, 0.7) == 1.0);
-  CHECK(Psi(LoadAxis::kLateral, 1, 1.0) == 1.0);
-  CHECK(Psi(LoadAxis::kLateral, 1, 1.2) == 0.0);
-  CHECK(Psi(LoadAxis::kLateral, 1, 0.6) == Approx(0.5).margin(1e-12));
+  CHECK(Psi(LoadAxis::kLateral, 1, 0.3) == 0.0);
+  CHECK(Psi(LoadAxis::kLateral, 1, 0.5) == 1.0);
+  CHECK(Psi(LoadAxis::kLateral, 1, 1.1) == 1.0);
+  CHECK(Psi(LoadAxis::kLateral, 1, 1.3) == 0.0);
+  CHECK(Psi(LoadAxis::kLateral, 1, 0.4) == Approx(0.5).margin(1e-12));
+  CHECK(Psi(LoadAxis::kLateral, 1, 1.2) == Approx(0.5).margin(1e-12));
+  CHECK(Psi(LoadAxis::kLateral, 2, 1.3) == 0.0);
   CHECK(Psi(LoadAxis::kLateral, 2, 1.9) == 1.0);
+  CHECK(Psi(LoadAxis::kLateral, 2, 2.3) == Approx(0.5).margin(1e-12));
+  CHECK(Psi(LoadAxis::kLateral, 2, 2.5) == 0.0);
+  // psi is 1 over all of range 1 and above 0 inside range 2 (Stage 3's table), per axis.
+  for (const LoadAxis axis : {LoadAxis::kVertical, LoadAxis::kLateral}) {
+    for (double f = 0.05; f < 6.0; f += 0.01) {
+      const int range = RiskRange(axis, f);
+      if (range == 1) CHECK(Psi(axis, 1, f) == 1.0);
+      if (range == 2) CHECK(Psi(axis, 1, f) > 0.0);
+    }
+  }
   // The largest over a band: the plateau when the band crosses it, else the higher end.
   CHECK(PsiOver(LoadAxis::kVertical, 1, 1.5, 2.5) == 1.0);
   CHECK(PsiOver(LoadAxis::kVertical, 2, 2.6, 3.05) == Approx(Psi(LoadAxis::kVertical, 2, 3.05)).margin(1e-15));
