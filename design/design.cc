@@ -312,13 +312,23 @@ void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& ru
     const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
     const double u_yield = cap.yield > 0 ? largest / cap.yield : 0.0;
     const double u_buckling = cap.buckling > 0 ? largest / cap.buckling : 0.0;
-    m.utilisation = std::max(u_yield, u_buckling);
-    m.mode = u_buckling > u_yield ? "buckling" : "yield";
-    if (smallest < 0) m.mode = "tension", m.utilisation = std::max(m.utilisation, 1.0 + (-smallest) / std::max(largest, 1.0));
+    if (u_buckling > u_yield) {
+      Govern(m, largest, cap.buckling, "buckling");
+    } else {
+      Govern(m, largest, cap.yield, "yield");
+    }
+    // A bar pulled in some case (the paper's designs; the minimum-mass program keeps bars in
+    // compression): at least 1, the tension over the largest compression above it.
+    if (smallest < 0) {
+      const double scale = std::max(largest, 1.0), tension = 1.0 + (-smallest) / scale;
+      if (tension > m.utilisation) {
+        Govern(m, scale - smallest, scale, "tension");
+      } else {
+        m.mode = "tension";
+      }
+    }
   } else {
-    m.utilisation = m.area > 0 ? largest / (m.area * sigma_w) : 0.0;
-    m.mode = "yield";
-    if (smallest < 0) m.mode = "slack";
+    Govern(m, largest, m.area * sigma_w, smallest < 0 ? "slack" : "yield");
   }
 }
 

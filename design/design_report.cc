@@ -1,6 +1,7 @@
 #include "design/design_report.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdarg>
@@ -35,7 +36,9 @@ json Units() {
       {"mass_attribution", {{"by_constraint_kg", "kg"}, {"premium_by_constraint_kg", "kg"}, {"structure_kg", "kg"},
                             {"stationarity_residual", "1"}, {"active_rows", "1"}}},
       {"members", {{"binding", {{"multiplier", "as its unit says"}}}, {"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"}, {"force_min", "N"},
-                   {"reference_force", "N"}, {"utilisation", "1"},
+                   {"reference_force", "N"}, {"utilisation", "1 (demand / resistance)"},
+                   {"demand", "N (for mode slack: the strain measure, 1)"},
+                   {"resistance", "N (for mode slack: the working strain, 1)"},
                    {"force_density", "N/m"}, {"area", "m^2"}, {"radius", "m"},
                    {"mass", "kg"}, {"rest_length", "m"}, {"stiffness", "N/m"},
                    {"stress", "Pa"}}},
@@ -47,6 +50,7 @@ json Units() {
       {"stability", {{"negative_pivots", "1"}, {"zero_pivots", "1"}, {"free_dofs", "1"}, {"reduced_dofs", "1"},
                      {"min_pivot", "N/m"}, {"critical_load_factor", "1"}}},
       {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}},
+      {"reaction_envelope", {{"supports", {{"node", "1 (1-based node number)"}, {"x", "N"}, {"y", "N"}, {"z", "N"}}}}},
       {"deflection_max", {{"deflection", "m"}, {"limit", "m"}, {"node", "1 (1-based node number)"}}},
       {"utilisation_max", "1"},
       {"self_weight_iterations", "1"},
@@ -133,7 +137,29 @@ json AttributionJson(const Design& d) {
           {"active_rows", a.active_rows}};
 }
 
-void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology_member, const MemberBinding* binding) {
+// The rule a member's governing check applies, by its mode: EN 1993-1-1's resistances of a
+// steel member in tension (6.2.3) or compression (6.2.4) and its flexural buckling (6.3.1, the
+// column curve) or the paper's Euler load; the dynamic check compares a run's demand with the
+// same resistances; "slack" is the tool's serviceability rule that the deck chain (and the 3D
+// bridge's transverse strings) stay taut (README: "The slack measure").
+std::string ClauseOf(const MemberSizing& m, const Config& config) {
+  const bool bar = m.kind == MemberKind::kBar;
+  const bool euler = config.design.bar_resistance == "euler";
+  const std::string& mode = m.mode;
+  if (mode == "slack" || mode == "taut" || mode == "reference_taut") return "taut under service (tbridge)";
+  if (mode == "tension") return "bar in tension (tbridge)";
+  if (mode == "deflection") return "EN 1990 A2.4.1 (deflection), stiffness";
+  if (mode == "buckling") return euler ? "Euler load (paper eq. 46)" : "EN 1993-1-1 6.3.1";
+  if (mode == "yield") return bar ? "EN 1993-1-1 6.2.4" : "EN 1993-1-1 6.2.3";
+  if (mode == "dynamic") {
+    if (!bar) return "EN 1993-1-1 6.2.3 at the run's peak";
+    return euler ? "Euler load at the run's peak" : "EN 1993-1-1 6.2.4/6.3.1 at the run's peak";
+  }
+  return "";
+}
+
+void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology_member, const MemberBinding* binding,
+                 const Config& config) {
   // Keys in the alphabetical order a JSON library writes them in.
   auto number = [&os](const char* key, double v) {
     os << ", \"" << key << "\": ";
@@ -159,6 +185,8 @@ void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology
   } else {
     os << ", \"binding\": null";
   }
+  text("clause", ClauseOf(m, config));
+  number("demand", m.demand);
   number("force", m.force);
   number("force_density", m.force_density);
   number("force_min", m.force_min);
@@ -172,6 +200,7 @@ void WriteMember(std::ostream& os, const MemberSizing& m, const Member& topology
   os << ", \"nodes\": [" << m.i + 1 << ", " << m.j + 1 << "]";
   number("radius", m.radius);
   number("reference_force", m.reference_force);
+  number("resistance", m.resistance);
   number("rest_length", m.rest_length);
   // A bar is rigid in the model: it has no axial stiffness to report.
   number("stiffness", m.kind == MemberKind::kBar ? std::numeric_limits<double>::quiet_NaN() : m.stiffness);
@@ -197,6 +226,57 @@ json StabilityJson(const StabilityVerdict& v) {
 
 // One entry per case and fixed node: {case, node (1-based), force [x, y, z]}; first the
 // reference state's, then each statically solved case's.
+// What a support reaction holds: the members' forces on the support node and the loads applied
+// at the node itself (its share of the members' weight and of the deck), so that the reactions
+// and every applied load sum to zero.
+constexpr const char* kReactionsInclude =
+    "the members' forces on the support and the loads applied at the support node itself (its share of the "
+    "members' weight and of the deck): with them every applied load sums to zero";
+
+// Per support: the largest and smallest of each component over the converged ultimate cases of
+// the static check, each with its case.
+struct ReactionExtreme {
+  double max = -std::numeric_limits<double>::infinity(), min = std::numeric_limits<double>::infinity();
+  std::string max_case, min_case;
+};
+std::vector<std::array<ReactionExtreme, 3>> ReactionEnvelope(const Design& d, std::vector<int>& supports) {
+  const Structure& s = d.topology.structure;
+  supports.clear();
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (s.fixed[v]) supports.push_back(v);
+  }
+  std::vector<std::array<ReactionExtreme, 3>> out(supports.size());
+  for (const CaseResponse& c : d.statics.cases) {
+    if (!c.converged || d.cases[c.case_index].state != LimitState::kUltimate) continue;
+    for (size_t k = 0; k < supports.size(); ++k) {
+      for (int a = 0; a < 3; ++a) {
+        const double r = c.reactions(a, supports[k]) + 0.0;
+        ReactionExtreme& e = out[k][a];
+        if (r > e.max) e.max = r, e.max_case = c.label;
+        if (r < e.min) e.min = r, e.min_case = c.label;
+      }
+    }
+  }
+  return out;
+}
+
+json ReactionEnvelopeJson(const Design& d) {
+  std::vector<int> supports;
+  const auto envelope = ReactionEnvelope(d, supports);
+  json list = json::array();
+  for (size_t k = 0; k < supports.size(); ++k) {
+    json node = {{"node", supports[k] + 1}};
+    const char* axes[] = {"x", "y", "z"};
+    for (int a = 0; a < 3; ++a) {
+      const ReactionExtreme& e = envelope[k][a];
+      if (e.max_case.empty()) continue;
+      node[axes[a]] = {{"max", e.max}, {"max_case", e.max_case}, {"min", e.min}, {"min_case", e.min_case}};
+    }
+    list.push_back(node);
+  }
+  return {{"over", "the ultimate cases of the static check"}, {"includes", kReactionsInclude}, {"supports", list}};
+}
+
 json ReactionsJson(const Design& d) {
   const Structure& s = d.topology.structure;
   json out = json::array();
@@ -236,13 +316,17 @@ json CasesJson(const Design& d) {
   return out;
 }
 
+// A group's largest force in the run over its largest in the static counterpart (0 when that
+// is 0): the group's figure, beside `amplification`, the largest ratio of one of its members.
+double PeakRatio(const GroupAmplification& g) { return g.static_peak > 0 ? g.dynamic_peak / g.static_peak : 0.0; }
+
 json DynamicsJson(const Design& d) {
   json runs = json::array();
   for (const DynamicRun& r : d.dynamics.runs) {
     json groups = json::array();
     for (const GroupAmplification& g : r.groups) {
       groups.push_back({{"group", g.group}, {"static_peak", g.static_peak}, {"dynamic_peak", g.dynamic_peak},
-                        {"amplification", g.amplification}});
+                        {"peak_ratio", PeakRatio(g)}, {"amplification", g.amplification}});
     }
     runs.push_back({{"name", r.name}, {"load", r.load}, {"done", r.done}, {"note", r.note},
                     {"integrator", r.integrator}, {"dt", r.dt}, {"steps", r.steps}, {"duration", r.duration},
@@ -350,12 +434,12 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   const char* separator = "\n    ";
   for (size_t b = 0; b < d.bars.size(); ++b) {
     os << separator;
-    WriteMember(os, d.bars[b], s.bars[b], BindingOf(d, b));
+    WriteMember(os, d.bars[b], s.bars[b], BindingOf(d, b), d.config);
     separator = ",\n    ";
   }
   for (size_t k = 0; k < d.strings.size(); ++k) {
     os << separator;
-    WriteMember(os, d.strings[k], s.strings[k], BindingOf(d, d.bars.size() + k));
+    WriteMember(os, d.strings[k], s.strings[k], BindingOf(d, d.bars.size() + k), d.config);
     separator = ",\n    ";
   }
   os << "\n  ],\n  \"nodes\": [";
@@ -369,6 +453,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
     separator = "],\n    [";
   }
   os << (s.num_nodes() ? "]\n  ],\n" : "\n  ],\n");
+  field("reaction_envelope", ReactionEnvelopeJson(d));
   field("reactions", ReactionsJson(d));
   field("resizing", {{"iterations", d.resizing.iterations},
                      {"converged", d.resizing.converged},
@@ -440,6 +525,22 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   }
   line(reactions.size() < 400 ? "support reactions [N], reference state:" + reactions
                               : "support reactions: in the JSON output");
+  if (d.statics.done) {
+    std::vector<int> supports;
+    const auto envelope = ReactionEnvelope(d, supports);
+    line("support reactions [N], envelope over the ultimate cases (each holds " + std::string(kReactionsInclude) + "):");
+    for (size_t k = 0; k < supports.size() && k < 8; ++k) {
+      std::string text;
+      const char* axes[] = {"H (x)", "V (y)", "z"};
+      for (int a = 0; a < d.topology.structure.dim(); ++a) {
+        const ReactionExtreme& e = envelope[k][a];
+        if (e.max_case.empty()) continue;
+        text += Format("%s %s %.6g (%s) to %.6g (%s)", text.empty() ? "" : ";", axes[a], e.min, e.min_case.c_str(),
+                       e.max, e.max_case.c_str());
+      }
+      line(Format("  node %d:%s", supports[k] + 1, text.c_str()));
+    }
+  }
   line(Format("load cases: %zu (%s)%s", d.cases.size(), d.config.design.self_weight ? "self-weight in G" : "no self-weight",
               d.self_weight_iterations > 1 ? Format(", self-weight fixed point in %d sizings", d.self_weight_iterations).c_str()
                                            : ""));
@@ -485,9 +586,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
       continue;
     }
     std::string amp;
-    for (const GroupAmplification& g : r.groups) amp += Format(" %s %.3g", g.group.c_str(), g.amplification);
-    line(Format("dynamic check, %s (%s): %s at dt = %.3g s, %ld steps; peak deck displacement %.4g m; dynamic "
-                "amplification per group:%s",
+    for (const GroupAmplification& g : r.groups) {
+      amp += Format("%s %s %.3g (%.3g)", amp.empty() ? "" : ",", g.group.c_str(), PeakRatio(g), g.amplification);
+    }
+    line(Format("dynamic check, %s (%s): %s at dt = %.3g s, %ld steps; peak deck displacement %.4g m; per group, "
+                "peak force over its static peak (largest member's ratio):%s",
                 r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps, r.peak_deck_displacement,
                 amp.c_str()));
   }
@@ -496,9 +599,12 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   line("scope: " + verdict.scope);
   line("");
 
-  line("members (force: tension for strings, compression for bars):");
-  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %-11s %6s  %s", "name", "type", "s [m]", "force [N]", "r [mm]",
-              "L0 [m]", "k_s [N/m]", "m [kg]", "governed by", "util.", "governing case (mode)"));
+  line("members (force: the largest over the ultimate cases, tension for strings, compression for bars; "
+       "util. = demand / resist., the governing demand, static or dynamic, against its resistance; for mode slack "
+       "the strain measure against the working strain):");
+  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %-11s %11s %11s %6s  %s", "name", "type", "s [m]", "force [N]",
+              "r [mm]", "L0 [m]", "k_s [N/m]", "m [kg]", "governed by", "demand [N]", "resist. [N]", "util.",
+              "governing case (mode; clause)"));
   std::vector<const MemberSizing*> rows;
   for (const MemberSizing& m : d.bars) rows.push_back(&m);
   for (const MemberSizing& m : d.strings) rows.push_back(&m);
@@ -506,10 +612,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   for (size_t k = 0; k < shown; ++k) {
     const MemberSizing& m = *rows[k];
     const bool bar = m.kind == MemberKind::kBar;
-    line(Format("  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %-11s %6.3f  %s (%s)", m.name.c_str(),
-                KindName(m.kind), m.length, m.force, m.radius * 1e3, bar ? "-" : Format("%.4f", m.rest_length).c_str(),
-                bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, m.governed_by.c_str(), m.utilisation,
-                m.governing_case.c_str(), m.mode.c_str()));
+    line(Format("  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %-11s %11.6g %11.6g %6.3f  %s (%s; %s)",
+                m.name.c_str(), KindName(m.kind), m.length, m.force, m.radius * 1e3,
+                bar ? "-" : Format("%.4f", m.rest_length).c_str(), bar ? "-" : Format("%.4e", m.stiffness).c_str(),
+                m.mass, m.governed_by.c_str(), m.demand, m.resistance, m.utilisation, m.governing_case.c_str(),
+                m.mode.c_str(), ClauseOf(m, d.config).c_str()));
   }
   if (shown < rows.size()) {
     line(Format("  ... %zu more members omitted (all are in the JSON output)",

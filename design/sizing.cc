@@ -73,11 +73,18 @@ MemberSizing SizeString(double length, double tension, double reference_tension,
   return s;
 }
 
-void RaiseUtilisation(MemberSizing& m, double u, const std::string& governing_case, const char* mode) {
-  if (u <= m.utilisation) return;
-  m.utilisation = u;
-  m.governing_case = governing_case;
+void Govern(MemberSizing& m, double demand, double resistance, const char* mode) {
+  m.demand = demand;
+  m.resistance = resistance;
+  m.utilisation = resistance > 0 ? demand / resistance : 0.0;
   m.mode = mode;
+}
+
+void RaiseUtilisation(MemberSizing& m, double demand, double resistance, const std::string& governing_case,
+                      const char* mode) {
+  if (!(resistance > 0) || demand / resistance <= m.utilisation) return;
+  Govern(m, demand, resistance, mode);
+  m.governing_case = governing_case;
 }
 
 

@@ -29,6 +29,12 @@ struct MemberSizing {
   double reference_force = 0;
   double force_min = 0;       // smallest force over every case [N]; < 0: slack or in tension
   double utilisation = 0;     // largest force / resistance over every case (and the dynamic check)
+  // What `utilisation` compares: demand / resistance. The governing force [N] (a static case's,
+  // or a run's dynamic demand) and the resistance it is held against [N] (A sigma_w; a bar's
+  // yield or column-curve buckling resistance); for mode "slack" the strain measure
+  // (working strain - strain) and the working strain sigma_w / E instead.
+  double demand = 0;
+  double resistance = 0;
   std::string governing_case; // the case of that largest utilisation
   std::string mode;           // "yield" | "buckling" | "slack" | "tension" | "dynamic"
 };
@@ -48,8 +54,12 @@ struct BarRule {
   double imperfection = 0.49;  // alpha of the column curve
 };
 
-// Raises m's utilisation to `u` when that is larger, naming where (`governing_case`) and how.
-void RaiseUtilisation(MemberSizing& m, double u, const std::string& governing_case, const char* mode);
+// Sets m's utilisation to demand / resistance (0 for a resistance of 0), with both and `mode`.
+void Govern(MemberSizing& m, double demand, double resistance, const char* mode);
+// Raises m's utilisation to demand / resistance when that is larger, naming where
+// (`governing_case`) and how.
+void RaiseUtilisation(MemberSizing& m, double demand, double resistance, const std::string& governing_case,
+                      const char* mode);
 
 // chi(lambda) of EN 1993-1-1 eq 6.49: Phi = 0.5 [1 + alpha (lambda - 0.2) + lambda^2],
 // chi = 1 / (Phi + sqrt(Phi^2 - lambda^2)), at most 1.

@@ -54,6 +54,9 @@ struct StaticCheck {
   bool done = false;
   // Per member [bars; strings]: what the nonlinear ultimate and serviceability cases demand.
   std::vector<MemberFinding> members;
+  // Per member: its largest force over the ultimate cases, and its smallest over every case
+  // (bars: compression, strings: tension; a slack string 0) [N].
+  std::vector<double> force_max, force_min;
   std::vector<CaseResponse> cases;
   double deflection_limit_m = 0;  // span / loads.deflection_limit
   double deflection_max_m = 0;    // over the serviceability cases

@@ -135,6 +135,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   StaticCheck out;
   out.done = true;
   out.members.resize(d.bars.size() + d.strings.size());
+  out.force_max.assign(out.members.size(), 0.0);
+  out.force_min.assign(out.members.size(), std::numeric_limits<double>::infinity());
   out.deflection_limit_m = d.config.bridge.span / d.config.loads.deflection_limit;
   out.stations = static_cast<int>(d.actions.station_nodes.size());
 
@@ -189,6 +191,13 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
         if (dy > r.deflection_m) r.deflection_m = dy, r.deflection_node = v;
       }
       out.all_converged = out.all_converged && r.converged;
+      if (r.converged) {
+        for (int j = 0; j < nb + static_cast<int>(d.strings.size()); ++j) {
+          const double force = j < nb ? result.state.bar_compression[j] : result.state.string_tension[j - nb];
+          out.force_min[j] = std::min(out.force_min[j], force);
+          if (lc.state == LimitState::kUltimate) out.force_max[j] = std::max(out.force_max[j], force);
+        }
+      }
       if (r.converged && lc.state == LimitState::kUltimate) {
         for (int b = 0; b < nb; ++b) {
           const MemberSizing& m = d.bars[b];
@@ -217,6 +226,9 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
       }
       out.cases.push_back(std::move(r));
     }
+  }
+  for (double& f : out.force_min) {
+    if (std::isinf(f)) f = 0;  // no case converged
   }
   return out;
 }

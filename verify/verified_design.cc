@@ -21,11 +21,22 @@ namespace tbridge {
 
 void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, ComfortCheck comfort) {
   const int nb = static_cast<int>(d.bars.size());
+  // Each member's force is what the nonlinear static check found: its largest over the
+  // ultimate cases and its smallest over every case (design and check alike).
+  if (statics.done && statics.force_max.size() == d.bars.size() + d.strings.size()) {
+    for (size_t j = 0; j < statics.force_max.size(); ++j) {
+      MemberSizing& m = static_cast<int>(j) < nb ? d.bars[j] : d.strings[j - nb];
+      m.force = statics.force_max[j];
+      m.force_min = statics.force_min[j];
+      m.force_density = m.force / m.length;
+      m.stress = m.area > 0 ? m.force / m.area : 0.0;
+    }
+  }
   for (const std::vector<MemberFinding>* found : {&statics.members, &dynamics.members}) {
     for (int j = 0; j < static_cast<int>(found->size()); ++j) {
       const MemberFinding& f = (*found)[j];
       MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
-      if (f.utilisation > 0) RaiseUtilisation(m, f.utilisation, f.governing_case, f.mode.c_str());
+      if (f.utilisation > 0) RaiseUtilisation(m, f.demand, f.resistance, f.governing_case, f.mode.c_str());
     }
   }
   d.statics = std::move(statics);
@@ -36,7 +47,7 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
 void CheckAgain(Design& design, ProgressReporter* progress) {
   for (auto* list : {&design.bars, &design.strings}) {
     for (MemberSizing& m : *list) {
-      m.utilisation = 0;
+      m.utilisation = m.demand = m.resistance = 0;
       m.mode.clear();
       m.governing_case.clear();
     }
@@ -72,8 +83,7 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
     if (dm.row >= 0) {
       const SizingRow& row = problem.rows()[dm.row];
       m.force = std::max(dm.demand, 0.0);
-      m.utilisation = std::max(dm.utilisation, 0.0);
-      m.mode = SizingRowKindName(row.kind);
+      Govern(m, std::max(dm.demand, 0.0), dm.resistance, SizingRowKindName(row.kind));
       m.governing_case = problem.combinations()[row.combination].label;
     }
     // What sizes it: its floor (within the solver's tolerance), its own strength where that
