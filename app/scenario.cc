@@ -41,4 +41,14 @@ ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks,
                      KeepsPaperSwitches(config) ? std::function<Design(const Config&)>{} : verified);
 }
 
+ScenarioResult RunDesignScenario(const Design& design, const RunHooks& hooks,
+                                 const std::function<void(const Design&)>& on_design) {
+  if (!design.config.dynamics) {
+    throw ConfigError("config.dynamics", "(missing)",
+                      "a design file simulated needs a \"dynamics\" section in its config (configs/README.md): "
+                      "add one there, or to the config it was designed from");
+  }
+  return RunScenario(design.config, hooks, on_design, [&design](const Config&) { return design; });
+}
+
 }  // namespace tbridge

@@ -455,7 +455,9 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   os << (s.num_nodes() ? "]\n  ],\n" : "\n  ],\n");
   field("reaction_envelope", ReactionEnvelopeJson(d));
   field("reactions", ReactionsJson(d));
-  field("resizing", {{"iterations", d.resizing.iterations},
+  // A design read from its file (tbridge check) was not sized here: no record, rather than
+  // one that reads "not converged".
+  field("resizing", d.solver_form == kReadFromFile ? json(nullptr) : json{{"iterations", d.resizing.iterations},
                      {"converged", d.resizing.converged},
                      {"tolerance", d.resizing.tolerance},
                      {"structure_mass_kg", d.resizing.structure_mass_kg},

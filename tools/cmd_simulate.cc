@@ -1,6 +1,7 @@
-// `tbridge simulate CONFIG.json -o OUTDIR [--vtk DIR] [--quiet] [--progress] [--strict]`: a
+// `tbridge simulate CONFIG.json|DESIGN.json -o OUTDIR [--vtk DIR] [--quiet] [--progress] [--strict]`: a
 // dynamic scenario (the config's "dynamics" section) of the designed bridge or of the config's
-// custom "structure". Writes OUTDIR/summary.json and, when nodes are recorded and
+// custom "structure", or of a written design file (its config's "dynamics" section, the
+// design as written or, edited, as built). Writes OUTDIR/summary.json and, when nodes are recorded and
 // record.csv is on, OUTDIR/history.csv, plus the VTK series with --vtk: all in one
 // OutputTransaction, so a failed run changes nothing and a successful one removes its own
 // stale files (an old history.csv, surplus run_<k>.vtp).
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -16,7 +18,9 @@
 
 #include "core/config.h"
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "core/progress.h"
+#include "design/design_reader.h"
 #include "design/plausibility.h"
 #include "dynamics/model.h"
 #include "app/scenario.h"
@@ -34,14 +38,17 @@ namespace {
 const CommandSpec& SimulateSpec() {
   static const CommandSpec spec{
       "simulate",
-      {"CONFIG.json"},
+      {"CONFIG.json|DESIGN.json"},
       {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
        {{"-q", "--quiet"}, "", "do not print the summary", false},
        {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.pvd + run_<k>.vtp)", false},
        ProgressOption(),
        StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
-      "model and runs the scenario of its \"dynamics\" section (keys in configs/README.md). Writes OUTDIR/summary.json (the resolved\n"
+      "model and runs the scenario of its \"dynamics\" section (keys in configs/README.md). Given\n"
+      "DESIGN.json, a file written by tbridge design or check, it runs the \"dynamics\" section of\n"
+      "the design's own config on that design as written (edited members: as built, as tbridge\n"
+      "check reads them). Writes OUTDIR/summary.json (the resolved\n"
       "config, frequency, stresses, slack events, bar-length error, energy balance) and\n"
       "OUTDIR/history.csv (t, then x, y[, z] of every recorded node). A run that fails\n"
       "changes nothing on disk; a successful run replaces its own files in OUTDIR (and DIR) and\n"
@@ -132,7 +139,11 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string out_dir = parsed.Required("-o");
-  const Config config = LoadConfig(parsed.positionals[0]);
+  // A design file (written by tbridge design or check: config, nodes and members) or a config.
+  const nlohmann::json input = ReadJsonFile(parsed.positionals[0]);
+  std::optional<Design> written;
+  if (input.is_object() && input.contains("members") && input.contains("config")) written = ReadDesign(input);
+  const Config config = written ? written->config : ParseConfig(input);
   const auto vtk_dir = parsed.Value("--vtk");
   const bool csv = config.dynamics && config.dynamics->record.csv && !config.dynamics->record.nodes.empty();
 
@@ -185,7 +196,8 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     warnings = PlausibilityWarnings(design);
     if (parsed.Flag("--strict")) ReportWarnings(warnings, true);
   };
-  const ScenarioResult scenario = RunSimulateScenario(config, hooks, check_design);
+  const ScenarioResult scenario =
+      written ? RunDesignScenario(*written, hooks, check_design) : RunSimulateScenario(config, hooks, check_design);
   if (background) background->Finish();
   if (csv_history) csv_history->Flush();
   progress.Finish();
