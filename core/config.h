@@ -49,6 +49,7 @@ struct DesignConfig {
   // paper's A >= 2 l sqrt(SF C / (pi E)) with SF = buckling_safety_factor.
   std::string bar_resistance = "column_curve";
   double imperfection_factor = 0.49;     // alpha of the column curve (curve c: solid sections)
+  int max_sizings = 15;                  // the verified sizing's designs at most (outer iterations)
 };
 
 // The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each
@@ -67,6 +68,10 @@ struct LoadsConfig {
   double travelling_speed_m_s = 1.5;       // v [m/s]: walking pace
   double wind_n_per_m = 1200.0;            // transverse line load on the deck [N/m] (3D)
   double wind_rise_s = 1.0;                // the dynamic check's gust rises over this [s]
+  double dynamic_dt_s = 1e-4;              // the step the dynamic check's runs ask for [s]
+  // A run of more member-steps (steps x members) is not done: the dynamic check is then not
+  // run, and the design INCOMPLETE.
+  double dynamic_max_member_steps = 5e7;
   double gamma_g_sup = 1.35;               // unfavourable permanent
   double gamma_g_inf = 1.0;                // favourable permanent
   double gamma_q = 1.5;                    // payload and travelling load

@@ -169,6 +169,12 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
   v.Number(KeyInfo{"imperfection_factor", "–",
                    "alpha of the column curve: 0.49 (curve c, solid sections), 0.34 (b), 0.21 (a), 0.76 (d)"},
            d.imperfection_factor, Range::Closed(0.0, 2.0));
+  v.Integer(KeyInfo{"max_sizings", "–",
+                    "the verified sizing's designs at most (its outer iterations: a sizing, then the checks, then "
+                    "the corrections). It stops earlier when two passing designs are within 5e-4 of each other's "
+                    "mass; at the limit it keeps the lightest design that passed and says it did not converge "
+                    "(`resizing.converged` false)"},
+            d.max_sizings, 1, 1000);
 }
 
 template <class L, class V>
@@ -228,6 +234,17 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "at the deck nodes and does not see it. 300 is a common limit for a deck plate between "
                    "supports"},
            l.deck_sag_limit, Range{0.0, 1e6, true, false});
+  v.Number(KeyInfo{"dynamic_dt_s", "s",
+                   "the step the dynamic check's runs ask for (RK4). Each run takes it, or the largest whole "
+                   "fraction of it within 0.9 of RK4's stability limit for the bridge, and a quarter of that where "
+                   "a run still blows up"},
+           l.dynamic_dt_s, Range{0.0, 1.0, false, true});
+  v.Number(KeyInfo{"dynamic_max_member_steps", "–",
+                   "the largest run the dynamic check does, in member-steps (RK4 steps x members). A run over it "
+                   "is not done, saying so: the dynamic check is then not run and the design is INCOMPLETE, "
+                   "never PASS. The default takes the default bridge's walking load (80 000 steps) up to about "
+                   "600 members"},
+           l.dynamic_max_member_steps, Range::Positive());
   v.Number(KeyInfo{"station_margin", "–",
                    "which deck stations of a travelling family the static check solves nonlinearly. 1: every "
                    "station. Below 1, every station is first solved linearly about the reference state (one "

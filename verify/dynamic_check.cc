@@ -56,20 +56,20 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
     const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
     runs.push_back(MakeRun("paper_travelling",
                            Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
-                           PaperTravellingScenario(d, paper_duration, 1e-4, IntegratorKind::kRk4, d.deck.station_load),
+                           PaperTravellingScenario(d, paper_duration, l.dynamic_dt_s, IntegratorKind::kRk4, d.deck.station_load),
                            d.deck.station_load, gamma_g_q));
   }
   if (asked("travelling") && l.travelling_load_n > 0) {
     runs.push_back(MakeRun("moving_load",
                            Describe("Q_t = ", l.travelling_load_n, " N") +
                                Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
-                           MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, 1e-4),
+                           MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s),
                            l.travelling_load_n, gamma_g_q));
   }
   if (asked("wind") && d.topology.planes == 2 && l.wind_n_per_m > 0) {
     runs.push_back(MakeRun("wind_gust",
                            Describe("W = ", l.wind_n_per_m, " N/m") + Describe(" rising over ", l.wind_rise_s, " s, then held"),
-                           WindGustScenario(d, l.wind_rise_s, 1e-4), 0.0, l.gamma_w));
+                           WindGustScenario(d, l.wind_rise_s, l.dynamic_dt_s), 0.0, l.gamma_w));
   }
   return runs;
 }
@@ -153,7 +153,8 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const Lo
 
 }  // namespace
 
-DynamicCheck CheckDynamics(const Design& d, double max_member_steps, ProgressReporter* progress) {
+DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, ProgressReporter* progress) {
+  const double max_member_steps = max_steps ? *max_steps : d.config.loads.dynamic_max_member_steps;
   DynamicCheck out;
   out.done = true;
   const Structure& s = d.topology.structure;

@@ -6,7 +6,7 @@
 //   "paper_travelling" case: f on each inner deck station for 0.25 s;
 // - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
 // - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
-// RK4 at 1e-4 s, or at the largest whole fraction of it within 0.9 of RK4's stability limit:
+// RK4 at loads.dynamic_dt_s (1e-4 s), or at the largest whole fraction of it within 0.9 of RK4's stability limit:
 // SDIRK3 under-reports the string peaks by up to 22 % (BENCHMARKS.md), so the check does not
 // use it.
 //
@@ -21,6 +21,8 @@
 // station, or the full wind) for the dynamic amplification.
 #pragma once
 
+#include <optional>
+
 #include "core/progress.h"
 #include "design/design.h"
 
@@ -33,8 +35,8 @@ namespace tbridge {
 // built for it (no dynamic model, no static counterpart). With no dynamic load among the cases it is done with no run.
 // Changes nothing in `design`. `progress` (optional) is told each run's simulated time against
 // its duration, as stage "dynamic check: <run>".
-inline constexpr double kMaxMemberSteps = 5e7;
-DynamicCheck CheckDynamics(const Design& design, double max_member_steps = kMaxMemberSteps,
+// `max_member_steps`: loads.dynamic_max_member_steps of the design's config where not given.
+DynamicCheck CheckDynamics(const Design& design, std::optional<double> max_member_steps = std::nullopt,
                            ProgressReporter* progress = nullptr);
 
 }  // namespace tbridge

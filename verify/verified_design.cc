@@ -53,7 +53,7 @@ void CheckAgain(Design& design, ProgressReporter* progress) {
     }
   }
   const StaticCheck statics = CheckStatics(design, progress);
-  const DynamicCheck dynamics = CheckDynamics(design, kMaxMemberSteps, progress);
+  const DynamicCheck dynamics = CheckDynamics(design, std::nullopt, progress);
   if (progress != nullptr) progress->Stage("comfort check");
   RecordChecks(design, statics, dynamics, CheckComfort(design));
 }
@@ -187,7 +187,7 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   RequireStable(d);
   RecordSizing(d, problem, x, problem.Areas(lo));
   out.statics = CheckStatics(d, progress);
-  out.dynamics = CheckDynamics(d, kMaxMemberSteps, progress);
+  out.dynamics = CheckDynamics(d, std::nullopt, progress);
   if (progress != nullptr) progress->Stage("comfort check");
   RecordChecks(d, out.statics, out.dynamics, CheckComfort(d));
   return out;
@@ -345,7 +345,7 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
 Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) {
   RequireStable(d);
   const StaticCheck statics = CheckStatics(d, progress);
-  const DynamicCheck dynamics = CheckDynamics(d, kMaxMemberSteps, progress);
+  const DynamicCheck dynamics = CheckDynamics(d, std::nullopt, progress);
   RecordChecks(d, statics, dynamics, CheckComfort(d));
   record.iterations = 1;
   record.structure_mass_kg.push_back(d.mass.structure);
@@ -358,7 +358,8 @@ Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) 
 
 }  // namespace
 
-Design DesignAndVerify(const Config& config, ProgressReporter* progress, int max_iterations) {
+Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
+  const int max_iterations = config.design.max_sizings;
   const std::string solver = SizingSolver(config);
   Resizing record;
   record.tolerance = kSettled;

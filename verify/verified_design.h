@@ -7,7 +7,7 @@
 // that fails in yield grows by its utilisation, one that buckles by its square root (Euler's
 // load grows with A^2); a slack string that must stay taut (MustStayTaut) or a deflection
 // past its limit stiffens every string by the deflection's excess (at least 10 %). Floors only rise, so no member shrinks while it
-// fails. The loop ends when the verdict passes or after `max_iterations`, saying why not.
+// fails. The loop ends when the verdict passes or after `design.max_sizings` designs, saying why not.
 // With the paper's switches (loads.cases ["paper"]) the design is the paper's: it is checked
 // and reported, not resized.
 #pragma once
@@ -32,6 +32,7 @@ void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics, Co
 void CheckAgain(Design& design, ProgressReporter* progress = nullptr);
 
 // The last design, with its static check and its `resizing` record.
-Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr, int max_iterations = 15);
+// At most config.design.max_sizings sizings.
+Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr);
 
 }  // namespace tbridge
