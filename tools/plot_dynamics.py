@@ -8,9 +8,12 @@
       view per time, side by side (the paper's Figures 8 and 10), with the deck nodes'
       displacement in mm noted.
   plot_dynamics.py deck OUTDIR -o FIG.png [--axis y|x|z]
-      Displacement histories of the deck nodes (free nodes with y = 0) along an axis (the
-      paper's Figure 6 for y, Figures 9 and 11 for the 3D runs). Dashed vertical lines mark
-      the times at which a timed load (dynamics.loads) switches on or off.
+      Displacement histories of the deck nodes along an axis, from the run's starting
+      positions (the paper's Figure 6 for y, Figures 9 and 11 for the 3D runs). Dashed
+      vertical lines mark the times at which a timed load (dynamics.loads) switches on or off.
+
+The deck nodes of a designed bridge are the free ends of its deck strings (group "deck" in
+summary.json's model.members.strings); those of a custom scene are its structure.deck_nodes.
 
 Record every free node (dynamics.record.nodes) to draw snapshots. Uses Debian's matplotlib
 (/usr/bin/python3).
@@ -67,6 +70,22 @@ def is_3d(members):
     return any(abs(p[2]) > 1e-12 for p in members["positions"])
 
 
+def deck_nodes(summary):
+    """The free deck nodes (1-based, ascending) as the run's output names them.
+
+    summary.json lists no deck nodes of its own, and the starting positions cannot show them:
+    a run of an engineering config starts from the loaded equilibrium, where the deck has
+    sagged below y = 0. The deck strings can: they join the supports and the deck nodes and
+    nothing else, so their free ends are the deck. A custom scene has no deck strings; its
+    config names its deck (structure.deck_nodes), echoed in the summary."""
+    members = summary["model"]["members"]
+    fixed = set(members["fixed"])
+    structure = summary["config"].get("structure")
+    if structure is not None:
+        return sorted(v for v in structure.get("deck_nodes", []) if v not in fixed)
+    return sorted({v for s in members["strings"] if s.get("group") == "deck" for v in s["nodes"]} - fixed)
+
+
 def snapshots_3d(args, summary, header, data, times):
     """One oblique 3D view per time: x along the span, z across, y up."""
     from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (registers the projection)
@@ -98,7 +117,7 @@ def snapshots_3d(args, summary, header, data, times):
         for v in members["fixed"]:
             p = base[v - 1]
             ax.plot([p[0]], [p[2]], [p[1]], "k^", ms=6)
-        deck = [v for v, p in enumerate(base) if abs(p[1]) < 1e-12 and v + 1 not in members["fixed"]]
+        deck = [v - 1 for v in deck_nodes(summary)]
         peak = max((math.dist(real[v], base[v]) for v in deck), default=0.0)
         ax.set_title(f"t = {row[0]:.4f} s   x{args.scale:g}\nlargest deck displacement {1e3 * peak:.3f} mm"
                      + (f", {slack} slack" if slack else ""), fontsize=9)
@@ -106,7 +125,9 @@ def snapshots_3d(args, summary, header, data, times):
         ax.set_ylabel("z [m]")
         ax.set_zlabel("y [m]")
         xs = [p[0] for p in base]
-        zs = sorted({round(p[2], 9) for p in base})
+        # The planes' z to the mm: a run from the loaded equilibrium starts them off z = 0 and
+        # z = width by a fraction of a micrometre, which would give each node its own tick.
+        zs = sorted({round(p[2], 3) + 0.0 for p in base})
         ax.set_yticks(zs)
         ax.set_box_aspect((max(xs) - min(xs), 4.0, 3.0))
         ax.view_init(elev=18, azim=-60)
@@ -162,15 +183,20 @@ def deck(args):
     base = members["positions"]
     axis = "xyz".index(args.axis)
     cols = columns(header)
-    nodes = [v + 1 for v, p in enumerate(base)
-             if abs(p[1]) < 1e-12 and v + 1 not in members["fixed"] and (v + 1, axis) in cols]
+    deck = deck_nodes(summary)
+    if not deck:
+        sys.exit("plot_dynamics: the run has no deck nodes (no deck strings; a scene sets structure.deck_nodes)")
+    nodes = [v for v in deck if (v, axis) in cols]
     if not nodes:
-        sys.exit("plot_dynamics: no deck node (free, y = 0) was recorded")
+        sys.exit(f"plot_dynamics: no deck node was recorded (deck nodes {deck}; set dynamics.record.nodes)")
     fig, ax = plt.subplots(figsize=(9, 3.6))
     t = [r[0] for r in data]
+    # The 3D bridge's second plane dashed: the nodes beyond the middle of the z range (a
+    # loaded start may have moved the planes off z = 0 and z = width by a little).
+    z_mid = 0.5 * (min(p[2] for p in base) + max(p[2] for p in base))
     for v in nodes:
         k = cols[(v, axis)]
-        plane_b = base[v - 1][2] > 1e-12  # the 3D bridge's second plane: dashed
+        plane_b = is_3d(members) and base[v - 1][2] > z_mid
         ax.plot(t, [1e3 * (r[k] - base[v - 1][axis]) for r in data], "--" if plane_b else "-",
                 lw=1.0, label=f"node {v}")
     duration = summary["config"]["dynamics"]["duration"]
