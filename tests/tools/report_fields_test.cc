@@ -18,11 +18,7 @@
 namespace {
 
 using nlohmann::json;
-namespace fs = std::filesystem;
-using tbridge::test::FreshDir;
-using tbridge::test::Quote;
-using tbridge::test::ReadText;
-using tbridge::test::RunTbridge;
+using namespace tbridge::test;  // FreshDir, Quote, ReadText, RunTbridge, Snapshot; fs
 
 // Every member: utilisation = demand / resistance, to 1e-9 relative (two doubles written in
 // their shortest exact form and one division: a few ulps), and a rule named where it governs.

@@ -15,11 +15,7 @@
 namespace {
 
 using nlohmann::json;
-namespace fs = std::filesystem;
-using tbridge::test::FreshDir;
-using tbridge::test::Quote;
-using tbridge::test::ReadText;
-using tbridge::test::RunTbridge;
+using namespace tbridge::test;  // FreshDir, Quote, ReadText, RunTbridge, Snapshot; fs
 
 json Summary(const fs::path& dir) {
   json s = json::parse(ReadText(dir / "summary.json"));
@@ -73,9 +69,9 @@ TEST_CASE("simulate: a design file runs as the config it was designed from, and 
   json plain = json::parse(ReadText(design));
   plain["config"].erase("dynamics");
   std::ofstream(dir / "plain.json") << plain.dump(2);
-  const auto before = tbridge::test::Snapshot(dir / "a");
+  const auto before = Snapshot(dir / "a");
   const auto d = RunTbridge(dir, "simulate " + Quote((dir / "plain.json").string()) + " -q -o " + Quote((dir / "a").string()));
   CHECK(d.code == 2);
   CHECK_THAT(d.err, Catch::Contains("config.dynamics"));
-  CHECK(tbridge::test::Snapshot(dir / "a") == before);  // the earlier run's outputs, as they were
+  CHECK(Snapshot(dir / "a") == before);  // the earlier run's outputs, as they were
 }
