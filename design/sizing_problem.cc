@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "design/case_envelope.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/linear_response.h"
@@ -299,7 +300,8 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
       combo.case_index = static_cast<int>(c);
       combo.station = k;
       combo.ultimate = lc.state == LimitState::kUltimate;
-      combo.label = k >= 0 ? lc.name + " at station " + std::to_string(k + 1) : lc.name;
+      // Named as the static check names its solves: the station by its first deck node.
+      combo.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), k});
       p.combos.push_back(combo);
       p.station_factor.push_back(k >= 0 ? lc.station_load : 0.0);
       p.base_column.push_back(static_cast<int>(c));

@@ -119,7 +119,7 @@ inline constexpr int kNumConstraintKinds = 7;
 
 struct MemberBinding {
   std::string kind;         // one of kConstraintKinds: the constraint that costs its group most
-  std::string case_label;   // its combination ("uls_travelling at station 3"), empty for a size
+  std::string case_label;   // its combination ("uls_travelling at node 3"), empty for a size
   double multiplier = 0;    // lambda of that constraint, in `unit`
   std::string unit;         // "kg per unit utilisation", "kg per unit deflection / limit", "kg/N", "kg/m^2"
 };

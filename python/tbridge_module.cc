@@ -30,6 +30,7 @@
 #include "dynamics/modal.h"
 #include "export/export.h"
 #include "sweep/sweep.h"
+#include "verify/static_check.h"
 #include "verify/verified_design.h"
 
 namespace py = pybind11;
@@ -328,6 +329,21 @@ PYBIND11_MODULE(tbridge, m) {
       },
       py::arg("config"),
       "the dynamic run of a config's \"dynamics\" section, as tbridge simulate; Ctrl-C stops it (KeyboardInterrupt)");
+  m.def(
+      "case_nodes",
+      [](const Design& design, const std::string& label) {
+        const CaseAt at = CaseOfLabel(design, label, "case");
+        Eigen::Matrix3Xd nodes;
+        {
+          py::gil_scoped_release release;
+          nodes = SolveCaseNodes(design, at);
+        }
+        return Rows(nodes);
+      },
+      py::arg("design"), py::arg("case"),
+      "the node positions (n x 3, m) under one load case of the design, solved as the static check solves it "
+      "(the nonlinear static problem from the reference state); `case` as the design file names it: \"NAME\", or "
+      "\"NAME at node N\" for a travelling case at the station of deck node N");
   py::class_<SweepResult>(m, "Sweep", "The rows of a sweep and its choice, as tbridge sweep writes them.")
       .def_readonly("rows", &SweepResult::rows, "one dict per candidate of the run, as sweep.json's \"rows\"")
       .def_readonly("choice", &SweepResult::choice,

@@ -26,10 +26,12 @@
       ultimate cases and the verdict with the governing member above. A planar bridge is
       drawn in x-y; a 3D one as an elevation (x-y) above a plan (x-z), nodes and members that
       one view puts on top of each other sharing a label.
-      --case NAME marks the largest vertical deck deflection of a static case: the design
-      file gives, per case, only that value and its node (deflection_max), not the displaced
-      nodes, and the Python module gives no static displacements either, so the deflected
-      shape is not drawn. NAME is a label of the file ("sls_travelling at node 4"), or the
+      --case NAME marks the largest vertical deck deflection of a static case (the design
+      file's deflection_max) and, where the Python module is importable
+      (PYTHONPATH=build/python), draws the deflected shape: the case solved as the static
+      check solves it (tbridge.case_nodes), its largest displacement drawn as a fifth of the
+      bridge's depth. NAME
+      is a label of the file ("sls_travelling at node 4"), or the
       sizing's "... at station K" (the K-th station along x), a travelling family's name
       (every station), or "max". FIG.png is written with FIG.svg beside it; -o FIG.svg
       writes the SVG alone.
@@ -293,6 +295,27 @@ def projection_groups(design, h, v):
     return node_groups, member_groups, hidden
 
 
+def case_shape(path, label):
+    """The nodes under one static case, solved as the static check solves it, through the Python
+    module (tbridge.case_nodes: the nonlinear static problem from the reference state), or None
+    where the module is not importable (PYTHONPATH=build/python)."""
+    try:
+        import tbridge
+    except ImportError:
+        return None
+    return tbridge.case_nodes(tbridge.load_design(path), label).tolist()
+
+
+def draw_shape(ax, design, shape, h, v, scale):
+    """The deflected shape: each node moved from the drawn geometry by `scale` times its
+    displacement under the case, every member drawn between the moved nodes."""
+    nodes = design["nodes"]
+    moved = [[p[a] + scale * (q[a] - p[a]) for a in range(3)] for p, q in zip(nodes, shape)]
+    for m in design["members"]:
+        a, b = moved[m["nodes"][0] - 1], moved[m["nodes"][1] - 1]
+        ax.plot([a[h], b[h]], [a[v], b[v]], "-", color="#7a0077", linewidth=0.9, alpha=0.8, zorder=8)
+
+
 def draw_view(ax, design, h, v, cmap, norm, labelled, deflections):
     """One projection of the bridge onto axes h (across the page) and v (up the page). The
     labels carry SVG ids, "elevation-node-1-4", "plan-member-3-9", for tools reading the SVG."""
@@ -398,6 +421,12 @@ def plot_bridge(args):
     topo = design["topology"]
     planar = topo.get("planes", 1) == 1 and all(abs(p[2]) < 1e-12 for p in nodes)
     deflections = deflection_entries(design, args.case) if args.case else []
+    shape = case_shape(args.design, deflections[0]["case"]) if len(deflections) == 1 else None
+    # Drawn so that the largest displacement shows as a fifth of the bridge's depth (the views
+    # stretch y, so a share of the span would cross the drawing).
+    moves = [math.dist(p, q) for p, q in zip(design["nodes"], shape)] if shape else [0.0]
+    depth = (max(p[1] for p in design["nodes"]) - min(p[1] for p in design["nodes"])) or design["config"]["bridge"]["span"]
+    shape_scale = 0.2 * depth / max(moves) if max(moves) > 0 else 1.0
 
     checked = [u for u in (utilisation_of(m) for m in members) if u is not None]
     largest = max(checked, default=0.0)
@@ -465,7 +494,8 @@ def plot_bridge(args):
         stalled = [d["case"] for d in deflections if not d["converged"]]
         if stalled:
             text += "; not converged: " + ", ".join(stalled)
-        lines.append((text + " (the design file gives no node displacements: the deflected shape is not drawn)",
+        lines.append((text + (" (purple: the deflected shape, displacements x%.3g)" % shape_scale if shape else
+                              " (the deflected shape needs the Python module: PYTHONPATH=build/python)"),
                       8, "#7a0077", "normal"))
     # The supports' reactions: the chosen case's, else their envelope over the ultimate cases.
     chosen = deflections[0]["case"] if len(deflections) == 1 else None
@@ -496,6 +526,8 @@ def plot_bridge(args):
     for title, h, v, view_h in views:
         ax = fig.add_axes([left / width, (top - view_h) / height, (width - left - right) / width, view_h / height])
         hidden = draw_view(ax, design, h, v, cmap, norm, labelled, deflections)
+        if shape:
+            draw_shape(ax, design, shape, h, v, shape_scale)
         note = ("; along the line of sight, not drawn here: " + ", ".join("m%d" % i for i in hidden)) if hidden else ""
         ax.set_title(title + note, fontsize=8.5, loc="left")
         ax.set_xlabel("x [m] (along the span)")
@@ -598,8 +630,8 @@ def main():
     p.add_argument("-o", "--output", required=True)
     p.add_argument("--case", default=None,
                    help="mark the largest deck deflection of this static case (a deflection_max label, "
-                        "'NAME at station K', a travelling family's NAME or 'max'); the design file holds no "
-                        "node displacements, so the deflected shape itself is not drawn")
+                        "'NAME at station K', a travelling family's NAME or 'max'), and draw its deflected "
+                        "shape where the Python module is importable (PYTHONPATH=build/python)")
     p.set_defaults(fn=plot_bridge)
     args = parser.parse_args()
     args.fn(args)

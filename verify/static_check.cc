@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/error.h"
 #include "design/case_envelope.h"
 #include "design/static_model.h"
 
@@ -231,6 +232,31 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     if (std::isinf(f)) f = 0;  // no case converged
   }
   return out;
+}
+
+CaseAt CaseOfLabel(const Design& d, const std::string& label, const std::string& key) {
+  std::string allowed;
+  for (size_t c = 0; c < d.cases.size(); ++c) {
+    const LoadCase& lc = d.cases[c];
+    const int stations = lc.station_load != 0 ? static_cast<int>(d.actions.station_nodes.size()) : 0;
+    for (int k = stations > 0 ? 0 : -1; k < stations; ++k) {
+      const std::string name = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), k});
+      if (name == label) return CaseAt{static_cast<int>(c), k};
+    }
+    allowed += (allowed.empty() ? "" : ", ") + lc.name + (stations > 0 ? " at node N (a station's first deck node)" : "");
+  }
+  throw ConfigError(key, "'" + label + "'", "a case of the design: " + allowed);
+}
+
+Eigen::Matrix3Xd SolveCaseNodes(const Design& d, const CaseAt& at) {
+  const StaticModel model = StaticModelOf(d);
+  const StaticState start = ReferenceState(model, d);
+  const StaticResult result = SolveStatic(model, start, d.loads, d.actions.Loads(d.cases.at(at.case_index), at.station));
+  if (!result.converged) {
+    throw ModelError(CaseLabel(d.cases, d.actions, MemberExtreme{0, at.case_index, at.station}) +
+                     ": no static equilibrium found (" + result.message + ")");
+  }
+  return result.state.nodes;
 }
 
 }  // namespace tbridge

@@ -27,4 +27,19 @@ namespace tbridge {
 // "static check".
 StaticCheck CheckStatics(const Design& design, ProgressReporter* progress = nullptr);
 
+// The case and deck station a label names, as the static check and the design file write it:
+// "NAME" for a case that does not travel (station -1), "NAME at node N" for a travelling case
+// at the station whose first deck node is N (1-based). Throws ConfigError naming `key`, the
+// label and the labels allowed.
+struct CaseAt {
+  int case_index = -1;
+  int station = -1;
+};
+CaseAt CaseOfLabel(const Design& design, const std::string& label, const std::string& key);
+
+// The node positions [m] (3 x n_n) under that case, solved as the static check solves it: the
+// nonlinear static problem from the reference state. Throws ModelError when it does not
+// converge.
+Eigen::Matrix3Xd SolveCaseNodes(const Design& design, const CaseAt& at);
+
 }  // namespace tbridge

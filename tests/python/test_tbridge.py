@@ -255,3 +255,17 @@ def test_edited_areas_are_checked_as_tbridge_check_of_the_edited_file(written, t
     assert d.to_json() == edited.to_json()
     with pytest.raises(tbridge.ConfigError, match="areas"):
         d.with_areas(areas[:-1])
+
+
+def test_case_nodes_give_the_design_file_deflections(design):
+    # Each statically solved case's nodes, as the static check solves it: the largest vertical
+    # deck deflection from the drawn geometry is the file's, at its node (1e-12 m: the same
+    # solve, its doubles written in their shortest exact form).
+    file = json.loads(design.to_json())
+    deck = sorted({n - 1 for m in file["members"] if m["type"] == "deck_string" for n in m["nodes"]})
+    for entry in file["deflection_max"]:
+        nodes = tbridge.case_nodes(design, entry["case"])
+        dy = np.abs(nodes[deck, 1] - design.nodes[deck, 1])
+        assert abs(dy.max() - entry["deflection"]) <= 1e-12, entry["case"]
+    with pytest.raises(tbridge.ConfigError, match="'case' = 'sls_travelling at node 99'"):
+        tbridge.case_nodes(design, "sls_travelling at node 99")
