@@ -12,7 +12,7 @@ namespace tbridge {
 
 DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options) {
   const Structure& st = design.topology.structure;
-  const Material& mat = design.config.material;
+  const MemberMaterial strings = StringMaterial(design.config);
   if (!(options.damping >= 0) || !std::isfinite(options.damping)) {
     throw ConfigError("dynamics.damping_c", std::to_string(options.damping), "must be >= 0");
   }
@@ -34,8 +34,8 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   m.fixed = st.fixed;
   m.loads = design.loads;
   m.node_mass = Eigen::VectorXd::Zero(st.num_nodes());
-  m.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
-  m.youngs_modulus = mat.youngs_modulus;
+  m.allowed_stress = strings.DesignStress();
+  m.youngs_modulus = strings.youngs_modulus;
   m.tensegrity_class = st.TensegrityClass();
   m.deck_nodes = design.topology.deck_nodes;
   m.gravity = design.config.design.gravity;
@@ -50,13 +50,13 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     ds.rest_length = s.rest_length;
     ds.stiffness = s.stiffness;
     ds.damping = options.damping;
-    ds.mass = mat.density * s.area * s.rest_length;
+    ds.mass = strings.density * s.area * s.rest_length;
     ds.area = s.area;
     const std::string& group = st.strings[k].group;
     for (const StringPrestrain& p : options.prestrain) {
       if (p.group != group) continue;
       ds.rest_length = p.ratio * s.length;
-      ds.stiffness = mat.youngs_modulus * s.area / ds.rest_length;
+      ds.stiffness = strings.youngs_modulus * s.area / ds.rest_length;
     }
     m.AddString(ds, s.name, group);
   }
@@ -116,7 +116,7 @@ std::vector<PrestrainReport> ReportPrestrain(const DynamicModel& model, const De
     r.group = p.group;
     r.ratio = p.ratio;
     r.allowed_stress = model.allowed_stress;
-    r.yield_stress = design.config.material.yield_stress;
+    r.yield_stress = StringMaterial(design.config).yield_stress;
     for (size_t k = 0; k < model.strings.size(); ++k) {
       const DynamicString& s = model.strings[k];
       if (model.names.string_group[k] != p.group) continue;

@@ -21,12 +21,24 @@ void CheckBridgeRules(const BridgeConfig& b) {
 
 // material: the rule across keys (kMaterialSection.rules).
 void CheckMaterialRules(const Material& m) {
-  if (!(m.youngs_modulus > m.yield_stress)) {
-    throw ConfigError("material.youngs_modulus", NumberText(m.youngs_modulus),
-                      "must exceed material.yield_stress = " + NumberText(m.yield_stress) +
-                          " Pa: a strain at yield of " +
-                          NumberText(m.yield_stress / m.youngs_modulus) +
-                          " is no structural material (steel: 0.0017); are both in Pa?");
+  auto modulus_above_yield = [](const std::string& section, double E, double f) {
+    if (E > f) return;
+    throw ConfigError(section + "youngs_modulus", NumberText(E),
+                      "must exceed " + section + "yield_stress = " + NumberText(f) + " Pa: a strain at yield of " +
+                          NumberText(f / E) + " is no structural material (steel: 0.0017); are both in Pa?");
+  };
+  modulus_above_yield("material.", m.youngs_modulus, m.yield_stress);
+  const MemberMaterial strings = StringMaterial(m, 1.0), bars = BarMaterial(m, 1.0);
+  modulus_above_yield("material.strings.", strings.youngs_modulus, strings.yield_stress);
+  modulus_above_yield("material.bars.", bars.youngs_modulus, bars.yield_stress);
+  if (m.strings.breaking_stress && !(*m.strings.breaking_stress > strings.yield_stress)) {
+    throw ConfigError("material.strings.breaking_stress", NumberText(*m.strings.breaking_stress),
+                      "must exceed the strings' proof strength yield_stress = " + NumberText(strings.yield_stress) +
+                          " Pa: a cable breaks above its 0.2 % proof stress");
+  }
+  if (m.strings.end_efficiency && !m.strings.breaking_stress) {
+    throw ConfigError("material.strings.end_efficiency", NumberText(*m.strings.end_efficiency),
+                      "applies to a cable's breaking strength: give material.strings.breaking_stress with it");
   }
 }
 

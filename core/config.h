@@ -113,6 +113,12 @@ struct Config {
   std::optional<DynamicsConfig> dynamics;    // present when the file has a "dynamics" section
 };
 
+// The strings' and bars' materials as resolved from `material` and `design`.
+inline MemberMaterial StringMaterial(const Config& c) {
+  return StringMaterial(c.material, c.design.yield_safety_factor);
+}
+inline MemberMaterial BarMaterial(const Config& c) { return BarMaterial(c.material, c.design.yield_safety_factor); }
+
 // Allowed structural limits checked by ParseConfig (exposed for messages and tests).
 inline constexpr int kMaxComplexity = 16;
 inline constexpr int kMaxBarsPerModule = 8;

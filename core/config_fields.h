@@ -24,8 +24,11 @@ namespace tbridge {
 inline const SectionInfo kBridgeSection{"bridge", "geometry and load",
                                         "`p` must be 1 when `planes` = 2 (the 3D bridge couples two p = 1 planes)."};
 inline const SectionInfo kMaterialSection{
-    "material", "one material for bars, strings and deck beams",
-    "`youngs_modulus` > `yield_stress` (a strain at yield of 1 or more is no structural material)."};
+    "material", "the bridge's material; the strings' and bars' own where they differ",
+    "`youngs_modulus` > `yield_stress` (a strain at yield of 1 or more is no structural material), for "
+    "`material` and for each member kind as resolved; `strings.breaking_stress` > `strings.yield_stress` (a "
+    "cable's proof strength is below its breaking strength); `strings.end_efficiency` only with "
+    "`strings.breaking_stress`."};
 inline const SectionInfo kDesignSection{"design", "minimum-mass problem and sizing", ""};
 inline const SectionInfo kLoadsSection{
     "loads", "actions and their combinations",
@@ -85,17 +88,62 @@ void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, 
             b.planes, 1, 2);
 }
 
+// The keys of `material.bars` and `material.strings`: each absent value is `material`'s (the
+// partial factor: design.yield_safety_factor).
+template <class M, class V>
+void DescribeMemberMaterial(M& m, V& v) {
+  v.OptionalNumber(KeyInfo{"density", "kg/m³", "rho of these members (a cable's: its mass per metre over its metallic area)",
+                           false, nullptr, "`material.density`"},
+                   m.density, kDensityRange, Absent::kOmitted);
+  v.OptionalNumber(KeyInfo{"yield_stress", "Pa",
+                           "f_y (a cable: its 0.2 % proof strength f_k = F_k / A, EN 1993-1-11 6.3.2)", false, nullptr,
+                           "`material.yield_stress`"},
+                   m.yield_stress, kYieldStressRange, Absent::kOmitted);
+  v.OptionalNumber(KeyInfo{"youngs_modulus", "Pa",
+                           "E of these members (a cable: its modulus as a tension component, EN 1993-1-11 Annex B: "
+                           "spiral strand about 1.5e11, full locked coil 1.6e11)",
+                           false, nullptr, "`material.youngs_modulus`"},
+                   m.youngs_modulus, kModulusRange, Absent::kOmitted);
+  v.OptionalNumber(KeyInfo{"partial_factor", "–",
+                           "gamma_M0 on their yield resistance A·f_y/gamma_M0 (a cable: gamma_R of EN 1993-1-11 6.3.2, "
+                           "0.9 where the ends limit bending, else 1.0)",
+                           false, nullptr, "`design.yield_safety_factor`"},
+                   m.partial_factor, Range::Closed(0.5, 1000), Absent::kOmitted);
+}
+
+template <class M, class V>
+void DescribeFields(M& m, V& v) requires std::is_same_v<std::remove_const_t<M>, BarMaterialConfig> {
+  DescribeMemberMaterial(m, v);
+}
+
+template <class M, class V>
+void DescribeFields(M& m, V& v) requires std::is_same_v<std::remove_const_t<M>, StringMaterialConfig> {
+  DescribeMemberMaterial(m, v);
+  v.OptionalNumber(KeyInfo{"breaking_stress", "Pa",
+                           "f_uk: makes the strings cables of EN 1993-1-11, F_Rd = min(k_e·f_uk/1.5, f_k)·A/gamma_R "
+                           "(6.3.2), f_uk the minimum breaking force over the metallic area",
+                           false, nullptr, "none (steel rods: A·f_y/gamma_M0)"},
+                   m.breaking_stress, kYieldStressRange, Absent::kOmitted);
+  v.OptionalNumber(KeyInfo{"end_efficiency", "–",
+                           "k_e, the loss factor of the cable's end terminations on its breaking strength (EN 1993-1-11 "
+                           "Table 6.2: metal or resin sockets 1.0, swaged 0.9); only with `breaking_stress`",
+                           false, nullptr, "1"},
+                   m.end_efficiency, Range{0.0, 1.0, true, false}, Absent::kOmitted);
+}
+
 template <class M, class V>
 void DescribeFields(M& m, V& v) requires std::is_same_v<std::remove_const_t<M>, Material> {
   v.Number(KeyInfo{"density", "kg/m³", "rho: member mass rho·A·l, deck beam mass m_d (eq. 7)"}, m.density,
            kDensityRange);
   v.Number(KeyInfo{"yield_stress", "Pa",
-                   "sigma_yield. The working stress of every member and of the deck is sigma_w = `yield_stress` / "
-                   "`yield_safety_factor`"},
+                   "sigma_yield. The working stress of the deck, and of the members unless `strings` or `bars` give their "
+                   "own, is sigma_w = `yield_stress` / `yield_safety_factor`"},
            m.yield_stress, kYieldStressRange);
   v.Number(KeyInfo{"youngs_modulus", "Pa",
                    "E: string rest length L0 = s/(1 + sigma/E), stiffness k_s = E·A/L0, Euler buckling of bars"},
            m.youngs_modulus, kModulusRange);
+  v.Section("strings", m.strings);
+  v.Section("bars", m.bars);
 }
 
 template <class D, class V>

@@ -271,12 +271,12 @@ DesignInputs PrepareDesign(const Config& config) {
   in.actions = MakeActions(config, in.topology, in.deck);
   in.loads = in.actions.base[kPaperLoad];
 
-  const double sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
   auto circle = [](double r) { return std::numbers::pi * r * r; };
   MinMassSettings& settings = in.settings;
-  settings.working_stress = sigma_w;
+  settings.strings = StringMaterial(config);
+  settings.bars = BarMaterial(config);
+  const double sigma_w = settings.strings.DesignStress();
   settings.buckling_safety_factor = config.design.buckling_safety_factor;
-  settings.material = config.material;
   settings.bar_min_area.assign(s.num_bars(), circle(config.design.bar_min_radius));
   settings.string_min_tension.resize(s.num_strings());
   in.string_min_area.assign(s.num_strings(), 0.0);
@@ -296,8 +296,9 @@ DesignInputs PrepareDesign(const Config& config) {
 BarRule BarRuleOf(const Config& c) {
   BarRule r;
   r.column_curve = c.design.bar_resistance == "column_curve";
-  r.yield_stress = c.material.yield_stress;
-  r.yield_factor = c.design.yield_safety_factor;
+  const MemberMaterial bars = BarMaterial(c);
+  r.yield_stress = bars.yield_stress;
+  r.yield_factor = bars.partial_factor;
   r.buckling_factor = c.design.buckling_safety_factor;
   r.imperfection = c.design.imperfection_factor;
   return r;
@@ -362,7 +363,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   auto floor = [area_floor](int j) { return area_floor ? (*area_floor)[j] : 0.0; };
   for (int b = 0; b < nb; ++b) in.settings.bar_min_area[b] = std::max(in.settings.bar_min_area[b], floor(b));
   const MinMassSettings& settings = in.settings;
-  const double sigma_w = settings.working_stress;
+  const double sigma_w = settings.strings.DesignStress();
   const BarRule rule = BarRuleOf(config);
 
   d.actions = std::move(in.actions);
@@ -407,7 +408,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   CaseEnvelope env;
   MinMassSolution solution;
   Eigen::VectorXd reference_forces;
-  double previous_total = -1;
+  double previous_total = -1, previous_change = 1;
   for (d.self_weight_iterations = 1;; ++d.self_weight_iterations) {
     d.actions.base[kSelfWeight] = SelfWeightLoads(s, mass, g);
     Eigen::MatrixXd w(eq.A.rows(), kNumBaseActions);
@@ -437,7 +438,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     d.strings.clear();
     double total = 0;
     for (int b = 0; b < nb; ++b) {
-      MemberSizing m = SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, config.material);
+      MemberSizing m = SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, settings.bars);
       if (floor(b) > 0 && m.area == floor(b)) m.governed_by = "resized";
       m.kind = MemberKind::kBar;
       m.i = s.bars[b].i;
@@ -450,7 +451,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     }
     for (int k = 0; k < s.num_strings(); ++k) {
       MemberSizing m = SizeString(s.Length(s.strings[k]), largest[nb + k], reference_forces[nb + k],
-                                  std::max(in.string_min_area[k], floor(nb + k)), sigma_w, config.material);
+                                  std::max(in.string_min_area[k], floor(nb + k)), settings.strings);
       if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k)) m.governed_by = "resized";
       m.kind = StringKind(s.strings[k]);
       m.i = s.strings[k].i;
@@ -461,9 +462,23 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
       d.strings.push_back(m);
     }
     // The self-weight fixed point: each pass adds the weight of the last sizing. The weight
-    // is a fraction of the load well below 1 for any bridge that can stand, so the mass
-    // converges geometrically; 1e-12 is a few hundred rounding steps of a sum of masses.
-    if (!config.design.self_weight || std::abs(total - previous_total) <= 1e-12 * total) break;
+    // is a fraction of the load well below 1 for any bridge that can stand, so the change of
+    // mass shrinks geometrically, to 1e-12 (a few hundred rounding steps of a sum of masses)
+    // where each pass's optimum is exact (the closed-form and direct solves). An iterative
+    // solver returns it only to about design.tolerance (relative): there the change stops
+    // shrinking at a few times that (the 3D bridge at n = 2: +-1.2e-9 at 1e-10), and a change
+    // below 100 times the tolerance that did not halve is as settled as the solver can tell.
+    // Where the problem has many optima (the 3D bridge's dozens of self-stress states), such
+    // a change of weight can move the solver between them and the passes cycle (at n = 3 with
+    // a period of 4 passes and a spread of 4e-6): after 20 passes a change of 1e-5 is settled.
+    // The weight is then right to 1e-5 of the structure's own weight, far below what any check
+    // resolves, and the verified sizing rebuilds the weight from its own design anyway.
+    const double change = std::abs(total - previous_total) / total;
+    const bool settled = change <= 1e-12 ||
+                         (change <= 100 * config.design.tolerance && change > 0.5 * previous_change) ||
+                         (d.self_weight_iterations > 20 && change <= 1e-5);
+    if (!config.design.self_weight || settled) break;
+    previous_change = change;
     if (d.self_weight_iterations >= 200 || !std::isfinite(total)) {
       // Still growing: the weight outruns what the members carry. Moving back and forth: the
       // minimum-mass problem has many optima (self-stresses), and a small change of weight
@@ -509,7 +524,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   const Eigen::VectorXd& least = solution.forces.col(solution.forces.cols() - 1);
   for (int j = 0; j < members; ++j) {
     MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
-    Utilise(m, largest[j], least[j], rule, sigma_w, config.material.youngs_modulus);
+    Utilise(m, largest[j], least[j], rule, sigma_w, settings.bars.youngs_modulus);
     m.force_min = least[j];
     m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
     if (m.mode == "slack" || m.mode == "tension") m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);

@@ -89,13 +89,13 @@ const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
 void WeighMembers(Design& d, std::vector<double>& masses) {
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars();
-  const double density = d.config.material.density;
+  const double bar_density = BarMaterial(d.config).density, string_density = StringMaterial(d.config).density;
   d.mass.bars = d.mass.strings = d.mass.deck_strings = 0;
   for (int k = 0; k < nb + s.num_strings(); ++k) {
     const bool bar = k < nb;
     MemberSizing& m = bar ? d.bars[k] : d.strings[k - nb];
     m.length = s.Length(bar ? s.bars[k] : s.strings[k - nb]);
-    m.mass = density * m.area * m.length;
+    m.mass = (bar ? bar_density : string_density) * m.area * m.length;
     masses[k] = m.mass;
     (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
   }
@@ -195,7 +195,7 @@ Design ReadDesign(const json& file) {
   d.cases = MakeLoadCases(d.config, d.deck, d.notes);
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();
-  const Material& mat = d.config.material;
+  const MemberMaterial bar_material = BarMaterial(d.config), string_material = StringMaterial(d.config);
 
   // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it
   // exactly); or, in a file check wrote with its reference state re-derived ("as_built"), the
@@ -261,6 +261,7 @@ Design ReadDesign(const json& file) {
     if (!(m.area >= 0) || !std::isfinite(m.area))
       throw ConfigError(where + ".area", NumberText(m.area), "a finite area >= 0 [m^2]");
     m.radius = std::sqrt(m.area / std::numbers::pi);
+    const MemberMaterial& mat = bar ? bar_material : string_material;
     m.mass = mat.density * m.area * m.length;
     m.reference_force = Number(j, "reference_force", where);
     m.rest_length = bar ? m.length : Number(j, "rest_length", where);
@@ -355,8 +356,10 @@ Design WithAreas(const Design& design, const std::vector<double>& areas) {
   if (areas.size() != members.size()) {
     throw ConfigError("areas", std::to_string(areas.size()) + " areas", "one per member: " + std::to_string(members.size()));
   }
-  const Material& mat = design.config.material;
+  const size_t nb = design.bars.size();
+  const MemberMaterial bar_material = BarMaterial(design.config), string_material = StringMaterial(design.config);
   for (size_t k = 0; k < areas.size(); ++k) {
+    const MemberMaterial& mat = k < nb ? bar_material : string_material;
     const double a = areas[k];
     if (!(a >= 0) || !std::isfinite(a)) {
       throw ConfigError("areas[" + std::to_string(k) + "]", NumberText(a), "a finite area >= 0 [m^2]");

@@ -42,6 +42,8 @@ json Units() {
                    {"force_density", "N/m"}, {"area", "m^2"}, {"radius", "m"},
                    {"mass", "kg"}, {"rest_length", "m"}, {"stiffness", "N/m"},
                    {"stress", "Pa"}}},
+      {"materials", {{"density", "kg/m^3"}, {"yield_stress", "Pa"}, {"youngs_modulus", "Pa"}, {"partial_factor", "1"},
+                     {"breaking_stress", "Pa"}, {"end_efficiency", "1"}, {"design_stress", "Pa"}}},
       {"mass", {{"bars", "kg"}, {"strings", "kg"}, {"deck_strings", "kg"},
                 {"deck_beams", "kg"}, {"structure", "kg"}, {"total", "kg"}}},
       {"solver", {{"iterations", "1"}}},
@@ -55,6 +57,22 @@ json Units() {
       {"utilisation_max", "1"},
       {"self_weight_iterations", "1"},
       {"comfort", ComfortUnits()}};
+}
+
+// The strings' and bars' materials as the design used them (each value resolved from
+// `material`, `material.strings`, `material.bars` and design.yield_safety_factor).
+json MaterialsJson(const Config& config) {
+  auto one = [](const MemberMaterial& m) {
+    json j{{"density", m.density},
+           {"yield_stress", m.yield_stress},
+           {"youngs_modulus", m.youngs_modulus},
+           {"partial_factor", m.partial_factor},
+           {"design_stress", m.DesignStress()},
+           {"tension_clause", m.TensionClause()}};
+    if (m.cable()) j["breaking_stress"] = m.breaking_stress, j["end_efficiency"] = m.end_efficiency;
+    return j;
+  };
+  return json{{"bars", one(BarMaterial(config))}, {"strings", one(StringMaterial(config))}};
 }
 
 // printf into a std::string; the attribute lets the compiler check every format string.
@@ -138,8 +156,8 @@ json AttributionJson(const Design& d) {
 }
 
 // The rule a member's governing check applies, by its mode: EN 1993-1-1's resistances of a
-// steel member in tension (6.2.3) or compression (6.2.4) and its flexural buckling (6.3.1, the
-// column curve) or the paper's Euler load; the dynamic check compares a run's demand with the
+// steel member in tension (6.2.3; a cable's: EN 1993-1-11 6.3.2) or compression (6.2.4) and
+// its flexural buckling (6.3.1, the column curve) or the paper's Euler load; the dynamic check compares a run's demand with the
 // same resistances; "slack" is the tool's serviceability rule that the deck chain (and the 3D
 // bridge's transverse strings) stay taut (README: "The slack measure").
 std::string ClauseOf(const MemberSizing& m, const Config& config) {
@@ -150,9 +168,9 @@ std::string ClauseOf(const MemberSizing& m, const Config& config) {
   if (mode == "tension") return "bar in tension (tbridge)";
   if (mode == "deflection") return "EN 1990 A2.4.1 (deflection), stiffness";
   if (mode == "buckling") return euler ? "Euler load (paper eq. 46)" : "EN 1993-1-1 6.3.1";
-  if (mode == "yield") return bar ? "EN 1993-1-1 6.2.4" : "EN 1993-1-1 6.2.3";
+  if (mode == "yield") return bar ? "EN 1993-1-1 6.2.4" : StringMaterial(config).TensionClause();
   if (mode == "dynamic") {
-    if (!bar) return "EN 1993-1-1 6.2.3 at the run's peak";
+    if (!bar) return StringMaterial(config).TensionClause() + std::string(" at the run's peak");
     return euler ? "Euler load at the run's peak" : "EN 1993-1-1 6.2.4/6.3.1 at the run's peak";
   }
   return "";
@@ -430,6 +448,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("equilibrium_residual_N", d.equilibrium_residual);
   field("mass", mass);
   field("mass_attribution", AttributionJson(d));
+  field("materials", MaterialsJson(d.config));
   os << "  \"members\": [";
   const char* separator = "\n    ";
   for (size_t b = 0; b < d.bars.size(); ++b) {

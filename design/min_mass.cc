@@ -17,7 +17,9 @@ MinMassProblem::MinMassProblem(const Structure& s, const Eigen::Matrix3Xd& loads
       static_cast<int>(settings_.bar_min_area.size()) != nb_) {
     throw ModelError("min-mass: per-member minima have the wrong size");
   }
-  if (!(settings_.working_stress > 0)) throw ModelError("min-mass: working stress must be > 0");
+  if (!(settings_.strings.DesignStress() > 0) || !(settings_.bars.DesignStress() > 0)) {
+    throw ModelError("min-mass: working stress must be > 0");
+  }
 
   force_ref_ = 0.0;
   for (int v = 0; v < s.num_nodes(); ++v) force_ref_ = std::max(force_ref_, loads.col(v).norm());
@@ -25,9 +27,11 @@ MinMassProblem::MinMassProblem(const Structure& s, const Eigen::Matrix3Xd& loads
   if (!(force_ref_ > 0)) force_ref_ = 1.0;
   const Eigen::Vector3d extent = s.nodes.rowwise().maxCoeff() - s.nodes.rowwise().minCoeff();
   const double length_ref = std::max(extent.norm(), 1e-300);
-  const double sigma_w = settings_.working_stress;
-  const double E = settings_.material.youngs_modulus;
-  mass_ref_ = settings_.material.density * length_ref * force_ref_ / sigma_w;
+  // The bars' design stress and modulus: their areas are in units of force_ref_ / sigma_w.
+  const double sigma_w = settings_.bars.DesignStress();
+  const double E = settings_.bars.youngs_modulus;
+  const double bar_mass_ratio = settings_.BarMassRatio();
+  mass_ref_ = settings_.strings.density * length_ref * force_ref_ / settings_.strings.DesignStress();
 
   rhs_ = -FreeLoads(eq_, loads) / force_ref_;
   cost_.setZero(num_variables());
@@ -36,7 +40,7 @@ MinMassProblem::MinMassProblem(const Structure& s, const Eigen::Matrix3Xd& loads
   t_min_.resize(ns_);
   for (int b = 0; b < nb_; ++b) {
     const double l = s.Length(s.bars[b]);
-    cost_[bar_area_index(b)] = l / length_ref;
+    cost_[bar_area_index(b)] = bar_mass_ratio * l / length_ref;
     // A >= 2 l sqrt(SF C / (pi E)) in scaled units.
     kappa_[b] = 2.0 * l * sigma_w *
                 std::sqrt(settings_.buckling_safety_factor / (std::numbers::pi * E * force_ref_));

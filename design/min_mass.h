@@ -27,9 +27,15 @@
 namespace tbridge {
 
 struct MinMassSettings {
-  double working_stress = 0;          // sigma_w [Pa]
+  // What the members are made of. The problems count forces in units of the strings' design
+  // stress: a bar's area variable is in units of its own, and its mass per unit carries the
+  // ratio BarMassRatio().
+  MemberMaterial strings, bars;
   double buckling_safety_factor = 1;  // on the bar force in the Euler check
-  Material material;
+  // A bar's mass per unit of force it carries over a string's: (rho_b / sigma_b) / (rho_s / sigma_s).
+  double BarMassRatio() const {
+    return (bars.density / bars.DesignStress()) / (strings.density / strings.DesignStress());
+  }
   std::vector<double> string_min_tension;  // per string [N] (prestress floor), may be 0
   std::vector<double> bar_min_area;        // per bar [m^2], may be 0
 };

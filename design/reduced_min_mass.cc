@@ -41,14 +41,18 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
       static_cast<int>(settings_.bar_min_area.size()) != nb_) {
     throw ModelError("min-mass: per-member minima have the wrong size");
   }
-  if (!(settings_.working_stress > 0)) throw ModelError("min-mass: working stress must be > 0");
-  const double sigma_w = settings_.working_stress;
-  const double E = settings_.material.youngs_modulus;
+  if (!(settings_.strings.DesignStress() > 0) || !(settings_.bars.DesignStress() > 0)) {
+    throw ModelError("min-mass: working stress must be > 0");
+  }
+  // The bars' design stress and modulus: their areas are in units of force_ref_ / sigma_w.
+  const double sigma_w = settings_.bars.DesignStress();
+  const double E = settings_.bars.youngs_modulus;
+  const double bar_mass_ratio = settings_.BarMassRatio();
 
   force_ref_ = SelfStressForceScale(basis, settings_);
   const Eigen::Vector3d extent = s.nodes.rowwise().maxCoeff() - s.nodes.rowwise().minCoeff();
   const double length_ref = std::max(extent.norm(), 1e-300);
-  mass_ref_ = settings_.material.density * length_ref * force_ref_ / sigma_w;
+  mass_ref_ = settings_.strings.density * length_ref * force_ref_ / settings_.strings.DesignStress();
   p_ = basis.particular / force_ref_;
   n_ = basis.self_stress;
   const int cases = num_cases();
@@ -59,7 +63,7 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
   for (int j = 0; j < members; ++j) {
     const bool bar = j < nb_;
     const Member& m = bar ? s.bars[j] : s.strings[j - nb_];
-    const double weight = s.Length(m) / length_ref;
+    const double weight = (bar ? bar_mass_ratio : 1.0) * s.Length(m) / length_ref;
     const double lo = bar ? 0.0 : settings_.string_min_tension[j - nb_] / force_ref_;
     const double kappa =
         bar ? 2.0 * s.Length(m) * sigma_w *

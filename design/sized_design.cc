@@ -21,8 +21,12 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
   const int nb = s.num_bars(), ns = s.num_strings();
   if (static_cast<int>(areas.size()) != nb + ns) throw ModelError("SizedDesign: one area per member expected");
 
+  const MemberMaterial bar_material = BarMaterial(config), string_material = StringMaterial(config);
   std::vector<double> masses(nb + ns);
-  for (int j = 0; j < nb + ns; ++j) masses[j] = config.material.density * areas[j] * s.Length(j < nb ? s.bars[j] : s.strings[j - nb]);
+  for (int j = 0; j < nb + ns; ++j) {
+    masses[j] = (j < nb ? bar_material : string_material).density * areas[j] *
+                s.Length(j < nb ? s.bars[j] : s.strings[j - nb]);
+  }
   if (config.design.self_weight) d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, config.design.gravity);
   d.reference = ReferenceCase(config, d.cases);
   d.loads = d.actions.Loads(d.reference);
@@ -35,15 +39,14 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
   d.alpha = alpha;
 
   const BarRule rule = BarRuleOf(config);
-  const double sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
   for (int j = 0; j < nb + ns; ++j) {
     const bool bar = j < nb;
     const Member& e = bar ? s.bars[j] : s.strings[j - nb];
     const double force = d.reference_forces[j];
     // The sizers at zero force with the area as the floor give that area and what follows
     // from it (radius, mass, rest length from the reference force, stiffness).
-    MemberSizing m = bar ? SizeBar(s.Length(e), 0.0, areas[j], rule, config.material)
-                         : SizeString(s.Length(e), 0.0, force, areas[j], sigma_w, config.material);
+    MemberSizing m = bar ? SizeBar(s.Length(e), 0.0, areas[j], rule, bar_material)
+                         : SizeString(s.Length(e), 0.0, force, areas[j], string_material);
     m.kind = bar ? MemberKind::kBar : StringKind(e);
     m.i = e.i;
     m.j = e.j;

@@ -21,7 +21,7 @@ namespace {
 
 // Areas and masses are finite for any config that passed CheckComputable (design/deck.h), short
 // of a material at the edge of its range; the check keeps a NaN from reaching the output.
-void CheckFinite(const MemberSizing& s, const Material& m) {
+void CheckFinite(const MemberSizing& s, const MemberMaterial& m) {
   if (!std::isfinite(s.area) || !std::isfinite(s.radius)) {
     throw ConfigError("material.yield_stress", NumberText(m.yield_stress),
                       "with material.youngs_modulus = " + NumberText(m.youngs_modulus) +
@@ -48,7 +48,8 @@ double EulerArea(double length, double compression, double E) {
 }
 
 MemberSizing SizeString(double length, double tension, double reference_tension, double min_area,
-                        double sigma_w, const Material& m) {
+                        const MemberMaterial& m) {
+  const double sigma_w = m.DesignStress();
   MemberSizing s;
   s.length = length;
   s.force = std::max(tension, 0.0);
@@ -144,7 +145,8 @@ double ColumnCurveArea(double length, double compression, const BarRule& rule, d
 
 }  // namespace
 
-MemberSizing SizeBar(double length, double compression, double min_area, const BarRule& rule, const Material& m) {
+MemberSizing SizeBar(double length, double compression, double min_area, const BarRule& rule,
+                     const MemberMaterial& m) {
   MemberSizing b;
   b.length = length;
   b.rest_length = length;

@@ -39,11 +39,11 @@ struct MemberSizing {
   std::string mode;           // "yield" | "buckling" | "slack" | "tension" | "dynamic"
 };
 
-// String working at `working_stress` under `tension`, or at the minimum area when that is
-// larger (the extra tension of a prestressed minimum string is part of `tension`); its rest
-// length makes it carry `reference_tension` at `length`.
+// String working at its material's design stress under `tension`, or at the minimum area when
+// that is larger (the extra tension of a prestressed minimum string is part of `tension`); its
+// rest length makes it carry `reference_tension` at `length`.
 MemberSizing SizeString(double length, double tension, double reference_tension, double min_area,
-                        double working_stress, const Material& material);
+                        const MemberMaterial& material);
 
 // How a solid circular pinned-pinned bar resists compression.
 struct BarRule {
@@ -80,7 +80,7 @@ BarCapacity BarResistance(double area, double length, const BarRule& rule, doubl
 // material key when the area, stiffness or mass is not finite (inputs at the edge of their
 // ranges).
 MemberSizing SizeBar(double length, double compression, double min_area, const BarRule& rule,
-                     const Material& material);
+                     const MemberMaterial& material);
 
 // Area of the Euler-critical solid circular bar: P_cr = pi^2 E I / l^2 with I = A^2/(4 pi).
 double EulerArea(double length, double compression, double youngs_modulus);

@@ -100,7 +100,9 @@ struct SizingProblem::Impl {
   Structure s;
   SizingCorrections corrections;
   int nb = 0, ns = 0, nm = 0, states = 0, groups = 0;
-  double E = 0, rho = 0, sigma_w = 0, deflection_limit_m = 0, force_scale = 1, mass_scale = 1;
+  // E_bar: the bars' modulus (their buckling); E, sigma_w: the strings' modulus and design stress.
+  double E = 0, E_bar = 0, sigma_w = 0, deflection_limit_m = 0, force_scale = 1, mass_scale = 1;
+  std::vector<double> rho;  // per member [kg/m^3]
   BarRule rule;
   std::vector<double> length, min_area;
   std::vector<int> group_of;
@@ -189,7 +191,7 @@ struct SizingProblem::Impl {
   Resistance ResistanceOf(const SizingRow& row) const {
     const int j = row.member;
     if (row.kind == SizingRow::kStrength) return {sigma_w * st.a[j], sigma_w};
-    const BarCapacity cap = BarResistance(st.a[j], length[j], rule, E);
+    const BarCapacity cap = BarResistance(st.a[j], length[j], rule, E_bar);
     return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
                                             : Resistance{cap.yield, cap.d_yield};
   }
@@ -250,9 +252,11 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   p.ns = s.num_strings();
   p.nm = p.nb + p.ns;
   const Config& config = d.config;
-  p.E = config.material.youngs_modulus;
-  p.rho = config.material.density;
-  p.sigma_w = config.material.yield_stress / config.design.yield_safety_factor;
+  const MemberMaterial strings = StringMaterial(config), bars = BarMaterial(config);
+  p.E = strings.youngs_modulus;
+  p.E_bar = bars.youngs_modulus;
+  p.sigma_w = strings.DesignStress();
+  for (int j = 0; j < p.nm; ++j) p.rho.push_back(j < p.nb ? bars.density : strings.density);
   p.rule = BarRuleOf(config);
   p.deflection_limit_m = config.bridge.span / config.loads.deflection_limit;
   corrections.demand_factor.resize(p.nm, 1.0);
@@ -379,7 +383,7 @@ void SizingProblem::ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) c
 double SizingProblem::Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const {
   const Impl& p = *impl_;
   double mass = 0;
-  for (int j = 0; j < p.nm; ++j) mass += p.rho * p.length[j] * kAreaScale * x[p.group_of[j]];
+  for (int j = 0; j < p.nm; ++j) mass += p.rho[j] * p.length[j] * kAreaScale * x[p.group_of[j]];
   return mass / p.mass_scale;
 }
 
@@ -388,7 +392,7 @@ void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x
   const Impl& p = *impl_;
   (void)x;
   grad.setZero();
-  for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho * p.length[j] * kAreaScale / p.mass_scale;
+  for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho[j] * p.length[j] * kAreaScale / p.mass_scale;
 }
 
 void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {

@@ -111,8 +111,8 @@ struct DynamicModel {
   MemberNames names;                  // side table of the strings, for reports only
   Eigen::VectorXd node_mass;          // point masses at nodes [kg] (kAtNodes, free string nodes)
   Eigen::Matrix3Xd loads;             // constant external node loads W [N]
-  double allowed_stress = 0;          // sigma_w [Pa], for stress reports
-  double youngs_modulus = 0;          // E [Pa]
+  double allowed_stress = 0;          // the strings' sigma_w [Pa], for stress reports
+  double youngs_modulus = 0;          // the strings' E [Pa], for stress reports
   int tensegrity_class = 1;           // max bars at a node
   std::vector<int> deck_nodes;        // free deck nodes (0-based, in order of x), for the
                                       // deck measurement of SPEC.md §9; may be empty

@@ -10,7 +10,7 @@ FeModel FeModelOf(const Design& d) {
   FeModel fe;
   fe.statics = StaticModelOf(d);
   fe.reference = ReferenceState(fe.statics, d);
-  fe.youngs_modulus = d.config.material.youngs_modulus;
+  fe.youngs_modulus = BarMaterial(d.config).youngs_modulus;
   for (const MemberSizing& b : d.bars) fe.bar_area.push_back(b.area);
   for (const MemberSizing& s : d.strings) fe.string_area.push_back(s.area);
   fe.reference_loads = d.loads;

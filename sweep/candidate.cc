@@ -18,8 +18,8 @@ namespace {
 // grow_area (see candidate.h): the deck strings carry E A0 (1/r - 1) at an allowed stress.
 // Returns the area factor; updates the members and the mass breakdown of `design`.
 double GrowDeckStrings(Design& design, double ratio) {
-  const Material& mat = design.config.material;
-  const double sigma_w = mat.yield_stress / design.config.design.yield_safety_factor;
+  const MemberMaterial mat = StringMaterial(design.config);
+  const double sigma_w = mat.DesignStress();
   double factor = 1, deck_mass = 0;
   for (MemberSizing& s : design.strings) {
     if (s.kind != MemberKind::kDeckString) continue;
@@ -114,8 +114,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
       // The verdict says what failed, or which dynamic run was skipped and why.
       if (!verdict.pass || !design.dynamics.NotDone().empty()) row.note = verdict.summary;
     }
-    const Material& mat = design.config.material;
-    row.allowed_stress = mat.yield_stress / design.config.design.yield_safety_factor;
+    row.allowed_stress = StringMaterial(design.config).DesignStress();
     ModelOptions options;
     options.string_mass = sw.travelling_load.string_mass;
     options.damping = sw.travelling_load.damping_c;
@@ -127,7 +126,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
       row.prestress = DeckStress(design);
     } else if (prestrained) {
       options.prestrain.push_back({"deck", candidate.deck_prestrain});
-      row.prestress = mat.youngs_modulus * (1 / candidate.deck_prestrain - 1);
+      row.prestress = StringMaterial(design.config).youngs_modulus * (1 / candidate.deck_prestrain - 1);
     } else {
       row.prestress = DeckStress(design);
     }

@@ -38,7 +38,7 @@ TravellingLoadResult RunTravellingLoad(const DynamicModel& model, const Design& 
   for (size_t k = 0; k < model.bars.size(); ++k) {
     const double area = design.bars[k].area;
     if (area <= 0) continue;  // a bar the design left out carries nothing
-    const BarCapacity cap = BarResistance(area, model.bars[k].length, rule, model.youngs_modulus);
+    const BarCapacity cap = BarResistance(area, model.bars[k].length, rule, BarMaterial(design.config).youngs_modulus);
     const double compression = s.peak_bar_compression[k] / std::min(cap.yield, cap.buckling);
     const double tension = s.peak_bar_tension[k] / cap.yield;
     r.peak_bar_capacity_ratio = std::max({r.peak_bar_capacity_ratio, compression, tension});

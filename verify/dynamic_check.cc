@@ -182,8 +182,9 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   const LoadsConfig& l = d.config.loads;
   const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
   const BarRule rule = BarRuleOf(d.config);
-  const double E = d.config.material.youngs_modulus;
-  const double sigma_w = d.config.material.yield_stress / d.config.design.yield_safety_factor;
+  const double E = BarMaterial(d.config).youngs_modulus;
+  const MemberMaterial strings = StringMaterial(d.config);
+  const double sigma_w = strings.DesignStress();
   // The prestress is not factored (EN 1990 6.4.3.2 takes gamma_P = 1 for prestress that
   // favours and disfavours alike); the permanent load's share of the reference force is.
   const Eigen::VectorXd prestress = PrestressForces(d);
@@ -213,7 +214,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
         } else {
           if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, "dynamic");
           const double strain = summary.min_string_strain[j - nb];
-          if (strain < 0 && MustStayTaut(d, j - nb)) RaiseSlackFinding(f, strain, sigma_w, E, label);
+          if (strain < 0 && MustStayTaut(d, j - nb)) RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);
         }
         GroupAmplification& g = groups[group];
         g.group = group;

@@ -23,8 +23,8 @@ class Measures {
   explicit Measures(const Design& d)
       : d_(d),
         rule_(BarRuleOf(d.config)),
-        E_(d.config.material.youngs_modulus),
-        sigma_w_(d.config.material.yield_stress / d.config.design.yield_safety_factor),
+        E_(BarMaterial(d.config).youngs_modulus),
+        sigma_w_(StringMaterial(d.config).DesignStress()),
         limit_m_(d.config.bridge.span / d.config.loads.deflection_limit) {}
 
   int size() const { return static_cast<int>(d_.bars.size() + d_.strings.size()) + 1; }
@@ -59,7 +59,7 @@ class Measures {
  private:
   const Design& d_;
   BarRule rule_;
-  double E_, sigma_w_, limit_m_;
+  double E_, sigma_w_, limit_m_;  // the bars' modulus, the strings' design stress
 };
 
 // The linear pass over every station of every travelling family: the response about the
@@ -130,8 +130,9 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   const int nb = s.num_bars();
   const StaticState start = ReferenceState(model, d);
   const BarRule rule = BarRuleOf(d.config);
-  const double E = d.config.material.youngs_modulus;
-  const double sigma_w = d.config.material.yield_stress / d.config.design.yield_safety_factor;
+  const double E = BarMaterial(d.config).youngs_modulus;
+  const MemberMaterial strings = StringMaterial(d.config);
+  const double sigma_w = strings.DesignStress();
 
   StaticCheck out;
   out.done = true;
@@ -218,7 +219,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
           const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
           const MemberSizing& m = d.strings[k];
           if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
-          RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w, E, r.label);
+          RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w,
+                            strings.youngs_modulus, r.label);
         }
         if (r.deflection_m > out.deflection_max_m) {
           out.deflection_max_m = r.deflection_m;

@@ -214,6 +214,7 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
   const size_t members = linear.size();
   corrections.demand_factor.resize(members, 1.0);
   corrections.taut_margin_n.resize(members, 0.0);
+  const double string_modulus = StringMaterial(d.config).youngs_modulus;
   int up = 0, down = 0, taut = 0;
   double most_up = 1, most_down = 1;
   std::string up_name, down_name;
@@ -222,7 +223,7 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
     double checked = 0;
     for (const MemberFinding* f : {&statics.members[j], &dynamics.members[j]}) {
       if (f->mode == "slack") {
-        corrections.taut_margin_n[j] += d.config.material.youngs_modulus * m.area * (f->demand - f->resistance) * 1.05;
+        corrections.taut_margin_n[j] += string_modulus * m.area * (f->demand - f->resistance) * 1.05;
         ++taut;
       } else {
         checked = std::max(checked, f->utilisation);

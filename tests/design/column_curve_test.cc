@@ -46,7 +46,7 @@ TEST_CASE("column-curve sizing gives the least area that carries the force") {
   rule.imperfection = kCurveC;
   // A slender bar (3 m, 100 kN: lambda 3.8) so buckling governs.
   const double length = 3.0, force = 1e5;
-  const MemberSizing b = SizeBar(length, force, 0.0, rule, steel);
+  const MemberSizing b = SizeBar(length, force, 0.0, rule, BarMaterial(steel, 1.1));
   CHECK(b.governed_by == "buckling");
   const double carried = BarResistance(b.area, length, rule, steel.youngs_modulus).buckling;
   // The bisection stops at a 1e-15 relative bracket in area; the resistance grows like A^2
