@@ -372,7 +372,17 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   bool relaxed = false;
   const Design first = FirstDesign(config, progress, &relaxed);
   if (first.self_stress_states > SizingProblem::kMaxStates) {
-    Design d = relaxed ? RunDesign(config, progress) : first;
+    // A first design relaxed of the members' weight is checked with it: its sizes under the
+    // config's own loads and weight.
+    Design d = first;
+    if (relaxed) {
+      d = SizedDesign(config, MemberAreas(first), PrestressCoefficients(first));
+      d.solver = first.solver;
+      d.solver_form = first.solver_form;
+      d.notes.push_back("design: the members' weight did not settle in the equilibrium design (it moves between "
+                        "optima of its self-stress states): its sizes are those designed without it, checked "
+                        "with it");
+    }
     d.notes.push_back("design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
                       " self-stress states as variables and this bridge has " +
                       std::to_string(first.self_stress_states) + ": its equilibrium design is checked as it is");
