@@ -4,7 +4,7 @@
 // design as written or, edited, as built). Writes OUTDIR/summary.json and, when nodes are recorded and
 // record.csv is on, OUTDIR/history.csv, plus the VTK series with --vtk: all in one
 // OutputTransaction, so a failed run changes nothing and a successful one removes its own
-// stale files (an old history.csv, surplus run_<k>.vtp).
+// stale files (an old history.csv, an earlier version's run.pvd and run_<k>.vtp).
 
 #include <charconv>
 #include <cstdio>
@@ -41,7 +41,7 @@ const CommandSpec& SimulateSpec() {
       {"CONFIG.json|DESIGN.json"},
       {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
        {{"-q", "--quiet"}, "", "do not print the summary", false},
-       {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.pvd + run_<k>.vtp)", false},
+       {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.xdmf + its data DIR/run.bin)", false},
        ProgressOption(),
        StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
@@ -54,7 +54,7 @@ const CommandSpec& SimulateSpec() {
       "changes nothing on disk; a successful run replaces its own files in OUTDIR (and DIR) and\n"
       "removes its stale ones (history.csv when record.csv is off), leaving other files alone.\n"
       "Steps and output bytes are checked before the run (dynamics.limits). Look at a result\n"
-      "with tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png, or open DIR/run.pvd in\n"
+      "with tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png, or open DIR/run.xdmf in\n"
       "ParaView."};
   return spec;
 }
@@ -158,9 +158,13 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   } else {
     outputs.RemoveAtCommit(out_dir + "/history.csv");  // an earlier run's, not this one's
   }
-  std::ostream* pvd_out = nullptr;
+  std::ostream* xdmf_out = nullptr;
+  std::ostream* bin_out = nullptr;
   if (vtk_dir) {
-    pvd_out = &outputs.Stage(*vtk_dir + "/run.pvd");
+    xdmf_out = &outputs.Stage(*vtk_dir + "/run.xdmf");
+    bin_out = &outputs.Stage(*vtk_dir + "/run.bin");
+    // The one-file-per-sample series of earlier versions (run.pvd, run_<k>.vtp): not this run's.
+    outputs.RemoveAtCommit(*vtk_dir + "/run.pvd");
     outputs.RemoveStaleAtCommit(*vtk_dir, "run_", ".vtp");
   }
 
@@ -175,8 +179,7 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     hooks.history.push_back(csv_history.get());
   }
   if (vtk_dir) {
-    vtk_history = std::make_unique<VtkHistory>(
-        *pvd_out, [&](const std::string& name, const std::string& content) { outputs.Stage(*vtk_dir + "/" + name, content); });
+    vtk_history = std::make_unique<VtkHistory>(*xdmf_out, *bin_out);
     hooks.history.push_back(vtk_history.get());
   }
   if (vtk_dir) hooks.extra_bytes_per_record = [](const DynamicModel& m) { return VtkBytesPerSample(m); };

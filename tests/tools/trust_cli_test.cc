@@ -117,7 +117,7 @@ TEST_CASE("defect 2: record.csv false removes this command's old history.csv and
   CHECK(summary["config"]["dynamics"]["record"]["csv"] == false);  // the new run's summary
 }
 
-TEST_CASE("defect 2: a shorter VTK series removes the surplus samples of a longer one") {
+TEST_CASE("defect 2: a VTK series replaces the whole series of an earlier run, its own files and nothing else") {
   const fs::path dir = FreshDir("trust_stale_vtk");
   // Every free node of n = 3 (nodes 1-14; 15, 16 are the supports) recorded.
   const std::string nodes = "[1,2,3,4,5,6,7,8,9,10,11,12,13,14]";
@@ -125,13 +125,18 @@ TEST_CASE("defect 2: a shorter VTK series removes the surplus samples of a longe
   const fs::path shorter = Write(dir / "S.json", R"({"bridge": {"n": 3}, "dynamics": {"duration": 0.002, "record": {"every": 100, "nodes": )" + nodes + "}}}");
   const fs::path vtk = dir / "vtk";
   REQUIRE(Run(dir, "simulate " + Quote(longer.string()) + " -o " + Quote((dir / "o").string()) + " --vtk " + Quote(vtk.string()) + " -q").code == 0);
-  CHECK(fs::exists(vtk / "run_4.vtp"));  // 0.004 s / (100 x 1e-5 s) + 1 samples: 0..4
+  // 0.004 s / (100 x 1e-5 s) + 1 samples: 0..4.
+  CHECK(Snapshot(vtk).at("run.xdmf").find("<Grid Name=\"sample 4\"") != std::string::npos);
+  // The one-file-per-sample series an earlier version wrote there, and a file of the user's.
+  Write(vtk / "run.pvd", "<VTKFile/>\n");
+  Write(vtk / "run_7.vtp", "<VTKFile/>\n");
+  Write(vtk / "notes.txt", "keep me\n");
   REQUIRE(Run(dir, "simulate " + Quote(shorter.string()) + " -o " + Quote((dir / "o").string()) + " --vtk " + Quote(vtk.string()) + " -q").code == 0);
   const auto after = Snapshot(vtk);
-  CHECK(after.size() == 4);  // run.pvd and run_0..2.vtp
-  CHECK(after.count("run_2.vtp") == 1);
-  CHECK(after.count("run_3.vtp") == 0);
-  CHECK(after.count("run_4.vtp") == 0);
+  CHECK(after.size() == 3);  // run.xdmf, run.bin and notes.txt
+  CHECK(after.at("notes.txt") == "keep me\n");
+  CHECK(after.at("run.xdmf").find("<Grid Name=\"sample 2\"") != std::string::npos);
+  CHECK(after.at("run.xdmf").find("<Grid Name=\"sample 3\"") == std::string::npos);
 }
 
 TEST_CASE("defect 3: a run beyond the step limit exits 2 at once and names dynamics.duration") {

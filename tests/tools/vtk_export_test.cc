@@ -1,5 +1,7 @@
-// `tbridge simulate --vtk`: a ParaView time series that parses and has the model's counts.
+// `tbridge simulate --vtk`: a ParaView time series that parses, has the model's counts and
+// holds the run's numbers where its XML says.
 #include <catch2/catch.hpp>
+#include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -31,9 +33,9 @@ int Count(const std::string& text, const std::string& what) {
 }
 
 // A minimal XML nesting check: every element closes in the order it opened (self-closing
-// ones close at once). Returns each DataArray's parent element, in document order, or
-// throws std::runtime_error at the first mismatch; the prolog <?...?> is skipped.
-std::vector<std::string> DataArrayParents(const std::string& xml) {
+// ones close at once). Returns each DataItem's parent element, in document order, or throws
+// std::runtime_error at the first mismatch; the prolog <?...?> is skipped.
+std::vector<std::string> DataItemParents(const std::string& xml) {
   std::vector<std::string> open, parents;
   for (size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
     const size_t end = xml.find('>', at);
@@ -48,14 +50,32 @@ std::vector<std::string> DataArrayParents(const std::string& xml) {
       continue;
     }
     const std::string name = tag.substr(0, tag.find_first_of(" \n/"));
-    if (name == "DataArray") parents.push_back(open.empty() ? "" : open.back());
+    if (name == "DataItem") parents.push_back(open.empty() ? "" : open.back());
     if (tag.back() != '/') open.push_back(name);
   }
   if (!open.empty()) throw std::runtime_error("<" + open.back() + "> never closes");
   return parents;
 }
 
-TEST_CASE("simulate --vtk writes a .pvd series of .vtp files", "[tools][vtk]") {
+// The byte offsets (Seek) of the DataItems in document order.
+std::vector<long long> Seeks(const std::string& xml) {
+  std::vector<long long> out;
+  const std::regex seek(R"re(Seek="(\d+)")re");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), seek); it != std::sregex_iterator(); ++it) {
+    out.push_back(std::stoll((*it)[1]));
+  }
+  return out;
+}
+
+template <class T>
+std::vector<T> ReadAt(const std::string& bin, long long offset, size_t count) {
+  std::vector<T> out(count);
+  REQUIRE(offset + static_cast<long long>(count * sizeof(T)) <= static_cast<long long>(bin.size()));
+  std::memcpy(out.data(), bin.data() + offset, count * sizeof(T));
+  return out;
+}
+
+TEST_CASE("simulate --vtk writes one XDMF time series: run.xdmf and its data run.bin", "[tools][vtk]") {
   const fs::path dir = test::FreshDir("vtk");
   const fs::path config = WriteScenario(dir, "[1, 2]");
   const auto r = test::RunTbridge(dir, "simulate " + test::Quote(config.string()) + " -o " +
@@ -63,22 +83,41 @@ TEST_CASE("simulate --vtk writes a .pvd series of .vtp files", "[tools][vtk]") {
                                            test::Quote((dir / "vtk").string()));
   INFO(r.err);
   REQUIRE(r.code == 0);
-  const std::string pvd = test::ReadText(dir / "vtk" / "run.pvd");
-  // One data set per recorded sample: t = 0, 0.001, ..., 0.01.
-  REQUIRE(Count(pvd, "<DataSet ") == 11);
-  CHECK(pvd.find("timestep=\"0.01\"") != std::string::npos);
-  const std::string piece = test::ReadText(dir / "vtk" / "run_10.vtp");
-  CHECK(piece.find("NumberOfPoints=\"4\"") != std::string::npos);
-  CHECK(piece.find("NumberOfLines=\"5\"") != std::string::npos);  // 1 bar + 4 strings
-  // VTK's PolyData layout (vtk.org file formats): the points, one point array, the lines'
-  // connectivity and offsets, three cell arrays (type, tension, slack), each inside its own
-  // element of a properly nested document.
-  const std::vector<std::string> expected{"Points", "PointData", "Lines", "Lines", "CellData", "CellData", "CellData"};
-  CHECK(DataArrayParents(piece) == expected);
+  const std::string xml = test::ReadText(dir / "vtk" / "run.xdmf");
+  const std::string bin = test::ReadText(dir / "vtk" / "run.bin");
+  // One grid per recorded sample: t = 0, 0.001, ..., 0.01.
+  REQUIRE(Count(xml, "<Grid Name=\"sample ") == 11);
+  CHECK(xml.find("<Time Value=\"0.01\"/>") != std::string::npos);
+  CHECK(xml.find("NumberOfElements=\"5\"") != std::string::npos);  // 1 bar + 4 strings
+  // XDMF 2's layout (xdmf.org, "XDMF Model and Format"): per grid the topology, the geometry
+  // and four attributes, each holding one DataItem, in a properly nested document.
+  std::vector<std::string> expected;
+  for (int k = 0; k < 11; ++k) {
+    for (const char* e : {"Topology", "Geometry", "Attribute", "Attribute", "Attribute", "Attribute"}) expected.push_back(e);
+  }
+  REQUIRE(DataItemParents(xml) == expected);
+  // run.bin holds what the XML says: connectivity and types at its head (5 x 2 + 5 ints), then
+  // per sample 4 x 3 points, 4 x 3 displacements, 5 tensions (8 B) and 5 flags (4 B).
+  const std::vector<long long> seek = Seeks(xml);
+  CHECK(seek[0] == 0);
+  CHECK(static_cast<long long>(bin.size()) == 15 * 4 + 11 * (24 * 8 + 5 * 8 + 5 * 4));
+  CHECK(ReadAt<int>(bin, 0, 2) == std::vector<int>{0, 1});  // the bar: nodes 1-2, 0-based
   // At t = 0 the bar's nodes sit 0.1 m below the design: displacement y = -0.1 at nodes 1, 2.
-  const std::string first = test::ReadText(dir / "vtk" / "run_0.vtp");
-  const std::regex displacement(R"(Name="displacement"[^>]*>\n0 -0.1 0\n0 -0.1 0\n0 0 0\n0 0 0\n)");
-  CHECK(std::regex_search(first, displacement));
+  const std::vector<double> u = ReadAt<double>(bin, seek[2], 12);
+  // 1e-14 m: the displacement is a position less the design's, a few roundings of numbers of
+  // a few metres.
+  const std::vector<double> perturbed{0, -0.1, 0, 0, -0.1, 0, 0, 0, 0, 0, 0, 0};
+  for (size_t k = 0; k < 12; ++k) CHECK(u[k] == Approx(perturbed[k]).margin(1e-14));
+  // Points minus displacements are the same design positions in the last sample as in the first.
+  const size_t last = seek.size() - 6;
+  const std::vector<double> p0 = ReadAt<double>(bin, seek[1], 12), p1 = ReadAt<double>(bin, seek[last + 1], 12);
+  const std::vector<double> u1 = ReadAt<double>(bin, seek[last + 2], 12);
+  for (size_t k = 0; k < 12; ++k) CHECK(p1[k] - u1[k] == Approx(p0[k] - u[k]).margin(1e-14));
+  // The strings are taut (the flags 0) with a tension of k (s - L0) > 0; the bar's is 0.
+  const std::vector<double> tension = ReadAt<double>(bin, seek[last + 4], 5);
+  CHECK(tension[0] == 0.0);
+  for (size_t k = 1; k < 5; ++k) CHECK(tension[k] > 0);
+  CHECK(ReadAt<int>(bin, seek[last + 5], 5) == std::vector<int>{0, 0, 0, 0, 0});
 }
 
 TEST_CASE("simulate --vtk without every free node recorded is refused, nothing written",
