@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <functional>
+#include <optional>
+#include <utility>
 
 namespace tbridge {
 
@@ -37,12 +39,17 @@ void CountMembers(const Design& d, const std::function<bool(const MemberSizing&)
 
 std::vector<std::string> ConfigWarnings(const Config& c) {
   std::vector<std::string> out;
-  if (c.material.density < kMinPlausibleDensity) {
-    out.push_back(
-        "material.density = " + Format("%g", c.material.density) + " kg/m^3 is below " +
-        Format("%g", kMinPlausibleDensity) +
-        " kg/m^3, lighter than water: timber is about 450, steel 7850; a density given in "
-        "t/m^3 or g/cm^3 is 1000 times too small");
+  // The bridge's density, and each member kind's own where it gives one.
+  const std::pair<const char*, std::optional<double>> densities[] = {
+      {"material.density", c.material.density},
+      {"material.strings.density", c.material.strings.density},
+      {"material.bars.density", c.material.bars.density}};
+  for (const auto& [key, density] : densities) {
+    if (!density || *density >= kMinPlausibleDensity) continue;
+    out.push_back(std::string(key) + " = " + Format("%g", *density) + " kg/m^3 is below " +
+                  Format("%g", kMinPlausibleDensity) +
+                  " kg/m^3, lighter than water: timber is about 450, steel 7850; a density given in "
+                  "t/m^3 or g/cm^3 is 1000 times too small");
   }
   // The paper's one case has no partial factors.
   if (c.loads.gamma_g_inf == 0 && !KeepsPaperSwitches(c)) {

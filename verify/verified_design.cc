@@ -372,16 +372,15 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   bool relaxed = false;
   const Design first = FirstDesign(config, progress, &relaxed);
   if (first.self_stress_states > SizingProblem::kMaxStates) {
-    // A first design relaxed of the members' weight is checked with it: its sizes under the
-    // config's own loads and weight.
-    Design d = first;
+    // A relaxed first design (without the members' weight, or with the paper's switches) is
+    // checked under the config's own loads and weight: its sizes, not its relaxed loads.
+    Design d = relaxed ? SizedDesign(config, MemberAreas(first), PrestressCoefficients(first)) : first;
     if (relaxed) {
-      d = SizedDesign(config, MemberAreas(first), PrestressCoefficients(first));
       d.solver = first.solver;
       d.solver_form = first.solver_form;
-      d.notes.push_back("design: the members' weight did not settle in the equilibrium design (it moves between "
-                        "optima of its self-stress states): its sizes are those designed without it, checked "
-                        "with it");
+      d.notes.push_back("design: the equilibrium design with the config's own weight and loads found none that "
+                        "settled: its sizes are those of the relaxed design (without the members' weight, or "
+                        "with the paper's switches), checked with the config's weight and loads");
     }
     d.notes.push_back("design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
                       " self-stress states as variables and this bridge has " +
