@@ -71,7 +71,7 @@ struct LoadsConfig {
   double dynamic_dt_s = 1e-4;              // the step the dynamic check's runs ask for [s]
   // A run of more member-steps (steps x members) is not done: the dynamic check is then not
   // run, and the design INCOMPLETE.
-  double dynamic_max_member_steps = 5e7;
+  double dynamic_max_member_steps = 2e9;
   double gamma_g_sup = 1.35;               // unfavourable permanent
   double gamma_g_inf = 1.0;                // favourable permanent
   double gamma_q = 1.5;                    // payload and travelling load

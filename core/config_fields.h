@@ -283,15 +283,16 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "supports"},
            l.deck_sag_limit, Range{0.0, 1e6, true, false});
   v.Number(KeyInfo{"dynamic_dt_s", "s",
-                   "the step the dynamic check's runs ask for (RK4). Each run takes it, or the largest whole "
+                   "the step the dynamic check's runs ask for (RK4, the bar lengths stabilised by eqs 24-26). Each run takes it, or the largest whole "
                    "fraction of it within 0.9 of RK4's stability limit for the bridge, and a quarter of that where "
                    "a run still blows up"},
            l.dynamic_dt_s, Range{0.0, 1.0, false, true});
   v.Number(KeyInfo{"dynamic_max_member_steps", "–",
                    "the largest run the dynamic check does, in member-steps (RK4 steps x members). A run over it "
                    "is not done, saying so: the dynamic check is then not run and the design is INCOMPLETE, "
-                   "never PASS. The default takes the default bridge's walking load (80 000 steps) up to about "
-                   "600 members"},
+                   "never PASS. The default takes the default bridge's walking load (8 s) at every n up to 8 (480 000 "
+                   "steps of 1021 members, 25 s, at n = 8) and a 40 m span's to n = 8; it is a guard against a run "
+                   "of hours, not a setting of the check"},
            l.dynamic_max_member_steps, Range::Positive());
   v.Number(KeyInfo{"station_margin", "–",
                    "which deck stations of a travelling family the static check solves nonlinearly. 1: every "
