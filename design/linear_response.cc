@@ -114,6 +114,36 @@ void LinearResponse::AddBlockAction(const Eigen::Matrix3d& g, int i, int j, cons
 }
 
 Eigen::MatrixXd LinearResponse::SolveDerivative(const Eigen::MatrixXd& u, const Direction& dp) const {
+  return -lu_.solve(StiffnessAction(u, dp));
+}
+
+Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members, const std::vector<int>& nodes) const {
+  const int nm = static_cast<int>(members.size());
+  Eigen::MatrixXd l = Eigen::MatrixXd::Zero(ndof_ + nb_, nm + static_cast<Eigen::Index>(nodes.size()));
+  for (int f = 0; f < nm; ++f) {
+    const int j = members[f];
+    if (j < nb_) {
+      l(ndof_ + j, f) = -constraint_scale_;  // dC_b = -mu_b, mu scaled as Solve returns it
+      continue;
+    }
+    const Member& m = s_.strings[j - nb_];
+    const Eigen::VectorXd e = k_[j - nb_] * unit_[j].head(dim_);
+    if (dof_[m.j] >= 0) l.col(f).segment(dof_[m.j], dim_) += e;
+    if (dof_[m.i] >= 0) l.col(f).segment(dof_[m.i], dim_) -= e;
+  }
+  for (size_t v = 0; v < nodes.size(); ++v) {
+    if (dof_[nodes[v]] >= 0) l(dof_[nodes[v]] + 1, nm + static_cast<Eigen::Index>(v)) = 1.0;
+  }
+  return lu_.transpose().solve(l);
+}
+
+Eigen::MatrixXd LinearResponse::StringStretches(const Eigen::MatrixXd& u) const {
+  Eigen::MatrixXd out(ns_, u.cols());
+  for (int k = 0; k < ns_; ++k) out.row(k) = Stretch(u, s_.strings[k].i, s_.strings[k].j, unit_[nb_ + k]);
+  return out;
+}
+
+Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u, const Direction& dp) const {
   Eigen::MatrixXd dKu = Eigen::MatrixXd::Zero(ndof_ + nb_, u.cols());
   Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
   I.topLeftCorner(dim_, dim_).setIdentity();
@@ -127,7 +157,7 @@ Eigen::MatrixXd LinearResponse::SolveDerivative(const Eigen::MatrixXd& u, const 
     const Eigen::Matrix3d g = bar ? Eigen::Matrix3d(-dq * I) : Eigen::Matrix3d(dk * ee + dq * (I - ee));
     AddBlockAction(g, m.i, m.j, u, dKu);
   }
-  return -lu_.solve(dKu);
+  return dKu;
 }
 
 Eigen::MatrixXd LinearResponse::ForceChangeDerivative(const Eigen::MatrixXd& u, const Eigen::MatrixXd& du,

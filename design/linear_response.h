@@ -1,6 +1,6 @@
 // The linear response of a prestressed bar-string structure about its reference state: the
 // forces a statically indeterminate bridge really carries under a load, shared by stiffness,
-// and how they change with the string areas and the prestress (direct sensitivities).
+// and how they change with the string areas and the prestress (direct and adjoint sensitivities).
 //
 // About the reference state (the drawn geometry, member forces x = [C; T]), a load change f
 // on the free DOFs moves the nodes by u, with the bars rigid (their length held to first order):
@@ -58,6 +58,18 @@ class LinearResponse {
   };
   // d(solutions)/dp for the direction: (n_dof + n_b) x columns.
   Eigen::MatrixXd SolveDerivative(const Eigen::MatrixXd& solutions, const Direction& dp) const;
+  // [dK/dp u; 0] for each solution column: the right-hand side of SolveDerivative, nonzero
+  // only at the DOFs of the members the direction moves.
+  Eigen::MatrixXd StiffnessAction(const Eigen::MatrixXd& solutions, const Direction& dp) const;
+  // The adjoint solutions KKT^-T l of the functionals l that read, from a solution, the force
+  // change of each of `members` ([bars; strings] index, as ForceChanges) and then the
+  // vertical displacement of each of `nodes` (as Vertical): (n_dof + n_b) x (members + nodes).
+  // A functional's derivative along a direction is then -(its column)^T StiffnessAction, plus
+  // for a string dk_s/dp times its stretch: one solve per functional instead of one per
+  // direction and load column.
+  Eigen::MatrixXd Adjoint(const std::vector<int>& members, const std::vector<int>& nodes) const;
+  // e^T (u_j - u_i) of every string [m] in each solution: n_s x columns.
+  Eigen::MatrixXd StringStretches(const Eigen::MatrixXd& solutions) const;
   // d(force changes)/dp: (n_b + n_s) x columns, from the solutions and their derivative.
   Eigen::MatrixXd ForceChangeDerivative(const Eigen::MatrixXd& solutions, const Eigen::MatrixXd& d_solutions,
                                         const Direction& dp) const;

@@ -17,7 +17,7 @@
 // and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut margin
 // they ask.
 // The members' weight in G is held at the design the problem was built from (the outer
-// iterations update it). Gradients are exact (direct sensitivities); no Hessian: the solvers
+// iterations update it). Gradients are exact (adjoint sensitivities); no Hessian: the solvers
 // approximate it (Ipopt's limited-memory BFGS, NLopt's SLSQP).
 #pragma once
 
