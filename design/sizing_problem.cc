@@ -291,9 +291,15 @@ struct SizingProblem::Impl {
       for (Eigen::Index i = 0; i < action.rows(); ++i) {
         if (!action.row(i).isZero(0.0)) touched.push_back(static_cast<int>(i));
       }
-      // d(functional f in column q)/dp = -adjoint(:, f)^T action(:, q), over the touched DOFs.
-      Eigen::MatrixXd d_value = Eigen::MatrixXd::Zero(adjoint.cols(), action.cols());
-      for (const int i : touched) d_value.noalias() -= adjoint.row(i).transpose() * action.row(i);
+      // d(functional f in column q)/dp = -adjoint(:, f)^T action(:, q), over the touched DOFs
+      // (a group's few, or every DOF for a self-stress): gathered, one matrix product.
+      const int nt = static_cast<int>(touched.size());
+      Eigen::MatrixXd adjoint_t(nt, adjoint.cols()), action_t(nt, action.cols());
+      for (int t = 0; t < nt; ++t) {
+        adjoint_t.row(t) = adjoint.row(touched[t]);
+        action_t.row(t) = action.row(touched[t]);
+      }
+      const Eigen::MatrixXd d_value = -adjoint_t.transpose() * action_t;
       const auto combine = [&](int f, int c) {
         double out = d_value(f, base_column[c]);
         if (station_factor[c] != 0) out += station_factor[c] * d_value(f, station_column0 + combos[c].station);
