@@ -291,8 +291,8 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "the largest run the dynamic check does, in member-steps (RK4 steps x members). A run over it "
                    "is not done, saying so: the dynamic check is then not run and the design is INCOMPLETE, "
                    "never PASS. The default takes the default bridge's walking load (8 s) at every n up to 8 (480 000 "
-                   "steps of 1021 members, 25 s, at n = 8) and a 40 m span's to n = 8; it is a guard against a run "
-                   "of hours, not a setting of the check"},
+                   "steps of 1021 members, 25 s, at n = 8); it is a guard against a run of hours, not a setting of "
+                   "the check"},
            l.dynamic_max_member_steps, Range::Positive());
   v.Number(KeyInfo{"station_margin", "–",
                    "which deck stations of a travelling family the static check solves nonlinearly. 1: every "
