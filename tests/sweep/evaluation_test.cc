@@ -64,6 +64,33 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "
   CHECK_THAT(row.note, Catch::Contains("unstable"));
 }
 
+TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its note says why", "[sweep]") {
+  // The engineering defaults at n = 1 with a dynamic-run budget below the walking load's
+  // 80 000 steps of 5 members: the design's dynamic check is not run, so its verdict is
+  // INCOMPLETE. The same candidate with the default budget is feasible: the budget alone
+  // decides. The sweep's own run-based constraints are off: this is the verified design's
+  // verdict alone.
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"sweep",
+                {{"n", {1}},
+                 {"constraints", {{"bar_capacity_during_motion", false}, {"no_slack_under_service", false}}}}}};
+  const SweepSpec full = ParseSweepSpec(root);
+  root["loads"] = {{"dynamic_max_member_steps", 1000.0}};
+  const SweepSpec starved = ParseSweepSpec(root);
+  const std::vector<Candidate> grid = EnumerateCandidates(full.sweep);
+  REQUIRE(grid.size() == 1);
+  const CandidateRow done = EvaluateCandidate(full, grid[0]);
+  REQUIRE(done.ok);
+  CHECK(done.feasible);
+  const CandidateRow skipped = EvaluateCandidate(starved, grid[0]);
+  CHECK_FALSE(skipped.feasible);
+  CHECK(skipped.verified == std::optional<bool>(false));
+  CHECK(std::find(skipped.violated.begin(), skipped.violated.end(), std::string(kVerifiedDesign)) !=
+        skipped.violated.end());
+  CHECK_THAT(skipped.note, Catch::Contains("INCOMPLETE"));
+  CHECK_THAT(skipped.note, Catch::Contains("skipped"));
+}
+
 TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass", "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}},
                {"sweep", test::PaperSweep({{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}})}};
