@@ -6,10 +6,11 @@
 //   "paper_travelling" case: f on each inner deck station for 0.25 s;
 // - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
 // - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
-// RK4 at loads.dynamic_dt_s (1e-4 s), or at the largest whole fraction of it within 0.9 of RK4's stability limit,
-// the bar lengths stabilised (eqs 24-26; over a crossing of 8 s their drift fails a run from n = 6):
-// SDIRK3 under-reports the string peaks by up to 22 % (BENCHMARKS.md), so the check does not
-// use it.
+// RK4 at loads.dynamic_dt_s (1e-4 s), or at the largest whole fraction of it within 0.9 of
+// RK4's stability limit, the bar lengths stabilised (eqs 24-26; over a crossing of 8 s their
+// drift failed the run from n = 6). SDIRK3 under-reports the member peaks (the paper's load:
+// string peaks up to 22 % low; the walking load: 1.1-2.3 % of the resistance at n = 6, and
+// slower than RK4 there; BENCHMARKS.md), so the check does not use it.
 //
 // A member's dynamic demand is P + gamma_G (F_G - P) + gamma max(F_peak - F_G, 0): F_G its
 // force in the reference state, P the prestress in it (PrestressForces, not factored),
