@@ -56,7 +56,8 @@ class LinearResponse {
     Eigen::VectorXd stiffness;  // n_s [N/m per unit p]
     Eigen::VectorXd forces;     // n_b + n_s [N per unit p]
   };
-  // d(solutions)/dp for the direction: (n_dof + n_b) x columns.
+  // d(solutions)/dp for the direction: (n_dof + n_b) x columns. The direct form: the sizing
+  // takes the adjoint one (Adjoint below), and the tests check each against the other.
   Eigen::MatrixXd SolveDerivative(const Eigen::MatrixXd& solutions, const Direction& dp) const;
   // [dK/dp u; 0] for each solution column: the right-hand side of SolveDerivative, nonzero
   // only at the DOFs of the members the direction moves.

@@ -118,6 +118,10 @@ struct SizingProblem::Impl {
   std::vector<int> base_column;        // per combination
   std::vector<SizingRow> rows;
   Pattern jacobian, hessian;
+  // What each row reads, for the adjoint Jacobian: the members whose force change and the deck
+  // nodes whose vertical displacement some row reads (LinearResponse::Adjoint's columns, the
+  // members first), and per row its column (-1: the reference-taut rows, which read none).
+  std::vector<int> adjoint_members, adjoint_nodes, row_functional;
 
   // The workspace: the last point evaluated, its values and (on demand) its Jacobian.
   struct State {
@@ -248,27 +252,47 @@ struct SizingProblem::Impl {
   // members touch. The direct form (a solve per variable and load column) took 40 % of a
   // sizing at n = 5, where the variables (64) times the columns (37) outnumber the
   // functionals (141) by 17.
-  void Jacobian() const {
-    const int nv = num_variables(), nr = static_cast<int>(rows.size());
-    std::vector<int> members, nodes, functional(rows.size(), -1);
+  // Indexes what each row reads (adjoint_members, adjoint_nodes, row_functional): once, as
+  // the rows are fixed.
+  void IndexFunctionals() {
     std::vector<int> member_col(nm, -1), node_col(s.num_nodes(), -1);
-    for (int r = 0; r < nr; ++r) {
+    std::vector<std::pair<bool, int>> read(rows.size(), {false, -1});
+    for (size_t r = 0; r < rows.size(); ++r) {
       const SizingRow& row = rows[r];
       if (row.kind == SizingRow::kReferenceTaut) continue;
       const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
       std::vector<int>& col = deflection ? node_col : member_col;
+      std::vector<int>& list = deflection ? adjoint_nodes : adjoint_members;
       if (col[row.member] < 0) {
-        col[row.member] = static_cast<int>((deflection ? nodes : members).size());
-        (deflection ? nodes : members).push_back(row.member);
+        col[row.member] = static_cast<int>(list.size());
+        list.push_back(row.member);
       }
-      functional[r] = col[row.member];
+      read[r] = {deflection, col[row.member]};
     }
-    const int n_members = static_cast<int>(members.size());
-    for (int r = 0; r < nr; ++r) {
-      const SizingRow::Kind k = rows[r].kind;
-      if (k == SizingRow::kDeflectionDown || k == SizingRow::kDeflectionUp) functional[r] += n_members;
+    row_functional.assign(rows.size(), -1);
+    const int n_members = static_cast<int>(adjoint_members.size());
+    for (size_t r = 0; r < rows.size(); ++r) {
+      if (read[r].second >= 0) row_functional[r] = read[r].second + (read[r].first ? n_members : 0);
     }
-    const Eigen::MatrixXd adjoint = st.lin->Adjoint(members, nodes);
+  }
+
+  // Combination c's value of row `row` of per-column values `m` (its case's column plus its
+  // station's times the station load), as Forces and Vertical combine them.
+  double Combined(const Eigen::MatrixXd& m, int row, int c) const {
+    double out = m(row, base_column[c]);
+    if (station_factor[c] != 0) out += station_factor[c] * m(row, station_column0 + combos[c].station);
+    return out;
+  }
+
+  // The Jacobian at the evaluated state, by adjoints: one solve per member and deck node that
+  // a row reads (design/linear_response.h), then per variable a product over the DOFs its
+  // members touch. The direct form (a solve per variable and load column) took 40 % of a
+  // sizing at n = 5, where the variables (64) times the columns (37) outnumber the
+  // functionals (141) by 17.
+  void Jacobian() const {
+    const int nv = num_variables(), nr = static_cast<int>(rows.size());
+    const int n_members = static_cast<int>(adjoint_members.size());
+    const Eigen::MatrixXd adjoint = st.lin->Adjoint(adjoint_members, adjoint_nodes);
     const Eigen::MatrixXd stretch = st.lin->StringStretches(st.u);
     st.jac.resize(nr, nv);
     std::vector<int> touched;
@@ -300,25 +324,16 @@ struct SizingProblem::Impl {
         action_t.row(t) = action.row(touched[t]);
       }
       const Eigen::MatrixXd d_value = -adjoint_t.transpose() * action_t;
-      const auto combine = [&](int f, int c) {
-        double out = d_value(f, base_column[c]);
-        if (station_factor[c] != 0) out += station_factor[c] * d_value(f, station_column0 + combos[c].station);
-        return out;
-      };
       for (int r = 0; r < nr; ++r) {
         const SizingRow& row = rows[r];
-        const int j = row.member, c = row.combination;
+        const int j = row.member, c = row.combination, f = row_functional[r];
         double d_force = 0, d_vertical = 0;
-        if (functional[r] >= n_members) {
-          d_vertical = combine(functional[r], c);
-        } else if (functional[r] >= 0) {
-          d_force = dp.forces[j] + combine(functional[r], c);
-          if (j >= nb && dp.stiffness[j - nb] != 0) {
-            // The string's own stiffness change on its stretch: dk e^T (u_j - u_i).
-            double s_c = stretch(j - nb, base_column[c]);
-            if (station_factor[c] != 0) s_c += station_factor[c] * stretch(j - nb, station_column0 + combos[c].station);
-            d_force += dp.stiffness[j - nb] * s_c;
-          }
+        if (f >= n_members) {
+          d_vertical = Combined(d_value, f, c);
+        } else if (f >= 0) {
+          d_force = dp.forces[j] + Combined(d_value, f, c);
+          // The string's own stiffness change on its stretch: dk e^T (u_j - u_i).
+          if (j >= nb && dp.stiffness[j - nb] != 0) d_force += dp.stiffness[j - nb] * Combined(stretch, j - nb, c);
         }
         st.jac(r, v) = Derivative(row, d_force, d_vertical, row.kind == SizingRow::kReferenceTaut ? dp.forces[j] : 0.0,
                                   d_area[j]);
@@ -431,6 +446,7 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     }
     p.rows = std::move(kept);
   }
+  p.IndexFunctionals();
   for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
     for (int v = 0; v < p.num_variables(); ++v) p.jacobian.emplace_back(r, v);
   }

@@ -35,8 +35,8 @@ LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, dou
   // RK4 lets the bar lengths drift: over a crossing of 8 s at n = 6 the drift reaches the
   // guard's 1e-3 and the run fails. The stabilisation holds them (eqs 24-26; its term is a
   // force on the length error alone, zero on the exact motion): the peaks agree with an
-  // unstabilised run to 1e-6 of the resistance where that completes
-  // (tests/verify/dynamic_check_test.cc).
+  // unstabilised run to 1e-9 relative where that completes (n = 3;
+  // tests/verify/dynamic_check_test.cc).
   run.scenario.stabilisation.enabled = true;
   run.station_force = station_force;
   run.gamma = gamma;

@@ -142,9 +142,18 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     full.Constraints(x, g);
     bool added = false, violated = false;
     const std::vector<char> near = NearLimits(full, g);
+    std::vector<int> unposed_violations;
     for (int r = 0; r < rows; ++r) {
-      violated = violated || !(g[r] >= lo[r] - 1e-9);
+      const bool bad = !(g[r] >= lo[r] - 1e-9);
+      violated = violated || bad;
       if (!keep[r] && near[r]) keep[r] = 1, added = true;
+      if (!keep[r] && bad) unposed_violations.push_back(r);
+    }
+    // A violated row beyond its member's two closest (those two posed and violated within the
+    // solver's tolerance) is posed as well, so that a round ends only when nothing is violated
+    // or nothing more can be posed.
+    if (!added) {
+      for (const int r : unposed_violations) keep[r] = 1, added = true;
     }
     if (round > 0 && (!violated || !added)) break;
     const SizingProblem posed(current, corrections, &keep);
