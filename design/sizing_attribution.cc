@@ -38,10 +38,10 @@ double DynamicShare(const SizingRow& row, const std::vector<double>& dynamic) {
 
 // The multiplier of a row in physical units: the rows are scaled (problem.h), utilisation and
 // deflection rows as fractions of their limits, tension rows by the force scale, areas by
-// the area scale.
-double Physical(int kind, double lambda, const SizingProblem& p) {
+// the group's area scale.
+double Physical(int kind, double lambda, const SizingProblem& p, int group) {
   if (kind == kTautKind) return lambda * p.mass_scale_kg() / p.force_scale_n();
-  if (kind == kMinimumKind) return lambda * p.mass_scale_kg() / p.area_scale_m2();
+  if (kind == kMinimumKind) return lambda * p.mass_scale_kg() / p.area_scale_m2(group);
   return lambda * p.mass_scale_kg();
 }
 
@@ -131,11 +131,11 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
       const int kind = DynamicShare(p.rows()[r], dynamic) > 0.5 ? kDynamicsKind : KindOf(p.rows()[r]);
       b.kind = kConstraintKinds[kind];
       b.case_label = p.combinations()[p.rows()[r].combination].label;
-      b.multiplier = Physical(kind, z[r], p);
+      b.multiplier = Physical(kind, z[r], p, v);
       b.unit = UnitOf(kind);
     } else if (r <= -2) {
       b.kind = kConstraintKinds[kMinimumKind];
-      b.multiplier = Physical(kMinimumKind, z[nr - 2 - r], p);
+      b.multiplier = Physical(kMinimumKind, z[nr - 2 - r], p, v);
       b.unit = UnitOf(kMinimumKind);
     }
   }

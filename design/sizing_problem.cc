@@ -21,7 +21,6 @@ constexpr int kMaxStates = SizingProblem::kMaxStates;
 // finite for a string the loads do not use.
 constexpr double kAreaFloor = 1e-8;
 // The variables' unit of area [m^2]: 1 cm^2, so that areas are O(1) to O(100).
-constexpr double kAreaScale = 1e-4;
 
 // Each member's mirror image across the bridge's planes of symmetry (x = span / 2; between
 // the planes of a 3D bridge), joined into groups: a member and its images share one area.
@@ -106,6 +105,7 @@ struct SizingProblem::Impl {
   BarRule rule;
   std::vector<double> length, min_area;
   std::vector<int> group_of;
+  std::vector<double> area_scale;  // per group [m^2]: its area in the design the problem is built from
   std::vector<std::vector<int>> members_of;
   std::vector<bool> must_taut;
   std::vector<int> deck_nodes;
@@ -141,7 +141,7 @@ struct SizingProblem::Impl {
   int num_variables() const { return groups + states; }
   std::vector<double> Areas(const Eigen::VectorXd& x) const {
     std::vector<double> a(nm);
-    for (int j = 0; j < nm; ++j) a[j] = kAreaScale * x[group_of[j]];
+    for (int j = 0; j < nm; ++j) a[j] = area_scale[group_of[j]] * x[group_of[j]];
     return a;
   }
   Eigen::VectorXd Reference(const Eigen::VectorXd& x) const {
@@ -303,8 +303,8 @@ struct SizingProblem::Impl {
       std::vector<double> d_area(nm, 0.0);
       if (v < groups) {
         for (int j : members_of[v]) {
-          d_area[j] = kAreaScale;
-          if (j >= nb) dp.stiffness[j - nb] = E * kAreaScale / length[j];
+          d_area[j] = area_scale[v];
+          if (j >= nb) dp.stiffness[j - nb] = E * area_scale[v] / length[j];
         }
       } else {
         dp.forces = N.col(v - groups) * force_scale;
@@ -374,6 +374,12 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   p.groups = *std::max_element(p.group_of.begin(), p.group_of.end()) + 1;
   p.members_of.resize(p.groups);
   for (int j = 0; j < p.nm; ++j) p.members_of[p.group_of[j]].push_back(j);
+  p.area_scale.assign(p.groups, 0.0);
+  for (int j = 0; j < p.nm; ++j) {
+    const double area = j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area;
+    double& scale = p.area_scale[p.group_of[j]];
+    scale = std::max({scale, area, p.min_area[j]});
+  }
   p.deck_nodes = d.topology.deck_nodes;
 
   // The reference state: the particular forces of G and the self-stresses.
@@ -464,7 +470,7 @@ void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) con
   for (int g = 0; g < p.groups; ++g) {
     double floor = 0;
     for (int j : p.members_of[g]) floor = std::max(floor, p.min_area[j]);
-    lo[g] = floor / kAreaScale;
+    lo[g] = floor / p.area_scale[g];
     hi[g] = std::numeric_limits<double>::infinity();
   }
   for (int m = 0; m < p.states; ++m) {
@@ -484,7 +490,7 @@ void SizingProblem::ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) c
 double SizingProblem::Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const {
   const Impl& p = *impl_;
   double mass = 0;
-  for (int j = 0; j < p.nm; ++j) mass += p.rho[j] * p.length[j] * kAreaScale * x[p.group_of[j]];
+  for (int j = 0; j < p.nm; ++j) mass += p.rho[j] * p.length[j] * p.area_scale[p.group_of[j]] * x[p.group_of[j]];
   return mass / p.mass_scale;
 }
 
@@ -493,7 +499,7 @@ void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x
   const Impl& p = *impl_;
   (void)x;
   grad.setZero();
-  for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho[j] * p.length[j] * kAreaScale / p.mass_scale;
+  for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho[j] * p.length[j] * p.area_scale[p.group_of[j]] / p.mass_scale;
 }
 
 void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {
@@ -525,7 +531,7 @@ void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, doub
 Eigen::VectorXd SizingProblem::VariablesOf(const std::vector<double>& areas, const Eigen::VectorXd& alpha) const {
   const Impl& p = *impl_;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(p.num_variables());
-  for (int j = 0; j < p.nm; ++j) x[p.group_of[j]] = std::max(x[p.group_of[j]], areas[j] / kAreaScale);
+  for (int j = 0; j < p.nm; ++j) x[p.group_of[j]] = std::max(x[p.group_of[j]], areas[j] / p.area_scale[p.group_of[j]]);
   for (int m = 0; m < p.states && m < alpha.size(); ++m) x[p.groups + m] = alpha[m] / p.force_scale;
   return x;
 }
@@ -574,7 +580,7 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
 
 double SizingProblem::mass_scale_kg() const { return impl_->mass_scale; }
 double SizingProblem::force_scale_n() const { return impl_->force_scale; }
-double SizingProblem::area_scale_m2() { return kAreaScale; }
+double SizingProblem::area_scale_m2(int group) const { return impl_->area_scale[group]; }
 
 const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }

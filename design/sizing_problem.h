@@ -105,10 +105,13 @@ class SizingProblem final : public NlpProblem {
   double LargestDeflection(const Eigen::VectorXd& x) const;
   const std::vector<SizingRow>& rows() const;
   // The scales of the program: objective = mass / mass_scale_kg; a tension row = force /
-  // force_scale_n; an area variable = area / area_scale_m2.
+  // force_scale_n; an area variable = area / area_scale_m2(its group), the group's area in the
+  // design the problem is built from: each variable starts near 1, and SLSQP's first Hessian,
+  // the identity, weighs them alike (one scale of 1e-4 m^2 for all took 1 700 evaluations
+  // against 1 375 at n = 5).
   double mass_scale_kg() const;
   double force_scale_n() const;
-  static double area_scale_m2();
+  double area_scale_m2(int group) const;
   const std::vector<SizingCombination>& combinations() const;
   const std::vector<int>& group_of() const;  // per member
 

@@ -84,7 +84,7 @@ TEST_CASE("two solvers give the same verified mass", "[verify]") {
   // NLopt's SLSQP (the default) and Ipopt (limited-memory BFGS): a second algorithm on the
   // same program. 1e-4 relative: the outer iterations settle to 5e-4 of the mass, but both
   // follow the same corrections from the same start, so they end within the solvers'
-  // tolerances (1e-8) of one another's optimum; measured 2e-5 apart. The structural program:
+  // tolerances (1e-6) of one another's optimum; measured 2e-5 apart. The structural program:
   // comfort off, whose outer stiffness correction follows each solver's path (with it on the
   // two end 1.2 % apart, each at a passing design).
   Config config;
@@ -136,7 +136,7 @@ TEST_CASE("comfort checked but not sized for: the sizing converges and the verdi
 TEST_CASE("two starts give the same verified mass where the program has one optimum", "[verify]") {
   // The last sizing repeated from twice the first design's areas (DesignAndVerify's second
   // start) against the run from the first design. 1e-4 relative: the same program, so the two
-  // solutions differ by the solvers' tolerance (1e-8) if they reach the same optimum; another
+  // solutions differ by the solvers' tolerance (1e-6) if they reach the same optimum; another
   // optimum would differ by the mass of a member group (a few %).
   for (const int n : {2, 3}) {
     Config config;
@@ -151,12 +151,12 @@ TEST_CASE("two starts give the same verified mass where the program has one opti
 }
 
 TEST_CASE("where two starts reach two optima, both are reported and the lighter passing one is kept", "[verify]") {
-  // The default bridge at n = 2 with the comfort correction: its stiffness requirement makes
+  // The default bridge at n = 1 with the comfort correction: its stiffness requirement makes
   // the program's feasible set less convex, and the second start (twice the first design's
-  // areas) settles 1.3 % heavier. The output names both; the design kept is the lighter and
-  // passes.
+  // areas) settles 0.6 % heavier (269.2 against 267.6 kg; at n = 2 the two now meet within
+  // 6e-4). The output names both; the design kept is the lighter and passes.
   Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
-  config.bridge.n = 2;
+  config.bridge.n = 1;
   const Design d = DesignAndVerify(config);
   INFO(d.resizing.optima);
   REQUIRE(d.resizing.second_start_kg > 0);
