@@ -1,7 +1,13 @@
-// The dynamic check's moving load (Q_t crossing the deck, deck inertia on) integrated by each
-// method against RK4 at the check's stable step, on the default bridge's first design at each n.
+// The dynamic check's moving load (Q_t crossing the deck, deck inertia on) by each method
+// against RK4 at the check's stable step, on the default bridge's first design at each n (or
+// on design files): SDIRK3 at four steps, and the modal run (verify/modal_run.h) at five
+// cutoffs, done whatever the bridge's nonlinearity (which its line names) so that its error
+// can be read against it.
 //
 //   build/bench/bench_moving_load [n_min=3] [n_max=6] [config=configs/default.json] [stabilised=1] [reference]
+//
+// `config` may instead be a pattern of design files with %d for n (e.g. out/default_n%d.json,
+// written by `tbridge design`): the runs are then of those designs (the verified ones).
 //
 // Per method and step: run time, the largest error of a member's peak force as a fraction of
 // its resistance (bars: min(yield, buckling); strings: sigma_w A) and the error of the peak
@@ -13,16 +19,21 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
+#include "design/design_reader.h"
 #include "design/sizing.h"
 #include "dynamics/integrator_policy.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "design/static_model.h"
 #include "verify/load_scenarios.h"
+#include "verify/modal_run.h"
 
 namespace {
 
@@ -70,9 +81,18 @@ int main(int argc, char** argv) {
   const bool reference_only = argc > 5 && std::string(argv[5]) == "reference";
   std::printf("n,method,dt_s,steps,seconds,force_error_of_resistance,deck_peak_error,deck_peak_m\n");
   for (int n = n_min; n <= n_max; ++n) {
-    Config config = LoadConfig(path);
-    config.bridge.n = n;
-    const Design d = RunDesign(config);
+    Design d;
+    if (path.find("%d") != std::string::npos) {
+      char file[4096];
+      std::snprintf(file, sizeof file, path.c_str(), n);
+      std::ifstream in(file);
+      d = ReadDesign(nlohmann::json::parse(in));
+    } else {
+      Config config = LoadConfig(path);
+      config.bridge.n = n;
+      d = RunDesign(config);
+    }
+    const Config& config = d.config;
     ModelOptions options;
     options.gravity_on_structure = config.design.self_weight;
     options.deck_inertia = true;
@@ -95,6 +115,41 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     };
     line("rk4_reference", ref_scene, ref);
+    // The modal run (verify/modal_run.h) at each cutoff, its station solves timed apart: the
+    // check does them for its static counterparts whichever way the run goes.
+    const StaticModel statics = StaticModelOf(d);
+    StaticState standing;
+    bool converged = false;
+    const auto stations_start = Clock::now();
+    const StationResponses stations =
+        MovingLoadStations(d, model, statics, l.travelling_load_n, scene.duration, standing, converged);
+    const double stations_s = std::chrono::duration<double>(Clock::now() - stations_start).count();
+    std::printf("%d,station_solves,,%zu,%.4g,,,\n", n, stations.forces.size(), stations_s);
+    for (const double cutoff : {25.0, 50.0, 100.0, 200.0, 400.0}) {
+      if (reference_only) break;
+      const auto start = Clock::now();
+      ModalRunOptions modal;
+      modal.cutoff_hz = cutoff;
+      modal.max_nonlinearity = 1.0;  // done whatever it is: the error is what is measured
+      for (int q = 0; q < d.topology.structure.num_strings(); ++q) modal.may_go_slack.push_back(!MustStayTaut(d, q));
+      const ModalRunResult m = RunModalMovingLoad(model, statics, standing, stations, modal);
+      Run r;
+      r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      if (!m.done) {
+        std::printf("%d,modal_%g_hz,,not done: %s\n", n, cutoff, m.note.c_str());
+        continue;
+      }
+      r.s.steps = m.samples;
+      r.s.peak_bar_compression = m.peak_bar_compression;
+      r.s.peak_string_tension = m.peak_string_tension;
+      r.s.peak_deck_displacement[1] = m.peak_deck_displacement_m;
+      DynamicsConfig sc = scene;
+      sc.dt = m.sample_dt_s;
+      char name[64];
+      std::snprintf(name, sizeof name, "modal_%d_modes_to_%.0f_hz_nonlinearity_%.3g", m.modes, m.highest_mode_hz,
+                    m.nonlinearity);
+      line(name, sc, r);
+    }
     for (const double dt : {4e-3, 2e-3, 1e-3, 5e-4}) {
       if (reference_only) break;
       DynamicsConfig sc = scene;

@@ -72,6 +72,13 @@ struct LoadsConfig {
   // A run of more member-steps (steps x members) is not done: the dynamic check is then not
   // run, and the design INCOMPLETE.
   double dynamic_max_member_steps = 2e9;
+  // How the walking load runs: "modal" (verify/modal_run.h: the modes to
+  // dynamic_modal_cutoff_hz, the nonlinear run where a string changes state) or "rk4".
+  std::string dynamic_method = "modal";
+  double dynamic_modal_cutoff_hz = 100.0;  // [Hz]
+  // The modal run is done where the bridge's linear deck response to a station's load is within
+  // this fraction of its nonlinear one; beyond it the nonlinear run.
+  double dynamic_modal_max_nonlinearity = 0.015;
   double gamma_g_sup = 1.35;               // unfavourable permanent
   double gamma_g_inf = 1.0;                // favourable permanent
   double gamma_q = 1.5;                    // payload and travelling load

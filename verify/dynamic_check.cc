@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "bridge/design_model.h"
@@ -11,6 +12,7 @@
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "verify/load_scenarios.h"
+#include "verify/modal_run.h"
 
 namespace tbridge {
 
@@ -86,6 +88,7 @@ bool WithinBudget(double members, double max_member_steps, const char* why_dt, L
   const double steps = run.scenario.duration / run.scenario.dt;
   if (steps * members <= max_member_steps) return true;
   std::ostringstream os;
+  if (!run.record.note.empty()) os << run.record.note << "; ";
   os << "skipped: " << steps << " RK4 steps of " << members << " members at dt = " << run.scenario.dt << " s"
      << why_dt << " exceed the " << max_member_steps << " member-steps the check allows";
   run.record.note = os.str();
@@ -127,34 +130,61 @@ bool Run(const DynamicModel& model, double stable_dt, double members, double max
   return true;
 }
 
-// Each member's largest force [C_bars; T_strings] over the static counterparts of `run` and
-// the standing loads alone, where every run starts [N]. The loads are formed in one matrix,
-// a station at a time: O(n_n) memory however many stations.
-Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const LoadRun& run) {
-  const StaticModel statics = StaticModelOf(d);
+// Each member's largest force [C_bars; T_strings] over the static counterparts of a run (its
+// `stations`, or with none the full wind) and the standing loads alone, where every run
+// starts [N].
+Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const StaticModel& statics,
+                            const StationResponses* stations) {
+  if (stations != nullptr) {
+    Eigen::VectorXd peak = stations->standing_forces.cwiseMax(0.0);
+    for (const Eigen::VectorXd& f : stations->forces) peak = peak.cwiseMax(f);
+    return peak;
+  }
+  // The full wind.
   const StaticState start = ReferenceState(statics, d);
   const int nb = d.topology.structure.num_bars(), ns = d.topology.structure.num_strings();
   Eigen::VectorXd peak = Eigen::VectorXd::Zero(nb + ns);
-  Eigen::Matrix3Xd loads = model.loads;
-  const auto solve = [&]() {
+  for (const Eigen::Matrix3Xd& loads : {Eigen::Matrix3Xd(model.loads + d.actions.base[kWind]), model.loads}) {
     const StaticResult r = SolveStatic(statics, start, d.loads, loads);
-    if (!r.converged) return;
+    if (!r.converged) continue;
     peak.head(nb) = peak.head(nb).cwiseMax(r.state.bar_compression);
     peak.tail(ns) = peak.tail(ns).cwiseMax(r.state.string_tension);
-  };
-  if (run.station_force != 0) {
-    for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
-      d.actions.AddStationLoad(k, run.station_force, loads);
-      solve();
-      for (const int v : d.actions.station_nodes[k]) loads(1, v) = model.loads(1, v);
-    }
-  } else {
-    loads += d.actions.base[kWind];
-    solve();
-    loads = model.loads;
   }
-  solve();
   return peak;
+}
+
+// Whether `run` is tried by modal superposition first: the walking load, where the config
+// asks for it.
+bool Modal(const LoadRun& run, const LoadsConfig& l) {
+  return run.record.name == std::string("moving_load") && l.dynamic_method == "modal";
+}
+
+// The walking load by modal superposition (verify/modal_run.h), into the summary the
+// nonlinear run would give; false, with the reason in the run's note, where it is not done.
+bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& statics, LoadRun& run,
+              const StationResponses& stations, const StaticState& standing, SimulationSummary& summary) {
+  ModalRunOptions options;
+  options.cutoff_hz = d.config.loads.dynamic_modal_cutoff_hz;
+  options.max_nonlinearity = d.config.loads.dynamic_modal_max_nonlinearity;
+  for (int q = 0; q < d.topology.structure.num_strings(); ++q) options.may_go_slack.push_back(!MustStayTaut(d, q));
+  const ModalRunResult r = RunModalMovingLoad(model, statics, standing, stations, options);
+  if (!r.done) {
+    run.record.note = "modal run not done (" + r.note + "): the nonlinear run instead";
+    return false;
+  }
+  summary.peak_bar_compression = r.peak_bar_compression;
+  summary.peak_string_tension = r.peak_string_tension;
+  summary.min_string_strain = r.min_string_strain;
+  DynamicRun& record = run.record;
+  record.done = true;
+  record.dt = r.sample_dt_s;
+  record.duration = stations.duration_s;
+  record.steps = r.samples;
+  std::ostringstream os;
+  os << "modal (" << r.modes << " modes to " << r.highest_mode_hz << " Hz)";
+  record.integrator = os.str();
+  record.peak_deck_displacement = r.peak_deck_displacement_m;
+  return true;
 }
 
 }  // namespace
@@ -169,11 +199,14 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   const bool paper = KeepsPaperSwitches(d.config);
   std::vector<LoadRun> runs = LoadRuns(d, paper);
   if (runs.empty()) return out;
+  const LoadsConfig& l = d.config.loads;
   // A run over the budget at its asked step is over it at any stable one (no longer): it is
   // skipped before anything is built for it, and with no run left nothing is.
   const double members = static_cast<double>(d.bars.size() + d.strings.size());
   bool any = false;
-  for (LoadRun& run : runs) any = WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)", run) || any;
+  for (LoadRun& run : runs) {
+    any = Modal(run, l) || WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)", run) || any;
+  }
   if (!any) {
     for (LoadRun& run : runs) out.runs.push_back(std::move(run.record));
     return out;
@@ -185,7 +218,6 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   options.deck_inertia = !paper;
   const DynamicModel model = BuildDynamicModel(d, options);
 
-  const LoadsConfig& l = d.config.loads;
   const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
   const BarRule rule = BarRuleOf(d.config);
   const double E = BarMaterial(d.config).youngs_modulus;
@@ -194,13 +226,37 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   // The prestress is not factored (EN 1990 6.4.3.2 takes gamma_P = 1 for prestress that
   // favours and disfavours alike); the permanent load's share of the reference force is.
   const Eigen::VectorXd prestress = PrestressForces(d);
-  // The runs share the model, the engine and its stabilisation: one stability limit serves all.
-  const double stable_dt = Rk4StableStep(model, runs.front().scenario);
+  const StaticModel statics = StaticModelOf(d);
+  // The nonlinear runs share the model, the engine and its stabilisation: one stability limit
+  // serves all, found when the first of them needs it.
+  double stable_dt = 0;
   for (LoadRun& run : runs) {
     SimulationSummary summary;
-    if (run.record.note.empty() && Run(model, stable_dt, members, max_member_steps, run, summary, progress)) {
+    std::optional<StationResponses> stations;
+    StaticState standing;
+    bool done = false;
+    const bool modal = Modal(run, l);
+    if (modal) {
+      bool converged = false;
+      stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration, standing, converged);
+      if (converged) {
+        done = RunModal(d, model, statics, run, *stations, standing, summary);
+      } else {
+        run.record.note = "modal run not done (a static solve at a station did not converge): the nonlinear run instead";
+      }
+    }
+    // A nonlinear run skipped before (over the budget at its asked step) has its note.
+    if (!done && (modal ? WithinBudget(members, max_member_steps, "", run) : run.record.note.empty())) {
+      if (stable_dt == 0) stable_dt = Rk4StableStep(model, run.scenario);
+      done = Run(model, stable_dt, members, max_member_steps, run, summary, progress);
+    }
+    if (done) {
       const std::string label = "dynamic: " + run.record.name;
-      const Eigen::VectorXd static_peak = StaticPeaks(d, model, run);
+      if (!stations && run.station_force != 0) {
+        bool converged = false;
+        stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration, standing, converged);
+      }
+      const Eigen::VectorXd static_peak = StaticPeaks(d, model, statics, stations ? &*stations : nullptr);
       std::map<std::string, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {
         const bool bar = j < nb;

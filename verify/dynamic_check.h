@@ -6,11 +6,17 @@
 //   "paper_travelling" case: f on each inner deck station for 0.25 s;
 // - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
 // - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
-// RK4 at loads.dynamic_dt_s (1e-4 s), or at the largest whole fraction of it within 0.9 of
-// RK4's stability limit, the bar lengths stabilised (eqs 24-26; over a crossing of 8 s their
-// drift failed the run from n = 6). SDIRK3 under-reports the member peaks (the paper's load:
-// string peaks up to 22 % low; the walking load: 1.1-2.3 % of the resistance at n = 6, and
-// slower than RK4 there; BENCHMARKS.md), so the check does not use it.
+// The walking load runs by modal superposition where loads.dynamic_method is "modal" (the
+// default; verify/modal_run.h): the quasi-static response from a nonlinear static solve at
+// each station, the dynamic excess from the modes to loads.dynamic_modal_cutoff_hz, done where
+// the bridge is linear over the load to loads.dynamic_modal_max_nonlinearity and no string that
+// must stay taut goes slack. Elsewhere, and for the other loads, the nonlinear run: RK4 at
+// loads.dynamic_dt_s (1e-4 s), or at the largest whole fraction of it within 0.9 of RK4's
+// stability limit, the bar lengths stabilised (eqs 24-26; over a crossing of 8 s their drift
+// failed the run from n = 6). The run's note says why a modal run was not done. SDIRK3
+// under-reports the member peaks (the paper's load: string peaks up to 22 % low; the walking
+// load: 1.1-2.3 % of the resistance at n = 6, and slower than RK4 there; BENCHMARKS.md), so
+// the check does not use it.
 //
 // A member's dynamic demand is P + gamma_G (F_G - P) + gamma max(F_peak - F_G, 0): F_G its
 // force in the reference state, P the prestress in it (PrestressForces, not factored),
@@ -31,8 +37,8 @@
 namespace tbridge {
 
 // Runs the check and reports each member's largest dynamic utilisation (DynamicCheck::members,
-// mode "dynamic" or "slack", case "dynamic: <run>"). Skips a run, saying why in its note,
-// when it would take more than `max_member_steps` member-steps: the check is then not run
+// mode "dynamic" or "slack", case "dynamic: <run>"). Skips a nonlinear run, saying why in its
+// note, when it would take more than `max_member_steps` member-steps: the check is then not run
 // (CheckStatus::kNotRun). A run over that at its asked step is skipped before anything is
 // built for it (no dynamic model, no static counterpart). With no dynamic load among the cases it is done with no run.
 // Changes nothing in `design`. `progress` (optional) is told each run's simulated time against

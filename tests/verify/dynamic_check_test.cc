@@ -86,7 +86,7 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
 }
 
 // The default config's first design at complexity n, its dynamic check (the walking load
-// alone, done) and the model the check runs it on.
+// alone, done by the nonlinear run) and the model the check runs it on.
 struct MovingLoadCheck {
   Config config;
   Design design;
@@ -98,6 +98,7 @@ struct MovingLoadCheck {
 MovingLoadCheck CheckMovingLoad(int n) {
   MovingLoadCheck c;
   c.config.bridge.n = n;
+  c.config.loads.dynamic_method = "rk4";
   c.design = RunDesign(c.config);
   c.check = CheckDynamics(c.design);
   REQUIRE(c.check.runs.size() == 1);
@@ -150,6 +151,7 @@ TEST_CASE("the dynamic check's static counterparts are the load standing at each
 TEST_CASE("a dynamic run over the budget at its asked step is skipped before its model is built", "[verify][dynamics]") {
   Config config;
   config.bridge.n = 2;
+  config.loads.dynamic_method = "rk4";  // the budget is the nonlinear run's
   const Design d = RunDesign(config);
   const DynamicCheck full = CheckDynamics(d);
   REQUIRE(full.runs.size() == 1);
