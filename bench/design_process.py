@@ -65,14 +65,16 @@ def measure(tbridge, n, planes, repeats, workdir, verified=False):
 
 
 def dynamic_steps(check):
-    """RK4 steps per dynamic run ("paper_travelling 2500"), or why a run was not done."""
-    return ", ".join(f'{r["name"]} {r["steps"] if r["done"] else r["note"]}' for r in check["runs"])
+    """Method and steps per dynamic run ("paper_travelling rk4 2500"; a modal run's steps are its
+    samples), or why a run was not done."""
+    return ", ".join(f'{r["name"]} ' + (f'{r["integrator"].split(" ")[0]} {r["steps"]}' if r["done"] else r["note"])
+                     for r in check["runs"])
 
 
 def verified_table(args, workdir):
     rows = [measure(args.tbridge, n, 1, args.repeats, workdir, verified=True) for n in range(1, args.max_n + 1)]
     print(f"Machine: {' '.join(os.uname())}; {os.cpu_count()} cores\n")
-    print("| n | members | designs | structure [kg] | dynamic check (RK4 steps) | wall [s] | peak RSS [MB] | verdict |")
+    print("| n | members | designs | structure [kg] | dynamic check (method, steps) | wall [s] | peak RSS [MB] | verdict |")
     print("|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f'| {r["n"]} | {r["members"]} | {r["designs"]} | {r["structure"]:.1f} | {r["dynamic"]} | '
