@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
 
 #include "core/error.h"
 #include "design/case_envelope.h"
@@ -117,7 +118,11 @@ struct SizingProblem::Impl {
   std::vector<double> station_factor;  // per combination: its station load [N] (0: none)
   std::vector<int> base_column;        // per combination
   std::vector<SizingRow> rows;
-  Pattern jacobian, hessian;
+  // The dense pattern (every row reads every variable), formed on first use: the whole
+  // problem, whose rows are only evaluated, never needs it (n = 7: 64 M entries, 512 MB).
+  mutable Pattern jacobian;
+  mutable std::once_flag jacobian_formed;
+  Pattern hessian;
   // What each row reads, for the adjoint Jacobian: the members whose force change and the deck
   // nodes whose vertical displacement some row reads (LinearResponse::Adjoint's columns, the
   // members first), and per row its column (-1: the reference-taut rows, which read none).
@@ -453,9 +458,6 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     p.rows = std::move(kept);
   }
   p.IndexFunctionals();
-  for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
-    for (int v = 0; v < p.num_variables(); ++v) p.jacobian.emplace_back(r, v);
-  }
 }
 
 SizingProblem::~SizingProblem() = default;
@@ -507,7 +509,16 @@ void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eige
   g = impl_->st.g;
 }
 
-const NlpProblem::Pattern& SizingProblem::JacobianPattern() const { return impl_->jacobian; }
+const NlpProblem::Pattern& SizingProblem::JacobianPattern() const {
+  const Impl& p = *impl_;
+  std::call_once(p.jacobian_formed, [&p]() {
+    p.jacobian.reserve(p.rows.size() * static_cast<size_t>(p.num_variables()));
+    for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
+      for (int v = 0; v < p.num_variables(); ++v) p.jacobian.emplace_back(r, v);
+    }
+  });
+  return p.jacobian;
+}
 
 void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const {
   const Impl& p = *impl_;
