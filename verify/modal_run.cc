@@ -199,7 +199,7 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
   // first support; station `count`: the end at the second), the load shared between the two.
   const Eigen::ArrayXd omega = basis.omega.array(), omega_sq = omega.square();
   Eigen::ArrayXd e = Eigen::ArrayXd::Zero(m), v = Eigen::ArrayXd::Zero(m), slope = Eigen::ArrayXd::Zero(m);
-  Eigen::ArrayXd c(m), s(m), e_next(m);
+  Eigen::ArrayXd c(m), s(m), e_next(m), next_slope(m);  // the march's workspace: it allocates nothing
   Eigen::VectorXd force(nm), deck(n_deck), excess_force(nm), excess_deck(n_deck);
   Eigen::VectorXd peak = Eigen::VectorXd::Constant(nm, -std::numeric_limits<double>::infinity());
   Eigen::VectorXd low = Eigen::VectorXd::Constant(nm, std::numeric_limits<double>::infinity());
@@ -233,7 +233,7 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
     const double t0 = time_of(seg - 1), t1 = time_of(seg), length = t1 - t0;
     if (length <= 0) continue;
     // The modal force's slope on this segment and the jump of de/dt it makes at t0.
-    Eigen::ArrayXd next_slope = Eigen::ArrayXd::Zero(m);
+    next_slope.setZero();
     if (seg < count) next_slope += basis.station.col(seg).array();
     if (seg > 0) next_slope -= basis.station.col(seg - 1).array();
     next_slope /= length;
