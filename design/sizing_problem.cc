@@ -21,7 +21,6 @@ constexpr int kMaxStates = SizingProblem::kMaxStates;
 // The smallest area any member may take [m^2] (a radius of 56 um): keeps T / (sigma_w A)
 // finite for a string the loads do not use.
 constexpr double kAreaFloor = 1e-8;
-// The variables' unit of area [m^2]: 1 cm^2, so that areas are O(1) to O(100).
 
 // Each member's mirror image across the bridge's planes of symmetry (x = span / 2; between
 // the planes of a 3D bridge), joined into groups: a member and its images share one area.
@@ -252,11 +251,6 @@ struct SizingProblem::Impl {
     return d_reference / force_scale;
   }
 
-  // The Jacobian at the evaluated state, by adjoints: one solve per member and deck node that
-  // a row reads (design/linear_response.h), then per variable a product over the DOFs its
-  // members touch. The direct form (a solve per variable and load column) took 40 % of a
-  // sizing at n = 5, where the variables (64) times the columns (37) outnumber the
-  // functionals (141) by 17.
   // Indexes what each row reads (adjoint_members, adjoint_nodes, row_functional): once, as
   // the rows are fixed.
   void IndexFunctionals() {

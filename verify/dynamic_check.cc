@@ -27,6 +27,7 @@ struct LoadRun {
   DynamicsConfig scenario;
   double station_force = 0;
   double gamma = 1.0;
+  bool walking = false;  // the walking load: the one a modal run may take
 };
 
 LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, double station_force, double gamma) {
@@ -73,6 +74,7 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
                                Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
                            MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s),
                            l.travelling_load_n, gamma_g_q));
+    runs.back().walking = true;
   }
   if (asked("wind") && d.topology.planes == 2 && l.wind_n_per_m > 0) {
     runs.push_back(MakeRun("wind_gust",
@@ -155,19 +157,13 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const St
 
 // Whether `run` is tried by modal superposition first: the walking load, where the config
 // asks for it.
-bool Modal(const LoadRun& run, const LoadsConfig& l) {
-  return run.record.name == std::string("moving_load") && l.dynamic_method == "modal";
-}
+bool Modal(const LoadRun& run, const LoadsConfig& l) { return run.walking && l.dynamic_method == "modal"; }
 
 // The walking load by modal superposition (verify/modal_run.h), into the summary the
 // nonlinear run would give; false, with the reason in the run's note, where it is not done.
 bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& statics, LoadRun& run,
               const StationResponses& stations, const StaticState& standing, SimulationSummary& summary) {
-  ModalRunOptions options;
-  options.cutoff_hz = d.config.loads.dynamic_modal_cutoff_hz;
-  options.max_nonlinearity = d.config.loads.dynamic_modal_max_nonlinearity;
-  for (int q = 0; q < d.topology.structure.num_strings(); ++q) options.may_go_slack.push_back(!MustStayTaut(d, q));
-  const ModalRunResult r = RunModalMovingLoad(model, statics, standing, stations, options);
+  const ModalRunResult r = RunModalMovingLoad(model, statics, standing, stations, ModalRunOptionsOf(d));
   if (!r.done) {
     run.record.note = "modal run not done (" + r.note + "): the nonlinear run instead";
     return false;
@@ -232,13 +228,19 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   double stable_dt = 0;
   for (LoadRun& run : runs) {
     SimulationSummary summary;
+    // The run's static counterparts (a travelling load's stations), solved once, when the modal
+    // run or the amplification first needs them.
     std::optional<StationResponses> stations;
     StaticState standing;
+    bool converged = false;
+    const auto solve_stations = [&]() {
+      if (stations || run.station_force == 0) return;
+      stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration, standing, converged);
+    };
     bool done = false;
     const bool modal = Modal(run, l);
     if (modal) {
-      bool converged = false;
-      stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration, standing, converged);
+      solve_stations();
       if (converged) {
         done = RunModal(d, model, statics, run, *stations, standing, summary);
       } else {
@@ -252,10 +254,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
     }
     if (done) {
       const std::string label = "dynamic: " + run.record.name;
-      if (!stations && run.station_force != 0) {
-        bool converged = false;
-        stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration, standing, converged);
-      }
+      solve_stations();
       const Eigen::VectorXd static_peak = StaticPeaks(d, model, statics, stations ? &*stations : nullptr);
       std::map<std::string, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {

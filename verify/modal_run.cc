@@ -12,8 +12,6 @@ namespace tbridge {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
-
 // The modes at or below `cutoff_hz` (at least one): every mode densely where the model is
 // small, else the lowest by Lanczos, asking for twice as many until one is above the cutoff.
 ModalResult ModesBelow(const DynamicModel& model, double cutoff_hz) {
@@ -33,7 +31,7 @@ ModalResult ModesBelow(const DynamicModel& model, double cutoff_hz) {
   }
 }
 
-// The model's state maps: the modal basis restricted to what the run reads.
+// The modal basis restricted to what the run reads.
 struct ModalBasis {
   Eigen::VectorXd omega;      // per mode [rad/s]
   Eigen::MatrixXd member;     // modes x members: force change per unit modal coordinate [N]
@@ -42,6 +40,14 @@ struct ModalBasis {
 };
 
 }  // namespace
+
+ModalRunOptions ModalRunOptionsOf(const Design& d) {
+  ModalRunOptions options;
+  options.cutoff_hz = d.config.loads.dynamic_modal_cutoff_hz;
+  options.max_nonlinearity = d.config.loads.dynamic_modal_max_nonlinearity;
+  for (int q = 0; q < d.topology.structure.num_strings(); ++q) options.may_go_slack.push_back(!MustStayTaut(d, q));
+  return options;
+}
 
 StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, const StaticModel& statics,
                                     double force_n, double duration_s, StaticState& standing, bool& converged) {
@@ -117,6 +123,12 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
 
   StaticTangent tangent(statics, standing);
   if (!tangent.ok()) return not_done("the static tangent at the start did not factorise");
+  // Each station's change from the standing response (forces, then deck heights), formed once.
+  std::vector<Eigen::VectorXd> force_change_at(count), deck_change_at(count);
+  for (int k = 0; k < count; ++k) {
+    force_change_at[k] = stations.forces[k] - stations.standing_forces;
+    deck_change_at[k] = stations.deck_y[k] - stations.standing_deck_y;
+  }
   // How far the bridge is from linear over the load: the linear tangent's deck response to each
   // station's load against the nonlinear solve's, the largest difference over the largest
   // nonlinear response.
@@ -132,7 +144,7 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
       }
       tangent.Solve(station_load, displacement, force_change);
       for (int n = 0; n < n_deck; ++n) {
-        const double nonlinear = stations.deck_y[k][n] - stations.standing_deck_y[n];
+        const double nonlinear = deck_change_at[k][n];
         difference = std::max(difference, std::abs(displacement(1, model.deck_nodes[n]) - nonlinear));
         largest = std::max(largest, std::abs(nonlinear));
       }
@@ -212,12 +224,12 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
     force = stations.standing_forces;
     deck = stations.standing_deck_y;
     if (before >= 0) {
-      force += (1 - share_after) * (stations.forces[before] - stations.standing_forces);
-      deck += (1 - share_after) * (stations.deck_y[before] - stations.standing_deck_y);
+      force += (1 - share_after) * force_change_at[before];
+      deck += (1 - share_after) * deck_change_at[before];
     }
     if (before + 1 < count) {
-      force += share_after * (stations.forces[before + 1] - stations.standing_forces);
-      deck += share_after * (stations.deck_y[before + 1] - stations.standing_deck_y);
+      force += share_after * force_change_at[before + 1];
+      deck += share_after * deck_change_at[before + 1];
     }
     excess_force.noalias() = basis.member.transpose() * e.matrix();
     excess_deck.noalias() = basis.deck.transpose() * e.matrix();

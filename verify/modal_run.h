@@ -83,6 +83,10 @@ struct ModalRunResult {
   double peak_deck_displacement_m = 0;  // largest vertical deck displacement from the start
 };
 
+// The options the dynamic check runs with: the design's loads.dynamic_modal_cutoff_hz and
+// loads.dynamic_modal_max_nonlinearity, and its strings that need not stay taut (MustStayTaut).
+ModalRunOptions ModalRunOptionsOf(const Design& d);
+
 // Runs the walking load on `model` (at rest at its positions under model.loads) with the
 // static responses `stations` of `statics` about `standing` (the same bridge, the same
 // standing loads). Throws ModelError only for inconsistent sizes.

@@ -102,26 +102,18 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
 // at n = 5 (561 against 530) over 2.8 times the rows, and 7.6 s against 6.0 s; n = 6 66 s
 // against 52 s.
 std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g) {
-  constexpr int kPerMember = 1;
-  constexpr double kBand = 0.02;
   const std::vector<SizingRow>& rows = full.rows();
-  std::map<std::pair<int, int>, std::vector<int>> by_member;
-  for (size_t r = 0; r < rows.size(); ++r) {
-    by_member[{static_cast<int>(rows[r].kind), rows[r].member}].push_back(static_cast<int>(r));
+  // NaN (an unstable point) ranks last and is never near.
+  const auto closer = [&g](int a, int b) { return g[a] < g[b] || (!std::isnan(g[a]) && std::isnan(g[b])); };
+  std::map<std::pair<int, int>, int> closest;  // (kind, member) -> its closest row
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+    const auto [it, first] = closest.try_emplace({static_cast<int>(rows[r].kind), rows[r].member}, r);
+    if (!first && closer(r, it->second)) it->second = r;
   }
   std::vector<char> near(rows.size(), 0);
-  for (auto& [key, list] : by_member) {
+  for (const auto& [key, r] : closest) {
     const bool taut = key.first == SizingRow::kTaut || key.first == SizingRow::kReferenceTaut;
-    const double cap = taut ? 0.1 : 0.7;
-    const int take = std::min(kPerMember, static_cast<int>(list.size()));
-    // NaN (an unstable point) sorts last and is never near.
-    std::partial_sort(list.begin(), list.begin() + take, list.end(),
-                      [&g](int a, int b) { return g[a] < g[b] || (!std::isnan(g[a]) && std::isnan(g[b])); });
-    const double best = g[list.front()];
-    for (int k = 0; k < take; ++k) {
-      const int r = list[k];
-      near[r] = g[r] < cap && g[r] <= best + kBand;
-    }
+    near[r] = g[r] < (taut ? 0.1 : 0.7);
   }
   return near;
 }
@@ -151,7 +143,7 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
       if (!keep[r] && near[r]) keep[r] = 1, added = true;
       if (!keep[r] && bad) unposed_violations.push_back(r);
     }
-    // A violated row beyond its member's two closest (those two posed and violated within the
+    // A violated row beyond its member's closest (that one posed and violated within the
     // solver's tolerance) is posed as well, so that a round ends only when nothing is violated
     // or nothing more can be posed.
     if (!added) {

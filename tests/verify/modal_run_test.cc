@@ -44,8 +44,7 @@ Pair RunBoth(const Design& d, double force_n) {
   bool converged = false;
   const StationResponses stations = MovingLoadStations(d, model, statics, force_n, scene.duration, standing, converged);
   REQUIRE(converged);
-  ModalRunOptions modal;
-  modal.cutoff_hz = l.dynamic_modal_cutoff_hz;
+  ModalRunOptions modal = ModalRunOptionsOf(d);  // as the check runs it
   modal.max_nonlinearity = 1.0;  // done whatever the nonlinearity: the test reads its error
   out.modal = RunModalMovingLoad(model, statics, standing, stations, modal);
   INFO(out.modal.note);
