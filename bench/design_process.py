@@ -4,10 +4,11 @@ the config, design, write the JSON), on the paper's model and switches (no self-
 design, one load case, no dynamic check).
 
 Usage: bench/design_process.py [--tbridge build/tbridge] [--max-n 16] [--repeats 3] [--max-n-3d 8]
-       bench/design_process.py --verified [--max-n 6]
+       bench/design_process.py --verified [--max-n 6] [--planes 2]
 
 --verified measures instead the engineering default (configs/default.json's settings at each n):
-every load case, self-weight, the static and dynamic checks and the resizing loop.
+every load case, self-weight, the static and dynamic checks and the resizing loop; with
+--planes 2, on the 3D bridge.
 
 Each run is a fresh process; wall time is the best of `repeats`, peak memory the largest
 resident set of tbridge as GNU time reports it (`/usr/bin/time -f %M`, Debian package "time").
@@ -72,7 +73,8 @@ def dynamic_steps(check):
 
 
 def verified_table(args, workdir):
-    rows = [measure(args.tbridge, n, 1, args.repeats, workdir, verified=True) for n in range(1, args.max_n + 1)]
+    rows = [measure(args.tbridge, n, args.planes, args.repeats, workdir, verified=True)
+            for n in range(1, args.max_n + 1)]
     print(f"Machine: {' '.join(os.uname())}; {os.cpu_count()} cores\n")
     print("| n | members | designs | structure [kg] | dynamic check (method, steps) | wall [s] | peak RSS [MB] | verdict |")
     print("|---|---|---|---|---|---|---|---|")
@@ -88,6 +90,7 @@ def main():
     parser.add_argument("--max-n-3d", type=int, default=8)
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--verified", action="store_true")
+    parser.add_argument("--planes", type=int, choices=(1, 2), default=1, help="with --verified: 2 for the 3D bridge")
     args = parser.parse_args()
     if args.verified:
         with tempfile.TemporaryDirectory() as workdir:

@@ -59,11 +59,19 @@ struct SizingCombination {
   std::string label;
 };
 
+// Each member's mirror image across the bridge's planes of symmetry (x = span / 2; between the
+// planes of a 3D bridge), joined into groups: per member [bars; strings], its group (0-based).
+// A member and its images share one area, and the prestress gives them one force.
+std::vector<int> MirrorGroups(const Structure& s, double span);
+
 class SizingProblem final : public NlpProblem {
  public:
-  // Most self-stress states the problem takes as variables: the 3D bridge has 26 at n = 2 and
-  // 58 at n = 3; the dense basis and one sensitivity solve per state stay affordable up to here.
+  // Most self-stress states the problem takes as variables: only the symmetric ones count (the
+  // prestress gives mirror-image members equal forces, as they share an area). The dense basis
+  // and one sensitivity solve per state stay affordable up to here.
   static constexpr int kMaxStates = 64;
+  // The number of symmetric self-stress states of a design's structure (the problem's).
+  static int SymmetricStates(const Design& design);
   // `design`: a design whose topology, actions, cases and reference loads the problem takes
   // (its members' weight held). Throws ModelError when the self-stress basis is too large to
   // form (more than 64 states) or the reference state has no stiffness.

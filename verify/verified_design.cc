@@ -134,12 +134,17 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
   SolverOutcome outcome;
   for (int round = 0; round < 16; ++round) {
     full.Constraints(x, g);
-    bool added = false, violated = false;
+    bool added = false, violated = false, wandered = false;
     const std::vector<char> near = NearLimits(full, g);
     std::vector<int> unposed_violations;
     for (int r = 0; r < rows; ++r) {
       const bool bad = !(g[r] >= lo[r] - 1e-9);
       violated = violated || bad;
+      // A row left out that now reads over twice its limit: a member far from its limits at
+      // the start shrank to its floor (the 3D bridge's bars). From there its row, 1 - F/R(A)
+      // with R near zero, is too curved for the solver to climb back (SLSQP stopped on it,
+      // infeasible), so the round starts again from the sizing's start, where it held.
+      if (!keep[r] && bad && !(g[r] >= -1)) wandered = true;
       if (!keep[r] && near[r]) keep[r] = 1, added = true;
       if (!keep[r] && bad) unposed_violations.push_back(r);
     }
@@ -150,6 +155,7 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
       for (const int r : unposed_violations) keep[r] = 1, added = true;
     }
     if (round > 0 && (!violated || !added)) break;
+    if (wandered) x = start;
     const SizingProblem posed(current, corrections, &keep);
     outcome = SolveNlp(solver, posed, options, x);
     if (!outcome.success) {
@@ -388,7 +394,8 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   if (KeepsPaperSwitches(config) || solver.empty()) return CheckedAsDesigned(RunDesign(config, progress), record, progress);
   bool relaxed = false;
   const Design first = FirstDesign(config, progress, &relaxed);
-  if (first.self_stress_states > SizingProblem::kMaxStates) {
+  const int symmetric_states = SizingProblem::SymmetricStates(first);
+  if (symmetric_states > SizingProblem::kMaxStates) {
     // A relaxed first design (without the members' weight, or with the paper's switches) is
     // checked under the config's own loads and weight: its sizes, not its relaxed loads.
     Design d = relaxed ? SizedDesign(config, MemberAreas(first), PrestressCoefficients(first)) : first;
@@ -400,8 +407,8 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                         "with the paper's switches), checked with the config's weight and loads");
     }
     d.notes.push_back("design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
-                      " self-stress states as variables and this bridge has " +
-                      std::to_string(first.self_stress_states) + ": its equilibrium design is checked as it is");
+                      " symmetric self-stress states as variables and this bridge has " +
+                      std::to_string(symmetric_states) + ": its equilibrium design is checked as it is");
     return CheckedAsDesigned(std::move(d), record, progress);
   }
   // The first design's sizes: the start, the second start's base and the premium's reference.
