@@ -80,9 +80,9 @@ TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[des
 TEST_CASE("the sizing's prestress: every self-stress that gives mirror images one force", "[design]") {
   // Counted by a second algorithm: those self-stresses are x = G y with A G y = 0 (G the
   // members' group indicator), so there are groups - rank(A G) of them (dense QR). The planar
-  // bridge has one state (the deck chain's), symmetric; the 3D bridge 10, 26, 58 and 122 at
-  // n = 1..4, of which 4, 9, 19 and 39 are symmetric.
-  for (const Config& config : {Config{}, ThreeD(1), ThreeD(2), ThreeD(3), ThreeD(4)}) {
+  // bridge has one state (the deck chain's), symmetric; the 3D bridge 10, 26, 58, 122 and
+  // 250 at n = 1..5, of which 4, 9, 19, 39 and 79 are symmetric.
+  for (const Config& config : {Config{}, ThreeD(1), ThreeD(2), ThreeD(3), ThreeD(4), ThreeD(5)}) {
     Design d;
     d.config = config;
     d.topology = PrepareDesign(config).topology;
