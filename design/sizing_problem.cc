@@ -415,6 +415,10 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   // The reference state: the particular forces of G and the self-stresses.
   const EquilibriumSystem eq = BuildEquilibrium(s);
   const EquilibriumSolver solver(eq);
+  if (solver.states() > kMaxSoughtStates) {
+    throw ModelError("the verified sizing seeks its symmetric self-stress states among at most " +
+                     std::to_string(kMaxSoughtStates) + " states; this bridge has " + std::to_string(solver.states()));
+  }
   if (solver.states()) {
     const Eigen::MatrixXd all = solver.SelfStresses();
     p.N = SymmetricSelfStresses(all, p.group_of, p.groups);
@@ -496,6 +500,7 @@ int SizingProblem::SymmetricStates(const Design& d) {
   const Structure& s = d.topology.structure;
   const EquilibriumSolver solver(BuildEquilibrium(s));
   if (!solver.states()) return 0;
+  if (solver.states() > kMaxSoughtStates) return -1;
   const std::vector<int> group_of = MirrorGroups(s, d.config.bridge.span);
   const int groups = *std::max_element(group_of.begin(), group_of.end()) + 1;
   return static_cast<int>(SymmetricSelfStresses(solver.SelfStresses(), group_of, groups).cols());

@@ -70,11 +70,18 @@ class SizingProblem final : public NlpProblem {
   // prestress gives mirror-image members equal forces, as they share an area). The dense basis
   // and one sensitivity solve per state stay affordable up to here.
   static constexpr int kMaxStates = 64;
-  // The number of symmetric self-stress states of a design's structure (the problem's).
+  // Most self-stress states among which the symmetric ones are sought: their dense basis and
+  // its SVD grow as states^2 x members (the 3D bridge at n = 8: 2 042 states, 5 000 members),
+  // and on these bridges about a third of the states are symmetric (79 of 250 at n = 5), so
+  // beyond four times the limit they are over it.
+  static constexpr int kMaxSoughtStates = 4 * kMaxStates;
+  // The number of symmetric self-stress states of a design's structure (the problem's), or -1
+  // where it has more than kMaxSoughtStates states and they are not sought.
   static int SymmetricStates(const Design& design);
   // `design`: a design whose topology, actions, cases and reference loads the problem takes
-  // (its members' weight held). Throws ModelError when the self-stress basis is too large to
-  // form (more than 64 states) or the reference state has no stiffness.
+  // (its members' weight held). Throws ModelError when the bridge has more symmetric
+  // self-stress states than kMaxStates (or more states than kMaxSoughtStates) or the reference
+  // state has no stiffness.
   // `keep` (optional, one flag per row of the whole problem, in rows() order of the whole
   // problem): the rows this problem poses; the others are left out (an active set).
   SizingProblem(const Design& design, SizingCorrections corrections, const std::vector<char>* keep = nullptr);

@@ -395,7 +395,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   bool relaxed = false;
   const Design first = FirstDesign(config, progress, &relaxed);
   const int symmetric_states = SizingProblem::SymmetricStates(first);
-  if (symmetric_states > SizingProblem::kMaxStates) {
+  if (symmetric_states < 0 || symmetric_states > SizingProblem::kMaxStates) {
     // A relaxed first design (without the members' weight, or with the paper's switches) is
     // checked under the config's own loads and weight: its sizes, not its relaxed loads.
     Design d = relaxed ? SizedDesign(config, MemberAreas(first), PrestressCoefficients(first)) : first;
@@ -407,8 +407,12 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                         "with the paper's switches), checked with the config's weight and loads");
     }
     d.notes.push_back("design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
-                      " symmetric self-stress states as variables and this bridge has " +
-                      std::to_string(symmetric_states) + ": its equilibrium design is checked as it is");
+                      " symmetric self-stress states as variables, sought among at most " +
+                      std::to_string(SizingProblem::kMaxSoughtStates) + " states; this bridge has " +
+                      (symmetric_states < 0 ? std::to_string(first.self_stress_states) + " states"
+                                            : std::to_string(symmetric_states) + " symmetric of " +
+                                                  std::to_string(first.self_stress_states)) +
+                      ": its equilibrium design is checked as it is");
     return CheckedAsDesigned(std::move(d), record, progress);
   }
   // The first design's sizes: the start, the second start's base and the premium's reference.

@@ -100,6 +100,12 @@ TEST_CASE("the sizing's prestress: every self-stress that gives mirror images on
     CHECK(SizingProblem::SymmetricStates(d) == groups - static_cast<int>(qr.rank()));
     if (config.bridge.planes == 1) CHECK(SizingProblem::SymmetricStates(d) == 1);
   }
+  // Beyond kMaxSoughtStates (the 3D bridge from n = 6) the symmetric states are not sought.
+  Design large;
+  large.config = ThreeD(6);
+  large.topology = PrepareDesign(large.config).topology;
+  REQUIRE(EquilibriumSolver(BuildEquilibrium(large.topology.structure)).states() > SizingProblem::kMaxSoughtStates);
+  CHECK(SizingProblem::SymmetricStates(large) == -1);
   // The prestress of each variable gives the members of a group one force (to rounding of the
   // orthonormal basis: 1e-9 of the largest).
   const Design d = RunDesign(ThreeD(1));
