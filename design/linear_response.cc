@@ -47,22 +47,29 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
     AddPairBlock(g, m.i, m.j, dof_, dim_, t);
     if (bar) AddBarRow(ndof_ + j, m.i, m.j, unit_[j], dof_, dim_, t);
   }
-  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(ndof_ + nb_, ndof_ + nb_);
-  for (const auto& e : t) {
-    if (e.row() < ndof_) kkt(e.row(), e.col()) += e.value();
-  }
   // The constraint rows are direction cosines (O(1)) beside stiffnesses of O(1e8) N/m: scaled
   // to the stiffness, the matrix is balanced and its condition says what the structure's is.
   // The multipliers come out divided by the scale.
-  constraint_scale_ = std::max(kkt.diagonal().head(ndof_).cwiseAbs().maxCoeff(), 1.0);
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(ndof_);
   for (const auto& e : t) {
-    if (e.row() < ndof_) continue;
-    kkt(e.row(), e.col()) += constraint_scale_ * e.value();
-    kkt(e.col(), e.row()) += constraint_scale_ * e.value();  // C^T beside C
+    if (e.row() < ndof_ && e.row() == e.col()) diagonal[e.row()] += e.value();
   }
-  lu_.compute(kkt);
-  // A singular KKT matrix shows as a zero pivot or a reciprocal condition far below rounding.
-  const double rcond = lu_.rcond();
+  constraint_scale_ = std::max(ndof_ > 0 ? diagonal.cwiseAbs().maxCoeff() : 0.0, 1.0);
+  TangentTriplets scaled;
+  scaled.reserve(t.size() + 4 * static_cast<size_t>(nb_) * dim_);
+  for (const auto& e : t) {
+    if (e.row() < ndof_) {
+      scaled.push_back(e);
+    } else {
+      scaled.emplace_back(e.row(), e.col(), constraint_scale_ * e.value());
+      scaled.emplace_back(e.col(), e.row(), constraint_scale_ * e.value());  // C^T beside C
+    }
+  }
+  Eigen::SparseMatrix<double> kkt(ndof_ + nb_, ndof_ + nb_);
+  kkt.setFromTriplets(scaled.begin(), scaled.end());
+  // A singular KKT matrix shows as a failed factorisation or a reciprocal condition far below
+  // rounding.
+  const double rcond = lu_.Analyse(kkt) && lu_.Factorise(kkt) ? lu_.ReciprocalCondition(kkt) : 0.0;
   if (!(rcond > 1e-13)) {
     throw ModelError("linear response: the stiffness about the reference state is singular (reciprocal condition " +
                      std::to_string(rcond) + "): a mechanism that the prestress does not hold");
@@ -83,7 +90,8 @@ Eigen::VectorXd LinearResponse::FreeVector(const Structure& s, const Eigen::Matr
 Eigen::MatrixXd LinearResponse::Solve(const Eigen::MatrixXd& free_loads) const {
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(ndof_ + nb_, free_loads.cols());
   rhs.topRows(ndof_) = free_loads;
-  return lu_.solve(rhs);
+  lu_.Solve(rhs);
+  return rhs;
 }
 
 Eigen::RowVectorXd LinearResponse::Stretch(const Eigen::MatrixXd& u, int i, int j, const Eigen::Vector3d& e) const {
@@ -114,7 +122,9 @@ void LinearResponse::AddBlockAction(const Eigen::Matrix3d& g, int i, int j, cons
 }
 
 Eigen::MatrixXd LinearResponse::SolveDerivative(const Eigen::MatrixXd& u, const Direction& dp) const {
-  return -lu_.solve(StiffnessAction(u, dp));
+  Eigen::MatrixXd d = -StiffnessAction(u, dp);
+  lu_.Solve(d);
+  return d;
 }
 
 Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members, const std::vector<int>& nodes) const {
@@ -134,7 +144,8 @@ Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members, const s
   for (size_t v = 0; v < nodes.size(); ++v) {
     if (dof_[nodes[v]] >= 0) l(dof_[nodes[v]] + 1, nm + static_cast<Eigen::Index>(v)) = 1.0;
   }
-  return lu_.transpose().solve(l);
+  lu_.SolveTransposed(l);
+  return l;
 }
 
 Eigen::MatrixXd LinearResponse::StringStretches(const Eigen::MatrixXd& u) const {

@@ -16,15 +16,17 @@
 // dK/dp = sum_s dk_s/dp (e e^T)_s + sum_j dx_j/dp G_j (G_j the member's geometric block per
 // unit force), and the force map adds dk_s/dp e^T (u_j - u_i).
 //
-// Dense: the KKT matrix is (dim n_free + n_b) square, factorised once per state by partial
-// pivoting LU. Meant for the sizing of bridges up to a few hundred free DOFs (n <= 6), where a
-// dense factorisation costs milliseconds and its solves are matrix products.
+// The KKT matrix is (dim n_free + n_b) square and sparse (a node meets a few members), factorised
+// once per state by KLU (core/klu_factor.h); the solutions are dense columns. A dense
+// partial-pivoting LU took 60 % of the default's verified design at n = 6 (its O(n^3)
+// factorisation and O(n^2) solves per column, for every column the sizing asks of every state);
+// the sparse one does in O(fill) what the dense one did in O(n^2): BENCHMARKS.md.
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 #include <vector>
 
+#include "core/klu_factor.h"
 #include "core/structure.h"
 
 namespace tbridge {
@@ -89,7 +91,7 @@ class LinearResponse {
   std::vector<double> length_;         // per member [m]
   Eigen::VectorXd k_;                  // per string [N/m]
   double constraint_scale_ = 1;        // the bar rows' scale in the KKT matrix [N/m]
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  KluFactor lu_;
 };
 
 }  // namespace tbridge

@@ -194,6 +194,12 @@ struct Resizing {
   // asks for (1: none), and the failing mode that asked for it last.
   double comfort_stiffness_factor = 1.0;
   std::string comfort_governs;
+  // Wall time by part over every design of the loop (the first design, each sizing, the
+  // second start) [s]: what a run's time goes to (`tbridge design --progress` prints it). Not a
+  // result, and not in the design's JSON: it varies from run to run.
+  struct Times {
+    double first_design = 0, sizing = 0, static_check = 0, dynamic_check = 0, comfort_check = 0;
+  } time_s;
 };
 
 }  // namespace tbridge

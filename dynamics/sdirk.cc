@@ -1,7 +1,5 @@
 #include "dynamics/sdirk.h"
 
-#include <klu.h>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -9,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/klu_factor.h"
 
 namespace tbridge {
 
@@ -29,39 +28,6 @@ constexpr double kC[3] = {kGamma, 0.5 * (1.0 + kGamma), 1.0};
 }
 
 }  // namespace
-
-// KLU on the fixed pattern: analysed once; the first factorisation chooses the pivots and the
-// later ones reuse them (klu_refactor, about a third of the cost), unless the reciprocal
-// condition estimate drops below 1e-12, when the pivots are chosen afresh.
-struct Sdirk3::NewtonFactor {
-  klu_common common;
-  klu_symbolic* symbolic = nullptr;
-  klu_numeric* numeric = nullptr;
-
-  NewtonFactor() { klu_defaults(&common); }
-  ~NewtonFactor() {
-    if (numeric) klu_free_numeric(&numeric, &common);
-    if (symbolic) klu_free_symbolic(&symbolic, &common);
-  }
-  NewtonFactor(const NewtonFactor&) = delete;
-  NewtonFactor& operator=(const NewtonFactor&) = delete;
-
-  bool Analyse(Eigen::SparseMatrix<double>& m) {
-    symbolic = klu_analyze(static_cast<int>(m.rows()), m.outerIndexPtr(), m.innerIndexPtr(), &common);
-    return symbolic != nullptr;
-  }
-  bool Factorise(Eigen::SparseMatrix<double>& m) {
-    if (numeric && klu_refactor(m.outerIndexPtr(), m.innerIndexPtr(), m.valuePtr(), symbolic, numeric, &common) &&
-        klu_rcond(symbolic, numeric, &common) && common.rcond >= 1e-12) {
-      return true;
-    }
-    if (numeric) klu_free_numeric(&numeric, &common);
-    numeric = klu_factor(m.outerIndexPtr(), m.innerIndexPtr(), m.valuePtr(), symbolic, &common);
-    return numeric != nullptr && common.status == KLU_OK;
-  }
-  // x := A^-1 x
-  void Solve(Eigen::VectorXd& x) { klu_solve(symbolic, numeric, static_cast<int>(x.size()), 1, x.data(), &common); }
-};
 
 Sdirk3::~Sdirk3() = default;
 
@@ -106,9 +72,9 @@ Sdirk3::Sdirk3(const AccelerationCoupling& coupling, int size, const SdirkOption
       }
     }
   }
-  lu_ = std::make_unique<NewtonFactor>();
+  lu_ = std::make_unique<KluFactor>();
   if (!lu_->Analyse(matrix_)) throw std::invalid_argument("sdirk3: KLU could not analyse the Newton matrix's pattern");
-  counts_ = {static_cast<long>(matrix_.nonZeros()), lu_->symbolic->lnz + lu_->symbolic->unz, lu_->symbolic->est_flops,
+  counts_ = {static_cast<long>(matrix_.nonZeros()), lu_->FactorEntries(), lu_->EstimatedFlops(),
              colours * dim + 1};
 
   for (Eigen::VectorXd* v : {&y0_, &dy_, &dy_pert_, &y_pert_, &stage_}) *v = Eigen::VectorXd::Zero(2 * c_);

@@ -14,10 +14,7 @@
 //   X = s_x + h gamma V,  G(V) = V - s_v - h gamma a(X, V) = 0,
 // with the simplified Newton matrix I - h gamma D, D = h gamma da/dx + da/dv. D is estimated
 // by forward differences along (h gamma e_q, e_q), one evaluation per colour and direction
-// (dynamics/coupling.h), and factorised by SuiteSparse's KLU on a pattern analysed once
-// (measured: KLU takes the 24 n = 8 runs of the sweep benchmark in 10.9 s against 17.4 s with
-// Eigen's SparseLU, whose supernodal factorisation and solves cost more on these small,
-// sparse matrices).
+// (dynamics/coupling.h), and factorised by KLU on a pattern analysed once (core/klu_factor.h).
 //
 // Allocation. The constructor allocates every buffer and analyses the pattern. A step
 // allocates nothing unless it refreshes the Jacobian: KLU's numeric factorisation allocates
@@ -32,6 +29,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/klu_factor.h"
 #include "dynamics/coupling.h"
 #include "dynamics/integrators.h"
 
@@ -119,8 +117,7 @@ class Sdirk3 {
   std::vector<std::vector<Slot>> group_slots_;
   std::vector<int> diagonal_;                    // value index of each diagonal entry
   Eigen::SparseMatrix<double> matrix_;           // I - h gamma D, fixed pattern
-  struct NewtonFactor;  // the sparse LU of I - h gamma D (sdirk.cc keeps the library out of here)
-  std::unique_ptr<NewtonFactor> lu_;
+  std::unique_ptr<KluFactor> lu_;                // the sparse LU of I - h gamma D
   double factor_h_ = 0;  // step the current factorisation was made for (0: none)
   double stage_power_[3] = {0, 0, 0};  // DissipatedPower at each stage's last Newton iterate [W]
   double last_dissipated_ = 0;

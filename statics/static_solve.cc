@@ -1,7 +1,6 @@
 #include "statics/static_solve.h"
 
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 
@@ -165,8 +164,8 @@ StaticTangent::StaticTangent(const StaticModel& model, const StaticState& state)
   first_ = map.first;
   dim_ = map.dim;
   free_ = map.count;
-  lu_.compute(Jacobian(model, map, state.nodes, Multipliers(model.structure, state.bar_compression)));
-  ok_ = lu_.info() == Eigen::Success;
+  matrix_ = Jacobian(model, map, state.nodes, Multipliers(model.structure, state.bar_compression));
+  ok_ = lu_.Analyse(matrix_) && lu_.Factorise(matrix_);
   rhs_.setZero(free_ + model.structure.num_bars());
 }
 
@@ -178,7 +177,8 @@ void StaticTangent::Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& disp
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (first_[v] >= 0) rhs_.segment(first_[v], dim_) = -dloads.col(v).head(dim_);
   }
-  step_ = lu_.solve(rhs_);
+  step_ = rhs_;
+  lu_.Solve(step_);
   displacement.setZero(3, s.num_nodes());
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (first_[v] >= 0) displacement.col(v).head(dim_) = step_.segment(first_[v], dim_);
@@ -213,7 +213,10 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
   for (const Member& e : s.bars) min_bar = std::min(min_bar, s.Length(e));
   StaticResult out;
   Eigen::VectorXd r, g, rhs(map.count + nb), step;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  // The Newton matrix's pattern does not change (a slack string keeps its entries), so it is
+  // analysed once per solve.
+  KluFactor lu;
+  bool analysed = false;
   double done = 0, dt = 1.0;
   auto converged = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& gg) {
     const double rmax = rr.size() ? rr.cwiseAbs().maxCoeff() : 0.0;
@@ -235,12 +238,14 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
       }
       ++out.newton_iterations;
       rhs << -r, -g;
+      step = rhs;
       if (reuse && done == 0 && it == 0) {
-        step = tangent->lu_.solve(rhs);  // at `start`, whose matrix the tangent holds
+        tangent->lu_.Solve(step);  // at `start`, whose matrix the tangent holds
       } else {
-        lu.compute(Jacobian(m, map, x, lambda));
-        if (lu.info() != Eigen::Success) break;
-        step = lu.solve(rhs);
+        const Eigen::SparseMatrix<double> J = Jacobian(m, map, x, lambda);
+        if (!analysed && !(analysed = lu.Analyse(J))) break;
+        if (!lu.Factorise(J)) break;
+        lu.Solve(step);
       }
       if (!step.allFinite()) break;
       // Limit a step to a tenth of the shortest bar, so a slack switch cannot throw the

@@ -13,10 +13,10 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <string>
 #include <vector>
 
+#include "core/klu_factor.h"
 #include "core/structure.h"
 
 namespace tbridge {
@@ -68,7 +68,8 @@ class StaticTangent {
   std::vector<int> first_;  // per node, its first free coordinate or -1 (fixed)
   int dim_ = 3, free_ = 0;
   bool ok_ = false;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  Eigen::SparseMatrix<double> matrix_;  // the Newton matrix at `state`, its pattern the solve's
+  KluFactor lu_;
   Eigen::VectorXd rhs_, step_;  // the solves' workspace
 };
 

@@ -1,6 +1,7 @@
 #include "verify/verified_design.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -59,6 +60,15 @@ void CheckAgain(Design& design, ProgressReporter* progress) {
 }
 
 namespace {
+
+// `f()`, its wall time added to `seconds`.
+template <class F>
+auto Timed(double& seconds, F&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = f();
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
 
 // The solver of the sizing: Ipopt when the config asks for it, else NLopt's SLSQP. Its dense
 // quadratic subproblems suit the sizing's few variables and dense rows: the default bridge at
@@ -190,7 +200,7 @@ struct Sized {
 };
 Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorrections& corrections,
                    const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x,
-                   ProgressReporter* progress) {
+                   Resizing::Times& time_s, ProgressReporter* progress) {
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
   x = x.cwiseMax(lo);
@@ -202,17 +212,17 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   options.max_iterations = config.design.max_iterations;
   Sized out;
   if (progress != nullptr) progress->Stage("optimisation");
-  out.outcome = SolveSizing(current, corrections, solver, options, problem, x);
+  out.outcome = Timed(time_s.sizing, [&] { return SolveSizing(current, corrections, solver, options, problem, x); });
   Design& d = out.design;
   d = SizedDesign(config, problem.Areas(x), problem.Alpha(x));
   d.solver = out.outcome;
   d.solver_form = "verified sizing";
   RequireStable(d);
   RecordSizing(d, problem, x, problem.Areas(lo));
-  out.statics = CheckStatics(d, progress);
-  out.dynamics = CheckDynamics(d, std::nullopt, progress);
+  out.statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
+  out.dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
   if (progress != nullptr) progress->Stage("comfort check");
-  RecordChecks(d, out.statics, out.dynamics, CheckComfort(d));
+  RecordChecks(d, out.statics, out.dynamics, Timed(time_s.comfort_check, [&] { return CheckComfort(d); }));
   return out;
 }
 
@@ -345,7 +355,7 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   std::vector<double> doubled = first.areas;
   for (double& a : doubled) a *= 2;
   Eigen::VectorXd x = problem.VariablesOf(doubled, first.alpha);
-  Sized other = SizeAndCheck(config, current, corrections, solver, problem, x, progress);
+  Sized other = SizeAndCheck(config, current, corrections, solver, problem, x, record.time_s, progress);
   const Verdict verdict = SizingVerdict(other.design);
   const double mass = other.design.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
@@ -368,9 +378,10 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
 // A design checked as it is, with no sizing: the paper's, or one the sizing cannot take.
 Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) {
   RequireStable(d);
-  const StaticCheck statics = CheckStatics(d, progress);
-  const DynamicCheck dynamics = CheckDynamics(d, std::nullopt, progress);
-  RecordChecks(d, statics, dynamics, CheckComfort(d));
+  Resizing::Times& time_s = record.time_s;
+  const StaticCheck statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
+  const DynamicCheck dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
+  RecordChecks(d, statics, dynamics, Timed(time_s.comfort_check, [&] { return CheckComfort(d); }));
   record.iterations = 1;
   record.structure_mass_kg.push_back(d.mass.structure);
   const Verdict verdict = DesignVerdict(d);
@@ -391,9 +402,12 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   // nothing. A build without an iterative solver checks the first design as it is, and so
   // does a bridge with more self-stress states than the sizing takes as variables (the 3D
   // bridge from n = 4), saying so.
-  if (KeepsPaperSwitches(config) || solver.empty()) return CheckedAsDesigned(RunDesign(config, progress), record, progress);
+  if (KeepsPaperSwitches(config) || solver.empty()) {
+    Design d = Timed(record.time_s.first_design, [&] { return RunDesign(config, progress); });
+    return CheckedAsDesigned(std::move(d), record, progress);
+  }
   bool relaxed = false;
-  const Design first = FirstDesign(config, progress, &relaxed);
+  const Design first = Timed(record.time_s.first_design, [&] { return FirstDesign(config, progress, &relaxed); });
   const int symmetric_states = SizingProblem::SymmetricStates(first);
   if (symmetric_states < 0 || symmetric_states > SizingProblem::kMaxStates) {
     // A relaxed first design (without the members' weight, or with the paper's switches) is
@@ -433,7 +447,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
       progress->SetStagePrefix("sizing " + std::to_string(record.iterations) + " (of at most " +
                                std::to_string(max_iterations) + "): ");
     }
-    Sized sized = SizeAndCheck(config, current, corrections, solver, problem, x, progress);
+    Sized sized = SizeAndCheck(config, current, corrections, solver, problem, x, record.time_s, progress);
     const SolverOutcome& outcome = sized.outcome;
     const StaticCheck& statics = sized.statics;
     const DynamicCheck& dynamics = sized.dynamics;

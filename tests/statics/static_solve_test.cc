@@ -175,13 +175,18 @@ TEST_CASE("the static tangent is the first-order change of the nonlinear solve")
   CHECK((fd - dx).norm() <= 1e-6 * dx.norm());
 
   // And the solve that takes the tangent's factorisation for its steps from the start is the
-  // solve that factorises the same matrix itself, to the bit.
+  // solve that factorises the same matrix itself, to rounding: its later Newton steps
+  // factorise afresh where the plain solve refactorises with its first pivots (KLU), so the two
+  // take the same steps up to rounding. 1e-12 relative: measured 3e-15 (forces) and 1e-15 m
+  // (nodes, over a span of 12 m), a few roundings; a different step would show as the Newton
+  // tolerance, 1e-10.
   const StaticResult plain = SolveStatic(model, start, d.loads, d.loads + extra);
   const StaticResult reused = SolveStatic(model, start, d.loads, d.loads + extra, &tangent);
   REQUIRE(plain.converged);
   CHECK(reused.newton_iterations == plain.newton_iterations);
-  CHECK((reused.state.nodes - plain.state.nodes).cwiseAbs().maxCoeff() == 0.0);
-  CHECK((reused.state.bar_compression - plain.state.bar_compression).cwiseAbs().maxCoeff() == 0.0);
+  CHECK((reused.state.nodes - plain.state.nodes).cwiseAbs().maxCoeff() <= 1e-12 * d.config.bridge.span);
+  CHECK((reused.state.bar_compression - plain.state.bar_compression).cwiseAbs().maxCoeff() <=
+        1e-12 * plain.state.bar_compression.cwiseAbs().maxCoeff());
 }
 
 }  // namespace
