@@ -8,7 +8,8 @@ Usage: bench/design_process.py [--tbridge build/tbridge] [--max-n 16] [--repeats
 
 --verified measures instead the engineering default (configs/default.json's settings at each n):
 every load case, self-weight, the static and dynamic checks and the resizing loop; with
---planes 2, on the 3D bridge.
+--planes 2, on the 3D bridge. Its table gives the wall time by part (the sizing, the static
+check, the dynamic runs) that `tbridge design --progress` prints, of the fastest repeat.
 
 Each run is a fresh process; wall time is the best of `repeats`, peak memory the largest
 resident set of tbridge as GNU time reports it (`/usr/bin/time -f %M`, Debian package "time").
@@ -37,16 +38,27 @@ def paper_config(n, planes):
             "design": design, "loads": {"cases": ["paper"]}}
 
 
-def run_once(tbridge, config_path, out_path):
+def run_once(tbridge, config_path, out_path, parts=False):
+    """Wall time [s], peak RSS [MB] and, with `parts`, the time by part that `--progress` prints
+    last on stderr (an older tbridge that does not print it: None)."""
     with tempfile.NamedTemporaryFile("r") as report:
         start = time.perf_counter()
         proc = subprocess.run(["/usr/bin/time", "-o", report.name, "-f", "%M", tbridge, "design", config_path,
-                               "-o", out_path, "-q"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                               "-o", out_path, "-q"] + (["--progress"] if parts else []),
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE if parts else subprocess.DEVNULL)
         wall = time.perf_counter() - start
         # 1 is a design written with a FAIL or INCOMPLETE verdict, which the table reports.
         if proc.returncode not in (0, 1):
             sys.exit(f"tbridge design {config_path} failed with exit code {proc.returncode}")
-        return wall, int(report.read().split()[-1]) / 1024.0  # %M is in KiB
+        by_part = None
+        if parts:
+            lines = [line for line in proc.stderr.decode(errors="replace").splitlines()
+                     if line.startswith("time by part [s]: ")]
+            if lines:
+                # "time by part [s]: first design 0.01, sizing 3.7, ... (6 designs)"
+                fields = lines[-1][len("time by part [s]: "):].split(" (")[0].split(", ")
+                by_part = {f.rsplit(" ", 1)[0]: float(f.rsplit(" ", 1)[1]) for f in fields}
+        return wall, int(report.read().split()[-1]) / 1024.0, by_part  # %M is in KiB
 
 
 def measure(tbridge, n, planes, repeats, workdir, verified=False):
@@ -54,7 +66,8 @@ def measure(tbridge, n, planes, repeats, workdir, verified=False):
     out_path = os.path.join(workdir, f"design_{planes}_{n}.json")
     with open(config_path, "w") as f:
         json.dump({"bridge": {"n": n, "planes": planes}} if verified else paper_config(n, planes), f)
-    runs = [run_once(tbridge, config_path, out_path) for _ in range(repeats)]
+    runs = [run_once(tbridge, config_path, out_path, parts=verified) for _ in range(repeats)]
+    best = min(runs, key=lambda r: r[0])
     with open(out_path) as f:
         d = json.load(f)
     members = d["topology"]["bars"] + d["topology"]["strings"]
@@ -62,7 +75,7 @@ def measure(tbridge, n, planes, repeats, workdir, verified=False):
             "solver": f'{d["solver"]["name"]} ({d["solver"]["problem"]})', "states": d["self_stress_states"],
             "mass": d["mass"]["total"], "bytes": os.path.getsize(out_path), "verdict": d["verdict"]["summary"],
             "designs": d["resizing"]["iterations"], "dynamic": dynamic_steps(d["dynamic_check"]),
-            "structure": d["mass"]["structure"]}
+            "structure": d["mass"]["structure"], "parts": best[2]}
 
 
 def dynamic_steps(check):
@@ -76,11 +89,14 @@ def verified_table(args, workdir):
     rows = [measure(args.tbridge, n, args.planes, args.repeats, workdir, verified=True)
             for n in range(1, args.max_n + 1)]
     print(f"Machine: {' '.join(os.uname())}; {os.cpu_count()} cores\n")
-    print("| n | members | designs | structure [kg] | dynamic check (method, steps) | wall [s] | peak RSS [MB] | verdict |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| n | members | designs | structure [kg] | dynamic check (method, steps) | wall [s] | "
+          "sizing / static / dynamic [s] | peak RSS [MB] | verdict |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
+        p = r["parts"]
+        parts = f'{p["sizing"]:.2f} / {p["static check"]:.2f} / {p["dynamic check"]:.2f}' if p else "-"
         print(f'| {r["n"]} | {r["members"]} | {r["designs"]} | {r["structure"]:.1f} | {r["dynamic"]} | '
-              f'{r["wall_s"]:.2f} | {r["rss_mb"]:.1f} | {r["verdict"][:60]} |')
+              f'{r["wall_s"]:.2f} | {parts} | {r["rss_mb"]:.1f} | {r["verdict"][:60]} |')
 
 
 def main():
