@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -373,9 +374,27 @@ TEST_CASE("plausibility and progress: n = 12 and 16 on a 12 m span warn of their
   // n = 16 takes about 2 s, longer than the progress line's 1 s delay: a line is drawn (the
   // design's fraction done, or the writing's elapsed time, whichever stage runs at 1 s).
   const fs::path config16 = Write(dir / "config16.json", Paper(R"({"bridge": {"n": 16}})"));
+  const auto start = std::chrono::steady_clock::now();
   r = Run(dir, "design " + Quote(config16.string()) + " -o " + Quote((dir / "out16.json").string()) + " -q --progress");
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CHECK(r.code == tbridge::test::VerdictExit(dir / "out16.json"));
   CHECK_THAT(r.err, Catch::Contains("elapsed "));
+  // The last line: the wall time by part. The paper's design is checked as designed, so it is
+  // the first design and the checks, with no sizing; the parts are within the whole process's
+  // time (a part counted twice would not be: the design is most of the 2 s).
+  const std::string tag = "time by part [s]: first design ";
+  const size_t at = r.err.rfind(tag);
+  REQUIRE(at != std::string::npos);
+  double first = -1, sizing = -1, statics = -1, dynamics = -1, comfort = -1;
+  REQUIRE(std::sscanf(r.err.c_str() + at + tag.size(),
+                      "%lf, sizing %lf, static check %lf, dynamic check %lf, comfort check %lf", &first, &sizing,
+                      &statics, &dynamics, &comfort) == 5);
+  CHECK(first > 0);
+  CHECK(sizing == 0);
+  CHECK(statics > 0);
+  CHECK(first + sizing + statics + dynamics + comfort <= wall_s);
+  // Not in the design's JSON, which is the same from run to run.
+  CHECK_THAT(ReadText(dir / "out16.json"), !Catch::Contains("time by part") && !Catch::Contains("time_s"));
   // The progress line is ended before the first warning, which starts a line of its own.
   CHECK_THAT(r.err, Catch::Contains("\ntbridge: warning: "));
 }
