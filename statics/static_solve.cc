@@ -164,8 +164,9 @@ StaticTangent::StaticTangent(const StaticModel& model, const StaticState& state)
   first_ = map.first;
   dim_ = map.dim;
   free_ = map.count;
-  matrix_ = Jacobian(model, map, state.nodes, Multipliers(model.structure, state.bar_compression));
-  ok_ = lu_.Analyse(matrix_) && lu_.Factorise(matrix_);
+  const Eigen::SparseMatrix<double> matrix =
+      Jacobian(model, map, state.nodes, Multipliers(model.structure, state.bar_compression));
+  ok_ = lu_.Analyse(matrix) && lu_.Factorise(matrix);
   rhs_.setZero(free_ + model.structure.num_bars());
 }
 

@@ -68,8 +68,7 @@ class StaticTangent {
   std::vector<int> first_;  // per node, its first free coordinate or -1 (fixed)
   int dim_ = 3, free_ = 0;
   bool ok_ = false;
-  Eigen::SparseMatrix<double> matrix_;  // the Newton matrix at `state`, its pattern the solve's
-  KluFactor lu_;
+  KluFactor lu_;  // of the Newton matrix at `state`
   Eigen::VectorXd rhs_, step_;  // the solves' workspace
 };
 
