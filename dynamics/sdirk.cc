@@ -72,9 +72,8 @@ Sdirk3::Sdirk3(const AccelerationCoupling& coupling, int size, const SdirkOption
       }
     }
   }
-  lu_ = std::make_unique<KluFactor>();
-  if (!lu_->Analyse(matrix_)) throw std::invalid_argument("sdirk3: KLU could not analyse the Newton matrix's pattern");
-  counts_ = {static_cast<long>(matrix_.nonZeros()), lu_->FactorEntries(), lu_->EstimatedFlops(),
+  if (!lu_.Analyse(matrix_)) throw std::invalid_argument("sdirk3: KLU could not analyse the Newton matrix's pattern");
+  counts_ = {static_cast<long>(matrix_.nonZeros()), lu_.FactorEntries(), lu_.EstimatedFlops(),
              colours * dim + 1};
 
   for (Eigen::VectorXd* v : {&y0_, &dy_, &dy_pert_, &y_pert_, &stage_}) *v = Eigen::VectorXd::Zero(2 * c_);
@@ -114,7 +113,7 @@ void Sdirk3::Refresh(OdeSystem& system, double t, double h, const Eigen::VectorX
       y_pert_[c_ + col] = y[c_ + col];
     }
   }
-  if (!lu_->Factorise(matrix_)) Fail(t, h, "the Newton matrix is singular");
+  if (!lu_.Factorise(matrix_)) Fail(t, h, "the Newton matrix is singular");
   factor_h_ = h;
   ++stats_.jacobians;
 }
@@ -145,7 +144,7 @@ bool Sdirk3::SolveStage(OdeSystem& system, int stage, double t_stage, double h, 
     previous_residual = residual_norm;
     vel_old_ = vel_;
     delta_ = residual_;
-    lu_->Solve(delta_);
+    lu_.Solve(delta_);
     alpha = 1;
     vel_ += delta_;
     double norm = 0;

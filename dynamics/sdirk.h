@@ -26,7 +26,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <memory>
 #include <vector>
 
 #include "core/klu_factor.h"
@@ -117,7 +116,7 @@ class Sdirk3 {
   std::vector<std::vector<Slot>> group_slots_;
   std::vector<int> diagonal_;                    // value index of each diagonal entry
   Eigen::SparseMatrix<double> matrix_;           // I - h gamma D, fixed pattern
-  std::unique_ptr<KluFactor> lu_;                // the sparse LU of I - h gamma D
+  KluFactor lu_;                                 // the sparse LU of I - h gamma D
   double factor_h_ = 0;  // step the current factorisation was made for (0: none)
   double stage_power_[3] = {0, 0, 0};  // DissipatedPower at each stage's last Newton iterate [W]
   double last_dissipated_ = 0;

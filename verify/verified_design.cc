@@ -45,20 +45,6 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
   d.comfort = std::move(comfort);
 }
 
-void CheckAgain(Design& design, ProgressReporter* progress) {
-  for (auto* list : {&design.bars, &design.strings}) {
-    for (MemberSizing& m : *list) {
-      m.utilisation = m.demand = m.resistance = 0;
-      m.mode.clear();
-      m.governing_case.clear();
-    }
-  }
-  const StaticCheck statics = CheckStatics(design, progress);
-  const DynamicCheck dynamics = CheckDynamics(design, std::nullopt, progress);
-  if (progress != nullptr) progress->Stage("comfort check");
-  RecordChecks(design, statics, dynamics, CheckComfort(design));
-}
-
 namespace {
 
 // `f()`, its wall time added to `seconds`.
@@ -69,6 +55,39 @@ auto Timed(double& seconds, F&& f) {
   seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
+
+// The static and dynamic checks' reports of a design.
+struct Checks {
+  StaticCheck statics;
+  DynamicCheck dynamics;
+};
+
+// Runs every check on `d` and records what they found in it (RecordChecks); their wall times
+// are added to `time_s`. Returns the static and dynamic reports, which the corrections read.
+Checks RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress) {
+  Checks c;
+  c.statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
+  c.dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
+  if (progress != nullptr) progress->Stage("comfort check");
+  RecordChecks(d, c.statics, c.dynamics, Timed(time_s.comfort_check, [&] { return CheckComfort(d); }));
+  return c;
+}
+
+}  // namespace
+
+void CheckAgain(Design& design, ProgressReporter* progress) {
+  for (auto* list : {&design.bars, &design.strings}) {
+    for (MemberSizing& m : *list) {
+      m.utilisation = m.demand = m.resistance = 0;
+      m.mode.clear();
+      m.governing_case.clear();
+    }
+  }
+  Resizing::Times unused;
+  RunChecks(design, unused, progress);
+}
+
+namespace {
 
 // The solver of the sizing: Ipopt when the config asks for it, else NLopt's SLSQP. Its dense
 // quadratic subproblems suit the sizing's few variables and dense rows: the default bridge at
@@ -219,10 +238,9 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   d.solver_form = "verified sizing";
   RequireStable(d);
   RecordSizing(d, problem, x, problem.Areas(lo));
-  out.statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
-  out.dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
-  if (progress != nullptr) progress->Stage("comfort check");
-  RecordChecks(d, out.statics, out.dynamics, Timed(time_s.comfort_check, [&] { return CheckComfort(d); }));
+  Checks checks = RunChecks(d, time_s, progress);
+  out.statics = std::move(checks.statics);
+  out.dynamics = std::move(checks.dynamics);
   return out;
 }
 
@@ -378,10 +396,7 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
 // A design checked as it is, with no sizing: the paper's, or one the sizing cannot take.
 Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) {
   RequireStable(d);
-  Resizing::Times& time_s = record.time_s;
-  const StaticCheck statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
-  const DynamicCheck dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
-  RecordChecks(d, statics, dynamics, Timed(time_s.comfort_check, [&] { return CheckComfort(d); }));
+  RunChecks(d, record.time_s, progress);
   record.iterations = 1;
   record.structure_mass_kg.push_back(d.mass.structure);
   const Verdict verdict = DesignVerdict(d);
