@@ -95,6 +95,10 @@ struct DynamicCheck {
   std::vector<DynamicRun> runs;
   // Per member [bars; strings]: the dynamic demand over the runs done.
   std::vector<MemberFinding> members;
+  // The strings that must stay taut and went slack in a run, whether or not "slack" is their
+  // governing finding (a higher tension elsewhere in the run may govern). Not in the design
+  // file: a design read back has the findings only.
+  std::vector<int> slack_strings;
   bool ran() const { return !runs.empty(); }
   // Not run when the check was not carried out or a run was not done (and nothing failed);
   // failed when a member's finding exceeds 1.

@@ -1,5 +1,5 @@
 // One candidate of the outer loop: its grid point, and its evaluation
-// design -> (prestrained deck strings) -> first frequency -> travelling load -> constraints.
+// design -> (prestrained deck strings) -> first frequency -> dynamic check -> constraints.
 #pragma once
 
 #include <optional>
@@ -24,6 +24,7 @@ std::vector<Candidate> EnumerateCandidates(const SweepConfig& sweep);
 // Names of the constraints, in the order they are checked and reported.
 inline constexpr const char* kVerifiedDesign = "verified_design";
 inline constexpr const char* kMinFirstFrequency = "min_first_frequency";
+inline constexpr const char* kDynamicCheckDone = "dynamic_check_done";
 inline constexpr const char* kMaxDeckDisplacement = "max_deck_displacement";
 inline constexpr const char* kSpanOverDisplacement = "span_over_displacement";
 inline constexpr const char* kNoSlack = "no_slack_under_service";
@@ -50,12 +51,16 @@ struct CandidateRow {
   double prestress = 0;                // stress of the deck strings at the design length [Pa]
   double allowed_stress = 0;           // sigma_w [Pa]
   std::optional<double> first_frequency_rad_s;
+  // The design's dynamic check (sweep.constraints' dynamic ones, or sweep.report.dynamic_check):
+  // whether every run it asks for was done; over the runs done, the peak deck displacement, the
+  // largest dynamic utilisation of a string and of a bar, and the strings that must stay taut
+  // and went slack; each run with how it ran ("paper_travelling: rk4x2") or why not.
+  std::optional<bool> dynamic_check_done;
   std::optional<double> peak_deck_displacement;  // [m]
-  std::optional<double> peak_stress_ratio;       // peak string stress / sigma_w
-  std::optional<int> slack_strings;       // every string slack at some step of the run
-  std::optional<int> slack_taut_strings;  // of those, the ones that must stay taut (MustStayTaut)
-  std::optional<double> peak_bar_capacity_ratio;
-  std::optional<std::string> run_integrator;  // "rk4" | "rk4xM" | "sdirk3": what the travelling load ran with
+  std::optional<double> dynamic_string_utilisation;
+  std::optional<double> dynamic_bar_utilisation;
+  std::optional<int> slack_taut_strings;
+  std::optional<std::string> dynamic_runs;
   bool feasible = false;
   std::vector<std::string> violated;  // constraint names, in the order above
 };
@@ -65,17 +70,18 @@ struct CandidateRow {
 //
 // With sweep.verified the design is DesignAndVerify's (tbridge design's): checked statically
 // and dynamically and resized until it passes; a verdict that fails makes the row infeasible
-// (verified_design), its note the verdict. The dynamic model of the modes and the run carries
-// gravity on the structure with design.self_weight, and the deck's inertia with
-// sweep.travelling_load.deck_inertia.
+// (verified_design), its note the verdict. The dynamic model of the modes carries gravity on
+// the structure with design.self_weight, and the deck's inertia except under the paper's
+// switches: the dynamic check's model.
 //
 // Deck prestrain r < 1 (SweepConfig::prestrain_sizing):
 // - grow_area: the wanted deck-string tension is T = E A0 (1/r - 1), A0 the design area. The
 //   area becomes A = max(A0, T / sigma_w), the rest length L0 = s / (1 + T / (E A)), the
 //   stiffness E A / L0, the mass rho A s; mass.deck_strings, structure and total include it.
 //   The design itself (design/) is untouched: the row's design is a copy.
-// - keep_area: the dynamic model gets rest length r s (dynamics.prestrain), mass unchanged;
-//   the prestress E (1/r - 1) is reported and checked by prestress_within_allowed.
+// - keep_area: the deck strings get rest length r s, area and mass unchanged; the prestress
+//   E (1/r - 1) is reported and checked by prestress_within_allowed.
+// The changed bridge's dynamic check is run again; with r = 1 a verified candidate's own is read.
 CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate);
 
 // The config of one candidate: the base with bridge.n, p and beta_deg set.

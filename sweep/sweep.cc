@@ -224,12 +224,12 @@ void RowFields(Row& r, Visit&& v) {  // Row: CandidateRow or const CandidateRow
   v("", "prestress_pa", r.prestress);
   v("", "allowed_stress_pa", r.allowed_stress);
   v("", "first_frequency_rad_s", r.first_frequency_rad_s);
+  v("", "dynamic_check_done", r.dynamic_check_done);
   v("", "peak_deck_displacement_m", r.peak_deck_displacement);
-  v("", "peak_stress_ratio", r.peak_stress_ratio);
-  v("", "slack_strings", r.slack_strings);
+  v("", "dynamic_string_utilisation", r.dynamic_string_utilisation);
+  v("", "dynamic_bar_utilisation", r.dynamic_bar_utilisation);
   v("", "slack_taut_strings", r.slack_taut_strings);
-  v("", "peak_bar_capacity_ratio", r.peak_bar_capacity_ratio);
-  v("", "run_integrator", r.run_integrator);
+  v("", "dynamic_runs", r.dynamic_runs);
   v("", "feasible", r.feasible);
   v("", "violated", r.violated);
 }
@@ -290,7 +290,8 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
   out << "index,n,p,beta_deg,deck_prestrain,ok,bars_kg,strings_kg,deck_strings_kg,deck_beams_kg,structure_kg,"
          "total_kg,joint_mass_kg,objective_kg,first_design_kg,designs,verified,utilisation_max,"
          "deck_string_area_factor,prestress_pa,first_frequency_rad_s,"
-         "peak_deck_displacement_m,peak_stress_ratio,slack_strings,slack_taut_strings,peak_bar_capacity_ratio,run_integrator,feasible,violated,note\n";
+         "dynamic_check_done,peak_deck_displacement_m,dynamic_string_utilisation,dynamic_bar_utilisation,slack_taut_strings,"
+         "dynamic_runs,feasible,violated,note\n";
   auto opt = [](const std::optional<double>& v) { return v ? Fixed(*v) : std::string(); };
   for (const CandidateRow& r : rows) {
     const Candidate& c = r.candidate;
@@ -300,10 +301,11 @@ std::string SweepCsv(const std::vector<CandidateRow>& rows) {
         << "," << Fixed(r.objective) << "," << Fixed(r.first_design) << "," << r.designs << ","
         << (r.verified ? (*r.verified ? "1" : "0") : "") << "," << opt(r.utilisation_max) << ","
         << Fixed(r.deck_string_area_factor) << "," << Fixed(r.prestress) << ","
-        << opt(r.first_frequency_rad_s) << "," << opt(r.peak_deck_displacement) << "," << opt(r.peak_stress_ratio)
-        << "," << (r.slack_strings ? std::to_string(*r.slack_strings) : std::string()) << ","
+        << opt(r.first_frequency_rad_s) << ","
+        << (r.dynamic_check_done ? (*r.dynamic_check_done ? "1" : "0") : "") << "," << opt(r.peak_deck_displacement)
+        << "," << opt(r.dynamic_string_utilisation) << "," << opt(r.dynamic_bar_utilisation) << ","
         << (r.slack_taut_strings ? std::to_string(*r.slack_taut_strings) : std::string()) << ","
-        << opt(r.peak_bar_capacity_ratio) << "," << r.run_integrator.value_or("") << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","
+        << CsvText(r.dynamic_runs.value_or("")) << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","
         << CsvText(r.note) << "\n";
   }
   return out.str();

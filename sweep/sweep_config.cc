@@ -26,6 +26,49 @@ void CheckGridList(const std::vector<T>& values, const std::string& path) {
   }
 }
 
+// The keys of the sweep's own travelling-load run, which gave way to the design's dynamic check:
+// each named with what replaced it.
+struct Replaced {
+  const char* key;
+  const char* by;
+};
+constexpr Replaced kReplacedRunKeys[] = {
+    {"duration",
+     "loads.travelling_speed_m_s (the walking load crosses the span at it; the paper's travelling load, "
+     "loads.cases \"paper_travelling\", stands 0.25 s on each station, eqs 50-51)"},
+    {"dt", "loads.dynamic_dt_s"},
+    {"integrator", "loads.dynamic_method (the check runs RK4 or the modal run, never SDIRK3, which reads peaks low)"},
+    {"load_factor", "loads.travelling_load_n (the walking load) and loads.gamma_q (its factor)"},
+    {"string_mass", "none: the check's model lumps each string's mass at its ends, as tbridge simulate's default"},
+    {"damping_c", "none: the check's runs are undamped, which reads the peaks high"},
+    {"deck_inertia", "none: the check carries the deck's and payload's mass at the deck nodes, except under the "
+                     "paper's switches (loads.cases [\"paper\"]), whose model has none"},
+};
+
+// Refuses the sweep's travelling-load run of earlier versions, naming what replaced each key.
+void RefuseReplacedKeys(const nlohmann::json& sweep) {
+  if (!sweep.is_object()) return;
+  if (sweep.contains("travelling_load")) {
+    const nlohmann::json& run = sweep["travelling_load"];
+    if (run.is_object()) {
+      for (const Replaced& r : kReplacedRunKeys) {
+        if (run.contains(r.key)) {
+          throw ConfigError(std::string("sweep.travelling_load.") + r.key, Show(run[r.key]),
+                            std::string("the sweep's own run was replaced by the design's dynamic check; set ") + r.by);
+        }
+      }
+    }
+    throw ConfigError("sweep.travelling_load", Show(run),
+                      "the sweep's own run was replaced by the design's dynamic check, whose runs the loads "
+                      "section sets (loads.cases, loads.travelling_load_n, loads.travelling_speed_m_s, "
+                      "loads.dynamic_dt_s, loads.dynamic_method)");
+  }
+  if (sweep.contains("report") && sweep["report"].is_object() && sweep["report"].contains("travelling_load")) {
+    throw ConfigError("sweep.report.travelling_load", Show(sweep["report"]["travelling_load"]),
+                      "replaced by sweep.report.dynamic_check (the design's dynamic check)");
+  }
+}
+
 }  // namespace
 
 void CheckSweepRules(const SweepConfig& s, const BridgeConfig& bridge) {
@@ -39,10 +82,6 @@ void CheckSweepRules(const SweepConfig& s, const BridgeConfig& bridge) {
                         "must be 1 when bridge.planes = 2");
     }
   }
-  if (s.travelling_load.dt > s.travelling_load.duration) {
-    throw ConfigError("sweep.travelling_load.dt", std::to_string(s.travelling_load.dt),
-                      "must be at most sweep.travelling_load.duration");
-  }
 }
 
 std::string SweepSectionText() {
@@ -50,18 +89,13 @@ std::string SweepSectionText() {
          SectionBody(kSweepSection, KeyTableOf(SweepConfig{}));
 }
 
-bool SweepConfig::NeedsRun() const {
-  const SweepConstraints& c = constraints;
-  return report.travelling_load || c.max_deck_displacement || c.span_over_displacement ||
-         c.no_slack_under_service || c.max_dynamic_stress_ratio || c.bar_capacity_during_motion;
-}
-
 SweepSpec ParseSweepSpec(const nlohmann::json& root) {
   if (!root.is_object()) throw ConfigError("(root)", Show(root), "must be a JSON object");
   if (!root.contains("sweep")) throw ConfigError("sweep", "(missing)", "required section of a sweep config");
   if (root.contains("dynamics")) {
     throw ConfigError("dynamics", "(section)",
-                      "not allowed in a sweep config: the sweep's run is set in sweep.travelling_load");
+                      "not allowed in a sweep config: the design's dynamic check runs the loads section's "
+                      "dynamic loads (loads.cases)");
   }
   const nlohmann::json& bridge = root.contains("bridge") ? root["bridge"] : nlohmann::json();
   SweepSpec spec;
@@ -70,6 +104,7 @@ SweepSpec ParseSweepSpec(const nlohmann::json& root) {
                                  bridge["beta_deg"].is_number()
                              ? bridge["beta_deg"].get<double>()
                              : BridgeConfig{}.beta_deg};
+  RefuseReplacedKeys(root["sweep"]);
   ParseFields(JsonSection(root["sweep"], "sweep"), spec.sweep);
   // The base config: bridge.n (and p, beta_deg) are set per candidate, so n may be left out.
   nlohmann::json base = root;

@@ -1,5 +1,6 @@
 // The "sweep" section of a config: the candidate grid of the outer loop, the objective's
-// joint-mass term, the optional static and dynamic constraints and the travelling-load run.
+// joint-mass term, and the optional static and dynamic constraints, which read the design's own
+// checks (the loads section says what they run).
 // Every key is described once in sweep/sweep_fields.h: unit, range and meaning, from which
 // the parse, the echo, Validate() and the README's key table come.
 #pragma once
@@ -22,40 +23,28 @@ struct JointMassConfig {
   bool enabled() const { return per_node_kg > 0 || per_force_kg_per_N > 0; }
 };
 
-// Each constraint is off when absent. Dynamic ones run the travelling load.
+// Each constraint is off when absent. The dynamic ones read the design's dynamic check
+// (verify/dynamic_check.h): the runs its loads section asks for, each member's factored demand
+// over its resistance. A candidate whose check left a run undone cannot show them and is
+// infeasible (dynamic_check_done).
 struct SweepConstraints {
   std::optional<double> min_first_frequency_rad_s;  // [rad/s], > 0
-  std::optional<double> max_deck_displacement;      // peak |dy| of a deck node [m], > 0
-  std::optional<double> span_over_displacement;     // span / peak |dy| must be >= this [-], > 0
-  bool no_slack_under_service = true;               // no string goes slack in the run
-  std::optional<double> max_dynamic_stress_ratio;   // peak string stress / sigma_w [-], > 0
-  bool bar_capacity_during_motion = true;           // peak bar force <= the design's bar resistance
+  std::optional<double> max_deck_displacement;      // peak |dy| of a deck node in a run [m], > 0
+  std::optional<double> span_over_displacement;     // span / that peak must be >= this [-], > 0
+  bool no_slack_under_service = true;               // no string that must stay taut goes slack in a run
+  std::optional<double> max_dynamic_stress_ratio;   // strings' dynamic utilisation <= this [-], > 0
+  bool bar_capacity_during_motion = true;           // bars' dynamic utilisation <= 1
   bool prestress_within_allowed = false;            // prestrained strings' stress <= sigma_w
-};
-
-// The service load (the design's deck node load f times load_factor, downward) stands on each
-// free deck node in turn, in order of x, for duration / (number of deck nodes) each, on top of
-// the design loads; the bridge starts at rest in its design equilibrium.
-struct TravellingLoadConfig {
-  double duration = 0.5;     // [s], [1e-6, 100]
-  // Largest step [s], [1e-9, 1e-2], at most duration; the step taken is the largest <= dt
-  // that divides a station's time. At 1e-4 s "auto" runs RK4 (with sub-steps) up to n = 9;
-  // 5e-4 s is a screening step that leaves n >= 7-8 to SDIRK3 (deck peak within 3.4 %,
-  // string stress peaks 22 % low at n = 8; BENCHMARKS.md, Sweep timing).
-  double dt = 1e-4;
-  // "auto" | "rk4" | "sdirk3", as dynamics.integrator: "auto" is RK4 (with
-  // sub-steps) where that is stable, else SDIRK3 (which damps the modes far above 1/dt).
-  IntegratorKind integrator = IntegratorKind::kAuto;
-  double load_factor = 1.0;  // moving load / design node load [-], (0, 100]
-  StringMassMode string_mass = StringMassMode::kOnBars;  // as dynamics.string_mass
-  double damping_c = 0;      // c of every string [N s/m], [0, 1e9]
-  bool deck_inertia = true;  // the deck's and payload's mass at the deck nodes, as dynamics.deck_inertia
+  bool Dynamic() const {
+    return max_deck_displacement || span_over_displacement || no_slack_under_service || max_dynamic_stress_ratio ||
+           bar_capacity_during_motion;
+  }
 };
 
 // What to compute even when no constraint needs it.
 struct SweepReport {
   bool first_frequency = false;
-  bool travelling_load = false;
+  bool dynamic_check = false;  // the design's dynamic check, with no dynamic constraint
 };
 
 struct SweepConfig {
@@ -77,13 +66,12 @@ struct SweepConfig {
   bool verified = true;
   JointMassConfig joint_mass;
   SweepConstraints constraints;
-  TravellingLoadConfig travelling_load;
   SweepReport report;
 
   bool NeedsModes() const {
     return report.first_frequency || constraints.min_first_frequency_rad_s.has_value();
   }
-  bool NeedsRun() const;
+  bool NeedsDynamicCheck() const { return report.dynamic_check || constraints.Dynamic(); }
   int size() const {
     return static_cast<int>(n.size() * p.size() * beta_deg.size() * deck_prestrain.size());
   }

@@ -14,8 +14,9 @@ namespace tbridge {
 inline const SectionInfo kSweepSection{
     "sweep", "the outer loop (`tbridge sweep`)",
     "the grid lists `n`, `p`, `beta_deg` and `deck_prestrain` are non-empty and name each value "
-    "once; `p` only 1 when `bridge.planes` = 2; `travelling_load.dt` at most "
-    "`travelling_load.duration`."};
+    "once; `p` only 1 when `bridge.planes` = 2. The dynamic constraints read the design's dynamic "
+    "check (the runs `loads.cases` asks for, see the loads section); the section `travelling_load` "
+    "of earlier versions is refused, naming the key that replaced each of its keys."};
 
 template <class J, class V>
 void DescribeFields(J& j, V& v) requires std::is_same_v<std::remove_const_t<J>, JointMassConfig> {
@@ -36,25 +37,27 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
   v.OptionalNumber(
       KeyInfo{
           "max_deck_displacement", "m",
-          "peak vertical displacement of any free deck node in the travelling-load run <= this"},
+          "peak vertical displacement of any deck node from the run's start, over the dynamic "
+          "check's runs, <= this"},
       c.max_deck_displacement, Range::Positive(), Absent::kNull);
   v.OptionalNumber(
       KeyInfo{"span_over_displacement", "–", "span / that peak >= this (e.g. 1000 for L/1000)"},
       c.span_over_displacement, Range::Positive(), Absent::kNull);
   v.Bool(KeyInfo{"no_slack_under_service", "–",
                  "no string that must stay taut (the deck chain; the 3D bridge's transverse strings) goes "
-                 "slack (s < L0) at any step of the travelling-load run; other strings may"},
+                 "slack (s < L0) in any of the dynamic check's runs; other strings may"},
          c.no_slack_under_service);
   v.OptionalNumber(
       KeyInfo{"max_dynamic_stress_ratio", "–",
-              "peak string stress / sigma_w <= this. The design works every string at sigma_w, so "
-              "any load on top of it gives > 1; yield is at `yield_safety_factor`"},
+              "every string's dynamic utilisation (the dynamic check's factored demand over A·sigma_w; "
+              "with the paper's switches, every factor 1: its peak stress / sigma_w) <= this. "
+              "The paper's design works every string at sigma_w, so any load on top of it gives > 1; "
+              "yield is at `yield_safety_factor`"},
       c.max_dynamic_stress_ratio, Range::Positive(), Absent::kNull);
   v.Bool(KeyInfo{"bar_capacity_during_motion", "–",
-                 "peak bar force in the travelling-load run <= the design's bar resistance "
-                 "(`design.bar_resistance`: the column curve, or the paper's Euler load) in compression, "
-                 "its yield resistance in tension, at every step (bar forces lambda·l from the class-k "
-                 "multipliers, dynamics/classk.h, for any class)"},
+                 "every bar's dynamic utilisation <= 1: the dynamic check's factored demand over the "
+                 "design's bar resistance (`design.bar_resistance`: the column curve, or the paper's "
+                 "Euler load)"},
          c.bar_capacity_during_motion);
   v.Bool(
       KeyInfo{"prestress_within_allowed", "–",
@@ -62,58 +65,13 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
       c.prestress_within_allowed);
 }
 
-template <class T, class V>
-void DescribeFields(T& t,
-                    V& v) requires std::is_same_v<std::remove_const_t<T>, TravellingLoadConfig> {
-  v.Number(
-      KeyInfo{"duration", "s",
-              "the service load (the design's deck node load f × `load_factor`, downward) stands "
-              "on each free deck node in turn, in order of x, for duration/stations each, on top "
-              "of the design loads; the bridge starts at rest in its design equilibrium"},
-      t.duration, Range::Closed(1e-6, 100.0));
-  v.Number(
-      KeyInfo{
-          "dt", "s",
-          "largest step, at most `duration`; the step taken is the largest <= dt that puts a whole "
-          "number of steps in each station, so the load switches on step boundaries. At 1e-4 s "
-          "`\"auto\"` runs RK4 (with sub-steps) up to n = 9; at 5e-4 s up to n = 6-7 and SDIRK3 "
-          "beyond, whose deck peak is within 3.4 % but string stress peaks 22 % low and "
-          "short-string slack missed at n = 8 (BENCHMARKS.md, Sweep timing). Peaks and slack are "
-          "sampled at each step, not at sub-steps. A blow-up (bar-length error above 1e-3, energy "
-          "growth, non-finite state) stops the candidate as failed with a step to try"},
-      t.dt, Range::Closed(1e-9, 1e-2));
-  // DOPRI5's adaptive steps do not stop at the stations' load changes.
-  static constexpr std::array<Named<IntegratorKind>, 3> kTravellingIntegrators{
-      {{IntegratorKind::kAuto, "auto"}, {IntegratorKind::kRk4, "rk4"}, {IntegratorKind::kSdirk3, "sdirk3"}}};
-  EnumChoice(
-      v,
-      KeyInfo{"integrator", "–",
-              "as `dynamics.integrator`: `\"auto\"` runs RK4 where `dt` is at most 0.9 of its "
-              "stability limit 2·sqrt(2)/omega_max, RK4 sub-steps beyond while they cost no more than an "
-              "SDIRK3 step, else "
-              "the implicit SDIRK3, which damps the modes far above 1/dt (string-bar rattling; at "
-              "n = 4 and dt = 5e-4 s the deck peak moves by < 0.3 % and member force peaks by < 2 "
-              "% against RK4 at a resolving step, tests/sweep/evaluation_test.cc; the gap grows "
-              "with n, see `dt`). `\"rk4\"` with a small `dt` resolves every mode"},
-      t.integrator, kTravellingIntegrators);
-  v.Number(KeyInfo{"load_factor", "–", "moving load / f"}, t.load_factor,
-           Range{0.0, 100.0, true, false});
-  EnumChoice(v, KeyInfo{"string_mass", "–", "string mass in the modes and the run, as `dynamics.string_mass`"},
-             t.string_mass, kStringMassNames);
-  v.Number(KeyInfo{"damping_c", "N·s/m", "string damping in the modes' model and the run"},
-           t.damping_c, Range::Closed(0.0, 1e9));
-  v.Bool(KeyInfo{"deck_inertia", "–",
-                 "the deck beams' and the standing payload's mass at the deck nodes, in the modes and the "
-                 "run, as `dynamics.deck_inertia`"},
-         t.deck_inertia);
-}
-
 template <class R, class V>
 void DescribeFields(R& r, V& v) requires std::is_same_v<std::remove_const_t<R>, SweepReport> {
   v.Bool(KeyInfo{"first_frequency", "–", "compute the first frequency without the constraint"},
          r.first_frequency);
-  v.Bool(KeyInfo{"travelling_load", "–", "run the travelling load without a dynamic constraint"},
-         r.travelling_load);
+  v.Bool(KeyInfo{"dynamic_check", "–",
+                 "run the design's dynamic check (and report its peaks) without a dynamic constraint"},
+         r.dynamic_check);
 }
 
 template <class S, class V>
@@ -140,12 +98,11 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
                  "of every case, its dynamic check and the resizing of what fails, so its mass carries "
                  "its dynamic premium over the first design (`mass_kg.first_design`); a candidate whose "
                  "verification does not pass is infeasible (`verified_design`). A deck prestrain r < 1 "
-                 "changes the deck strings after the verification: the travelling-load run and the "
-                 "constraints check the changed bridge. false: the minimum-mass design alone"},
+                 "changes the deck strings after the verification: the dynamic check is run again on "
+                 "the changed bridge, and the constraints read it. false: the minimum-mass design alone"},
          s.verified);
   v.Section("joint_mass", s.joint_mass);
   v.Section("constraints", s.constraints);
-  v.Section("travelling_load", s.travelling_load);
   v.Section("report", s.report);
 }
 

@@ -185,7 +185,8 @@ bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& sta
 
 }  // namespace
 
-DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, ProgressReporter* progress) {
+DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, ProgressReporter* progress,
+                           const std::vector<StringPrestrain>& prestrain) {
   const double max_member_steps = max_steps ? *max_steps : d.config.loads.dynamic_max_member_steps;
   DynamicCheck out;
   out.done = true;
@@ -212,6 +213,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   ModelOptions options;
   options.gravity_on_structure = d.config.design.self_weight;
   options.deck_inertia = !paper;
+  options.prestrain = prestrain;
   const DynamicModel model = BuildDynamicModel(d, options);
 
   const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
@@ -222,7 +224,12 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   // The prestress is not factored (EN 1990 6.4.3.2 takes gamma_P = 1 for prestress that
   // favours and disfavours alike); the permanent load's share of the reference force is.
   const Eigen::VectorXd prestress = PrestressForces(d);
-  const StaticModel statics = StaticModelOf(d);
+  // The static solves take the strings as the run has them (a prestrain changes them).
+  StaticModel statics = StaticModelOf(d);
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    statics.string_rest_length[k] = model.strings.rest_length[k];
+    statics.string_stiffness[k] = model.strings.stiffness[k];
+  }
   // The nonlinear runs share the model, the engine and its stabilisation: one stability limit
   // serves all, found when the first of them needs it.
   double stable_dt = 0;
@@ -275,7 +282,12 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
         } else {
           if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, "dynamic");
           const double strain = summary.min_string_strain[j - nb];
-          if (strain < 0 && MustStayTaut(d, j - nb)) RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);
+          if (strain < 0 && MustStayTaut(d, j - nb)) {
+            RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);
+            if (std::find(out.slack_strings.begin(), out.slack_strings.end(), j - nb) == out.slack_strings.end()) {
+              out.slack_strings.push_back(j - nb);
+            }
+          }
         }
         GroupAmplification& g = groups[group];
         g.group = group;

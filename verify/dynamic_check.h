@@ -32,6 +32,7 @@
 #include <optional>
 
 #include "core/progress.h"
+#include "dynamics/model.h"
 #include "design/design.h"
 
 namespace tbridge {
@@ -44,7 +45,9 @@ namespace tbridge {
 // Changes nothing in `design`. `progress` (optional) is told each run's simulated time against
 // its duration, as stage "dynamic check: <run>".
 // `max_member_steps`: loads.dynamic_max_member_steps of the design's config where not given.
+// `prestrain`: strings whose rest length is set apart from the design (dynamics.prestrain, the
+// sweep's keep_area), in the dynamic model and the static solves alike.
 DynamicCheck CheckDynamics(const Design& design, std::optional<double> max_member_steps = std::nullopt,
-                           ProgressReporter* progress = nullptr);
+                           ProgressReporter* progress = nullptr, const std::vector<StringPrestrain>& prestrain = {});
 
 }  // namespace tbridge

@@ -1,5 +1,6 @@
 // One candidate's evaluation: the sparse first frequency against the dense modes, the deck
-// strings grown for an allowed prestress, and the travelling-load run.
+// strings grown for an allowed prestress, and the dynamic constraints read from the design's
+// dynamic check.
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -13,7 +14,7 @@
 #include "dynamics/model.h"
 #include "sweep/candidate.h"
 #include "sweep/first_frequency.h"
-#include "sweep/travelling_load.h"
+#include "verify/verified_design.h"
 #include "test_support.h"
 
 namespace tbridge {
@@ -127,39 +128,29 @@ TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and 
   CHECK(EvaluateCandidate(keep, grid[0]).feasible);  // the design state sits at sigma_w
 }
 
-TEST_CASE("the travelling load's peaks are linear in a small load", "[sweep]") {
-  const Design d = RunDesign(Planar(2));
-  const DynamicModel model = BuildDynamicModel(d);
-  TravellingLoadConfig t;
-  t.duration = 0.2;
-  t.dt = 1e-5;
-  t.integrator = IntegratorKind::kRk4;
-  t.load_factor = 1e-3;
-  const TravellingLoadResult a = RunTravellingLoad(model, d, t);
-  t.load_factor = 2e-3;
-  const TravellingLoadResult b = RunTravellingLoad(model, d, t);
-  // Three deck stations of 0.2/3 s, each taking ceil(6666.7) = 6667 steps of <= 1e-5 s.
-  CHECK(a.steps == 3 * 6667);
-  CHECK(a.dt == Approx(0.2 / 3 / 6667).epsilon(1e-12));
-  CHECK(a.integrator == "rk4");
-  CHECK(a.peak_deck_displacement > 0);
-  // 1e-3 relative: a load of 0.1-0.2 % of f keeps every string taut, so the response is linear
-  // up to the geometric nonlinearity, which is second order in the 1e-5 m amplitude.
-  CHECK(b.peak_deck_displacement == Approx(2 * a.peak_deck_displacement).epsilon(1e-3));
-  CHECK(a.slack_strings == 0);
-  // At rest every member works at the allowed stress or below; a tiny load adds a little.
-  CHECK(a.peak_stress_ratio == Approx(1.0).margin(0.01));
-  CHECK(a.peak_stress_ratio >= 1.0 - 1e-9);
-  CHECK(a.peak_bar_capacity_ratio <= 1.01);
-  // The full service load f on top of the design load. A quasi-static lower bound from a
-  // second algorithm, node equilibrium: with the deck chain the only self-stress, every
-  // non-deck string force under the design load plus f at one deck station is fixed by
-  // statics alone, whatever the stiffnesses. Each station holds its load for 0.2/3 s, longer
-  // than half the first period (pi/81.7 = 38 ms, SPEC §9), so a suddenly applied load drives
-  // each string at least to its static force (an undamped step response reaches 1 - cos = 2x
-  // its static increment at half a period). 1 %: the deck chain's elastic share and slack.
-  t.load_factor = 1.0;
-  const TravellingLoadResult full = RunTravellingLoad(model, d, t);
+TEST_CASE("the sweep's dynamic constraints read the paper's travelling load from the design's dynamic check",
+          "[sweep]") {
+  // The paper's outer loop at n = 2: the minimum-mass design, its dynamic check the paper's
+  // travelling load (f on each deck station for 0.25 s, eqs 50-51) by RK4.
+  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}})}};
+  root["sweep"]["constraints"]["max_dynamic_stress_ratio"] = 10.0;
+  const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
+  const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
+  REQUIRE(grid.size() == 1);
+  const CandidateRow row = EvaluateCandidate(spec, grid[0]);
+  REQUIRE(row.ok);
+  REQUIRE(row.dynamic_check_done == std::optional<bool>(true));
+  CHECK_THAT(row.dynamic_runs.value_or(""), Catch::StartsWith("paper_travelling: rk4"));
+  CHECK(row.peak_deck_displacement.value_or(0) > 0);
+  // A quasi-static lower bound from a second algorithm, node equilibrium: with the deck chain
+  // the only self-stress, every non-deck string force under the design load plus f at one deck
+  // station is fixed by statics alone, whatever the stiffnesses. Each station holds its load
+  // for 0.25 s, longer than half the first period (pi/81.7 = 38 ms, SPEC §9), so a suddenly
+  // applied load drives each string at least to its static force (an undamped step response
+  // reaches 1 - cos = 2x its static increment at half a period). With the paper's switches
+  // every factor is 1, so a string's dynamic utilisation is its peak stress over sigma_w.
+  // 1 %: the deck chain's elastic share and slack.
+  const Design& d = test::PaperDesign(2);
   const Structure& s = d.topology.structure;
   const EquilibriumSystem eq = BuildEquilibrium(s);
   const double sigma_w = d.config.material.yield_stress / d.config.design.yield_safety_factor;
@@ -173,67 +164,62 @@ TEST_CASE("the travelling load's peaks are linear in a small load", "[sweep]") {
       static_ratio = std::max(static_ratio, x[s.num_bars() + k] / (sigma_w * d.strings[k].area));
     }
   }
-  INFO("static " << static_ratio << ", dynamic peak " << full.peak_stress_ratio);
+  INFO("static " << static_ratio << ", dynamic " << row.dynamic_string_utilisation.value_or(0));
   CHECK(static_ratio > 1.0);  // the service load adds to strings already at sigma_w
-  CHECK(full.peak_stress_ratio >= 0.99 * static_ratio);
+  CHECK(row.dynamic_string_utilisation.value_or(0) >= 0.99 * static_ratio);
+  CHECK(row.feasible);  // max_dynamic_stress_ratio 10 holds; the rest are off (PaperSweep)
 }
 
-TEST_CASE("the implicit travelling-load run agrees with RK4 at a resolving step", "[sweep]") {
-  const Design d = RunDesign(Planar(4));
-  const DynamicModel model = BuildDynamicModel(d);
-  TravellingLoadConfig t;
-  t.duration = 0.25;
-  t.integrator = IntegratorKind::kRk4;
-  t.dt = 2e-5;  // a third of RK4's limit at n = 4 (1.4e-4 s, BENCHMARKS.md)
-  const TravellingLoadResult explicit_run = RunTravellingLoad(model, d, t);
-  t.integrator = IntegratorKind::kSdirk3;
-  t.dt = 5e-4;  // 3.5x RK4's limit
-  const TravellingLoadResult implicit_run = RunTravellingLoad(model, d, t);
-  CHECK(implicit_run.steps * 20 < explicit_run.steps);
-  INFO("peak deck displacement " << explicit_run.peak_deck_displacement << " m (rk4) vs "
-                                 << implicit_run.peak_deck_displacement << " m (sdirk3)");
-  // 3e-3 relative (measured 9e-4): the peak is set by the modes near the first frequency,
-  // which SDIRK3 at omega dt ~ 0.05 follows closely; the stiff string-bar modes it damps add
-  // little to the deck's motion.
-  CHECK(implicit_run.peak_deck_displacement == Approx(explicit_run.peak_deck_displacement).epsilon(3e-3));
-  // 2e-2 relative (measured 6e-3 and 7e-3): member force peaks also carry the stiff modes
-  // that RK4 resolves and SDIRK3 damps.
-  CHECK(implicit_run.peak_stress_ratio == Approx(explicit_run.peak_stress_ratio).epsilon(2e-2));
-  CHECK(implicit_run.peak_bar_capacity_ratio == Approx(explicit_run.peak_bar_capacity_ratio).epsilon(2e-2));
-  CHECK(implicit_run.slack_strings == explicit_run.slack_strings);
+TEST_CASE("a verified candidate reads its own dynamic check and a prestrained one is checked again", "[sweep]") {
+  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", {{"n", {1}}, {"deck_prestrain", {1.0, 0.99}}}}};
+  const SweepSpec spec = ParseSweepSpec(root);
+  const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
+  REQUIRE(grid.size() == 2);
+  const Design design = DesignAndVerify(CandidateConfig(spec, grid[0]));
+  const CandidateRow own = EvaluateCandidate(spec, grid[0]);
+  REQUIRE(own.dynamic_check_done == std::optional<bool>(true));
+  // The same runs and peaks as the design's check, read, not run again: equal bits.
+  double deck = 0, bars = 0;
+  for (const DynamicRun& r : design.dynamics.runs) deck = std::max(deck, r.peak_deck_displacement);
+  for (size_t j = 0; j < design.bars.size(); ++j) bars = std::max(bars, design.dynamics.members[j].utilisation);
+  CHECK(own.peak_deck_displacement == std::optional<double>(deck));
+  CHECK(own.dynamic_bar_utilisation == std::optional<double>(bars));
+  CHECK_THAT(own.dynamic_runs.value_or(""), Catch::StartsWith("moving_load: "));
+  // r = 0.99 grows the deck strings (grow_area): a stiffer deck chain that the check, run again
+  // on the changed bridge, sees move less.
+  const CandidateRow strained = EvaluateCandidate(spec, grid[1]);
+  REQUIRE(strained.dynamic_check_done == std::optional<bool>(true));
+  INFO("deck peak " << deck << " m, prestrained " << strained.peak_deck_displacement.value_or(0) << " m");
+  CHECK(strained.deck_string_area_factor > 1);
+  CHECK(strained.peak_deck_displacement.value_or(1) < deck);
 }
 
-TEST_CASE("auto resolves the travelling load per bridge: RK4, RK4 sub-steps or SDIRK3", "[sweep]") {
-  TravellingLoadConfig t;
-  t.duration = 0.5;
-  t.dt = 5e-4;
-  t.load_factor = 1e-3;
-  // RK4 limits 1.2e-3, 1.4e-4 and 7e-6 s for n = 1, 4, 8 (BENCHMARKS.md); the steps aligned
-  // with the stations are 5e-4, 4.98e-4 and 4.90e-4 s: within 0.9 of the first limit, 4
-  // sub-steps of the second, and 78 of the third (more than SDIRK3's estimated cost of ~40 RK4 steps at n = 8).
-  const std::vector<std::pair<int, std::string>> expected = {{1, "rk4"}, {4, "rk4x4"}, {8, "sdirk3"}};
-  for (const auto& [n, integrator] : expected) {
-    const Design d = RunDesign(Planar(n));
-    CHECK(RunTravellingLoad(BuildDynamicModel(d), d, t).integrator == integrator);
-  }
+TEST_CASE("an unverified candidate whose dynamic run is not done is infeasible, its note says why", "[sweep]") {
+  // The paper's n = 2 with a budget below its travelling load's run: the dynamic check leaves
+  // the run undone, so the dynamic constraint cannot be shown and the candidate is infeasible.
+  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}})}};
+  root["sweep"]["constraints"]["bar_capacity_during_motion"] = true;
+  root = test::WithPaperSwitches(root);
+  root["loads"]["dynamic_max_member_steps"] = 1000.0;
+  const SweepSpec spec = ParseSweepSpec(root);
+  const CandidateRow row = EvaluateCandidate(spec, EnumerateCandidates(spec.sweep)[0]);
+  REQUIRE(row.ok);
+  CHECK_FALSE(row.feasible);
+  CHECK(row.dynamic_check_done == std::optional<bool>(false));
+  CHECK(std::find(row.violated.begin(), row.violated.end(), std::string(kDynamicCheckDone)) != row.violated.end());
+  CHECK_THAT(row.note, Catch::Contains("dynamic check not complete") && Catch::Contains("skipped"));
 }
 
-TEST_CASE("a class-k bridge runs the travelling load", "[sweep]") {
-  Config c = Planar(2);
-  c.bridge.p = 2;
-  const Design d = RunDesign(c);
-  const DynamicModel model = BuildDynamicModel(d);
-  TravellingLoadConfig t;
-  t.duration = 0.1;
-  t.load_factor = 1e-3;
-  const TravellingLoadResult r = RunTravellingLoad(model, d, t);
-  CHECK(r.engine == "classk");
-  CHECK(r.peak_deck_displacement > 0);
-  CHECK(r.slack_strings == 0);
-  // A load of 0.1 % of f barely moves the design state, where the bars work at most at their
-  // capacity: 1e-2 covers the small extra force.
-  CHECK(r.peak_bar_capacity_ratio <= 1.0 + 1e-2);
-  CHECK(r.peak_bar_capacity_ratio >= 0.5);
+TEST_CASE("a class-k candidate runs the paper's travelling load in the dynamic check", "[sweep]") {
+  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}, {"p", {2}}})}};
+  root["sweep"]["report"] = {{"dynamic_check", true}};
+  const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
+  const CandidateRow row = EvaluateCandidate(spec, EnumerateCandidates(spec.sweep)[0]);
+  REQUIRE(row.ok);
+  CHECK(row.dynamic_check_done == std::optional<bool>(true));
+  CHECK_THAT(row.dynamic_runs.value_or(""), Catch::StartsWith("paper_travelling: rk4"));
+  CHECK(row.peak_deck_displacement.value_or(0) > 0);
+  CHECK(row.feasible);  // no constraint asked (PaperSweep); the report alone ran the check
 }
 
 }  // namespace

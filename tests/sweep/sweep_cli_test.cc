@@ -24,18 +24,17 @@ using tbridge::test::ReadText;
 using Result = tbridge::test::CliResult;
 Result Run(const fs::path& dir, const std::string& args) { return tbridge::test::RunTbridge(dir, args); }
 
-// Six candidates with a first frequency and a short travelling load each (about 0.2 s).
+// Six candidates with a first frequency and the dynamic check each.
 fs::path SmallSweep(const fs::path& dir) {
   const fs::path path = dir / "sweep.json";
   std::ofstream(path) << R"({"bridge": {"beta_deg": 10},
     "sweep": {"n": [1, 2, 3], "deck_prestrain": [1.0, 0.99],
               "joint_mass": {"per_node_kg": 10},
-              "constraints": {"min_first_frequency_rad_s": 50, "max_dynamic_stress_ratio": 10},
-              "travelling_load": {"duration": 0.02, "dt": 2e-5}}})";
+              "constraints": {"min_first_frequency_rad_s": 35, "max_dynamic_stress_ratio": 10}}})";
   return path;
 }
 
-TEST_CASE("sweep: 1 and 2 threads write the same bytes; a resume evaluates nothing", "[sweep]") {
+TEST_CASE("sweep: 1 and 2 threads write the same bytes and a resume evaluates nothing", "[sweep]") {
   const fs::path dir = FreshDir("threads");
   const std::string config = Quote(SmallSweep(dir).string());
   const Result one = Run(dir, "sweep " + config + " -o " + Quote((dir / "one").string()) + " --threads 1");

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "core/error.h"
 #include "sweep/sweep.h"
@@ -28,6 +30,33 @@ std::string ErrorOf(const json& root) {
   return "";
 }
 
+TEST_CASE("the sweep's own travelling-load run of earlier versions is refused: each key names what replaced it",
+          "[sweep]") {
+  // Each old key, its value, and the key (or the reason for none) that replaced it.
+  const std::vector<std::tuple<std::string, json, std::string>> replaced = {
+      {"duration", 0.5, "loads.travelling_speed_m_s"},
+      {"dt", 5e-4, "loads.dynamic_dt_s"},
+      {"integrator", "sdirk3", "loads.dynamic_method"},
+      {"load_factor", 2.0, "loads.travelling_load_n"},
+      {"string_mass", "off", "none"},
+      {"damping_c", 1.0, "none"},
+      {"deck_inertia", false, "none"},
+  };
+  for (const auto& [key, value, by] : replaced) {
+    json j = Base();
+    j["sweep"]["travelling_load"] = {{key, value}};
+    INFO(key);
+    CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load." + key) && Catch::Contains(value.dump()) &&
+                               Catch::Contains(by));
+  }
+  json j = Base();
+  j["sweep"]["travelling_load"] = json::object();
+  CHECK_THAT(ErrorOf(j), Catch::Contains("'sweep.travelling_load'") && Catch::Contains("loads.cases"));
+  j = Base();
+  j["sweep"]["report"] = {{"travelling_load", true}};
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.report.travelling_load") && Catch::Contains("sweep.report.dynamic_check"));
+}
+
 TEST_CASE("a minimal sweep config resolves its defaults", "[sweep]") {
   const SweepSpec s = ParseSweepSpec(Base());
   CHECK(s.sweep.n == std::vector<int>{1, 2, 3});
@@ -36,13 +65,12 @@ TEST_CASE("a minimal sweep config resolves its defaults", "[sweep]") {
   CHECK(s.sweep.deck_prestrain == std::vector<double>{1.0});
   CHECK(s.sweep.size() == 3);
   CHECK_FALSE(s.sweep.NeedsModes());
-  // Candidates are verified designs, and bar capacity and no-slack in the travelling-load run
+  // Candidates are verified designs, and bar capacity and no-slack in the dynamic check's runs
   // are constraints unless switched off.
   CHECK(s.sweep.verified);
   CHECK(s.sweep.constraints.no_slack_under_service);
   CHECK(s.sweep.constraints.bar_capacity_during_motion);
-  CHECK(s.sweep.travelling_load.deck_inertia);
-  CHECK(s.sweep.NeedsRun());
+  CHECK(s.sweep.NeedsDynamicCheck());
   // The echoed config (with null for absent constraints) reads back to the same spec.
   const SweepSpec again = ParseSweepSpec(ToJson(s));
   CHECK(ToJson(again) == ToJson(s));
@@ -83,21 +111,8 @@ TEST_CASE("bad sweep configs name the key, the value and what is allowed", "[swe
   CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.joint_mass.per_node_kg"));
 
   j = Base();
-  j["sweep"]["travelling_load"] = {{"duration", 0.01}, {"dt", 0.005}, {"extra", 1}};
-  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.extra"));
-
-  j = Base();
-  j["sweep"]["travelling_load"] = {{"duration", 0.001}, {"dt", 0.005}};
-  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.dt"));
-
-  j = Base();
-  j["sweep"]["travelling_load"] = {{"integrator", "dopri5"}};  // adaptive steps miss the stations
-  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load.integrator") && Catch::Contains("dopri5") &&
-                             Catch::Contains("sdirk3"));
-
-  j = Base();
   j["dynamics"] = json::object();
-  CHECK_THAT(ErrorOf(j), Catch::Contains("dynamics") && Catch::Contains("sweep.travelling_load"));
+  CHECK_THAT(ErrorOf(j), Catch::Contains("dynamics") && Catch::Contains("loads.cases"));
 
   j = Base();
   j.erase("sweep");
