@@ -32,7 +32,7 @@ Eigen::SparseMatrix<double> SaddlePoint(int n, int m, unsigned seed) {
   return a;
 }
 
-TEST_CASE("the KLU factor solves as the dense LU does: plain and transposed; refactorised", "[klu]") {
+TEST_CASE("the KLU factor solves as the dense LU does: plain and transposed and refactorised", "[klu]") {
   const int n = 40, m = 12;
   KluFactor lu;
   const Eigen::SparseMatrix<double> first = SaddlePoint(n, m, 1);

@@ -77,7 +77,7 @@ TEST_CASE("as built: a heavier bar moves the reference state as the design's tan
   CHECK(residual.cwiseAbs().maxCoeff() <= 1e-10 * e.reference_forces.cwiseAbs().maxCoeff());
 }
 
-TEST_CASE("as built: unchanged areas re-derive nothing; bad areas are refused naming the key", "[design]") {
+TEST_CASE("as built: unchanged areas re-derive nothing and bad areas are refused naming the key", "[design]") {
   Config config;
   config.bridge.n = 1;
   const Design d = RunDesign(config);

@@ -20,7 +20,7 @@ using tbridge::test::Quote;
 using tbridge::test::RunTbridge;
 using tbridge::test::Snapshot;
 
-TEST_CASE("design: \"wind\" alone on a planar bridge names loads.cases and changes nothing") {
+TEST_CASE("design: the wind case alone on a planar bridge names loads.cases and changes nothing") {
   const fs::path dir = FreshDir("slip_wind_planar");
   const fs::path work = dir / "work";  // the config and the output; the captures stay in `dir`
   fs::create_directories(work);

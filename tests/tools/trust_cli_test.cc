@@ -293,7 +293,7 @@ TEST_CASE("defect 7: paper prints each table's header once, over the error its t
   CHECK_THAT(r.out, Catch::Contains("abs.err") && !Catch::Contains("rel.err"));
 }
 
-TEST_CASE("defect 7: the exit codes are listed once, with 1; --version names the revision") {
+TEST_CASE("defect 7: the exit codes are listed once with 1 and --version names the revision") {
   const fs::path dir = FreshDir("trust_help");
   const CliResult help = Run(dir, "--help");
   CHECK(help.code == 0);
@@ -441,7 +441,7 @@ TEST_CASE("did you mean: a misspelt key or option gets the nearest one") {
   CHECK_THAT(command.err, Catch::Contains("did you mean 'design'?"));
 }
 
-TEST_CASE("progress: a run longer than a second draws a line with an ETA on stderr; a short one stays quiet") {
+TEST_CASE("progress: a run longer than a second draws a line with an ETA on stderr and a short one stays quiet") {
   const fs::path dir = FreshDir("trust_progress");
   // About 3 s of RK4 on n = 3 (1.5e6 steps), longer than the reporter's 1 s delay.
   const fs::path longer = Write(dir / "long.json", R"({"bridge": {"n": 3}, "dynamics": {"duration": 15}})");

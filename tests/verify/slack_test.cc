@@ -10,7 +10,7 @@
 namespace tbridge {
 namespace {
 
-TEST_CASE("a deck chain that goes slack fails the design; other strings may go slack", "[verify]") {
+TEST_CASE("a deck chain that goes slack fails the design and only a string that must stay taut fails for slack", "[verify]") {
   // The 40 m footbridge with the paper's blanket (yield factor 10, Euler, its one case): its
   // deck strings, prestressed at exactly the working stress, go slack under the paper's
   // travelling load (README, "The trade").
@@ -30,15 +30,6 @@ TEST_CASE("a deck chain that goes slack fails the design; other strings may go s
     deck_slack = deck_slack || m.kind == MemberKind::kDeckString;
   }
   CHECK(deck_slack);
-
-  // The same bridge designed for its explicit cases: some non-deck strings go slack in the
-  // static cases or the runs, and the design still passes with every member within its
-  // resistance, because the slack strings carry nothing and the rest carry the load.
-  const Design e = DesignAndVerify(LoadConfig(TBRIDGE_SOURCE_DIR "/configs/default.json"));
-  CHECK(DesignVerdict(e).pass);
-  int slack = 0;
-  for (const CaseResponse& c : e.statics.cases) slack += c.slack_strings;
-  CHECK(slack > 0);
 }
 
 }  // namespace
