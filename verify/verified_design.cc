@@ -152,12 +152,14 @@ std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g
 // the solution violates no row of the whole problem (at most 16 rounds). The posed problem is
 // hundreds of rows where the whole one has thousands (n = 5: 16 500), and the solver's dense
 // linear algebra shrinks with it. Its optimum is the whole problem's once it violates no row:
-// the posed problem is a relaxation of the whole one.
+// the posed problem is a relaxation of the whole one. `keep`: the rows posed from the first
+// round (empty: none but those near their limits at the start), and on return every row posed.
 SolverOutcome SolveSizing(const Design& current, const SizingCorrections& corrections, const std::string& solver,
-                          const SolverOptions& options, const SizingProblem& full, Eigen::VectorXd& x) {
+                          const SolverOptions& options, const SizingProblem& full, Eigen::VectorXd& x,
+                          std::vector<char>& keep) {
   const int rows = full.num_constraints();
   const Eigen::VectorXd start = x;
-  std::vector<char> keep(rows, 0);
+  if (static_cast<int>(keep.size()) != rows) keep.assign(rows, 0);
   Eigen::VectorXd g(rows), lo, hi;
   full.ConstraintBounds(lo, hi);
   SolverOutcome outcome;
@@ -210,16 +212,17 @@ Verdict SizingVerdict(const Design& d) {
   return DesignVerdict(structural);
 }
 
-// One sizing from `x` (its start, then its solution) and the design it gives, checked.
+// One sizing from `x` (its start, then its solution) and the design it gives (Size), then
+// checked (Check). `posed`: as SolveSizing's `keep`.
 struct Sized {
   Design design;
   SolverOutcome outcome;
   StaticCheck statics;
   DynamicCheck dynamics;
 };
-Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorrections& corrections,
-                   const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x,
-                   Resizing::Times& time_s, ProgressReporter* progress) {
+Sized Size(const Config& config, const Design& current, const SizingCorrections& corrections,
+           const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x, Resizing::Times& time_s,
+           ProgressReporter* progress, std::vector<char>& posed) {
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
   x = x.cwiseMax(lo);
@@ -231,17 +234,20 @@ Sized SizeAndCheck(const Config& config, const Design& current, const SizingCorr
   options.max_iterations = config.design.max_iterations;
   Sized out;
   if (progress != nullptr) progress->Stage("optimisation");
-  out.outcome = Timed(time_s.sizing, [&] { return SolveSizing(current, corrections, solver, options, problem, x); });
+  out.outcome = Timed(time_s.sizing, [&] { return SolveSizing(current, corrections, solver, options, problem, x, posed); });
   Design& d = out.design;
   d = SizedDesign(config, problem.Areas(x), problem.Alpha(x));
   d.solver = out.outcome;
   d.solver_form = "verified sizing";
   RequireStable(d);
   RecordSizing(d, problem, x, problem.Areas(lo));
-  Checks checks = RunChecks(d, time_s, progress);
-  out.statics = std::move(checks.statics);
-  out.dynamics = std::move(checks.dynamics);
   return out;
+}
+
+void Check(Sized& sized, Resizing::Times& time_s, ProgressReporter* progress) {
+  Checks checks = RunChecks(sized.design, time_s, progress);
+  sized.statics = std::move(checks.statics);
+  sized.dynamics = std::move(checks.dynamics);
 }
 
 // The outer iterations' tolerance on the mass (relative): a tenth of the 0.5 % by which a
@@ -368,27 +374,32 @@ MassAttribution Attribution(const Design& current, const SizingCorrections& corr
 // either way `record` says what the second start found.
 void SecondStart(const Config& config, const Design& current, const SizingCorrections& corrections,
                  const std::string& solver, const SizingProblem& problem, const FirstSizes& first, Design& best,
-                 Resizing& record, ProgressReporter* progress) {
+                 Resizing& record, ProgressReporter* progress, std::vector<char> posed) {
   if (progress != nullptr) progress->SetStagePrefix("second start: ");
   std::vector<double> doubled = first.areas;
   for (double& a : doubled) a *= 2;
   Eigen::VectorXd x = problem.VariablesOf(doubled, first.alpha);
-  Sized other = SizeAndCheck(config, current, corrections, solver, problem, x, record.time_s, progress);
-  const Verdict verdict = SizingVerdict(other.design);
+  Sized other = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
   const double mass = other.design.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
   std::ostringstream os;
-  // The design's own verdict in the record (comfort included), whatever the sizing steers by.
-  os << "second start (twice the first design's areas): " << mass << " kg, "
-     << VerdictName(DesignVerdict(other.design).outcome);
+  os << "second start (twice the first design's areas): " << mass << " kg";
+  // Only a lighter optimum could replace the kept design, so only a lighter one is checked.
   if (std::abs(mass - kept) <= kSettled * kept) {
-    os << ": the same optimum to " << kSettled;
-  } else if (verdict.pass && mass < kept) {
-    os << ": a second, lighter optimum than " << kept << " kg, kept";
-    other.design.attribution = Attribution(current, corrections, problem, x, other.statics, other.dynamics, first);
-    best = std::move(other.design);
+    os << ": the same optimum to " << kSettled << ", not checked";
+  } else if (mass > kept) {
+    os << ": another, heavier optimum, not checked; kept the lighter passing " << kept << " kg";
   } else {
-    os << ": another optimum; kept the lighter passing " << kept << " kg";
+    Check(other, record.time_s, progress);
+    // The design's own verdict in the record (comfort included), whatever the sizing steers by.
+    os << ", " << VerdictName(DesignVerdict(other.design).outcome);
+    if (SizingVerdict(other.design).pass) {
+      os << ": a second, lighter optimum than " << kept << " kg, kept";
+      other.design.attribution = Attribution(current, corrections, problem, x, other.statics, other.dynamics, first);
+      best = std::move(other.design);
+    } else {
+      os << ": another optimum; kept the lighter passing " << kept << " kg";
+    }
   }
   record.optima = os.str();
 }
@@ -462,7 +473,9 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
       progress->SetStagePrefix("sizing " + std::to_string(record.iterations) + " (of at most " +
                                std::to_string(max_iterations) + "): ");
     }
-    Sized sized = SizeAndCheck(config, current, corrections, solver, problem, x, record.time_s, progress);
+    std::vector<char> posed;
+    Sized sized = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
+    Check(sized, record.time_s, progress);
     const SolverOutcome& outcome = sized.outcome;
     const StaticCheck& statics = sized.statics;
     const DynamicCheck& dynamics = sized.dynamics;
@@ -485,7 +498,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
                       verdict.outcome == VerdictOutcome::kIncomplete;
     if (settled || last) {
-      if (best) SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record, progress);
+      if (best) SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record, progress, posed);
       Design out = best ? *best : d;
       record.converged = settled;
       if (!settled) {

