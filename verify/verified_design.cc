@@ -56,21 +56,15 @@ auto Timed(double& seconds, F&& f) {
   return result;
 }
 
-// The static and dynamic checks' reports of a design.
-struct Checks {
-  StaticCheck statics;
-  DynamicCheck dynamics;
-};
-
-// Runs every check on `d` and records what they found in it (RecordChecks); their wall times
-// are added to `time_s`. Returns the static and dynamic reports, which the corrections read.
-Checks RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress) {
-  Checks c;
-  c.statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
-  c.dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
+// Runs every check on `d` and records what they found in it (RecordChecks: d.statics,
+// d.dynamics and d.comfort are then the reports the corrections read); their wall times are
+// added to `time_s`.
+void RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress) {
+  StaticCheck statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
+  DynamicCheck dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
   if (progress != nullptr) progress->Stage("comfort check");
-  RecordChecks(d, c.statics, c.dynamics, Timed(time_s.comfort_check, [&] { return CheckComfort(d); }));
-  return c;
+  ComfortCheck comfort = Timed(time_s.comfort_check, [&] { return CheckComfort(d); });
+  RecordChecks(d, std::move(statics), std::move(dynamics), std::move(comfort));
 }
 
 }  // namespace
@@ -212,17 +206,11 @@ Verdict SizingVerdict(const Design& d) {
   return DesignVerdict(structural);
 }
 
-// One sizing from `x` (its start, then its solution) and the design it gives (Size), then
-// checked (Check). `posed`: as SolveSizing's `keep`.
-struct Sized {
-  Design design;
-  SolverOutcome outcome;
-  StaticCheck statics;
-  DynamicCheck dynamics;
-};
-Sized Size(const Config& config, const Design& current, const SizingCorrections& corrections,
-           const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x, Resizing::Times& time_s,
-           ProgressReporter* progress, std::vector<char>& posed) {
+// One sizing from `x` (its start, then its solution) and the design it gives, its solver's
+// outcome in `solver`; RunChecks then checks it. `posed`: as SolveSizing's `keep`.
+Design Size(const Config& config, const Design& current, const SizingCorrections& corrections,
+            const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x, Resizing::Times& time_s,
+            ProgressReporter* progress, std::vector<char>& posed) {
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
   x = x.cwiseMax(lo);
@@ -232,22 +220,15 @@ Sized Size(const Config& config, const Design& current, const SizingCorrections&
   // times the evaluations at n = 5 (SLSQP: 1 375 against 472) and moved no verdict.
   options.tolerance = 1e-6;
   options.max_iterations = config.design.max_iterations;
-  Sized out;
   if (progress != nullptr) progress->Stage("optimisation");
-  out.outcome = Timed(time_s.sizing, [&] { return SolveSizing(current, corrections, solver, options, problem, x, posed); });
-  Design& d = out.design;
-  d = SizedDesign(config, problem.Areas(x), problem.Alpha(x));
-  d.solver = out.outcome;
+  const SolverOutcome outcome =
+      Timed(time_s.sizing, [&] { return SolveSizing(current, corrections, solver, options, problem, x, posed); });
+  Design d = SizedDesign(config, problem.Areas(x), problem.Alpha(x));
+  d.solver = outcome;
   d.solver_form = "verified sizing";
   RequireStable(d);
   RecordSizing(d, problem, x, problem.Areas(lo));
-  return out;
-}
-
-void Check(Sized& sized, Resizing::Times& time_s, ProgressReporter* progress) {
-  Checks checks = RunChecks(sized.design, time_s, progress);
-  sized.statics = std::move(checks.statics);
-  sized.dynamics = std::move(checks.dynamics);
+  return d;
 }
 
 // The outer iterations' tolerance on the mass (relative): a tenth of the 0.5 % by which a
@@ -379,8 +360,8 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   std::vector<double> doubled = first.areas;
   for (double& a : doubled) a *= 2;
   Eigen::VectorXd x = problem.VariablesOf(doubled, first.alpha);
-  Sized other = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
-  const double mass = other.design.mass.structure, kept = best.mass.structure;
+  Design other = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
+  const double mass = other.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
   std::ostringstream os;
   os << "second start (twice the first design's areas): " << mass << " kg";
@@ -390,13 +371,13 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   } else if (mass > kept) {
     os << ": another, heavier optimum, not checked; kept the lighter passing " << kept << " kg";
   } else {
-    Check(other, record.time_s, progress);
+    RunChecks(other, record.time_s, progress);
     // The design's own verdict in the record (comfort included), whatever the sizing steers by.
-    os << ", " << VerdictName(DesignVerdict(other.design).outcome);
-    if (SizingVerdict(other.design).pass) {
+    os << ", " << VerdictName(DesignVerdict(other).outcome);
+    if (SizingVerdict(other).pass) {
       os << ": a second, lighter optimum than " << kept << " kg, kept";
-      other.design.attribution = Attribution(current, corrections, problem, x, other.statics, other.dynamics, first);
-      best = std::move(other.design);
+      other.attribution = Attribution(current, corrections, problem, x, other.statics, other.dynamics, first);
+      best = std::move(other);
     } else {
       os << ": another optimum; kept the lighter passing " << kept << " kg";
     }
@@ -474,12 +455,11 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                                std::to_string(max_iterations) + "): ");
     }
     std::vector<char> posed;
-    Sized sized = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
-    Check(sized, record.time_s, progress);
-    const SolverOutcome& outcome = sized.outcome;
-    const StaticCheck& statics = sized.statics;
-    const DynamicCheck& dynamics = sized.dynamics;
-    Design& d = sized.design;
+    Design d = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
+    RunChecks(d, record.time_s, progress);
+    const SolverOutcome& outcome = d.solver;
+    const StaticCheck& statics = d.statics;
+    const DynamicCheck& dynamics = d.dynamics;
     areas = problem.Areas(x);
     alpha = problem.Alpha(x);
     record.structure_mass_kg.push_back(d.mass.structure);
