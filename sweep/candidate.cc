@@ -51,7 +51,8 @@ void ReadDynamicCheck(const DynamicCheck& check, size_t num_bars, CandidateRow& 
   for (size_t j = 0; j < check.members.size(); ++j) {
     const MemberFinding& f = check.members[j];
     if (f.mode != "dynamic") continue;  // "slack" is counted below
-    (j < num_bars ? bars : strings) = std::max(j < num_bars ? bars : strings, f.utilisation);
+    double& largest = j < num_bars ? bars : strings;
+    largest = std::max(largest, f.utilisation);
   }
   row.dynamic_bar_utilisation = bars;
   row.dynamic_string_utilisation = strings;
@@ -178,7 +179,8 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
       // A verified design carries its own check of this bridge; a changed or unverified one is
       // checked here, by the same check.
       const bool own = sw.verified && !prestrained;
-      ReadDynamicCheck(own ? design.dynamics : CheckDynamics(design, std::nullopt, nullptr, prestrain), design.bars.size(), row);
+      ReadDynamicCheck(own ? design.dynamics : CheckDynamics(design, std::nullopt, nullptr, prestrain),
+                       design.bars.size(), row);
     }
   } catch (const ModelError& e) {
     row.ok = false;

@@ -27,10 +27,11 @@ void CheckGridList(const std::vector<T>& values, const std::string& path) {
 }
 
 // The keys of the sweep's own travelling-load run, which gave way to the design's dynamic check:
-// each named with what replaced it.
+// each with the key that replaced it, or (`by` null) why nothing does.
 struct Replaced {
   const char* key;
   const char* by;
+  const char* why = nullptr;
 };
 constexpr Replaced kReplacedRunKeys[] = {
     {"duration",
@@ -39,10 +40,13 @@ constexpr Replaced kReplacedRunKeys[] = {
     {"dt", "loads.dynamic_dt_s"},
     {"integrator", "loads.dynamic_method (the check runs RK4 or the modal run, never SDIRK3, which reads peaks low)"},
     {"load_factor", "loads.travelling_load_n (the walking load) and loads.gamma_q (its factor)"},
-    {"string_mass", "none: the check's model lumps each string's mass at its ends, as tbridge simulate's default"},
-    {"damping_c", "none: the check's runs are undamped, which reads the peaks high"},
-    {"deck_inertia", "none: the check carries the deck's and payload's mass at the deck nodes, except under the "
-                     "paper's switches (loads.cases [\"paper\"]), whose model has none"},
+    {"string_mass", nullptr,
+     "the check's model shares each string's mass among the bars it meets (eq 27), dynamics.string_mass's default "
+     "\"bars\""},
+    {"damping_c", nullptr, "the check's runs are undamped, which reads the peaks high"},
+    {"deck_inertia", nullptr,
+     "the check carries the deck's and payload's mass at the deck nodes, except under the paper's switches "
+     "(loads.cases [\"paper\"]), whose model has none"},
 };
 
 // Refuses the sweep's travelling-load run of earlier versions, naming what replaced each key.
@@ -54,7 +58,8 @@ void RefuseReplacedKeys(const nlohmann::json& sweep) {
       for (const Replaced& r : kReplacedRunKeys) {
         if (run.contains(r.key)) {
           throw ConfigError(std::string("sweep.travelling_load.") + r.key, Show(run[r.key]),
-                            std::string("the sweep's own run was replaced by the design's dynamic check; set ") + r.by);
+                            std::string("the sweep's own run was replaced by the design's dynamic check; ") +
+                                (r.by != nullptr ? std::string("set ") + r.by : std::string("nothing replaces it: ") + r.why));
         }
       }
     }

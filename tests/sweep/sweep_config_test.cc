@@ -38,9 +38,9 @@ TEST_CASE("the sweep's own travelling-load run of earlier versions is refused: e
       {"dt", 5e-4, "loads.dynamic_dt_s"},
       {"integrator", "sdirk3", "loads.dynamic_method"},
       {"load_factor", 2.0, "loads.travelling_load_n"},
-      {"string_mass", "off", "none"},
-      {"damping_c", 1.0, "none"},
-      {"deck_inertia", false, "none"},
+      {"string_mass", "off", "nothing replaces it"},
+      {"damping_c", 1.0, "nothing replaces it"},
+      {"deck_inertia", false, "nothing replaces it"},
   };
   for (const auto& [key, value, by] : replaced) {
     json j = Base();
