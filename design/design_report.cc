@@ -456,8 +456,11 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   std::string text;
   constexpr size_t kBlock = 1 << 20;
   text.reserve(kBlock + 4096);
-  const auto flush = [&os, &text](bool whenever) {
-    if (whenever || text.size() >= kBlock) os.write(text.data(), static_cast<std::streamsize>(text.size())), text.clear();
+  // Writes the buffer once it holds a block, or at once with `all`.
+  const auto flush = [&os, &text](bool all) {
+    if (!all && text.size() < kBlock) return;
+    os.write(text.data(), static_cast<std::streamsize>(text.size()));
+    text.clear();
   };
   text += "  \"members\": [";
   const char* separator = "\n    ";

@@ -168,12 +168,9 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     row.free_nodes = design.topology.structure.num_free_nodes();
 
     if (sw.NeedsModes()) {
-      // The dynamic check's model: the deck's inertia, except under the paper's switches.
-      ModelOptions options;
-      options.deck_inertia = !KeepsPaperSwitches(design.config);
-      options.gravity_on_structure = design.config.design.self_weight;
-      options.prestrain = prestrain;
-      row.first_frequency_rad_s = LowestFrequency(BuildDynamicModel(design, options)).omega_rad_s;
+      // The frequency of the model the dynamic check runs on.
+      row.first_frequency_rad_s =
+          LowestFrequency(BuildDynamicModel(design, DynamicCheckModelOptions(design, prestrain))).omega_rad_s;
     }
     if (sw.NeedsDynamicCheck()) {
       // A verified design carries its own check of this bridge; a changed or unverified one is

@@ -185,6 +185,16 @@ bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& sta
 
 }  // namespace
 
+ModelOptions DynamicCheckModelOptions(const Design& d, const std::vector<StringPrestrain>& prestrain) {
+  // The model a run of this design gets (tbridge simulate with the defaults): the design
+  // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
+  ModelOptions options;
+  options.gravity_on_structure = d.config.design.self_weight;
+  options.deck_inertia = !KeepsPaperSwitches(d.config);
+  options.prestrain = prestrain;
+  return options;
+}
+
 DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, ProgressReporter* progress,
                            const std::vector<StringPrestrain>& prestrain) {
   const double max_member_steps = max_steps ? *max_steps : d.config.loads.dynamic_max_member_steps;
@@ -208,13 +218,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
     for (LoadRun& run : runs) out.runs.push_back(std::move(run.record));
     return out;
   }
-  // The model a run of this design gets (tbridge simulate with the defaults): the design
-  // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
-  ModelOptions options;
-  options.gravity_on_structure = d.config.design.self_weight;
-  options.deck_inertia = !paper;
-  options.prestrain = prestrain;
-  const DynamicModel model = BuildDynamicModel(d, options);
+  const DynamicModel model = BuildDynamicModel(d, DynamicCheckModelOptions(d, prestrain));
 
   const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
   const BarRule rule = BarRuleOf(d.config);

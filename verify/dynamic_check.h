@@ -47,6 +47,11 @@ namespace tbridge {
 // `max_member_steps`: loads.dynamic_max_member_steps of the design's config where not given.
 // `prestrain`: strings whose rest length is set apart from the design (dynamics.prestrain, the
 // sweep's keep_area), in the dynamic model and the static solves alike.
+// The options of the dynamic model the check runs on: the members' weight where the design
+// counts it, the deck's and payload's inertia except under the paper's switches, and
+// `prestrain` (as CheckDynamics's).
+ModelOptions DynamicCheckModelOptions(const Design& design, const std::vector<StringPrestrain>& prestrain = {});
+
 DynamicCheck CheckDynamics(const Design& design, std::optional<double> max_member_steps = std::nullopt,
                            ProgressReporter* progress = nullptr, const std::vector<StringPrestrain>& prestrain = {});
 

@@ -206,8 +206,9 @@ Verdict SizingVerdict(const Design& d) {
   return DesignVerdict(structural);
 }
 
-// One sizing from `x` (its start, then its solution) and the design it gives, its solver's
-// outcome in `solver`; RunChecks then checks it. `posed`: as SolveSizing's `keep`.
+// One sizing from `x` (its start, then its solution) and the design it gives, with the
+// solver's outcome in its `solver` field; RunChecks then checks it. `posed`: as SolveSizing's
+// `keep`.
 Design Size(const Config& config, const Design& current, const SizingCorrections& corrections,
             const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x, Resizing::Times& time_s,
             ProgressReporter* progress, std::vector<char>& posed) {

@@ -178,7 +178,7 @@ TEST_CASE("a verified candidate reads its own dynamic check and a prestrained on
   const Design design = DesignAndVerify(CandidateConfig(spec, grid[0]));
   const CandidateRow own = EvaluateCandidate(spec, grid[0]);
   REQUIRE(own.dynamic_check_done == std::optional<bool>(true));
-  // The same runs and peaks as the design's check, read, not run again: equal bits.
+  // The row reports the design's own check: its largest deck peak and bar utilisation, to the bit.
   double deck = 0, bars = 0;
   for (const DynamicRun& r : design.dynamics.runs) deck = std::max(deck, r.peak_deck_displacement);
   for (size_t j = 0; j < design.bars.size(); ++j) bars = std::max(bars, design.dynamics.members[j].utilisation);
