@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "core/error.h"
+#include "design/sqp_solver.h"
 
 namespace tbridge {
 
@@ -84,6 +85,7 @@ void RequireSolverBuiltIn(const std::string& name) {
 
 SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem, const SolverOptions& options,
                        Eigen::VectorXd& x) {
+  if (name == "sqp") return SolveWithSqp(problem, options, x);
   RequireSolverBuiltIn(name);
   if (name == "ipopt" || name == "nlopt") return Adapter(name)(problem, options, x);
   throw ConfigError("design.solver", "\"" + Printable(name) + "\"", "not an iterative solver (\"ipopt\" or \"nlopt\")");

@@ -24,9 +24,10 @@ bool SolverBuiltIn(const std::string& name);
 // (a value of design.solver) needs a library this build lacks.
 void RequireSolverBuiltIn(const std::string& name);
 
-// Solves `problem` with the iterative solver `name` ("ipopt" or "nlopt"); `x` is the start
-// on entry and the solution on return. Throws ConfigError (design.solver) when `name` is not
-// built in.
+// Solves `problem` with the iterative solver `name` ("ipopt" or "nlopt", or "sqp": the
+// verified sizing's own, design/sqp_solver.h, always built in and not a value of
+// design.solver); `x` is the start on entry and the solution on return. Throws ConfigError
+// (design.solver) when `name` is not built in.
 SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem, const SolverOptions& options,
                        Eigen::VectorXd& x);
 

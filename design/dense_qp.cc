@@ -1,0 +1,186 @@
+#include "design/dense_qp.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <limits>
+
+namespace tbridge {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The rotation that takes (a, b) to (hypot(a, b), 0), applied to columns i and j of M as
+// M <- M Q^T, so that M^T v becomes Q M^T v for any v.
+void RotateColumns(Eigen::MatrixXd& M, int i, int j, double c, double s) {
+  for (Eigen::Index k = 0; k < M.rows(); ++k) {
+    const double a = M(k, i), b = M(k, j);
+    M(k, i) = c * a + s * b;
+    M(k, j) = -s * a + c * b;
+  }
+}
+
+}  // namespace
+
+void DenseQpSolver::Resize(int n, int m) {
+  if (n == n_ && m == m_) return;
+  n_ = n;
+  m_ = m;
+  J_.resize(n, n);
+  R_.resize(n, n);
+  d_.resize(n);
+  z_.resize(n);
+  r_.resize(n);
+  u_.resize(n + 1);
+  np_.resize(n);
+  Cp_.resize(m);
+  active_.reserve(static_cast<size_t>(n));
+}
+
+void DenseQpSolver::Normal(const DenseQp& qp, int k, Eigen::VectorXd& np) const {
+  if (k < m_) {
+    np = qp.C.row(k).transpose();
+    return;
+  }
+  np.setZero();
+  if (k < m_ + n_) {
+    np[k - m_] = 1.0;  // p_j >= lo_j
+  } else {
+    np[k - m_ - n_] = -1.0;  // -p_j >= -hi_j
+  }
+}
+
+double DenseQpSolver::Slack(const DenseQp& qp, int k, const Eigen::VectorXd& p) const {
+  if (k < m_) return qp.C.row(k).dot(p) - qp.b[k];
+  if (k < m_ + n_) return p[k - m_] - qp.lo[k - m_];
+  return qp.hi[k - m_ - n_] - p[k - m_ - n_];
+}
+
+bool DenseQpSolver::Add() {
+  // Rotate d's tail into its entry q_, so that J's first q_ + 1 columns span the active normals.
+  for (int j = n_ - 1; j > q_; --j) {
+    if (d_[j] == 0.0) continue;
+    const double h = std::hypot(d_[j - 1], d_[j]);
+    const double c = d_[j - 1] / h, s = d_[j] / h;
+    d_[j - 1] = h;
+    d_[j] = 0.0;
+    RotateColumns(J_, j - 1, j, c, s);
+  }
+  if (std::abs(d_[q_]) <= 1e-12 * d_.head(q_ + 1).norm()) return false;
+  R_.col(q_).head(q_ + 1) = d_.head(q_ + 1);
+  ++q_;
+  return true;
+}
+
+void DenseQpSolver::Drop(int l) {
+  for (int k = l; k < q_ - 1; ++k) R_.col(k).head(q_) = R_.col(k + 1).head(q_);
+  for (int k = l; k < q_; ++k) u_[k] = u_[k + 1];  // the candidate's multiplier moves with them
+  active_.erase(active_.begin() + l);
+  // R is upper Hessenberg from column l: rotate each subdiagonal entry away.
+  for (int k = l; k < q_ - 1; ++k) {
+    const double a = R_(k, k), b = R_(k + 1, k);
+    const double h = std::hypot(a, b);
+    if (h == 0.0) continue;
+    const double c = a / h, s = b / h;
+    for (int col = k; col < q_ - 1; ++col) {
+      const double x = R_(k, col), y = R_(k + 1, col);
+      R_(k, col) = c * x + s * y;
+      R_(k + 1, col) = -s * x + c * y;
+    }
+    R_(k + 1, k) = 0.0;
+    RotateColumns(J_, k, k + 1, c, s);
+  }
+  --q_;
+}
+
+void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance) {
+  const int n = static_cast<int>(qp.G.rows());
+  const int m = static_cast<int>(qp.C.rows());
+  Resize(n, m);
+  out.solved = false;
+  out.steps = 0;
+  out.row_multiplier.setZero(m);
+  out.bound_multiplier.setZero(n);
+
+  const Eigen::LLT<Eigen::MatrixXd> llt(qp.G);
+  if (llt.info() != Eigen::Success) return;
+  J_.setIdentity();
+  llt.matrixU().solveInPlace(J_);  // J = L^-T
+  R_.setZero();
+  q_ = 0;
+  active_.clear();
+  Eigen::VectorXd& p = out.p;
+  p = -llt.solve(qp.a);
+
+  const int total = m + 2 * n;
+  const int max_steps = 10 * total + 10;
+  while (out.steps < max_steps) {
+    // The most violated constraint (not active: an active one holds with equality).
+    Cp_.noalias() = qp.C * p;
+    int kp = -1;
+    double worst = 0.0;
+    for (int i = 0; i < m; ++i) {
+      const double s = Cp_[i] - qp.b[i];
+      if (s < -tolerance * (1 + std::abs(qp.b[i])) && s < worst) worst = s, kp = i;
+    }
+    for (int j = 0; j < n; ++j) {
+      if (std::isfinite(qp.lo[j])) {
+        const double s = p[j] - qp.lo[j];
+        if (s < -tolerance * (1 + std::abs(qp.lo[j])) && s < worst) worst = s, kp = m + j;
+      }
+      if (std::isfinite(qp.hi[j])) {
+        const double s = qp.hi[j] - p[j];
+        if (s < -tolerance * (1 + std::abs(qp.hi[j])) && s < worst) worst = s, kp = m + n + j;
+      }
+    }
+    if (kp < 0) {
+      out.solved = true;
+      break;
+    }
+    Normal(qp, kp, np_);
+    u_[q_] = 0.0;
+    // Move along the primal and dual directions until kp holds (then it joins the active
+    // set) or an active constraint's multiplier reaches zero (then it leaves).
+    for (;;) {
+      ++out.steps;
+      if (out.steps > max_steps) break;
+      d_.noalias() = J_.transpose() * np_;
+      z_.noalias() = J_.rightCols(n - q_) * d_.tail(n - q_);
+      if (q_ > 0) {
+        r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d_.head(q_));
+      }
+      double t1 = kInf;
+      int l = -1;
+      for (int k = 0; k < q_; ++k) {
+        if (r_[k] > 0.0 && u_[k] / r_[k] < t1) t1 = u_[k] / r_[k], l = k;
+      }
+      const double zn = z_.dot(np_);
+      const bool primal = d_.tail(n - q_).norm() > 1e-12 * d_.norm();
+      const double t2 = primal ? -Slack(qp, kp, p) / zn : kInf;
+      if (!std::isfinite(t1) && !std::isfinite(t2)) return;  // infeasible
+      const double t = std::min(t1, t2);
+      if (primal) p += t * z_;
+      if (q_ > 0) u_.head(q_) -= t * r_.head(q_);
+      u_[q_] += t;
+      if (t2 <= t1) {
+        if (!Add()) return;  // not reached: a primal step means kp is independent
+        active_.push_back(kp);
+        break;
+      }
+      Drop(l);
+    }
+  }
+  if (!out.solved) return;
+  for (int k = 0; k < q_; ++k) {
+    const int c = active_[static_cast<size_t>(k)];
+    if (c < m) {
+      out.row_multiplier[c] = u_[k];
+    } else if (c < m + n) {
+      out.bound_multiplier[c - m] += u_[k];
+    } else {
+      out.bound_multiplier[c - m - n] -= u_[k];
+    }
+  }
+}
+
+}  // namespace tbridge
