@@ -193,7 +193,10 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                    "applies, else Ipopt (NLopt in a build without Ipopt). Depends on the build: `\"ipopt\"` and "
                    "`\"nlopt\"` exist only when built in (CMake `TBRIDGE_WITH_IPOPT`, `TBRIDGE_WITH_NLOPT`; "
                    "`tbridge --version` lists them), and naming one the build lacks is an error naming this key. "
-                   "All solve the same problem; the output's `solver.name` says which did"},
+                   "All solve the same problem; the output's `solver.name` says which did. The verified sizing "
+                   "(the engineering defaults) solves its own program by its own sequential quadratic programming "
+                   "(`solver.name` `\"sqp\"`, always built in) under `\"auto\"` and `\"direct\"`; `\"ipopt\"` "
+                   "and `\"nlopt\"` take those solvers for it too (docs/verified_sizing.md)"},
            d.solver, {"auto", "direct", "ipopt", "nlopt"});
   v.Number(KeyInfo{"tolerance", "–",
                    "relative optimality and constraint tolerance passed to the iterative solvers (Ipopt `tol` and "
