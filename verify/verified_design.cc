@@ -81,6 +81,48 @@ void CheckAgain(Design& design, ProgressReporter* progress) {
   RunChecks(design, unused, progress);
 }
 
+std::vector<double> MendedAreas(const Design& d, const std::vector<int>& group_of, int* mended) {
+  const int nb = static_cast<int>(d.bars.size());
+  const int members = nb + static_cast<int>(d.strings.size());
+  const BarRule rule = BarRuleOf(d.config);
+  const double bar_modulus = BarMaterial(d.config).youngs_modulus;
+  constexpr double kMargin = 2e-4;
+  std::vector<double> areas(static_cast<size_t>(members));
+  std::vector<double> group_area(static_cast<size_t>(members), 0.0);
+  *mended = 0;
+  for (int j = 0; j < members; ++j) {
+    const MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    areas[j] = m.area;
+    double needed = m.area;
+    if (m.utilisation > 1) {
+      if (m.mode == "slack" || !(m.demand > 0)) return {};
+      const double target = m.demand * (1 + kMargin);
+      if (j >= nb) {
+        needed = m.area * m.utilisation * (1 + kMargin);
+      } else {
+        // A bar's resistance grows at least as fast as its area (yield: as the area; buckling:
+        // faster), so the area lies between its own and the ratio's.
+        const auto resistance = [&](double area) {
+          const BarCapacity c = BarResistance(area, m.length, rule, bar_modulus);
+          return m.mode == "yield" || m.mode == "tension" ? c.yield : std::min(c.yield, c.buckling);
+        };
+        double lo = m.area, hi = m.area * m.utilisation * (1 + kMargin) * 1.01;
+        if (resistance(hi) < target) return {};
+        for (int it = 0; it < 60; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          (resistance(mid) >= target ? hi : lo) = mid;
+        }
+        needed = hi;
+      }
+      ++*mended;
+    }
+    double& g = group_area[static_cast<size_t>(group_of[j])];
+    g = std::max(g, needed);
+  }
+  for (int j = 0; j < members; ++j) areas[j] = std::max(areas[j], group_area[static_cast<size_t>(group_of[j])]);
+  return areas;
+}
+
 namespace {
 
 // The solver of the sizing: the sequential quadratic programming of design/sqp_solver.h,
@@ -234,77 +276,31 @@ Design Size(const Config& config, const Design& current, const SizingCorrections
   return d;
 }
 
-// The areas that mend a failing design member by member: each member that a check found over
-// its resistance (a string's yield, a bar's yield or buckling, a run's peak) gets the area whose
-// resistance carries the found demand with twice the rows' margin, and its mirror images the
-// same. Empty where a member fails otherwise (a taut string gone slack), which no area mends.
-std::vector<double> RepairedAreas(const Design& d, const std::vector<int>& group_of, int* mended) {
-  const int nb = static_cast<int>(d.bars.size());
-  const int members = nb + static_cast<int>(d.strings.size());
-  const BarRule rule = BarRuleOf(d.config);
-  const double bar_modulus = BarMaterial(d.config).youngs_modulus;
-  constexpr double kMargin = 2e-4;
-  std::vector<double> areas(static_cast<size_t>(members));
-  std::vector<double> group_area(static_cast<size_t>(members), 0.0);
-  *mended = 0;
-  for (int j = 0; j < members; ++j) {
-    const MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
-    areas[j] = m.area;
-    double needed = m.area;
-    if (m.utilisation > 1) {
-      if (m.mode == "slack" || !(m.demand > 0)) return {};
-      const double target = m.demand * (1 + kMargin);
-      if (j >= nb) {
-        needed = m.area * m.utilisation * (1 + kMargin);
-      } else {
-        // A bar's resistance grows at least as fast as its area (yield: as the area; buckling:
-        // faster), so the area lies between its own and the ratio's.
-        const auto resistance = [&](double area) {
-          const BarCapacity c = BarResistance(area, m.length, rule, bar_modulus);
-          return m.mode == "yield" || m.mode == "tension" ? c.yield : std::min(c.yield, c.buckling);
-        };
-        double lo = m.area, hi = m.area * m.utilisation * (1 + kMargin) * 1.01;
-        if (resistance(hi) < target) return {};
-        for (int it = 0; it < 60; ++it) {
-          const double mid = 0.5 * (lo + hi);
-          (resistance(mid) >= target ? hi : lo) = mid;
-        }
-        needed = hi;
-      }
-      ++*mended;
-    }
-    double& g = group_area[static_cast<size_t>(group_of[j])];
-    g = std::max(g, needed);
-  }
-  for (int j = 0; j < members; ++j) areas[j] = std::max(areas[j], group_area[static_cast<size_t>(group_of[j])]);
-  return areas;
-}
-
 // A sizing whose mass settled on a design that fails: the sizing can meet a raised demand
 // factor by moving load off a member's linear demand at no cost in mass, while the check's
 // demand (a run's, by another load path) follows by a tenth of it, so the corrections alone
 // creep up on a passing design over many sizings (the default at n = 6: a bar at 1.0006,
 // 1.0005, 1.00045, ... over ten designs of one mass). The failing members are mended directly
-// (RepairedAreas) and the design is checked again; it replaces `d` when it passes. Returns what
+// (MendedAreas) and the design is checked again; it replaces `d` when it passes. Returns what
 // was done, for the record ("" where nothing was).
 std::string Repair(const Config& config, const SizingProblem& problem, Design& d, Eigen::VectorXd& x,
                    Resizing::Times& time_s, ProgressReporter* progress) {
   int mended = 0;
-  const std::vector<double> areas = RepairedAreas(d, problem.group_of(), &mended);
+  const std::vector<double> areas = MendedAreas(d, problem.group_of(), &mended);
   if (areas.empty() || mended == 0) return "";
   const Eigen::VectorXd alpha = problem.Alpha(x);
   Design r = SizedDesign(config, areas, alpha);
   r.solver = d.solver;
   r.solver_form = d.solver_form;
-  RequireStable(r);
+  std::ostringstream os;
+  os << "mended " << mended << " failing members to their checked demand: " << r.mass.structure << " kg, ";
+  if (!r.stability.stable) return os.str() + "unstable, not checked; ";
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
   const Eigen::VectorXd xr = problem.VariablesOf(areas, alpha);
   RecordSizing(r, problem, xr, problem.Areas(lo));
   if (progress != nullptr) progress->Stage("repair");
   RunChecks(r, time_s, progress);
-  std::ostringstream os;
-  os << "mended " << mended << " failing members to their checked demand: " << r.mass.structure << " kg, ";
   if (!SizingVerdict(r).pass) return os.str() + "still failing; ";
   os << "passes (utilisation_max " << SizingVerdict(r).utilisation_max << "); ";
   d = std::move(r);

@@ -31,6 +31,14 @@ void RecordChecks(Design& design, StaticCheck statics, DynamicCheck dynamics, Co
 // `progress` (optional) follows the checks, stage by stage.
 void CheckAgain(Design& design, ProgressReporter* progress = nullptr);
 
+// The areas that mend a checked design member by member: each member that a check found over
+// its resistance (a string's yield, a bar's yield or buckling, a run's peak) gets the area whose
+// resistance carries the found demand with a margin of 2e-4, and the members of its group
+// (`group_of`, per member [bars; strings]: its mirror images) the largest of theirs. `mended`
+// gets how many failed. Empty where a member fails otherwise (a taut string gone slack), which
+// no area mends. The verified sizing mends so a design whose mass has settled while it fails.
+std::vector<double> MendedAreas(const Design& design, const std::vector<int>& group_of, int* mended);
+
 // The last design, with its static check and its `resizing` record.
 // At most config.design.max_sizings sizings.
 Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr);
