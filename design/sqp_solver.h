@@ -5,10 +5,11 @@
 // its reciprocal expansion g ~ g_0 + dg/dx_j x_j0 (1 - x_j0 / x_j) (CONLIN, Fleury and
 // Braibant 1986): a member's stress, a buckling row and a deflection row of a structure all
 // behave so in its members' areas. Their second derivatives, -2 (dg/dx_j) / x_j, weighted by
-// the last multipliers, give the Lagrangian's diagonal Hessian; a free variable takes a
-// diagonal secant estimate. The quadratic subproblem (design/dense_qp.h) carries the rows'
-// linearisation and move limits (a trust region: x_j / tau .. x_j tau for a positive
-// variable), and an l1 merit function accepts or shortens its step.
+// the last multipliers, give the Lagrangian's diagonal Hessian, or a diagonal secant estimate
+// where that is larger (alone for a free variable). The quadratic subproblem
+// (design/dense_qp.h) carries the rows' linearisation and a move limit per variable (a trust
+// region: x_j / (1 + r_j) .. x_j (1 + r_j) for a positive one), and an l1 merit function, with
+// a second-order correction, accepts or shortens its step.
 //
 // Why not NLopt's SLSQP: its quasi-Newton Hessian starts from the identity at every solve and
 // learns the curvature over about as many iterations as there are variables (the default at
