@@ -281,10 +281,10 @@ Design Size(const Config& config, const Design& current, const SizingCorrections
 // demand (a run's, by another load path) follows by a tenth of it, so the corrections alone
 // creep up on a passing design over many sizings (the default at n = 6: a bar at 1.0006,
 // 1.0005, 1.00045, ... over ten designs of one mass). The failing members are mended directly
-// (MendedAreas) and the design is checked again; it replaces `d` when it passes. Returns what
-// was done, for the record ("" where nothing was).
+// (MendedAreas) and the design is checked again; it replaces `d` (and `x`, `verdict`) when it
+// passes. Returns what was done, for the record ("" where nothing was).
 std::string Repair(const Config& config, const SizingProblem& problem, Design& d, Eigen::VectorXd& x,
-                   Resizing::Times& time_s, ProgressReporter* progress) {
+                   Verdict& verdict, Resizing::Times& time_s, ProgressReporter* progress) {
   int mended = 0;
   const std::vector<double> areas = MendedAreas(d, problem.group_of(), &mended);
   if (areas.empty() || mended == 0) return "";
@@ -301,10 +301,12 @@ std::string Repair(const Config& config, const SizingProblem& problem, Design& d
   RecordSizing(r, problem, xr, problem.Areas(lo));
   if (progress != nullptr) progress->Stage("repair");
   RunChecks(r, time_s, progress);
-  if (!SizingVerdict(r).pass) return os.str() + "still failing; ";
-  os << "passes (utilisation_max " << SizingVerdict(r).utilisation_max << "); ";
+  Verdict mended_verdict = SizingVerdict(r);
+  if (!mended_verdict.pass) return os.str() + "still failing; ";
+  os << "passes (utilisation_max " << mended_verdict.utilisation_max << "); ";
   d = std::move(r);
   x = xr;
+  verdict = std::move(mended_verdict);
   return os.str();
 }
 
@@ -534,10 +536,11 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     std::vector<char> posed;
     Design d = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
     RunChecks(d, record.time_s, progress);
+    // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended one.
+    Verdict verdict = SizingVerdict(d);
     std::string repair;
-    if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure &&
-        !SizingVerdict(d).pass) {
-      repair = Repair(config, problem, d, x, record.time_s, progress);
+    if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure && !verdict.pass) {
+      repair = Repair(config, problem, d, x, verdict, record.time_s, progress);
     }
     const SolverOutcome& outcome = d.solver;
     const StaticCheck& statics = d.statics;
@@ -545,7 +548,6 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     areas = problem.Areas(x);
     alpha = problem.Alpha(x);
     record.structure_mass_kg.push_back(d.mass.structure);
-    const Verdict verdict = SizingVerdict(d);
     record.utilisation_max.push_back(verdict.utilisation_max);
     // Converged: a design that passes within kSettled of the mass of the last design that
     // passed: the linear model says what the checks say. A design between them that fails by
