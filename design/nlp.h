@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +51,9 @@ struct SolverOptions {
   double tolerance = 1e-10;
   int max_iterations = 3000;
   bool verbose = false;
+  // Called with the evaluations so far at each iteration of the solvers that take it (the
+  // SQP): a long solve reports progress, and its caller's cancel hook may throw to stop it.
+  std::function<void(int)> each_iteration;
 };
 
 // Adapters: each is the only file that includes its solver's headers, and each is its own

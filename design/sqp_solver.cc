@@ -212,6 +212,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
   int small_steps = 0;  // accepted steps in a row that changed the objective by less than tol
   int stalled = 0;      // accepted steps in a row that changed nothing while infeasible
   while (eval.evaluations < options.max_iterations) {
+    if (options.each_iteration) options.each_iteration(eval.evaluations);
     PoseSubproblem(cur, lambda, secant, reach, lo, hi, qp, move_lo, move_hi);
     b_full = g_lo - cur.g;
     RelaxUnreachable(qp, b_full);

@@ -265,7 +265,12 @@ Design Size(const Config& config, const Design& current, const SizingCorrections
   // times the evaluations at n = 5 (SLSQP: 1 375 against 472) and moved no verdict.
   options.tolerance = 1e-6;
   options.max_iterations = config.design.max_iterations;
-  if (progress != nullptr) progress->Stage("optimisation");
+  if (progress != nullptr) {
+    progress->Stage("optimisation");
+    // Each iteration polls the reporter, so that Ctrl-C stops a long solve (n = 7: a sizing
+    // runs for tens of seconds).
+    options.each_iteration = [progress](int evaluations) { progress->Update(evaluations, 0); };
+  }
   const SolverOutcome outcome =
       Timed(time_s.sizing, [&] { return SolveSizing(current, corrections, solver, options, problem, x, posed); });
   Design d = SizedDesign(config, problem.Areas(x), problem.Alpha(x));
