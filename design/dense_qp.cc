@@ -56,6 +56,33 @@ double DenseQpSolver::Slack(const DenseQp& qp, int k, const Eigen::VectorXd& p) 
   return qp.hi[k - m_ - n_] - p[k - m_ - n_];
 }
 
+double DenseQpSolver::Bound(const DenseQp& qp, int k) const {
+  if (k < m_) return qp.b[k];
+  if (k < m_ + n_) return qp.lo[k - m_];
+  return qp.hi[k - m_ - n_];
+}
+
+int DenseQpSolver::MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, double tolerance) {
+  Cp_.noalias() = qp.C * p;
+  int kp = -1;
+  double worst = 0.0;
+  for (int i = 0; i < m_; ++i) {
+    const double s = Cp_[i] - qp.b[i];
+    if (s < -tolerance * (1 + std::abs(qp.b[i])) && s < worst) worst = s, kp = i;
+  }
+  for (int j = 0; j < n_; ++j) {
+    if (std::isfinite(qp.lo[j])) {
+      const double s = p[j] - qp.lo[j];
+      if (s < -tolerance * (1 + std::abs(qp.lo[j])) && s < worst) worst = s, kp = m_ + j;
+    }
+    if (std::isfinite(qp.hi[j])) {
+      const double s = qp.hi[j] - p[j];
+      if (s < -tolerance * (1 + std::abs(qp.hi[j])) && s < worst) worst = s, kp = m_ + n_ + j;
+    }
+  }
+  return kp;
+}
+
 bool DenseQpSolver::Add() {
   // Rotate d's tail into its entry q_, so that J's first q_ + 1 columns span the active normals.
   for (int j = n_ - 1; j > q_; --j) {
@@ -93,12 +120,14 @@ void DenseQpSolver::Drop(int l) {
   --q_;
 }
 
-void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance) {
+void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance,
+                          const std::vector<int>* warm) {
   const int n = static_cast<int>(qp.G.rows());
   const int m = static_cast<int>(qp.C.rows());
   Resize(n, m);
   out.solved = false;
   out.steps = 0;
+  out.active.clear();
   out.row_multiplier.setZero(m);
   out.bound_multiplier.setZero(n);
 
@@ -114,25 +143,14 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
 
   const int total = m + 2 * n;
   const int max_steps = 10 * total + 10;
+  size_t next_warm = 0;
   while (out.steps < max_steps) {
-    // The most violated constraint (not active: an active one holds with equality).
-    Cp_.noalias() = qp.C * p;
     int kp = -1;
-    double worst = 0.0;
-    for (int i = 0; i < m; ++i) {
-      const double s = Cp_[i] - qp.b[i];
-      if (s < -tolerance * (1 + std::abs(qp.b[i])) && s < worst) worst = s, kp = i;
+    while (warm != nullptr && next_warm < warm->size() && kp < 0) {
+      const int k = (*warm)[next_warm++];
+      if (k >= 0 && k < total && Slack(qp, k, p) < -tolerance * (1 + std::abs(Bound(qp, k)))) kp = k;
     }
-    for (int j = 0; j < n; ++j) {
-      if (std::isfinite(qp.lo[j])) {
-        const double s = p[j] - qp.lo[j];
-        if (s < -tolerance * (1 + std::abs(qp.lo[j])) && s < worst) worst = s, kp = m + j;
-      }
-      if (std::isfinite(qp.hi[j])) {
-        const double s = qp.hi[j] - p[j];
-        if (s < -tolerance * (1 + std::abs(qp.hi[j])) && s < worst) worst = s, kp = m + n + j;
-      }
-    }
+    if (kp < 0) kp = MostViolated(qp, p, tolerance);
     if (kp < 0) {
       out.solved = true;
       break;
@@ -171,6 +189,7 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
     }
   }
   if (!out.solved) return;
+  out.active = active_;
   for (int k = 0; k < q_; ++k) {
     const int c = active_[static_cast<size_t>(k)];
     if (c < m) {

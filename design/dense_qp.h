@@ -31,6 +31,9 @@ struct DenseQpSolution {
   Eigen::VectorXd row_multiplier;    // m, >= 0: the multipliers of C p >= b
   Eigen::VectorXd bound_multiplier;  // n: > 0 where p sits on lo, < 0 where on hi
   int steps = 0;                     // constraints added or dropped
+  // The active constraints at the minimiser, in the order they joined: rows of C (0..m-1),
+  // lower bounds (m + j), upper bounds (m + n + j). A warm start for the next solve.
+  std::vector<int> active;
 };
 
 // The solver keeps its factors and scratch between solves of one size (no allocation after
@@ -38,13 +41,22 @@ struct DenseQpSolution {
 class DenseQpSolver {
  public:
   // `tolerance`: a row counts as violated when C_i p - b_i < -tolerance (1 + |b_i|).
-  void Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance = 1e-11);
+  // `warm` (optional): constraints, numbered as DenseQpSolution::active, tried first and in
+  // that order, each added where it is violated, before the scans for the most violated
+  // begin. The dual method may add any violated constraint at any step, so the minimiser is
+  // the same; a warm set near the final one saves the scans of the rows, O(m n) per step, and
+  // the drops of constraints the scans' order would add and remove again.
+  void Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance = 1e-11,
+             const std::vector<int>* warm = nullptr);
 
  private:
   void Resize(int n, int m);
   // The normal of constraint k (rows of C, then lower, then upper bounds) into `np`.
   void Normal(const DenseQp& qp, int k, Eigen::VectorXd& np) const;
   double Slack(const DenseQp& qp, int k, const Eigen::VectorXd& p) const;  // >= 0 where it holds
+  double Bound(const DenseQp& qp, int k) const;                            // b_k, lo_j or hi_j
+  // The most violated constraint at p, -1 where none is.
+  int MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, double tolerance);
   bool Add();        // appends d's new column to R (false: dependent on the active normals)
   void Drop(int l);  // removes active constraint l (0-based in the active list)
 

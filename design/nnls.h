@@ -1,7 +1,9 @@
 // Non-negative least squares, min |A z - b| subject to z >= 0, by Lawson and Hanson's active
-// set method (Solving Least Squares Problems, 1974, ch. 23). Eigen has no such solver, and the
-// sizing's multipliers need one small dense problem per design (a few dozen unknowns), so a
-// direct transcription of the method serves better than a general NLP.
+// set method (Solving Least Squares Problems, 1974, ch. 23), the QR factors of the passive
+// columns updated as columns join and leave. Eigen has no such solver, and the sizing's
+// multipliers need dense problems of up to a few hundred unknowns (one per active-set round and
+// per design), so a transcription of the method serves better than a general NLP. A column
+// dependent on the passive ones (a wide A) stays out.
 #pragma once
 
 #include <Eigen/Core>

@@ -14,6 +14,8 @@ namespace tbridge {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The subproblems' tolerance on a row (DenseQpSolver::Solve's default).
+constexpr double kQpTolerance = 1e-11;
 
 // The problem's values and derivatives at one point (the Jacobian dense: the rows are dense
 // in the variables, every member's force reads every area through the stiffness).
@@ -201,6 +203,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
   DenseQpSolver qp_solver;
   DenseQp qp, elastic;
   DenseQpSolution sol;
+  std::vector<int> warm;  // the last subproblem's active set
   qp.G.setZero(n, n);
   qp.C.resize(m, n);
   qp.lo.resize(n);
@@ -216,7 +219,10 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
     PoseSubproblem(cur, lambda, secant, reach, lo, hi, qp, move_lo, move_hi);
     b_full = g_lo - cur.g;
     RelaxUnreachable(qp, b_full);
-    qp_solver.Solve(qp, sol);
+    // From the last subproblem's active set: from one iteration to the next it changes in a
+    // few rows (n = 7: 500 steps per subproblem from none).
+    qp_solver.Solve(qp, sol, kQpTolerance, &warm);
+    if (sol.solved) warm = sol.active;
     bool used_elastic = false;
     if (!sol.solved) {
       // The linearised rows cannot all hold within the move limits: the least violation, at a
@@ -258,7 +264,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
         // (the Maratos effect). The rows' linearisation, shifted by what the full step
         // missed, gives a corrected step from the same point.
         RelaxUnreachable(qp, g_lo - trial.g + cur.jac * p);
-        qp_solver.Solve(qp, sol);
+        qp_solver.Solve(qp, sol, kQpTolerance, &warm);
         if (sol.solved) {
           trial.x = (cur.x + sol.p).cwiseMax(lo).cwiseMin(hi);
           if (eval.Values(trial) && decreases(1.0)) {
