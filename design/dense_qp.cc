@@ -148,7 +148,8 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
     int kp = -1;
     while (warm != nullptr && next_warm < warm->size() && kp < 0) {
       const int k = (*warm)[next_warm++];
-      if (k >= 0 && k < total && Slack(qp, k, p) < -tolerance * (1 + std::abs(Bound(qp, k)))) kp = k;
+      if (k >= 0 && k < total && Slack(qp, k, p) < -tolerance * (1 + std::abs(Bound(qp, k))))
+        kp = k;
     }
     if (kp < 0) kp = MostViolated(qp, p, tolerance);
     if (kp < 0) {

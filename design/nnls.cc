@@ -95,13 +95,15 @@ class PassiveQr {
 
 }  // namespace
 
-Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* residual) {
+Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                                        double* residual) {
   const Eigen::Index n = A.cols();
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   std::vector<char> passive(static_cast<size_t>(n), 0), dependent(static_cast<size_t>(n), 0);
   PassiveQr qr(A, b);
   // The gradient's tolerance: rounding in A^T (b - A z) is about eps |A| |b|.
-  const double tol = 10 * std::numeric_limits<double>::epsilon() * std::max(A.norm(), 1.0) * std::max(b.norm(), 1.0);
+  const double tol = 10 * std::numeric_limits<double>::epsilon() * std::max(A.norm(), 1.0) *
+                     std::max(b.norm(), 1.0);
   for (Eigen::Index step = 0; step < 3 * n; ++step) {
     const Eigen::VectorXd w = A.transpose() * (b - A * z);
     Eigen::Index enter = -1;

@@ -12,6 +12,7 @@ namespace tbridge {
 
 // The solution z (size A.cols()); `residual` (optional) gets |A z - b|. At most 3 A.cols()
 // outer steps.
-Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double* residual = nullptr);
+Eigen::VectorXd NonNegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                                        double* residual = nullptr);
 
 }  // namespace tbridge
