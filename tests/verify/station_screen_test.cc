@@ -68,16 +68,20 @@ BruteForce Solve(const Design& d) {
   return out;
 }
 
-// The check's findings are the brute force's. 1e-12 relative: the same solves of the same
-// loads (the check's first Newton steps take the reference state's factorisation, the very
-// matrix the brute force factorises), so only the order of the max differs.
+// The check's findings are the brute force's. The check solves each station from the last
+// station's equilibrium, the brute force from the reference state: two Newton solves of the
+// same loads from different starts, each stopped where the forces balance to 1e-10 of the
+// largest force, which leaves a member's utilisation within a few 1e-9 (3.4e-9 the most on
+// this design). 1e-8: that, with room for rounding, and four orders below the sizing's margin
+// of 1e-4 on every row, so no verdict can turn on it.
 void RequireSameFindings(const StaticCheck& check, const BruteForce& truth) {
   REQUIRE(check.members.size() == truth.utilisation.size());
   for (size_t j = 0; j < truth.utilisation.size(); ++j) {
     INFO("member " << j << ", governed by " << check.members[j].governing_case);
-    CHECK(check.members[j].utilisation == Approx(truth.utilisation[j]).epsilon(1e-12).margin(1e-300));
+    CHECK(check.members[j].utilisation == Approx(truth.utilisation[j]).epsilon(0).margin(1e-8));
   }
-  CHECK(check.deflection_max_m == Approx(truth.deflection).epsilon(1e-12));
+  // The deflection likewise: within 1e-8 of itself (1e-8 of 24 mm is 0.24 nm).
+  CHECK(check.deflection_max_m == Approx(truth.deflection).epsilon(1e-8));
 }
 
 TEST_CASE("the static check finds what every station's nonlinear solve finds", "[verify]") {
