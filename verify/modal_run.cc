@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
@@ -72,10 +73,22 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   out.duration_s = duration_s;
   const double span = d.config.bridge.span;
   Eigen::Matrix3Xd loads = model.loads;
+  // Each station is solved from the last one's equilibrium (the first from the standing one):
+  // its load differs by one station's step, and Newton takes a third of the steps it takes
+  // from the reference state (as the static check's stations, verify/static_check.h).
+  std::optional<StaticState> last;
+  Eigen::Matrix3Xd last_loads = model.loads;
+  if (at_rest.converged) last = at_rest.state;
   for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
     const std::vector<int>& nodes = d.actions.station_nodes[k];
     d.actions.AddStationLoad(k, force_n, loads);
-    const StaticResult r = SolveStatic(statics, start, d.loads, loads);
+    const StaticResult r = last ? SolveStatic(statics, *last, last_loads, loads) : SolveStatic(statics, start, d.loads, loads);
+    if (r.converged) {
+      last = r.state;
+      last_loads = loads;
+    } else {
+      last.reset();
+    }
     Eigen::Matrix3Xd alone(3, static_cast<Eigen::Index>(nodes.size()));
     for (size_t a = 0; a < nodes.size(); ++a) {
       alone.col(static_cast<Eigen::Index>(a)) = loads.col(nodes[a]) - model.loads.col(nodes[a]);

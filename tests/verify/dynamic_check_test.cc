@@ -143,8 +143,11 @@ TEST_CASE("the dynamic check's static counterparts are the load standing at each
     INFO("group " << g.group);
     REQUIRE(peak.count(g.group) == 1);
     REQUIRE(g.static_peak > 0);
-    // 1e-12 relative: the same solves from the same loads (a + (-f) and a - f round alike).
-    CHECK(g.static_peak == Approx(peak[g.group]).epsilon(1e-12));
+    // 1e-10 relative: the same loads (a + (-f) and a - f round alike), solved here from the
+    // reference state and by the check from the last station's equilibrium, both stopped where
+    // the forces balance to 1e-10 of the largest force (a group's peak is among the largest;
+    // 1.1e-12 found).
+    CHECK(g.static_peak == Approx(peak[g.group]).epsilon(1e-10));
   }
 }
 
