@@ -85,7 +85,9 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
     }
     name = built.front();
   }
-  const SolverOptions options{config.tolerance, config.max_iterations, false};
+  SolverOptions options;
+  options.tolerance = config.tolerance;
+  options.max_iterations = config.max_iterations;
   auto solve = [&](const NlpProblem& nlp) { return SolveNlp(name, nlp, options, x); };
   // The full problem holds one load case; several cases need the self-stress form.
   if (single_loads == nullptr && problem == nullptr) {

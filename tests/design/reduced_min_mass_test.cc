@@ -107,7 +107,12 @@ struct Optimum {
 // SLSQP stops when the objective changes by less than ftol_rel = tolerance in a step: at
 // 1e-12 it stops on the 3D n = 6 bridge 5e-5 above the optimum after a short step, at 1e-14 it
 // reaches it (1.5e-11 from Ipopt's). Ipopt's tolerance is on the KKT conditions.
-SolverOptions OptionsFor(const std::string& solver) { return {solver == "nlopt" ? 1e-14 : 1e-12, 3000, false}; }
+SolverOptions OptionsFor(const std::string& solver) {
+  SolverOptions options;
+  options.tolerance = solver == "nlopt" ? 1e-14 : 1e-12;
+  options.max_iterations = 3000;
+  return options;
+}
 
 Optimum SolveFull(const DesignInputs& in, const std::string& solver) {
   const MinMassProblem full(in.topology.structure, in.loads, in.settings);
@@ -245,7 +250,9 @@ TEST_CASE("A load case that only repeats another changes nothing", "[design][sel
   const ReducedMinMassProblem one(in.topology.structure, basis, in.settings);
   const ReducedMinMassProblem two(in.topology.structure, twice, in.settings);
   Eigen::VectorXd x1 = one.StartingPoint(), x2 = two.StartingPoint();
-  const SolverOptions options{1e-12, 3000, false};
+  SolverOptions options;
+  options.tolerance = 1e-12;
+  options.max_iterations = 3000;
   const std::string solver = BuiltInIterativeSolvers().empty() ? "" : BuiltInIterativeSolvers().front();
   if (solver.empty()) return;  // a build with neither Ipopt nor NLopt
   REQUIRE(SolveNlp(solver, one, options, x1).success);
