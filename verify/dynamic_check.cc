@@ -195,6 +195,16 @@ ModelOptions DynamicCheckModelOptions(const Design& d, const std::vector<StringP
   return options;
 }
 
+DynamicCheck DynamicCheckNotRun(const Design& d, const std::string& why) {
+  DynamicCheck out;
+  out.members.resize(d.bars.size() + d.strings.size());
+  for (LoadRun& run : LoadRuns(d, KeepsPaperSwitches(d.config))) {
+    run.record.note = why;
+    out.runs.push_back(std::move(run.record));
+  }
+  return out;
+}
+
 DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, ProgressReporter* progress,
                            const std::vector<StringPrestrain>& prestrain) {
   const double max_member_steps = max_steps ? *max_steps : d.config.loads.dynamic_max_member_steps;

@@ -55,4 +55,9 @@ ModelOptions DynamicCheckModelOptions(const Design& design, const std::vector<St
 DynamicCheck CheckDynamics(const Design& design, std::optional<double> max_member_steps = std::nullopt,
                            ProgressReporter* progress = nullptr, const std::vector<StringPrestrain>& prestrain = {});
 
+// The check not carried out on `design`: each run it would do, not done, with `why` as its
+// note, and every member without a finding. The sizing's record of a design it does not run
+// (verify/verified_design.cc).
+DynamicCheck DynamicCheckNotRun(const Design& design, const std::string& why);
+
 }  // namespace tbridge

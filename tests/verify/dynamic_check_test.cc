@@ -177,6 +177,33 @@ TEST_CASE("a dynamic run over the budget at its asked step is skipped before its
   CHECK(exact.members.front().utilisation == full.members.front().utilisation);
 }
 
+TEST_CASE("a dynamic check not run says so for each run and its design never passes", "[verify][dynamics]") {
+  // The sizing's record of a design whose static check fails by far (verify/verified_design.cc):
+  // every run the check would do, not done, with the reason; every member without a finding.
+  Config config;
+  config.bridge.n = 2;
+  Design d = RunDesign(config);
+  const DynamicCheck full = CheckDynamics(d);
+  REQUIRE(full.runs.size() == 1);
+  REQUIRE(full.runs.front().done);
+  const DynamicCheck skipped = DynamicCheckNotRun(d, "not run: the static check fails by more than 0.1");
+  REQUIRE(skipped.runs.size() == full.runs.size());
+  CHECK(skipped.runs.front().name == full.runs.front().name);
+  CHECK_FALSE(skipped.runs.front().done);
+  CHECK(skipped.runs.front().note == "not run: the static check fails by more than 0.1");
+  CHECK(skipped.Status() == CheckStatus::kNotRun);
+  REQUIRE(skipped.members.size() == d.bars.size() + d.strings.size());
+  for (const MemberFinding& f : skipped.members) CHECK(f.utilisation == 0);
+  // Recorded on a design: its verdict names the run not done. The equilibrium design passes
+  // its other checks here, so it is INCOMPLETE; with a member over its resistance, FAIL.
+  d.dynamics = skipped;
+  const Verdict incomplete = DesignVerdict(d);
+  CHECK(incomplete.outcome == VerdictOutcome::kIncomplete);
+  CHECK(incomplete.summary.find("moving_load not run") != std::string::npos);
+  d.bars.front().utilisation = 1.2;
+  CHECK(DesignVerdict(d).outcome == VerdictOutcome::kFail);
+}
+
 TEST_CASE("the dynamic check's stabilised bar lengths leave the peaks of a run that needs none",
           "[verify][dynamics]") {
   // The default bridge's walking load at n = 3 (RK4 at 1e-4 s, stable; the bar lengths drift
