@@ -40,12 +40,14 @@ namespace tbridge {
 // when there is no static equilibrium under their weight.
 DynamicModel ComfortModel(const Design& design, bool crowded);
 
-// A model's modes and the deck motion of each. Every mode up to 600 free DOFs, else the lowest 40.
+// A model's modes and the deck motion of each: every mode up to 150 free DOFs, else the lowest
+// 40 by the sparse solver, twice as many until one is above `above_hz` (the comfort check's
+// highest trigger frequency) or every mode is found.
 struct DeckModes {
   ModalResult modal;
   std::vector<DeckMotionReport> motions;  // one per mode
 };
-DeckModes ComputeDeckModes(const DynamicModel& model);
+DeckModes ComputeDeckModes(const DynamicModel& model, double above_hz = 0);
 
 // The axis a deck motion ("vertical", "lateral", "longitudinal", "torsional") is loaded and
 // measured along (torsion: vertical).
