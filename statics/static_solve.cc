@@ -156,6 +156,16 @@ class NewtonMatrix {
 
 }  // namespace
 
+struct StaticWorkspace::Impl {
+  const StaticModel* model = nullptr;  // the model the pattern and analysis are of
+  KluFactor lu;
+  std::optional<NewtonMatrix> newton;
+  bool analysed = false;
+};
+
+StaticWorkspace::StaticWorkspace() : impl_(std::make_unique<Impl>()) {}
+StaticWorkspace::~StaticWorkspace() = default;
+
 StaticState StateAt(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const Eigen::VectorXd& bar_compression,
                     const Eigen::Matrix3Xd& loads) {
   const Structure& s = m.structure;
@@ -237,7 +247,7 @@ void StaticTangent::Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& disp
 }
 
 StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent) {
+                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent, StaticWorkspace* workspace) {
   const Structure& s = m.structure;
   const DofMap map = MapDofs(s);
   const int nb = s.num_bars();
@@ -255,10 +265,17 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
   StaticResult out;
   Eigen::VectorXd r, g, rhs(map.count + nb), step;
   // The Newton matrix's pattern does not change (a slack string keeps its entries), so it is
-  // analysed once per solve.
-  KluFactor lu;
-  std::optional<NewtonMatrix> newton;
-  bool analysed = false;
+  // analysed once per solve, or once per workspace.
+  StaticWorkspace::Impl local;
+  StaticWorkspace::Impl& ws = workspace != nullptr ? *workspace->impl_ : local;
+  if (ws.model != &m) {
+    ws.model = &m;
+    ws.newton.reset();
+    ws.analysed = false;
+  }
+  KluFactor& lu = ws.lu;
+  std::optional<NewtonMatrix>& newton = ws.newton;
+  bool& analysed = ws.analysed;
   double done = 0, dt = 1.0;
   auto converged = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& gg) {
     const double rmax = rr.size() ? rr.cwiseAbs().maxCoeff() : 0.0;

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,8 @@ struct StaticResult {
   std::string message;  // why it did not converge
 };
 
+class StaticWorkspace;
+
 // The linear response about a state in equilibrium: SolveStatic's Newton matrix at `state`
 // (its bar forces as the multipliers, the strings' tangent at its geometry), factorised once,
 // so that each load change costs a pair of triangular solves. The first-order change of the
@@ -62,7 +65,7 @@ class StaticTangent {
 
  private:
   friend StaticResult SolveStatic(const StaticModel&, const StaticState&, const Eigen::Matrix3Xd&,
-                                  const Eigen::Matrix3Xd&, const StaticTangent*);
+                                  const Eigen::Matrix3Xd&, const StaticTangent*, StaticWorkspace*);
   const StaticModel& model_;
   const StaticState& state_;
   std::vector<int> first_;  // per node, its first free coordinate or -1 (fixed)
@@ -72,12 +75,34 @@ class StaticTangent {
   Eigen::VectorXd rhs_, step_;  // the solves' workspace
 };
 
+// The scratch that a series of static solves of one model shares: the Newton matrix's pattern,
+// its KLU analysis and the pivots of its last factorisation. A solve given it analyses nothing
+// again and factorises with the last pivots (klu_refactor); the static check's stations take
+// 3.4 Newton steps each, and the analysis and first factorisation of each solve were a third of
+// the check. Tied to the first model it serves (the model must outlive it); a solve of another
+// model starts it afresh.
+class StaticWorkspace {
+ public:
+  StaticWorkspace();
+  ~StaticWorkspace();
+  StaticWorkspace(const StaticWorkspace&) = delete;
+  StaticWorkspace& operator=(const StaticWorkspace&) = delete;
+
+ private:
+  friend StaticResult SolveStatic(const StaticModel&, const StaticState&, const Eigen::Matrix3Xd&,
+                                  const Eigen::Matrix3Xd&, const StaticTangent*, StaticWorkspace*);
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 // Equilibrium under `loads` (3 x n_n [N]), starting from `start`, a state in equilibrium under
 // `start_loads` (its bar forces seed the multipliers). Planar structures move in x-y only.
 // `tangent`, when given, is a StaticTangent of this model at `start`: its factorisation serves
-// the Newton steps taken from `start` (the same matrix, not factorised again).
+// the Newton steps taken from `start` (the same matrix, not factorised again). `workspace`,
+// when given, is shared with the other solves of this model (the same result, less work).
 StaticResult SolveStatic(const StaticModel& model, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent = nullptr);
+                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent = nullptr,
+                         StaticWorkspace* workspace = nullptr);
 
 // The force every member exerts on the nodes of `nodes` with the given bar compressions,
 // string tensions from the model (slack = 0), and the reactions that balance `loads`.

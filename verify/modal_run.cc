@@ -78,11 +78,13 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   // from the reference state (as the static check's stations, verify/static_check.h).
   std::optional<StaticState> last;
   Eigen::Matrix3Xd last_loads = model.loads;
+  StaticWorkspace workspace;  // the stations' solves': one analysis, the pivots kept
   if (at_rest.converged) last = at_rest.state;
   for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
     const std::vector<int>& nodes = d.actions.station_nodes[k];
     d.actions.AddStationLoad(k, force_n, loads);
-    const StaticResult r = last ? SolveStatic(statics, *last, last_loads, loads) : SolveStatic(statics, start, d.loads, loads);
+    const StaticResult r = last ? SolveStatic(statics, *last, last_loads, loads, nullptr, &workspace)
+                                : SolveStatic(statics, start, d.loads, loads, nullptr, &workspace);
     if (r.converged) {
       last = r.state;
       last_loads = loads;

@@ -171,6 +171,7 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     solves += static_cast<int>(stations_of[c].size());
   }
 
+  StaticWorkspace workspace;  // every solve's: one analysis, the pivots kept
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
     // The last station's equilibrium, where it converged: the next station's load differs from
@@ -185,8 +186,9 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
       r.station = station;
       r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), station});
       const Eigen::Matrix3Xd loads = d.actions.Loads(lc, station);
-      const StaticResult result = last_state ? SolveStatic(model, *last_state, last_loads, loads)
-                                             : SolveStatic(model, start, d.loads, loads, tangent ? &*tangent : nullptr);
+      const StaticResult result = last_state
+                                      ? SolveStatic(model, *last_state, last_loads, loads, nullptr, &workspace)
+                                      : SolveStatic(model, start, d.loads, loads, tangent ? &*tangent : nullptr, &workspace);
       ++out.nonlinear_solves;
       if (result.converged && station >= 0) {
         last_state = result.state;
