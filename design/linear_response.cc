@@ -65,6 +65,16 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
       scaled.emplace_back(e.col(), e.row(), constraint_scale_ * e.value());  // C^T beside C
     }
   }
+  std::vector<Eigen::Triplet<double>> st;
+  for (int k = 0; k < ns_; ++k) {
+    const Member& m = s_.strings[k];
+    for (int a = 0; a < dim_; ++a) {
+      if (dof_[m.j] >= 0) st.emplace_back(k, dof_[m.j] + a, unit_[nb_ + k][a]);
+      if (dof_[m.i] >= 0) st.emplace_back(k, dof_[m.i] + a, -unit_[nb_ + k][a]);
+    }
+  }
+  stretch_.resize(ns_, ndof_ + nb_);
+  stretch_.setFromTriplets(st.begin(), st.end());
   Eigen::SparseMatrix<double> kkt(ndof_ + nb_, ndof_ + nb_);
   kkt.setFromTriplets(scaled.begin(), scaled.end());
   // A singular KKT matrix shows as a failed factorisation or a reciprocal condition far below
@@ -102,10 +112,8 @@ Eigen::RowVectorXd LinearResponse::Stretch(const Eigen::MatrixXd& u, int i, int 
 Eigen::MatrixXd LinearResponse::ForceChanges(const Eigen::MatrixXd& u) const {
   Eigen::MatrixXd x(nb_ + ns_, u.cols());
   x.topRows(nb_) = -constraint_scale_ * u.bottomRows(nb_);
-  for (int k = 0; k < ns_; ++k) {
-    const Member& m = s_.strings[k];
-    x.row(nb_ + k) = k_[k] * Stretch(u, m.i, m.j, unit_[nb_ + k]);
-  }
+  x.bottomRows(ns_).noalias() = stretch_ * u;
+  x.bottomRows(ns_) = k_.asDiagonal() * x.bottomRows(ns_);
   return x;
 }
 
@@ -150,7 +158,7 @@ Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members, const s
 
 Eigen::MatrixXd LinearResponse::StringStretches(const Eigen::MatrixXd& u) const {
   Eigen::MatrixXd out(ns_, u.cols());
-  for (int k = 0; k < ns_; ++k) out.row(k) = Stretch(u, s_.strings[k].i, s_.strings[k].j, unit_[nb_ + k]);
+  out.noalias() = stretch_ * u;
   return out;
 }
 
