@@ -78,8 +78,8 @@ void RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress, S
   DynamicCheck dynamics;
   if (screen == Screen::kStaticFailure && static_utilisation > kDynamicScreen) {
     std::ostringstream why;
-    why << "not run: the static check fails by more than " << kDynamicScreen - 1 << " (utilisation "
-        << static_utilisation << ")";
+    why << "not run: the static check fails by more than " << std::lround((kDynamicScreen - 1) * 100)
+        << " % (utilisation " << static_utilisation << "), whatever the runs find";
     dynamics = DynamicCheckNotRun(d, why.str());
   } else {
     dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });

@@ -186,11 +186,11 @@ TEST_CASE("a dynamic check not run says so for each run and its design never pas
   const DynamicCheck full = CheckDynamics(d);
   REQUIRE(full.runs.size() == 1);
   REQUIRE(full.runs.front().done);
-  const DynamicCheck skipped = DynamicCheckNotRun(d, "not run: the static check fails by more than 0.1");
+  const DynamicCheck skipped = DynamicCheckNotRun(d, "not run: the static check fails by more than 10 %");
   REQUIRE(skipped.runs.size() == full.runs.size());
   CHECK(skipped.runs.front().name == full.runs.front().name);
   CHECK_FALSE(skipped.runs.front().done);
-  CHECK(skipped.runs.front().note == "not run: the static check fails by more than 0.1");
+  CHECK(skipped.runs.front().note == "not run: the static check fails by more than 10 %");
   CHECK(skipped.Status() == CheckStatus::kNotRun);
   REQUIRE(skipped.members.size() == d.bars.size() + d.strings.size());
   for (const MemberFinding& f : skipped.members) CHECK(f.utilisation == 0);
