@@ -50,6 +50,9 @@ struct DesignConfig {
   std::string bar_resistance = "column_curve";
   double imperfection_factor = 0.49;     // alpha of the column curve (curve c: solid sections)
   int max_sizings = 15;                  // the verified sizing's designs at most (outer iterations)
+  // The static utilisation above which the verified sizing does not run the dynamic runs on
+  // one of its own designs (it fails whatever they find); the design it delivers runs them.
+  double dynamic_screen = 1.1;
 };
 
 // The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each

@@ -226,6 +226,14 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                     "mass; at the limit it keeps the lightest design that passed and says it did not converge "
                     "(`resizing.converged` false)"},
             d.max_sizings, 1, 1000);
+  v.Number(KeyInfo{"dynamic_screen", "–",
+                   "the static utilisation (a member's, or the deflection over its limit) above which the verified "
+                   "sizing does not run the dynamic runs on one of its own designs: it fails whatever they find, "
+                   "and the sizing corrects it by the static findings first (the first sizing's design, which knows "
+                   "no dynamic amplification yet, at n = 5 to 7 of the default; its walking load would fall to RK4). "
+                   "Such a design's record says the runs were not run and why. A design that passes has every run "
+                   "done, whatever this is; `tbridge check` runs every check. 1e9: run them on every design"},
+           d.dynamic_screen, Range::AtLeast(1.0));
 }
 
 template <class L, class V>

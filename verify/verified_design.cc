@@ -56,16 +56,12 @@ auto Timed(double& seconds, F&& f) {
   return result;
 }
 
-// The static utilisation (of a member, or the deflection over its limit) above which a
-// sizing's design is not run dynamically.
-constexpr double kDynamicScreen = 1.1;
-
 // Runs every check on `d` and records what they found in it (RecordChecks: d.statics,
 // d.dynamics and d.comfort are then the reports the corrections read); their wall times are
 // added to `time_s`.
 //
 // With `screen` (the sizing's own designs), the dynamic runs are not run on a design whose
-// static check fails by more than kDynamicScreen: it fails whatever they find, and the sizing
+// static utilisation is above design.dynamic_screen: it fails whatever they find, and the sizing
 // corrects it by the static findings first. Such a design (the first sizing's, which knows no
 // dynamic amplification yet) is far from linear, and its walking load falls to the nonlinear
 // run: RK4 at n = 6 took 0.9 s of the whole design's 3.9 s. A design checked as it is (check,
@@ -76,10 +72,11 @@ void RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress, S
   double static_utilisation = statics.deflection_limit_m > 0 ? statics.deflection_max_m / statics.deflection_limit_m : 0;
   for (const MemberFinding& m : statics.members) static_utilisation = std::max(static_utilisation, m.utilisation);
   DynamicCheck dynamics;
-  if (screen == Screen::kStaticFailure && static_utilisation > kDynamicScreen) {
+  const double screen_above = d.config.design.dynamic_screen;
+  if (screen == Screen::kStaticFailure && static_utilisation > screen_above) {
     std::ostringstream why;
-    why << "not run: the static check fails by more than " << std::lround((kDynamicScreen - 1) * 100)
-        << " % (utilisation " << static_utilisation << "), whatever the runs find";
+    why << "not run: the static check fails by more than design.dynamic_screen = " << screen_above
+        << " (utilisation " << static_utilisation << "), whatever the runs find";
     dynamics = DynamicCheckNotRun(d, why.str());
   } else {
     dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamics(d, std::nullopt, progress); });
