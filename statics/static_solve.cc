@@ -345,4 +345,16 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
   return out;
 }
 
+StaticResult StaticSeries::Solve(const Eigen::Matrix3Xd& loads) {
+  StaticResult r = last_ ? SolveStatic(model_, *last_, last_loads_, loads, nullptr, &workspace_)
+                         : SolveStatic(model_, start_, start_loads_, loads, tangent_, &workspace_);
+  if (r.converged) {
+    last_ = r.state;
+    last_loads_ = loads;
+  } else {
+    last_.reset();
+  }
+  return r;
+}
+
 }  // namespace tbridge

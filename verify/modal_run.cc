@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <sstream>
 
 #include "core/error.h"
@@ -65,7 +64,10 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
     f << state.bar_compression, state.string_tension;
     return f;
   };
-  const StaticResult at_rest = SolveStatic(statics, start, d.loads, model.loads);
+  // The standing loads, then each station from the last one's equilibrium (StaticSeries): its
+  // load differs by one station's step.
+  StaticSeries series(statics, start, d.loads);
+  const StaticResult at_rest = series.Solve(model.loads);
   converged = at_rest.converged;
   standing = at_rest.state;
   out.standing_forces = forces(standing);
@@ -73,24 +75,10 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   out.duration_s = duration_s;
   const double span = d.config.bridge.span;
   Eigen::Matrix3Xd loads = model.loads;
-  // Each station is solved from the last one's equilibrium (the first from the standing one):
-  // its load differs by one station's step, and Newton takes a third of the steps it takes
-  // from the reference state (as the static check's stations, verify/static_check.h).
-  std::optional<StaticState> last;
-  Eigen::Matrix3Xd last_loads = model.loads;
-  StaticWorkspace workspace;  // the stations' solves': one analysis, the pivots kept
-  if (at_rest.converged) last = at_rest.state;
   for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
     const std::vector<int>& nodes = d.actions.station_nodes[k];
     d.actions.AddStationLoad(k, force_n, loads);
-    const StaticResult r = last ? SolveStatic(statics, *last, last_loads, loads, nullptr, &workspace)
-                                : SolveStatic(statics, start, d.loads, loads, nullptr, &workspace);
-    if (r.converged) {
-      last = r.state;
-      last_loads = loads;
-    } else {
-      last.reset();
-    }
+    const StaticResult r = series.Solve(loads);
     Eigen::Matrix3Xd alone(3, static_cast<Eigen::Index>(nodes.size()));
     for (size_t a = 0; a < nodes.size(); ++a) {
       alone.col(static_cast<Eigen::Index>(a)) = loads.col(nodes[a]) - model.loads.col(nodes[a]);

@@ -53,8 +53,8 @@ struct StationResponses {
 
 // The static responses of `force_n` crossing the deck of `d` in `duration_s` (stations in
 // the order the deck is crossed), on the standing loads of `model`, solved nonlinearly by
-// `statics`, each from the last station's equilibrium (the first from the standing one), one
-// station at a time (O(n_n) memory for the loads whatever the number of stations). `standing` gets the state at rest; `converged` is
+// `statics`, each from the last station's equilibrium (the first from the standing one;
+// StaticSeries, statics/static_solve.h), one station at a time (O(n_n) memory for the loads whatever the number of stations). `standing` gets the state at rest; `converged` is
 // false when a solve did not converge (its station then keeps the standing response).
 StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, const StaticModel& statics,
                                     double force_n, double duration_s, StaticState& standing, bool& converged);

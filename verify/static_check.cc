@@ -171,14 +171,11 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     solves += static_cast<int>(stations_of[c].size());
   }
 
-  StaticWorkspace workspace;  // every solve's: one analysis, the pivots kept
+  // Each station from the last one's equilibrium, each case's first from the reference state.
+  StaticSeries series(model, start, d.loads, tangent ? &*tangent : nullptr);
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
-    // The last station's equilibrium, where it converged: the next station's load differs from
-    // its load by one station's step, and Newton from there takes fewer steps than from the
-    // reference state (the default at n = 6: 10.4 per station from the reference state).
-    std::optional<StaticState> last_state;
-    Eigen::Matrix3Xd last_loads;
+    series.Restart();
     for (int station : stations_of[c]) {
       if (progress != nullptr) progress->Update(out.nonlinear_solves, solves);
       CaseResponse r;
@@ -186,16 +183,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
       r.station = station;
       r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), station});
       const Eigen::Matrix3Xd loads = d.actions.Loads(lc, station);
-      const StaticResult result = last_state
-                                      ? SolveStatic(model, *last_state, last_loads, loads, nullptr, &workspace)
-                                      : SolveStatic(model, start, d.loads, loads, tangent ? &*tangent : nullptr, &workspace);
+      const StaticResult result = series.Solve(loads);
       ++out.nonlinear_solves;
-      if (result.converged && station >= 0) {
-        last_state = result.state;
-        last_loads = loads;
-      } else {
-        last_state.reset();
-      }
       r.converged = result.converged;
       r.message = result.message;
       r.slack_strings = result.slack_strings;
