@@ -131,15 +131,25 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
   out.row_multiplier.setZero(m);
   out.bound_multiplier.setZero(n);
 
-  const Eigen::LLT<Eigen::MatrixXd> llt(qp.G);
-  if (llt.info() != Eigen::Success) return;
-  J_.setIdentity();
-  llt.matrixU().solveInPlace(J_);  // J = L^-T
+  Eigen::VectorXd& p = out.p;
+  if (qp.G.isDiagonal(0.0)) {
+    // The sequential QP's G is diagonal: L = sqrt(G), and J = L^-T is its inverse, where the
+    // dense Cholesky factor and its inverse cost n^3 / 3 + n^3 / 2 per solve (n = 7: 0.3 s
+    // of the verified design's sizing).
+    if (!(qp.G.diagonal().array() > 0).all()) return;
+    J_.setZero();
+    J_.diagonal() = qp.G.diagonal().cwiseSqrt().cwiseInverse();
+    p = -qp.a.cwiseQuotient(qp.G.diagonal());
+  } else {
+    const Eigen::LLT<Eigen::MatrixXd> llt(qp.G);
+    if (llt.info() != Eigen::Success) return;
+    J_.setIdentity();
+    llt.matrixU().solveInPlace(J_);  // J = L^-T
+    p = -llt.solve(qp.a);
+  }
   R_.setZero();
   q_ = 0;
   active_.clear();
-  Eigen::VectorXd& p = out.p;
-  p = -llt.solve(qp.a);
 
   const int total = m + 2 * n;
   const int max_steps = 10 * total + 10;

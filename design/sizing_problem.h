@@ -115,6 +115,10 @@ class SizingProblem final : public NlpProblem {
     int row = -1;
   };
   std::vector<MemberDemand> Demands(const Eigen::VectorXd& x) const;
+  // Each row's margin, where Constraints gives it as posed: a strength row's 1 - kappa F / R(A)
+  // (its utilisation's complement) where it is posed as (R(A) - kappa F) / R_ref; the other
+  // rows as posed. Both hold (>= 0) together.
+  void Margins(const Eigen::VectorXd& x, Eigen::VectorXd& margin) const;
   // The largest vertical deck deflection over the serviceability combinations [m], as the
   // linear analysis gives it (without kappa_d).
   double LargestDeflection(const Eigen::VectorXd& x) const;

@@ -221,12 +221,14 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
   full.ConstraintBounds(lo, hi);
   SolverOutcome outcome;
   for (int round = 0; round < 16; ++round) {
-    full.Constraints(x, g);
+    full.Margins(x, g);
     bool added = false, violated = false, wandered = false;
     const std::vector<char> near = NearLimits(full, g);
     std::vector<int> unposed_violations;
     for (int r = 0; r < rows; ++r) {
-      const bool bad = !(g[r] >= lo[r] - 1e-9);
+      // Violated beyond the solver's own tolerance on a row: within it the solver counts a
+      // posed row as met, so posing such a row starts a round that changes nothing.
+      const bool bad = !(g[r] >= lo[r] - options.tolerance);
       violated = violated || bad;
       // A row left out that now reads over twice its limit: a member far from its limits at
       // the start shrank to its floor (the 3D bridge's bars). From there its row, 1 - F/R(A)
@@ -439,8 +441,8 @@ struct FirstSizes {
 MassAttribution Attribution(const Design& current, const SizingCorrections& corrections, const SizingProblem& full,
                             const Eigen::VectorXd& x, const StaticCheck& statics, const DynamicCheck& dynamics,
                             const FirstSizes& first) {
-  Eigen::VectorXd g(full.num_constraints()), lo, hi;
-  full.Constraints(x, g);
+  Eigen::VectorXd g, lo, hi;
+  full.Margins(x, g);
   full.ConstraintBounds(lo, hi);
   std::vector<char> active(static_cast<size_t>(g.size()), 0);
   for (Eigen::Index r = 0; r < g.size(); ++r) active[r] = g[r] <= lo[r] + 1e-4;

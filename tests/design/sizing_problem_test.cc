@@ -1,5 +1,5 @@
-// The verified sizing problem: its gradients against central differences, its combinations
-// against the load cases, and its mirror-image groups.
+// The verified sizing problem: its gradients against central differences, its rows against
+// their margins, its combinations against the load cases, and its mirror-image groups.
 
 #include "design/sizing_problem.h"
 
@@ -157,6 +157,51 @@ TEST_CASE("the sizing's mirror images share an area, and its stations are the lo
   size_t expected = 0;
   for (const LoadCase& c : d.cases) expected += c.station_load != 0 ? d.actions.station_nodes.size() : 1;
   CHECK(problem.combinations().size() == expected);
+}
+
+TEST_CASE("the sizing poses no constant row and its strength rows hold where their margins do", "[design]") {
+  for (const int planes : {1, 2}) {
+    Config config = planes == 1 ? Config{} : ThreeD(1);
+    config.bridge.n = planes == 1 ? 6 : 1;  // n = 6: a string that no self-stress reaches
+    const Design d = RunDesign(config);
+    SizingCorrections corrections;
+    corrections.demand_factor.assign(d.bars.size() + d.strings.size(), 1.3);
+    const SizingProblem problem(d, corrections);
+    const int n = problem.num_variables(), m = problem.num_constraints();
+    const Eigen::VectorXd x0 = problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
+    std::vector<double> values(problem.JacobianPattern().size());
+    problem.JacobianValues(x0, values.data());
+    // A row that no variable moves is a fact of the model, not a constraint: violated, no
+    // sizing mends it. Each row reads its own member's area, its stiffness or a self-stress.
+    for (int r = 0; r < m; ++r) {
+      double largest = 0;
+      for (int v = 0; v < n; ++v) largest = std::max(largest, std::abs(values[static_cast<size_t>(r) * n + v]));
+      const SizingRow& row = problem.rows()[r];
+      INFO("planes " << planes << ", row " << r << " (" << SizingRowKindName(row.kind) << ") of member or node "
+                     << row.member << (row.combination >= 0 ? " in " + problem.combinations()[row.combination].label : ""));
+      CHECK(largest > 0);
+    }
+    // The posed rows and the margins: the same sign on every row, at the start and with the
+    // areas scaled by 0.25 to 4, where the two forms differ most.
+    const int groups = *std::max_element(problem.group_of().begin(), problem.group_of().end()) + 1;
+    int negative = 0, positive = 0;
+    for (const double scale : {0.25, 0.5, 1.0, 2.0, 4.0}) {
+      Eigen::VectorXd x = x0;
+      x.head(groups) *= scale;  // the areas; the prestress as it was
+      Eigen::VectorXd posed(m), margin;
+      problem.Constraints(x, posed);
+      problem.Margins(x, margin);
+      if (!posed.allFinite()) continue;  // an unstable point: both NaN
+      for (int r = 0; r < m; ++r) {
+        INFO("scale " << scale << ", row " << r);
+        CHECK((posed[r] >= 0) == (margin[r] >= 0));
+        (margin[r] < 0 ? negative : positive)++;
+      }
+    }
+    // Both signs occur, so the agreement is not of rows that all hold.
+    CHECK(negative > 0);
+    CHECK(positive > 0);
+  }
 }
 
 }  // namespace
