@@ -47,6 +47,20 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
 
 namespace {
 
+// The outer iterations' tolerance on the mass (relative): a tenth of the 0.5 % by which a
+// lighter member group must fail the checks (tests/verify/verified_mass_test.cc).
+constexpr double kSettled = 5e-4;
+
+// The sizing solver's tolerance on the mass and the step (relative), and on the rows: five
+// hundred times finer than kSettled, as the point each sizing ends at steers the corrections
+// that follow, and a row's 1e-6 is within its 1e-4 margin. 1e-8 took three times the
+// evaluations at n = 5 (SLSQP: 1 375 against 472) and moved no verdict.
+constexpr double kSizingTolerance = 1e-6;
+// The second start's: it only asks whether another optimum is lighter by more than kSettled,
+// and a tenth of that tells; no correction follows it. At n = 7 its last 30 of 140
+// evaluations took the mass down by 1e-4 in all.
+constexpr double kSecondStartTolerance = kSettled / 10;
+
 // `f()`, its wall time added to `seconds`.
 template <class F>
 auto Timed(double& seconds, F&& f) {
@@ -273,18 +287,15 @@ Verdict SizingVerdict(const Design& d) {
 
 // One sizing from `x` (its start, then its solution) and the design it gives, with the
 // solver's outcome in its `solver` field; RunChecks then checks it. `posed`: as SolveSizing's
-// `keep`.
+// `keep`; `tolerance`: the solver's, on the mass and the step (relative) and on the rows.
 Design Size(const Config& config, const Design& current, const SizingCorrections& corrections,
             const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x, Resizing::Times& time_s,
-            ProgressReporter* progress, std::vector<char>& posed) {
+            ProgressReporter* progress, std::vector<char>& posed, double tolerance) {
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
   x = x.cwiseMax(lo);
   SolverOptions options;
-  // 1e-6 on the mass and the step (relative), and on the rows: five hundred times finer than
-  // the outer iterations' 5e-4, and a row's 1e-6 is within its 1e-4 margin. 1e-8 took three
-  // times the evaluations at n = 5 (SLSQP: 1 375 against 472) and moved no verdict.
-  options.tolerance = 1e-6;
+  options.tolerance = tolerance;
   options.max_iterations = config.design.max_iterations;
   if (progress != nullptr) {
     progress->Stage("optimisation");
@@ -336,9 +347,6 @@ std::string Repair(const Config& config, const SizingProblem& problem, Design& d
   return os.str();
 }
 
-// The outer iterations' tolerance on the mass (relative): a tenth of the 0.5 % by which a
-// lighter member group must fail the checks (tests/verify/verified_mass_test.cc).
-constexpr double kSettled = 5e-4;
 
 // The step of a correction by `ratio` (what a check found over what the linear analysis
 // said): the whole ratio where the check found more; where it found less, only once the
@@ -465,7 +473,8 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
   std::vector<double> doubled = first.areas;
   for (double& a : doubled) a *= 2;
   Eigen::VectorXd x = problem.VariablesOf(doubled, first.alpha);
-  Design other = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
+  Design other =
+      Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed, kSecondStartTolerance);
   const double mass = other.mass.structure, kept = best.mass.structure;
   record.second_start_kg = mass;
   std::ostringstream os;
@@ -560,7 +569,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                                std::to_string(max_iterations) + "): ");
     }
     std::vector<char> posed;
-    Design d = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed);
+    Design d = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed, kSizingTolerance);
     RunChecks(d, record.time_s, progress, Screen::kStaticFailure);
     // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended one.
     Verdict verdict = SizingVerdict(d);
