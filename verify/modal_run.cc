@@ -1,10 +1,12 @@
 #include "verify/modal_run.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/two_lanes.h"
 #include "design/static_model.h"
 #include "dynamics/modal.h"
 
@@ -65,9 +67,32 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
     return f;
   };
   // The standing loads, then each station from the last one's equilibrium (StaticSeries): its
-  // load differs by one station's step.
-  StaticSeries series(statics, start, d.loads);
-  const StaticResult at_rest = series.Solve(model.loads);
+  // load differs by one station's step. In two lanes (core/two_lanes.h): the standing loads
+  // and the first half of the stations, and the second half from the reference state.
+  const int stations = static_cast<int>(d.actions.station_nodes.size());
+  const int half = (stations + 1) / 2;
+  StaticResult at_rest;
+  std::vector<StaticResult> at(static_cast<size_t>(stations));
+  std::atomic<bool> stop{false};
+  const auto run_lane = [&](int first, int last, bool standing_first) {
+    StaticSeries series(statics, start, d.loads);
+    if (standing_first) at_rest = series.Solve(model.loads);
+    Eigen::Matrix3Xd loads = model.loads;
+    for (int k = first; k < last && !stop; ++k) {
+      d.actions.AddStationLoad(k, force_n, loads);
+      at[k] = series.Solve(loads);
+      for (const int node : d.actions.station_nodes[k]) loads.col(node) = model.loads.col(node);
+    }
+  };
+  InTwoLanes([&] { run_lane(half, stations, false); },
+             [&] {
+               try {
+                 run_lane(0, half, true);
+               } catch (...) {
+                 stop = true;
+                 throw;
+               }
+             });
   converged = at_rest.converged;
   standing = at_rest.state;
   out.standing_forces = forces(standing);
@@ -75,15 +100,15 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   out.duration_s = duration_s;
   const double span = d.config.bridge.span;
   Eigen::Matrix3Xd loads = model.loads;
-  for (int k = 0; k < static_cast<int>(d.actions.station_nodes.size()); ++k) {
+  for (int k = 0; k < stations; ++k) {
     const std::vector<int>& nodes = d.actions.station_nodes[k];
     d.actions.AddStationLoad(k, force_n, loads);
-    const StaticResult r = series.Solve(loads);
     Eigen::Matrix3Xd alone(3, static_cast<Eigen::Index>(nodes.size()));
     for (size_t a = 0; a < nodes.size(); ++a) {
       alone.col(static_cast<Eigen::Index>(a)) = loads.col(nodes[a]) - model.loads.col(nodes[a]);
       loads.col(nodes[a]) = model.loads.col(nodes[a]);
     }
+    const StaticResult& r = at[k];
     converged = converged && r.converged;
     out.forces.push_back(r.converged ? forces(r.state) : out.standing_forces);
     out.deck_y.push_back(r.converged ? deck_y(r.state) : out.standing_deck_y);

@@ -1,11 +1,13 @@
 #include "verify/static_check.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "core/error.h"
+#include "core/two_lanes.h"
 #include "design/case_envelope.h"
 #include "design/static_model.h"
 
@@ -171,67 +173,113 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     solves += static_cast<int>(stations_of[c].size());
   }
 
-  // Each station from the last one's equilibrium, each case's first from the reference state.
-  StaticSeries series(model, start, d.loads, tangent ? &*tangent : nullptr);
+  // The solves in their order (case by case, station by station), in two lanes: each case's
+  // stations split in halves, each half a series from the reference state and then from the
+  // last station's equilibrium; a case without stations goes to the lane with less work.
+  // The lanes are fixed by the design alone, so the results do not depend on the machine.
+  struct Job {
+    int c = 0, station = -1, lane = 0;
+    bool restart = true;  // the first of its series
+  };
+  std::vector<Job> jobs;
+  int lane_solves[2] = {0, 0};
   for (size_t c = 0; c < d.cases.size(); ++c) {
-    const LoadCase& lc = d.cases[c];
-    series.Restart();
-    for (int station : stations_of[c]) {
-      if (progress != nullptr) progress->Update(out.nonlinear_solves, solves);
-      CaseResponse r;
-      r.case_index = static_cast<int>(c);
-      r.station = station;
-      r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), station});
-      const Eigen::Matrix3Xd loads = d.actions.Loads(lc, station);
-      const StaticResult result = series.Solve(loads);
-      ++out.nonlinear_solves;
-      r.converged = result.converged;
-      r.message = result.message;
-      r.slack_strings = result.slack_strings;
-      r.reactions = result.state.reactions;
-      const Eigen::Vector3d total = loads.rowwise().sum();
-      r.balance = (r.reactions.rowwise().sum() + total).norm() / std::max(loads.cwiseAbs().sum(), 1e-300);
-      for (int v : d.topology.deck_nodes) {
-        const double dy = std::abs(result.state.nodes(1, v) - s.nodes(1, v));
-        if (dy > r.deflection_m) r.deflection_m = dy, r.deflection_node = v;
-      }
-      out.all_converged = out.all_converged && r.converged;
-      if (r.converged) {
-        for (int j = 0; j < nb + static_cast<int>(d.strings.size()); ++j) {
-          const double force = j < nb ? result.state.bar_compression[j] : result.state.string_tension[j - nb];
-          out.force_min[j] = std::min(out.force_min[j], force);
-          if (lc.state == LimitState::kUltimate) out.force_max[j] = std::max(out.force_max[j], force);
-        }
-      }
-      if (r.converged && lc.state == LimitState::kUltimate) {
-        for (int b = 0; b < nb; ++b) {
-          const MemberSizing& m = d.bars[b];
-          const double force = result.state.bar_compression[b];
-          const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-          RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, "yield");
-          if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, "buckling");
-        }
-        for (size_t k = 0; k < d.strings.size(); ++k) {
-          const MemberSizing& m = d.strings[k];
-          if (m.area > 0) RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w, r.label, "yield");
-        }
-      }
-      if (r.converged && lc.state == LimitState::kServiceability) {
-        for (size_t k = 0; k < d.strings.size(); ++k) {
-          const Member& e = s.strings[k];
-          const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
-          const MemberSizing& m = d.strings[k];
-          if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
-          RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w,
-                            strings.youngs_modulus, r.label);
-        }
-        if (r.deflection_m > out.deflection_max_m) {
-          out.deflection_max_m = r.deflection_m;
-          out.deflection_case = r.label;
-        }
-      }
-      out.cases.push_back(std::move(r));
+    const std::vector<int>& st = stations_of[c];
+    const size_t half = st.size() > 1 ? (st.size() + 1) / 2 : st.size();
+    const int single_lane = lane_solves[1] < lane_solves[0] ? 1 : 0;
+    for (size_t i = 0; i < st.size(); ++i) {
+      const int lane = st.size() > 1 ? (i < half ? 0 : 1) : single_lane;
+      jobs.push_back({static_cast<int>(c), st[i], lane, i == 0 || i == half});
+      ++lane_solves[lane];
     }
+  }
+  struct Solved {
+    StaticResult result;
+    Eigen::Vector3d load_total = Eigen::Vector3d::Zero();
+    double load_abs_sum = 0;
+  };
+  std::vector<Solved> solved(jobs.size());
+  std::atomic<int> done{0};
+  std::atomic<bool> stop{false};
+  const auto run_lane = [&](int lane) {
+    StaticSeries series(model, start, d.loads, lane == 0 && tangent ? &*tangent : nullptr);
+    for (size_t i = 0; i < jobs.size() && !stop; ++i) {
+      const Job& job = jobs[i];
+      if (job.lane != lane) continue;
+      // Only this thread's lane reports (the reporter's cancel hook runs in its owner's thread).
+      if (lane == 0 && progress != nullptr) progress->Update(done.load(), solves);
+      if (job.restart) series.Restart();
+      const Eigen::Matrix3Xd loads = d.actions.Loads(d.cases[job.c], job.station);
+      solved[i].result = series.Solve(loads);
+      solved[i].load_total = loads.rowwise().sum();
+      solved[i].load_abs_sum = loads.cwiseAbs().sum();
+      ++done;
+    }
+  };
+  InTwoLanes([&] { run_lane(1); },
+             [&] {
+               try {
+                 run_lane(0);
+               } catch (...) {
+                 stop = true;  // the other lane ends at its next solve
+                 throw;
+               }
+             });
+
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const int c = jobs[i].c, station = jobs[i].station;
+    const LoadCase& lc = d.cases[c];
+    const StaticResult& result = solved[i].result;
+    CaseResponse r;
+    r.case_index = c;
+    r.station = station;
+    r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, c, station});
+    ++out.nonlinear_solves;
+    r.converged = result.converged;
+    r.message = result.message;
+    r.slack_strings = result.slack_strings;
+    r.reactions = result.state.reactions;
+    r.balance = (r.reactions.rowwise().sum() + solved[i].load_total).norm() / std::max(solved[i].load_abs_sum, 1e-300);
+    for (int v : d.topology.deck_nodes) {
+      const double dy = std::abs(result.state.nodes(1, v) - s.nodes(1, v));
+      if (dy > r.deflection_m) r.deflection_m = dy, r.deflection_node = v;
+    }
+    out.all_converged = out.all_converged && r.converged;
+    if (r.converged) {
+      for (int j = 0; j < nb + static_cast<int>(d.strings.size()); ++j) {
+        const double force = j < nb ? result.state.bar_compression[j] : result.state.string_tension[j - nb];
+        out.force_min[j] = std::min(out.force_min[j], force);
+        if (lc.state == LimitState::kUltimate) out.force_max[j] = std::max(out.force_max[j], force);
+      }
+    }
+    if (r.converged && lc.state == LimitState::kUltimate) {
+      for (int b = 0; b < nb; ++b) {
+        const MemberSizing& m = d.bars[b];
+        const double force = result.state.bar_compression[b];
+        const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
+        RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, "yield");
+        if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, "buckling");
+      }
+      for (size_t k = 0; k < d.strings.size(); ++k) {
+        const MemberSizing& m = d.strings[k];
+        if (m.area > 0) RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w, r.label, "yield");
+      }
+    }
+    if (r.converged && lc.state == LimitState::kServiceability) {
+      for (size_t k = 0; k < d.strings.size(); ++k) {
+        const Member& e = s.strings[k];
+        const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
+        const MemberSizing& m = d.strings[k];
+        if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
+        RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w,
+                          strings.youngs_modulus, r.label);
+      }
+      if (r.deflection_m > out.deflection_max_m) {
+        out.deflection_max_m = r.deflection_m;
+        out.deflection_case = r.label;
+      }
+    }
+    out.cases.push_back(std::move(r));
   }
   for (double& f : out.force_min) {
     if (std::isinf(f)) f = 0;  // no case converged
