@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 
 #include "core/error.h"
+#include "core/two_lanes.h"
 #include "design/case_envelope.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
@@ -354,20 +355,37 @@ struct SizingProblem::Impl {
   // the adjoints for every area, as a self-stress needs, took half the Jacobian's time at n = 6.
   void Jacobian() const {
     const int nv = num_variables(), nr = static_cast<int>(rows.size());
-    const int n_members = static_cast<int>(adjoint_members.size());
     const Eigen::MatrixXd adjoint = st.lin->Adjoint(adjoint_members, adjoint_nodes);
     const Eigen::MatrixXd stretch = st.lin->StringStretches(st.u);
     const Eigen::MatrixXd adjoint_stretch = st.lin->StringStretches(adjoint);  // strings x functionals
     st.jac.resize(nr, nv);
-    // Each row's derivative is linear in what moves it (Derivative): its coefficients, once.
-    struct Coefficients {
-      double force, vertical, reference, area;
-    };
     std::vector<Coefficients> k(nr);
     for (int r = 0; r < nr; ++r) {
       k[r] = {Derivative(r, 1, 0, 0, 0), Derivative(r, 0, 1, 0, 0), Derivative(r, 0, 0, 1, 0), Derivative(r, 0, 0, 0, 1)};
     }
-    for (int v = 0; v < groups; ++v) {
+    // The columns in two lanes (core/two_lanes.h), each column written by one of them: the
+    // first half of the variables and the second (half of each kind in each lane took longer
+    // at n = 7: 4.5 s of sizing against 4.2 s).
+    const auto columns = [&](int v_first, int v_last) {
+      AreaColumns(v_first, std::min(v_last, groups), k, adjoint_stretch, stretch);
+      StateColumns(std::max(v_first, groups), v_last, k, adjoint, stretch);
+    };
+    const int half = (nv + 1) / 2;
+    InTwoLanes([&] { columns(half, nv); }, [&] { columns(0, half); });
+    st.have_jac = true;
+  }
+
+  // Each row's derivative is linear in what moves it (Derivative): its coefficients.
+  struct Coefficients {
+    double force, vertical, reference, area;
+  };
+
+  // The Jacobian's columns of the areas v_first .. v_last - 1.
+  void AreaColumns(int v_first, int v_last, const std::vector<Coefficients>& k, const Eigen::MatrixXd& adjoint_stretch,
+                   const Eigen::MatrixXd& stretch) const {
+    const int nr = static_cast<int>(rows.size());
+    const int n_members = static_cast<int>(adjoint_members.size());
+    for (int v = v_first; v < v_last; ++v) {
       std::vector<std::pair<int, double>> strings;  // (string, dk/dx_v [N/m])
       for (int j : members_of[v]) {
         if (j >= nb) strings.emplace_back(j - nb, E * area_scale[v] / length[j]);
@@ -393,8 +411,15 @@ struct SizingProblem::Impl {
         st.jac(r, v) = k[r].force * d_force + k[r].vertical * d_vertical + k[r].area * d_area;
       }
     }
+  }
+
+  // The Jacobian's columns of the self-stresses v_first .. v_last - 1 (numbered after the areas).
+  void StateColumns(int v_first, int v_last, const std::vector<Coefficients>& k, const Eigen::MatrixXd& adjoint,
+                    const Eigen::MatrixXd& stretch) const {
+    const int nr = static_cast<int>(rows.size());
+    const int n_members = static_cast<int>(adjoint_members.size());
     std::vector<int> touched;
-    for (int v = groups; v < nv; ++v) {
+    for (int v = v_first; v < v_last; ++v) {
       LinearResponse::Direction dp;
       dp.forces = N.col(v - groups) * force_scale;
       dp.stiffness = Eigen::VectorXd(ns);
@@ -435,7 +460,6 @@ struct SizingProblem::Impl {
         st.jac(r, v) = k[r].force * d_force + k[r].vertical * d_vertical + k[r].reference * d_reference;
       }
     }
-    st.have_jac = true;
   }
 };
 

@@ -559,6 +559,13 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   record.structure_mass_kg.push_back(current.mass.structure);
   SizingCorrections corrections;
   std::optional<Design> best;  // the lightest design that passed
+  // The sizing it came from: its linear model and solution, for what drives its mass.
+  struct BestSizing {
+    Design current;
+    SizingCorrections corrections;
+    Eigen::VectorXd x;
+  };
+  std::optional<BestSizing> best_sizing;
   std::optional<double> last_passing_kg;  // the structure's mass of the last design that passed
   for (record.iterations = 1;; ++record.iterations) {
     // The sizing about the current design's weight, from the current sizes and prestress.
@@ -591,13 +598,19 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                          std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
     if (verdict.pass) last_passing_kg = d.mass.structure;
     if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) {
-      d.attribution = Attribution(current, corrections, problem, x, statics, dynamics, first_sizes);
       best = d;
+      best_sizing = BestSizing{current, corrections, x};
     }
     const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
                       verdict.outcome == VerdictOutcome::kIncomplete;
     if (settled || last) {
-      if (best) SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record, progress, posed);
+      if (best) {
+        // What drives the mass, of the design kept only (a problem built again for it).
+        const SizingProblem best_problem(best_sizing->current, best_sizing->corrections);
+        best->attribution = Attribution(best_sizing->current, best_sizing->corrections, best_problem, best_sizing->x,
+                                        best->statics, best->dynamics, first_sizes);
+        SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record, progress, posed);
+      }
       Design out = best ? *best : d;
       record.converged = settled;
       if (!settled) {
