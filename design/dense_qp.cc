@@ -1,6 +1,7 @@
 #include "design/dense_qp.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Jacobi>
 #include <cmath>
 #include <limits>
 
@@ -11,13 +12,11 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The rotation that takes (a, b) to (hypot(a, b), 0), applied to columns i and j of M as
-// M <- M Q^T, so that M^T v becomes Q M^T v for any v.
+// M <- M Q^T, so that M^T v becomes Q M^T v for any v. Eigen's plane rotation is vectorised
+// (a third of the subproblem's time at n = 8 was these rotations).
 void RotateColumns(Eigen::MatrixXd& M, int i, int j, double c, double s) {
-  for (Eigen::Index k = 0; k < M.rows(); ++k) {
-    const double a = M(k, i), b = M(k, j);
-    M(k, i) = c * a + s * b;
-    M(k, j) = -s * a + c * b;
-  }
+  // applyOnTheRight(i, j, G) sets col_i = c' col_i - s' col_j, col_j = s' col_i + c' col_j.
+  M.applyOnTheRight(i, j, Eigen::JacobiRotation<double>(c, -s));
 }
 
 }  // namespace
@@ -167,13 +166,20 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
       break;
     }
     Normal(qp, kp, np_);
+    // A bound's normal is +-e_j: J^T n is J's row j, O(n) where a row's product is O(n^2).
+    const int bound_var = kp < m ? -1 : kp < m + n ? kp - m : kp - m - n;
+    const double bound_sign = kp < m + n ? 1.0 : -1.0;
     u_[q_] = 0.0;
     // Move along the primal and dual directions until kp holds (then it joins the active
     // set) or an active constraint's multiplier reaches zero (then it leaves).
     for (;;) {
       ++out.steps;
       if (out.steps > max_steps) break;
-      d_.noalias() = J_.transpose() * np_;
+      if (bound_var >= 0) {
+        d_ = bound_sign * J_.row(bound_var).transpose();
+      } else {
+        d_.noalias() = J_.transpose() * np_;
+      }
       z_.noalias() = J_.rightCols(n - q_) * d_.tail(n - q_);
       if (q_ > 0) {
         r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d_.head(q_));
