@@ -45,6 +45,8 @@ struct SolverOutcome {
   int iterations = 0;
   bool success = false;
   double objective = 0;  // f at the returned x
+  // The rows' multipliers at the returned x (the SQP's last subproblem's; empty for the others).
+  Eigen::VectorXd multipliers;
 };
 
 struct SolverOptions {
@@ -54,6 +56,8 @@ struct SolverOptions {
   // Called with the evaluations so far at each iteration of the solvers that take it (the
   // SQP): a long solve reports progress, and its caller's cancel hook may throw to stop it.
   std::function<void(int)> each_iteration;
+  // The rows' multipliers at the start, one per row (the SQP; empty: it estimates them).
+  Eigen::VectorXd start_multipliers;
 };
 
 // Adapters: each is the only file that includes its solver's headers, and each is its own

@@ -193,7 +193,10 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
 
   // The last subproblem's multipliers weigh the rows' curvature; a diagonal secant estimate
   // serves where it is larger (and alone for the variables without a positive lower bound).
-  Eigen::VectorXd lambda = StartMultipliers(cur, g_lo, lo), secant = Eigen::VectorXd::Zero(n);
+  // The caller's, where it has them (a solve of more rows from the last one's optimum).
+  Eigen::VectorXd lambda = options.start_multipliers.size() == m ? options.start_multipliers
+                                                                 : StartMultipliers(cur, g_lo, lo);
+  Eigen::VectorXd secant = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd old_grad_l(n), new_grad_l(n);
   // Move limits, one per variable (MMA's asymptotes adapt so, Svanberg 1987): a positive variable
   // within x / (1 + r) .. x (1 + r), another within +-r max(1, |x|). A variable whose step
@@ -352,6 +355,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
     }
   }
   x = cur.x;
+  out.multipliers = lambda;
   out.iterations = eval.evaluations;
   out.objective = cur.f;
   if (out.message.empty()) out.message = out.success ? "optimal" : "SQP stopped with " + out.status;

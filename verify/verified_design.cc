@@ -234,6 +234,7 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
   Eigen::VectorXd g(rows), lo, hi;
   full.ConstraintBounds(lo, hi);
   SolverOutcome outcome;
+  Eigen::VectorXd lambda;  // the last round's multipliers, per row of the whole problem
   for (int round = 0; round < 16; ++round) {
     full.Margins(x, g);
     bool added = false, violated = false, wandered = false;
@@ -261,7 +262,23 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     if (round > 0 && (!violated || !added)) break;
     if (wandered) x = start;
     const SizingProblem posed(current, corrections, &keep);
-    outcome = SolveNlp(solver, posed, options, x);
+    // From the last round's optimum, with its multipliers (zero on the rows that join): the
+    // estimate the solver would start from otherwise, a least-squares fit over every row near
+    // its bound, was a fifth of the sizing's time at n = 8.
+    SolverOptions round_options = options;
+    std::vector<int> posed_rows;
+    for (int r = 0; r < rows; ++r) {
+      if (keep[r]) posed_rows.push_back(r);
+    }
+    if (round > 0 && !wandered && lambda.size() == rows) {
+      round_options.start_multipliers.resize(static_cast<Eigen::Index>(posed_rows.size()));
+      for (size_t i = 0; i < posed_rows.size(); ++i) round_options.start_multipliers[i] = lambda[posed_rows[i]];
+    }
+    outcome = SolveNlp(solver, posed, round_options, x);
+    lambda = Eigen::VectorXd::Zero(rows);
+    if (outcome.multipliers.size() == static_cast<Eigen::Index>(posed_rows.size())) {
+      for (size_t i = 0; i < posed_rows.size(); ++i) lambda[posed_rows[i]] = outcome.multipliers[i];
+    }
     if (!outcome.success) {
       // The rows left out let the solver wander (the 3D bridge's bars, far from their limits
       // at the start, shrank to nothing and SLSQP ran out of evaluations): every row, from
