@@ -206,7 +206,12 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
   DenseQpSolver qp_solver;
   DenseQp qp, elastic;
   DenseQpSolution sol;
-  std::vector<int> warm;  // the last subproblem's active set
+  // The last subproblem's active set; at first the rows with a positive start multiplier
+  // (the dual method adds any violated constraint, so it only saves the scans).
+  std::vector<int> warm;
+  for (int r = 0; r < m; ++r) {
+    if (lambda[r] > 0) warm.push_back(r);
+  }
   qp.G.setZero(n, n);
   qp.C.resize(m, n);
   qp.lo.resize(n);
