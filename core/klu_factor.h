@@ -1,10 +1,10 @@
 // A sparse LU on a fixed pattern by SuiteSparse's KLU: the pattern is analysed once, the first
 // factorisation chooses the pivots and the later ones reuse them (klu_refactor, about a third
 // of the cost) unless the pivot ratio drops below 1e-12 and below a thousandth of what fresh
-// pivots gave, when the pivots are chosen afresh. Made for the small, very sparse matrices that are factorised many times
-// (the static solve's Newton matrix, SDIRK3's): on them Eigen's supernodal SparseLU costs more
-// (the sweep benchmark's 24 n = 8 SDIRK3 runs: 10.9 s with KLU against 17.4 s; the static
-// check of the default at n = 6: BENCHMARKS.md).
+// pivots gave, when the pivots are chosen afresh. Made for the small, very sparse matrices that
+// are factorised many times (the static solve's Newton matrix, SDIRK3's): on them Eigen's
+// supernodal SparseLU costs more (the sweep benchmark's 24 n = 8 SDIRK3 runs: 10.9 s with KLU
+// against 17.4 s; the static check of the default at n = 6: BENCHMARKS.md).
 #pragma once
 
 #include <Eigen/Core>

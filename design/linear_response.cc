@@ -104,11 +104,6 @@ Eigen::MatrixXd LinearResponse::Solve(const Eigen::MatrixXd& free_loads) const {
   return rhs;
 }
 
-Eigen::RowVectorXd LinearResponse::Stretch(const Eigen::MatrixXd& u, int i, int j, const Eigen::Vector3d& e) const {
-  const Eigen::MatrixXd d = NodeRows(u, dof_[j], dim_) - NodeRows(u, dof_[i], dim_);
-  return e.head(dim_).transpose() * d;
-}
-
 Eigen::MatrixXd LinearResponse::ForceChanges(const Eigen::MatrixXd& u) const {
   Eigen::MatrixXd x(nb_ + ns_, u.cols());
   x.topRows(nb_) = -constraint_scale_ * u.bottomRows(nb_);
@@ -182,11 +177,7 @@ Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u, const 
 Eigen::MatrixXd LinearResponse::ForceChangeDerivative(const Eigen::MatrixXd& u, const Eigen::MatrixXd& du,
                                                       const Direction& dp) const {
   Eigen::MatrixXd dx = ForceChanges(du);
-  for (int k = 0; k < ns_; ++k) {
-    if (dp.stiffness[k] == 0) continue;
-    const Member& m = s_.strings[k];
-    dx.row(nb_ + k) += dp.stiffness[k] * Stretch(u, m.i, m.j, unit_[nb_ + k]);
-  }
+  dx.bottomRows(ns_) += dp.stiffness.asDiagonal() * StringStretches(u);
   return dx;
 }
 

@@ -79,8 +79,6 @@ class LinearResponse {
                                         const Direction& dp) const;
 
  private:
-  // e^T (u_j - u_i) of member (i, j) with unit vector e, for each solution column.
-  Eigen::RowVectorXd Stretch(const Eigen::MatrixXd& solutions, int i, int j, const Eigen::Vector3d& e) const;
   // Adds g (u_j - u_i) at j and its negative at i, per column: a member block's action.
   void AddBlockAction(const Eigen::Matrix3d& g, int i, int j, const Eigen::MatrixXd& solutions,
                       Eigen::MatrixXd& out) const;

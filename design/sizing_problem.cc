@@ -725,7 +725,7 @@ std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::Vec
   if (!p.st.lin) return out;
   for (size_t r = 0; r < p.rows.size(); ++r) {
     const SizingRow& row = p.rows[r];
-    if (row.kind != SizingRow::kStrength && row.kind != SizingRow::kBuckling && row.kind != SizingRow::kYield) continue;
+    if (!Impl::IsStrength(row)) continue;
     const int j = row.member;
     const double resistance = p.ResistanceOf(row).value;
     const double demand = p.corrections.demand_factor[j] * p.st.forces[row.combination][j];

@@ -53,9 +53,11 @@ struct StationResponses {
 
 // The static responses of `force_n` crossing the deck of `d` in `duration_s` (stations in
 // the order the deck is crossed), on the standing loads of `model`, solved nonlinearly by
-// `statics`, each from the last station's equilibrium (the first from the standing one;
-// StaticSeries, statics/static_solve.h), one station at a time (O(n_n) memory for the loads whatever the number of stations). `standing` gets the state at rest; `converged` is
-// false when a solve did not converge (its station then keeps the standing response).
+// `statics`, each from the last station's equilibrium (StaticSeries, statics/static_solve.h)
+// in two lanes: the first half of the stations after the standing loads, the second from the
+// reference state. One station's loads at a time per lane (O(n_n) memory for the loads
+// whatever the number of stations). `standing` gets the state at rest; `converged` is false
+// when a solve did not converge (its station then keeps the standing response).
 StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, const StaticModel& statics,
                                     double force_n, double duration_s, StaticState& standing, bool& converged);
 

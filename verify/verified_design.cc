@@ -364,7 +364,6 @@ std::string Repair(const Config& config, const SizingProblem& problem, Design& d
   return os.str();
 }
 
-
 // The step of a correction by `ratio` (what a check found over what the linear analysis
 // said): the whole ratio where the check found more; where it found less, only once the
 // design passes, so that a failing design is mended before anything is taken off (taking
