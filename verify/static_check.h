@@ -22,10 +22,11 @@ namespace tbridge {
 // state (statics/static_solve.h StaticTangent: one factorisation, a solve per station and one
 // per family), then nonlinearly where the linear pass comes within loads.station_margin of
 // the largest it found (of a member's utilisation, of the deflection) or of the limit 1
-// (core/config_fields.h says why the default margin holds). Each station's solve starts
-// from the last station's equilibrium (the reference state's for a case's first, or after one
-// that did not converge; StaticSeries, statics/static_solve.h), to the same equilibrium within
-// the solve's tolerance (forces balanced to 1e-10 of the largest;
+// (core/config_fields.h says why the default margin holds). The solves run in two lanes
+// (core/two_lanes.h), each case's stations split in halves; each station's solve starts from
+// the last station's equilibrium (the reference state's for a half's first, or after one that
+// did not converge; StaticSeries, statics/static_solve.h), to the same equilibrium within the
+// solve's tolerance (forces balanced to 1e-10 of the largest;
 // tests/verify/station_screen_test.cc). Changes nothing in `design`.
 // `progress` (optional) is told the nonlinear solves done against their number, as stage
 // "static check".
