@@ -1,6 +1,5 @@
 #include "design/dense_qp.h"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Jacobi>
 #include <cmath>
 #include <limits>
@@ -12,8 +11,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The rotation that takes (a, b) to (hypot(a, b), 0), applied to columns i and j of M as
-// M <- M Q^T, so that M^T v becomes Q M^T v for any v. Eigen's plane rotation is vectorised
-// (a third of the subproblem's time at n = 8 was these rotations).
+// M <- M Q^T, so that M^T v becomes Q M^T v for any v. Eigen's plane rotation is vectorised.
 void RotateColumns(Eigen::MatrixXd& M, int i, int j, double c, double s) {
   // applyOnTheRight(i, j, G) sets col_i = c' col_i - s' col_j, col_j = s' col_i + c' col_j.
   M.applyOnTheRight(i, j, Eigen::JacobiRotation<double>(c, -s));
@@ -25,27 +23,43 @@ void DenseQpSolver::Resize(int n, int m) {
   if (n == n_ && m == m_) return;
   n_ = n;
   m_ = m;
-  J_.resize(n, n);
+  Q1_.resize(n, n);
   R_.resize(n, n);
-  d_.resize(n);
+  inv_sqrt_.resize(n);
+  nt_.resize(n);
+  d1_.resize(n);
   z_.resize(n);
   r_.resize(n);
   u_.resize(n + 1);
-  np_.resize(n);
+  dp_.resize(n);
+  y0_.resize(n);
   Cp_.resize(m);
   active_.reserve(static_cast<size_t>(n));
 }
 
-void DenseQpSolver::Normal(const DenseQp& qp, int k, Eigen::VectorXd& np) const {
+void DenseQpSolver::TransformedNormal(const DenseQp& qp, int k) {
   if (k < m_) {
-    np = qp.C.row(k).transpose();
-    return;
-  }
-  np.setZero();
-  if (k < m_ + n_) {
-    np[k - m_] = 1.0;  // p_j >= lo_j
+    nt_ = qp.C.row(k).transpose();
   } else {
-    np[k - m_ - n_] = -1.0;  // -p_j >= -hi_j
+    nt_.setZero();
+    if (k < m_ + n_) {
+      nt_[k - m_] = 1.0;  // p_j >= lo_j
+    } else {
+      nt_[k - m_ - n_] = -1.0;  // -p_j >= -hi_j
+    }
+  }
+  if (diagonal_) {
+    nt_.array() *= inv_sqrt_.array();
+  } else {
+    llt_.matrixL().solveInPlace(nt_);
+  }
+}
+
+void DenseQpSolver::ToP(Eigen::VectorXd& v) const {
+  if (diagonal_) {
+    v.array() *= inv_sqrt_.array();
+  } else {
+    llt_.matrixU().solveInPlace(v);
   }
 }
 
@@ -61,20 +75,76 @@ double DenseQpSolver::Bound(const DenseQp& qp, int k) const {
   return qp.hi[k - m_ - n_];
 }
 
+double DenseQpSolver::Rhs(const DenseQp& qp, int k) const {
+  if (k < m_) return qp.b[k];
+  if (k < m_ + n_) return qp.lo[k - m_];
+  return -qp.hi[k - m_ - n_];
+}
+
+void DenseQpSolver::StartFrom(const DenseQp& qp, const std::vector<int>& warm, Eigen::VectorXd& p) {
+  const int total = m_ + 2 * n_;
+  for (const int k : warm) {
+    if (k < 0 || k >= total || is_active_[static_cast<size_t>(k)] || q_ >= n_) continue;
+    TransformedNormal(qp, k);
+    z_ = nt_;
+    if (q_ > 0) {
+      const auto Q = Q1_.leftCols(q_);
+      d1_.head(q_).noalias() = Q.transpose() * nt_;
+      z_.noalias() -= Q * d1_.head(q_);
+    }
+    // Nearly dependent normals would give the equality problem below wild multipliers: such a
+    // constraint is left to the scans, which add it where it is violated.
+    const double z_norm = z_.norm();
+    if (!(z_norm > 1e-8 * nt_.norm())) continue;
+    Add(z_norm, k);
+  }
+  // In y = L^T p the minimiser on the active normals N~ = Q1 R as equalities is
+  // y = y0 + Q1 (c - Q1^T y0), R^T c = b, with multipliers u = R^-1 (c - Q1^T y0), y0 the
+  // unconstrained minimiser. A negative multiplier: that constraint leaves, until none is.
+  y0_ = p;
+  if (diagonal_) {
+    y0_.array() /= inv_sqrt_.array();
+  } else {
+    y0_ = llt_.matrixU() * y0_;
+  }
+  while (q_ > 0) {
+    for (int k = 0; k < q_; ++k) r_[k] = Rhs(qp, active_[static_cast<size_t>(k)]);
+    const auto R = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>();
+    R.transpose().solveInPlace(r_.head(q_));  // c
+    d1_.head(q_).noalias() = Q1_.leftCols(q_).transpose() * y0_;
+    d1_.head(q_) = r_.head(q_) - d1_.head(q_);  // c - Q1^T y0
+    u_.head(q_) = R.solve(d1_.head(q_));
+    int worst = -1;
+    for (int k = 0; k < q_; ++k) {
+      if (u_[k] < 0 && (worst < 0 || u_[k] < u_[worst])) worst = k;
+    }
+    if (worst < 0) {
+      dp_.noalias() = Q1_.leftCols(q_) * d1_.head(q_);
+      ToP(dp_);
+      p += dp_;
+      return;
+    }
+    Drop(worst);
+  }
+}
+
 int DenseQpSolver::MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, double tolerance) {
   Cp_.noalias() = qp.C * p;
   int kp = -1;
   double worst = 0.0;
+  // An active constraint holds as an equality; rounding in p may read it a hair below its bound,
+  // and adding it again would drop it and add it back.
   for (int i = 0; i < m_; ++i) {
+    if (is_active_[static_cast<size_t>(i)]) continue;
     const double s = Cp_[i] - qp.b[i];
     if (s < -tolerance * (1 + std::abs(qp.b[i])) && s < worst) worst = s, kp = i;
   }
   for (int j = 0; j < n_; ++j) {
-    if (std::isfinite(qp.lo[j])) {
+    if (std::isfinite(qp.lo[j]) && !is_active_[static_cast<size_t>(m_ + j)]) {
       const double s = p[j] - qp.lo[j];
       if (s < -tolerance * (1 + std::abs(qp.lo[j])) && s < worst) worst = s, kp = m_ + j;
     }
-    if (std::isfinite(qp.hi[j])) {
+    if (std::isfinite(qp.hi[j]) && !is_active_[static_cast<size_t>(m_ + n_ + j)]) {
       const double s = qp.hi[j] - p[j];
       if (s < -tolerance * (1 + std::abs(qp.hi[j])) && s < worst) worst = s, kp = m_ + n_ + j;
     }
@@ -82,27 +152,32 @@ int DenseQpSolver::MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, dou
   return kp;
 }
 
-bool DenseQpSolver::Add() {
-  // Rotate d's tail into its entry q_, so that J's first q_ + 1 columns span the active normals.
-  for (int j = n_ - 1; j > q_; --j) {
-    if (d_[j] == 0.0) continue;
-    const double h = std::hypot(d_[j - 1], d_[j]);
-    const double c = d_[j - 1] / h, s = d_[j] / h;
-    d_[j - 1] = h;
-    d_[j] = 0.0;
-    RotateColumns(J_, j - 1, j, c, s);
+void DenseQpSolver::Add(double z_norm, int k) {
+  // z_ = nt - Q1 d1 is orthogonal to Q1 in exact arithmetic; a second pass takes what rounding
+  // left along Q1 (Gram-Schmidt twice is enough: Giraud et al., Numer. Math. 101, 2005), and
+  // that part joins R's column, so that Q1 R still equals the active normals.
+  if (q_ > 0) {
+    const auto Q = Q1_.leftCols(q_);
+    r_.head(q_).noalias() = Q.transpose() * z_;
+    z_.noalias() -= Q * r_.head(q_);
+    d1_.head(q_) += r_.head(q_);
+    z_norm = z_.norm();
   }
-  if (std::abs(d_[q_]) <= 1e-12 * d_.head(q_ + 1).norm()) return false;
-  R_.col(q_).head(q_ + 1) = d_.head(q_ + 1);
+  Q1_.col(q_) = z_ / z_norm;
+  R_.col(q_).head(q_) = d1_.head(q_);
+  R_(q_, q_) = z_norm;
   ++q_;
-  return true;
+  active_.push_back(k);
+  is_active_[static_cast<size_t>(k)] = 1;
 }
 
 void DenseQpSolver::Drop(int l) {
   for (int k = l; k < q_ - 1; ++k) R_.col(k).head(q_) = R_.col(k + 1).head(q_);
   for (int k = l; k < q_; ++k) u_[k] = u_[k + 1];  // the candidate's multiplier moves with them
+  is_active_[static_cast<size_t>(active_[static_cast<size_t>(l)])] = 0;
   active_.erase(active_.begin() + l);
-  // R is upper Hessenberg from column l: rotate each subdiagonal entry away.
+  // R is upper Hessenberg from column l: rotate each subdiagonal entry away, and Q1's columns
+  // with it; Q1's last column then spans nothing active and leaves.
   for (int k = l; k < q_ - 1; ++k) {
     const double a = R_(k, k), b = R_(k + 1, k);
     const double h = std::hypot(a, b);
@@ -114,7 +189,7 @@ void DenseQpSolver::Drop(int l) {
       R_(k + 1, col) = -s * x + c * y;
     }
     R_(k + 1, k) = 0.0;
-    RotateColumns(J_, k, k + 1, c, s);
+    RotateColumns(Q1_, k, k + 1, c, s);
   }
   --q_;
 }
@@ -131,75 +206,67 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
   out.bound_multiplier.setZero(n);
 
   Eigen::VectorXd& p = out.p;
-  if (qp.G.isDiagonal(0.0)) {
-    // The sequential QP's G is diagonal: L = sqrt(G), and J = L^-T is its inverse, where the
-    // dense Cholesky factor and its inverse cost n^3 / 3 + n^3 / 2 per solve (n = 7: 0.3 s
-    // of the verified design's sizing).
+  diagonal_ = qp.G.isDiagonal(0.0);
+  if (diagonal_) {
+    // The sequential QP's G is diagonal: L = sqrt(G), with no dense factorisation.
     if (!(qp.G.diagonal().array() > 0).all()) return;
-    J_.setZero();
-    J_.diagonal() = qp.G.diagonal().cwiseSqrt().cwiseInverse();
+    inv_sqrt_ = qp.G.diagonal().cwiseSqrt().cwiseInverse();
     p = -qp.a.cwiseQuotient(qp.G.diagonal());
   } else {
-    const Eigen::LLT<Eigen::MatrixXd> llt(qp.G);
-    if (llt.info() != Eigen::Success) return;
-    J_.setIdentity();
-    llt.matrixU().solveInPlace(J_);  // J = L^-T
-    p = -llt.solve(qp.a);
+    llt_.compute(qp.G);
+    if (llt_.info() != Eigen::Success) return;
+    p = -llt_.solve(qp.a);
   }
-  R_.setZero();
   q_ = 0;
   active_.clear();
+  is_active_.assign(static_cast<size_t>(m + 2 * n), 0);
+
+  if (warm != nullptr) StartFrom(qp, *warm, p);
 
   const int total = m + 2 * n;
   const int max_steps = 10 * total + 10;
-  size_t next_warm = 0;
   while (out.steps < max_steps) {
-    int kp = -1;
-    while (warm != nullptr && next_warm < warm->size() && kp < 0) {
-      const int k = (*warm)[next_warm++];
-      if (k >= 0 && k < total && Slack(qp, k, p) < -tolerance * (1 + std::abs(Bound(qp, k))))
-        kp = k;
-    }
-    if (kp < 0) kp = MostViolated(qp, p, tolerance);
+    const int kp = MostViolated(qp, p, tolerance);
     if (kp < 0) {
       out.solved = true;
       break;
     }
-    Normal(qp, kp, np_);
-    // A bound's normal is +-e_j: J^T n is J's row j, O(n) where a row's product is O(n^2).
-    const int bound_var = kp < m ? -1 : kp < m + n ? kp - m : kp - m - n;
-    const double bound_sign = kp < m + n ? 1.0 : -1.0;
+    TransformedNormal(qp, kp);
+    const double nt_norm = nt_.norm();
     u_[q_] = 0.0;
     // Move along the primal and dual directions until kp holds (then it joins the active
     // set) or an active constraint's multiplier reaches zero (then it leaves).
     for (;;) {
       ++out.steps;
       if (out.steps > max_steps) break;
-      if (bound_var >= 0) {
-        d_ = bound_sign * J_.row(bound_var).transpose();
-      } else {
-        d_.noalias() = J_.transpose() * np_;
-      }
-      z_.noalias() = J_.rightCols(n - q_) * d_.tail(n - q_);
+      // d1 = Q1^T nt: the candidate's part in the active normals' span; z = nt - Q1 d1 the
+      // rest, the step in y; r = R^-1 d1 how the active multipliers must change.
+      z_ = nt_;
       if (q_ > 0) {
-        r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d_.head(q_));
+        const auto Q = Q1_.leftCols(q_);
+        d1_.head(q_).noalias() = Q.transpose() * nt_;
+        z_.noalias() -= Q * d1_.head(q_);
+        r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d1_.head(q_));
       }
       double t1 = kInf;
       int l = -1;
       for (int k = 0; k < q_; ++k) {
         if (r_[k] > 0.0 && u_[k] / r_[k] < t1) t1 = u_[k] / r_[k], l = k;
       }
-      const double zn = z_.dot(np_);
-      const bool primal = d_.tail(n - q_).norm() > 1e-12 * d_.norm();
-      const double t2 = primal ? -Slack(qp, kp, p) / zn : kInf;
+      const double z_norm = z_.norm();
+      const bool primal = z_norm > 1e-12 * nt_norm;
+      const double t2 = primal ? -Slack(qp, kp, p) / z_.dot(nt_) : kInf;
       if (!std::isfinite(t1) && !std::isfinite(t2)) return;  // infeasible
       const double t = std::min(t1, t2);
-      if (primal) p += t * z_;
+      if (primal) {
+        dp_ = z_;
+        ToP(dp_);
+        p += t * dp_;
+      }
       if (q_ > 0) u_.head(q_) -= t * r_.head(q_);
       u_[q_] += t;
       if (t2 <= t1) {
-        if (!Add()) return;  // not reached: a primal step means kp is independent
-        active_.push_back(kp);
+        Add(z_norm, kp);  // a primal step: kp is independent of the active normals
         break;
       }
       Drop(l);
