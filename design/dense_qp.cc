@@ -175,6 +175,11 @@ void DenseQpSolver::Drop(int l) {
   for (int k = l; k < q_ - 1; ++k) R_.col(k).head(q_) = R_.col(k + 1).head(q_);
   for (int k = l; k < q_; ++k) u_[k] = u_[k + 1];  // the candidate's multiplier moves with them
   is_active_[static_cast<size_t>(active_[static_cast<size_t>(l)])] = 0;
+  // A constraint left out as met by rounding was so for the active set that leaves now.
+  if (left_out_) {
+    for (char& a : is_active_) a = a == 2 ? 0 : a;
+    left_out_ = false;
+  }
   active_.erase(active_.begin() + l);
   // R is upper Hessenberg from column l: rotate each subdiagonal entry away, and Q1's columns
   // with it; Q1's last column then spans nothing active and leaves.
@@ -220,6 +225,7 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
   q_ = 0;
   active_.clear();
   is_active_.assign(static_cast<size_t>(m + 2 * n), 0);
+  left_out_ = false;
 
   if (warm != nullptr) StartFrom(qp, *warm, p);
 
@@ -256,7 +262,17 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
       const double z_norm = z_.norm();
       const bool primal = z_norm > 1e-12 * nt_norm;
       const double t2 = primal ? -Slack(qp, kp, p) / z_.dot(nt_) : kInf;
-      if (!std::isfinite(t1) && !std::isfinite(t2)) return;  // infeasible
+      if (!std::isfinite(t1) && !std::isfinite(t2)) {
+        // kp lies in the active normals' span, and no active multiplier can give way: in exact
+        // arithmetic the program is infeasible. Violated by rounding alone (the active
+        // constraints imply it to within 1e-8 of its bound), it is met, and left out.
+        if (Slack(qp, kp, p) >= -1e-8 * (1 + std::abs(Bound(qp, kp)))) {
+          is_active_[static_cast<size_t>(kp)] = 2;
+          left_out_ = true;
+          break;
+        }
+        return;
+      }
       const double t = std::min(t1, t2);
       if (primal) {
         dp_ = z_;

@@ -83,7 +83,10 @@ class DenseQpSolver {
   Eigen::MatrixXd Q1_, R_;  // n x n and n x n, of which the first q_ columns are in use
   Eigen::VectorXd nt_, d1_, z_, r_, u_, dp_, y0_, Cp_;
   std::vector<int> active_;
-  std::vector<char> is_active_;  // per constraint, numbered as DenseQpSolution::active
+  // Per constraint, numbered as DenseQpSolution::active: 1 active, 2 left out as met by
+  // rounding (until the active set loses a constraint), 0 otherwise.
+  std::vector<char> is_active_;
+  bool left_out_ = false;
 };
 
 }  // namespace tbridge

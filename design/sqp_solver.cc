@@ -130,9 +130,12 @@ void PoseSubproblem(const Point& cur, const Eigen::VectorXd& lambda, const Eigen
     qp.lo[j] = std::max(step_lo, lo[j] - cur.x[j]);
     qp.hi[j] = std::min(step_hi, hi[j] - cur.x[j]);
     // A floor that keeps the subproblem strictly convex without steering it: its quadratic
-    // term over the move limit is a millionth of the linear one.
+    // term over the move limit is a millionth of the linear one, the rows' included where no
+    // multiplier weighs them yet (the prestress, which the mass does not read, had a
+    // curvature of 1e-18 there, and the subproblem's transformed rows all lay along it).
     const double width = std::max(qp.hi[j] - qp.lo[j], 1e-300);
-    qp.G(j, j) = std::max(h, 1e-6 * (std::abs(cur.grad[j]) + abs_sum[j] + 1e-12) / width);
+    const double rows = std::max(abs_sum[j], cur.jac.rows() > 0 ? cur.jac.col(j).cwiseAbs().maxCoeff() : 0.0);
+    qp.G(j, j) = std::max(h, 1e-6 * (std::abs(cur.grad[j]) + rows + 1e-12) / width);
   }
   qp.a = cur.grad;
   qp.C = cur.jac;
