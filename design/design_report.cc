@@ -598,14 +598,21 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg (the lightest that passed); %s",
                 d.resizing.iterations, d.resizing.structure_mass_kg.front(), d.mass.structure,
                 d.resizing.converged
-                    ? Format("converged: two passing designs within %g of the mass", d.resizing.tolerance).c_str()
+                    ? Format("converged: a sizing within %g of the last passing design's mass", d.resizing.tolerance)
+                          .c_str()
                     : "did not converge"));
-    // Each sizing: its mass, its largest utilisation under the checks, and what that changed.
+    // Each sizing: its mass, its largest utilisation under the checks, and what that changed;
+    // the settling sizing of a converged run is not checked.
     const Resizing& r = d.resizing;
-    for (size_t k = 0; k < r.utilisation_max.size() && k + 1 < r.structure_mass_kg.size(); ++k) {
-      line(Format("  sizing %zu: %.6g kg, utilisation_max %.6f%s%s", k + 1, r.structure_mass_kg[k + 1],
-                  r.utilisation_max[k], k < r.changes.size() ? "; then " : "",
-                  k < r.changes.size() ? r.changes[k].c_str() : ""));
+    for (size_t k = 0; k + 1 < r.structure_mass_kg.size(); ++k) {
+      if (k < r.utilisation_max.size()) {
+        line(Format("  sizing %zu: %.6g kg, utilisation_max %.6f%s%s", k + 1, r.structure_mass_kg[k + 1],
+                    r.utilisation_max[k], k < r.changes.size() ? "; then " : "",
+                    k < r.changes.size() ? r.changes[k].c_str() : ""));
+      } else {
+        line(Format("  sizing %zu: %.6g kg, within %g of the last passing design's mass: settled, not checked", k + 1,
+                    r.structure_mass_kg[k + 1], r.tolerance));
+      }
     }
     if (!r.optima.empty()) line("  " + r.optima);
   }

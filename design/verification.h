@@ -186,10 +186,13 @@ struct ComfortCheck {
 // The resizing loop's record (verify/verified_design.h).
 struct Resizing {
   int iterations = 0;                     // designs run
-  bool converged = false;                 // two passing designs within `tolerance` of the mass
+  // A sizing from a passing design's corrections within `tolerance` of that design's mass.
+  bool converged = false;
   double tolerance = 0;                   // relative, on the structure's mass
   std::vector<double> structure_mass_kg;  // per design: the start, then each sizing
-  std::vector<double> utilisation_max;    // per sizing: the largest the checks found (a violation above 1)
+  // Per checked sizing: the largest utilisation the checks found (a violation above 1). The
+  // settling sizing of a converged run is not checked, so it has none.
+  std::vector<double> utilisation_max;
   std::vector<std::string> changes;       // per sizing but the last: how its checks corrected the next
   double second_start_kg = 0;             // the last sizing from twice the first design's areas
   std::string optima;                     // what that second start found, and which design was kept

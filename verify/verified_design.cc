@@ -604,12 +604,23 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     }
     std::vector<char> posed;
     Design d = Size(config, current, corrections, solver, problem, x, record.time_s, progress, posed, kSizingTolerance);
-    RunChecks(d, record.time_s, progress, Screen::kStaticFailure);
-    // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended one.
-    Verdict verdict = SizingVerdict(d);
+    // Settled: the sizing from a passing design's corrections lands within kSettled of that
+    // design's mass, so the linear model says what the checks say and the corrections have
+    // nothing left to move by more than the tolerance. Its own design is not checked: it
+    // could only replace the passing one by a lighter one within kSettled of it (n = 7: its
+    // checks failed by a hair three sizings running, each mended, before a second design passed;
+    // 13 designs, 7.7 s, against 10, 5.4 s, for 6e-6 of the mass).
+    const bool settled = last_passing_kg && d.solver.success &&
+                         std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
+    Verdict verdict;
     std::string repair;
-    if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure && !verdict.pass) {
-      repair = Repair(config, problem, d, x, verdict, record.time_s, progress);
+    if (!settled) {
+      RunChecks(d, record.time_s, progress, Screen::kStaticFailure);
+      // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended one.
+      verdict = SizingVerdict(d);
+      if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure && !verdict.pass) {
+        repair = Repair(config, problem, d, x, verdict, record.time_s, progress);
+      }
     }
     const SolverOutcome& outcome = d.solver;
     const StaticCheck& statics = d.statics;
@@ -617,19 +628,14 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     areas = problem.Areas(x);
     alpha = problem.Alpha(x);
     record.structure_mass_kg.push_back(d.mass.structure);
-    record.utilisation_max.push_back(verdict.utilisation_max);
-    // Converged: a design that passes within kSettled of the mass of the last design that
-    // passed: the linear model says what the checks say. A design between them that fails by
-    // a hair (the corrections move both ways) does not reset it.
-    const bool settled = verdict.pass && last_passing_kg &&
-                         std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
+    if (!settled) record.utilisation_max.push_back(verdict.utilisation_max);
     if (verdict.pass) last_passing_kg = d.mass.structure;
     if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) {
       best = d;
       best_sizing = BestSizing{current, corrections, x};
     }
-    const bool last = record.iterations >= max_iterations || !outcome.success || !d.statics.all_converged ||
-                      verdict.outcome == VerdictOutcome::kIncomplete;
+    const bool last = !settled && (record.iterations >= max_iterations || !outcome.success ||
+                                   !d.statics.all_converged || verdict.outcome == VerdictOutcome::kIncomplete);
     if (settled || last) {
       if (best) {
         // What drives the mass, of the design kept only (a problem built again for it).
