@@ -154,5 +154,75 @@ TEST_CASE("dense QP: random programs agree with every active set enumerated", "[
   CHECK(infeasible >= 1);
 }
 
+TEST_CASE("dense QP: a warm start, right or wrong, reaches the minimiser of a cold one", "[qp]") {
+  // The warm set is taken as the active set at once and its negative multipliers dropped
+  // (DenseQpSolver::StartFrom): whatever it holds, the dual method then reaches the program's
+  // one minimiser. The second algorithm: every active set enumerated.
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<int> pick(0, 1);
+  int compared = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 3 + trial % 3, m = 3 + trial % 4;
+    DenseQp qp = Unbounded(n, m);
+    qp.G = Eigen::MatrixXd::Zero(n, n);
+    for (int i = 0; i < n; ++i) qp.G(i, i) = 0.1 + std::abs(normal(rng));  // diagonal, as the SQP's
+    for (int i = 0; i < n; ++i) qp.a[i] = normal(rng);
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < n; ++j) qp.C(i, j) = normal(rng);
+      qp.b[i] = normal(rng);
+    }
+    qp.lo = Eigen::VectorXd::Constant(n, -0.8);
+    qp.hi = Eigen::VectorXd::Constant(n, 0.8);
+    double best = 0;
+    const Eigen::VectorXd expected = Enumerated(qp, &best);
+    if (expected.size() == 0) continue;  // infeasible: the first test covers it
+    DenseQpSolver solver;
+    DenseQpSolution cold;
+    solver.Solve(qp, cold);
+    REQUIRE(cold.solved);
+    // The right set, the right set with wrong constraints before it, a random set, and every
+    // constraint (rows, both bounds of each variable: dependent pairs among them).
+    std::vector<std::vector<int>> warms{cold.active, {}, {}, {}};
+    for (int k = 0; k < m + 2 * n; ++k) {
+      if (pick(rng)) warms[1].push_back(k);
+      if (pick(rng)) warms[2].push_back(k);
+      warms[3].push_back(k);
+    }
+    warms[1].insert(warms[1].end(), cold.active.begin(), cold.active.end());
+    for (const std::vector<int>& warm : warms) {
+      DenseQpSolution sol;
+      solver.Solve(qp, sol, 1e-11, &warm);
+      INFO("trial " << trial << ", warm set of " << warm.size());
+      REQUIRE(sol.solved);
+      // 1e-9, as the cold solve against the enumeration: rounding on O(1) data.
+      CHECK((sol.p - expected).norm() <= 1e-9 * (1 + expected.norm()));
+      CHECK((sol.row_multiplier - cold.row_multiplier).norm() <= 1e-8 * (1 + cold.row_multiplier.norm()));
+      ++compared;
+    }
+  }
+  CHECK(compared >= 100);
+}
+
+TEST_CASE("dense QP: a constraint its active ones imply is met within 1e-8, and not beyond", "[qp]") {
+  // p_0 >= 1 (a row) and p_0 <= 1 - delta (the upper bound): the bound lies in the row's span,
+  // and no multiplier can give way. Violated by rounding's order (delta = 1e-10) it is met and
+  // left out; by 1e-3 the program is infeasible and says so.
+  DenseQp qp = Unbounded(2, 1);
+  qp.a = Eigen::Vector2d(1.0, 0.5);
+  qp.C(0, 0) = 1.0;
+  qp.b[0] = 1.0;
+  DenseQpSolver solver;
+  DenseQpSolution sol;
+  qp.hi[0] = 1.0 - 1e-10;
+  solver.Solve(qp, sol);
+  REQUIRE(sol.solved);
+  CHECK(sol.p[0] == Approx(1.0).margin(1e-9));
+  CHECK(sol.p[1] == Approx(-0.5).margin(1e-12));  // G = I: the free variable at -a_1
+  qp.hi[0] = 1.0 - 1e-3;
+  solver.Solve(qp, sol);
+  CHECK_FALSE(sol.solved);
+}
+
 }  // namespace
 }  // namespace tbridge
