@@ -192,6 +192,19 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
   }
 }
 
+// Of each member's (or deck node's) rows of one kind, the one closest to its limit at margins
+// `g`: (kind, member) -> row. NaN (an unstable point) ranks last.
+std::map<std::pair<int, int>, int> ClosestRows(const SizingProblem& full, const Eigen::VectorXd& g) {
+  const std::vector<SizingRow>& rows = full.rows();
+  const auto closer = [&g](int a, int b) { return g[a] < g[b] || (!std::isnan(g[a]) && std::isnan(g[b])); };
+  std::map<std::pair<int, int>, int> closest;
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+    const auto [it, first] = closest.try_emplace({static_cast<int>(rows[r].kind), rows[r].member}, r);
+    if (!first && closer(r, it->second)) it->second = r;
+  }
+  return closest;
+}
+
 // The rows to pose next: of each member's (or deck node's) rows of one kind, the closest to
 // its limit, where it is below `cap` (a utilisation above 0.3, a deflection above 0.3 of its
 // limit, a tension below 0.1 of the largest force). A violated row is the closest of its
@@ -202,16 +215,8 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
 // at n = 5 (561 against 530) over 2.8 times the rows, and 7.6 s against 6.0 s; n = 6 66 s
 // against 52 s.
 std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g) {
-  const std::vector<SizingRow>& rows = full.rows();
-  // NaN (an unstable point) ranks last and is never near.
-  const auto closer = [&g](int a, int b) { return g[a] < g[b] || (!std::isnan(g[a]) && std::isnan(g[b])); };
-  std::map<std::pair<int, int>, int> closest;  // (kind, member) -> its closest row
-  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
-    const auto [it, first] = closest.try_emplace({static_cast<int>(rows[r].kind), rows[r].member}, r);
-    if (!first && closer(r, it->second)) it->second = r;
-  }
-  std::vector<char> near(rows.size(), 0);
-  for (const auto& [key, r] : closest) {
+  std::vector<char> near(full.rows().size(), 0);
+  for (const auto& [key, r] : ClosestRows(full, g)) {
     const bool taut = key.first == SizingRow::kTaut || key.first == SizingRow::kReferenceTaut;
     near[r] = g[r] < (taut ? 0.1 : 0.7);
   }
@@ -472,15 +477,8 @@ MassAttribution Attribution(const Design& current, const SizingCorrections& corr
   // the others are the same row under a neighbouring station or case, their gradients near
   // copies of its own. All of them (n = 8: 10 712 rows on 512 variables) took the multipliers'
   // least squares 4.5 s, for the same split to 1e-3 kg and a stationarity residual of 1e-5.
-  std::map<std::pair<int, int>, Eigen::Index> closest;
-  for (Eigen::Index r = 0; r < g.size(); ++r) {
-    if (!(g[r] <= lo[r] + 1e-4)) continue;
-    const SizingRow& row = full.rows()[static_cast<size_t>(r)];
-    const auto [it, inserted] = closest.try_emplace({row.member, static_cast<int>(row.kind)}, r);
-    if (!inserted && g[r] < g[it->second]) it->second = r;
-  }
   std::vector<char> active(static_cast<size_t>(g.size()), 0);
-  for (const auto& [key, r] : closest) active[static_cast<size_t>(r)] = 1;
+  for (const auto& [key, r] : ClosestRows(full, g)) active[static_cast<size_t>(r)] = g[r] <= lo[r] + 1e-4;
   const SizingProblem posed(current, corrections, &active);
   std::vector<double> dynamic(statics.members.size(), 0.0);
   for (size_t j = 0; j < dynamic.size() && j < dynamics.members.size(); ++j) {
