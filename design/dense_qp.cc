@@ -69,12 +69,6 @@ double DenseQpSolver::Slack(const DenseQp& qp, int k, const Eigen::VectorXd& p) 
   return qp.hi[k - m_ - n_] - p[k - m_ - n_];
 }
 
-double DenseQpSolver::Bound(const DenseQp& qp, int k) const {
-  if (k < m_) return qp.b[k];
-  if (k < m_ + n_) return qp.lo[k - m_];
-  return qp.hi[k - m_ - n_];
-}
-
 double DenseQpSolver::Rhs(const DenseQp& qp, int k) const {
   if (k < m_) return qp.b[k];
   if (k < m_ + n_) return qp.lo[k - m_];
@@ -86,12 +80,7 @@ void DenseQpSolver::StartFrom(const DenseQp& qp, const std::vector<int>& warm, E
   for (const int k : warm) {
     if (k < 0 || k >= total || is_active_[static_cast<size_t>(k)] || q_ >= n_) continue;
     TransformedNormal(qp, k);
-    z_ = nt_;
-    if (q_ > 0) {
-      const auto Q = Q1_.leftCols(q_);
-      d1_.head(q_).noalias() = Q.transpose() * nt_;
-      z_.noalias() -= Q * d1_.head(q_);
-    }
+    Split();
     // Nearly dependent normals would give the equality problem below wild multipliers: such a
     // constraint is left to the scans, which add it where it is violated.
     const double z_norm = z_.norm();
@@ -150,6 +139,14 @@ int DenseQpSolver::MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, dou
     }
   }
   return kp;
+}
+
+void DenseQpSolver::Split() {
+  z_ = nt_;
+  if (q_ == 0) return;
+  const auto Q = Q1_.leftCols(q_);
+  d1_.head(q_).noalias() = Q.transpose() * nt_;
+  z_.noalias() -= Q * d1_.head(q_);
 }
 
 void DenseQpSolver::Add(double z_norm, int k) {
@@ -245,13 +242,10 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
     for (;;) {
       ++out.steps;
       if (out.steps > max_steps) break;
-      // d1 = Q1^T nt: the candidate's part in the active normals' span; z = nt - Q1 d1 the
-      // rest, the step in y; r = R^-1 d1 how the active multipliers must change.
-      z_ = nt_;
+      // z, the rest of the candidate's normal, is the step in y; r = R^-1 d1 how the active
+      // multipliers must change.
+      Split();
       if (q_ > 0) {
-        const auto Q = Q1_.leftCols(q_);
-        d1_.head(q_).noalias() = Q.transpose() * nt_;
-        z_.noalias() -= Q * d1_.head(q_);
         r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d1_.head(q_));
       }
       double t1 = kInf;
@@ -266,7 +260,7 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
         // kp lies in the active normals' span, and no active multiplier can give way: in exact
         // arithmetic the program is infeasible. Violated by rounding alone (the active
         // constraints imply it to within 1e-8 of its bound), it is met, and left out.
-        if (Slack(qp, kp, p) >= -1e-8 * (1 + std::abs(Bound(qp, kp)))) {
+        if (Slack(qp, kp, p) >= -1e-8 * (1 + std::abs(Rhs(qp, kp)))) {
           is_active_[static_cast<size_t>(kp)] = 2;
           left_out_ = true;
           break;

@@ -63,8 +63,10 @@ class DenseQpSolver {
   // A direction in y into p: L^-T v.
   void ToP(Eigen::VectorXd& v) const;
   double Slack(const DenseQp& qp, int k, const Eigen::VectorXd& p) const;  // >= 0 where it holds
-  double Bound(const DenseQp& qp, int k) const;                            // b_k, lo_j or hi_j
   double Rhs(const DenseQp& qp, int k) const;  // constraint k as n_k^T p >= Rhs: b_k, lo_j, -hi_j
+  // The transformed normal nt_ split along the active normals' span: d1_ = Q1^T nt its part
+  // there, z_ = nt - Q1 d1 the rest.
+  void Split();
   // Takes the warm constraints (independent ones, in order) as the active set at once, and
   // drops those whose multipliers come out negative: the equality minimiser on what is left,
   // with its multipliers, is a start the dual method may take (Goldfarb and Idnani's S-pair).
