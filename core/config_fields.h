@@ -222,9 +222,9 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
            d.imperfection_factor, Range::Closed(0.0, 2.0));
   v.Integer(KeyInfo{"max_sizings", "–",
                     "the verified sizing's designs at most (its outer iterations: a sizing, then the checks, then "
-                    "the corrections). It stops earlier when a sizing from a passing design's corrections is within "
-                    "5e-4 of that design's mass; at the limit it keeps the lightest design that passed and says it did not converge "
-                    "(`resizing.converged` false)"},
+                    "the corrections). It stops earlier when a sizing from a passing design's corrections is "
+                    "within 5e-4 of that design's mass; at the limit it keeps the lightest design that passed and "
+                    "says it did not converge (`resizing.converged` false)"},
             d.max_sizings, 1, 1000);
   v.Number(KeyInfo{"dynamic_screen", "–",
                    "the static utilisation (a member's, or the deflection over its limit) above which the verified "

@@ -210,7 +210,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
   DenseQp qp, elastic;
   DenseQpSolution sol;
   // The last subproblem's active set; at first the rows with a positive start multiplier
-  // (the dual method adds any violated constraint, so it only saves the scans).
+  // (the dual method drops any whose multiplier comes out negative, so it only saves steps).
   std::vector<int> warm;
   for (int r = 0; r < m; ++r) {
     if (lambda[r] > 0) warm.push_back(r);
