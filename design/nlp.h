@@ -31,6 +31,14 @@ class NlpProblem {
   virtual const Pattern& JacobianPattern() const = 0;
   // Values in JacobianPattern() order.
   virtual void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const = 0;
+  // The Jacobian as a dense matrix (rows x variables), for a solver that keeps it so (the
+  // SQP); false where the problem gives it only by its pattern. A problem whose rows read
+  // every variable saves the pattern (a pair per entry) and the copy through it.
+  virtual bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const {
+    (void)x;
+    (void)jac;
+    return false;
+  }
   // Lower triangle (row >= col) of the Hessian of sigma f + sum_i lambda_i g_i.
   virtual const Pattern& HessianPattern() const = 0;
   virtual void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma,

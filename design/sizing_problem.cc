@@ -691,6 +691,18 @@ void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, d
   }
 }
 
+bool SizingProblem::DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  if (!p.st.lin) {
+    jac.setConstant(static_cast<Eigen::Index>(p.rows.size()), p.num_variables(), std::numeric_limits<double>::quiet_NaN());
+    return true;
+  }
+  if (!p.st.have_jac) p.Jacobian();
+  jac = p.st.jac;
+  return true;
+}
+
 const NlpProblem::Pattern& SizingProblem::HessianPattern() const { return impl_->hessian; }
 
 void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, double, const double*, double*) const {}

@@ -96,6 +96,7 @@ class SizingProblem final : public NlpProblem {
   void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const override;
   const Pattern& JacobianPattern() const override;
   void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override;
+  bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const override;
   const Pattern& HessianPattern() const override;  // empty: the solvers approximate it
   void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma, const double* lambda,
                      double* values) const override;

@@ -27,8 +27,7 @@ struct Point {
 
 class Evaluator {
  public:
-  explicit Evaluator(const NlpProblem& problem)
-      : problem_(problem), values_(problem.JacobianPattern().size()) {}
+  explicit Evaluator(const NlpProblem& problem) : problem_(problem) {}
   // f and g at pt.x; false where either is not finite (an unstable point).
   bool Values(Point& pt) {
     ++evaluations;
@@ -38,9 +37,11 @@ class Evaluator {
   }
   void Derivatives(Point& pt) {
     problem_.ObjectiveGradient(pt.x, pt.grad);
+    if (problem_.DenseJacobian(pt.x, pt.jac)) return;
+    const auto& pattern = problem_.JacobianPattern();
+    values_.resize(pattern.size());
     problem_.JacobianValues(pt.x, values_.data());
     pt.jac.setZero();
-    const auto& pattern = problem_.JacobianPattern();
     for (size_t k = 0; k < pattern.size(); ++k)
       pt.jac(pattern[k].first, pattern[k].second) = values_[k];
   }

@@ -57,6 +57,13 @@ void CheckJacobian(const Design& d) {
     const double scale = std::max(jac.col(v).cwiseAbs().maxCoeff(), 1e-12);
     CHECK((jac.col(v) - fd).cwiseAbs().maxCoeff() <= 1e-6 * scale);
   }
+  // The dense form the SQP reads is the same matrix, evaluated again at x (the differences
+  // above left the problem at another point): the same numbers, so equal exactly.
+  Eigen::MatrixXd dense;
+  REQUIRE(problem.DenseJacobian(x, dense));
+  CHECK(dense.rows() == m);
+  CHECK(dense.cols() == n);
+  CHECK(dense == jac);
   // The objective's gradient: the mass is linear in the areas, so differences are exact to
   // rounding.
   Eigen::VectorXd grad(n);
