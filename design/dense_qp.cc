@@ -253,9 +253,14 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
       for (int k = 0; k < q_; ++k) {
         if (r_[k] > 0.0 && u_[k] / r_[k] < t1) t1 = u_[k] / r_[k], l = k;
       }
+      // The candidate is independent of the active normals where its part off their span is
+      // above 1e-8 of it, as StartFrom judges. The primal step length is -slack / (z . nt), and
+      // z . nt = |z|^2 exactly (z is orthogonal to Q1), where the product itself is |z|^2 plus
+      // rounding of order 1e-14 |z| |nt|: below z/nt = 1e-7 that sign could flip, and a step
+      // of -1e6 left the active rows violated by 3e-4 in a program "solved" (n = 7).
       const double z_norm = z_.norm();
-      const bool primal = z_norm > 1e-12 * nt_norm;
-      const double t2 = primal ? -Slack(qp, kp, p) / z_.dot(nt_) : kInf;
+      const bool primal = z_norm > 1e-8 * nt_norm;
+      const double t2 = primal ? -Slack(qp, kp, p) / (z_norm * z_norm) : kInf;
       if (!std::isfinite(t1) && !std::isfinite(t2)) {
         // kp lies in the active normals' span, and no active multiplier can give way: in exact
         // arithmetic the program is infeasible. Violated by rounding alone (the active

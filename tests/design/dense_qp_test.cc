@@ -224,5 +224,47 @@ TEST_CASE("dense QP: a constraint its active ones imply is met within 1e-8, and 
   CHECK_FALSE(sol.solved);
 }
 
+TEST_CASE("dense QP: rows nearly parallel to active ones hold at the minimiser to rounding", "[qp]") {
+  // Rows in pairs 1e-9 apart, as the sizing's rows of one member at neighbouring stations: a
+  // candidate's part off the active span is then of order 1e-9 of it, and the primal step
+  // length -slack / (z . nt) read that product's rounding (1e-14 |z| |nt|) as its value,
+  // stepping the wrong way by 1e6 and leaving active rows violated in a program reported
+  // solved. The checks are the optimality conditions themselves: every row met, every
+  // multiplier non-negative, and G p + a = C^T lambda + mu (the bounds' multipliers).
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal;
+  int solved = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 12, m = 24;
+    DenseQp qp = Unbounded(n, m);
+    for (int i = 0; i < n; ++i) qp.G(i, i) = 0.1 + std::abs(normal(rng));
+    for (int i = 0; i < n; ++i) qp.a[i] = normal(rng);
+    for (int i = 0; i < m; i += 2) {
+      for (int j = 0; j < n; ++j) qp.C(i, j) = normal(rng);
+      for (int j = 0; j < n; ++j) qp.C(i + 1, j) = qp.C(i, j) + 1e-9 * normal(rng);
+      qp.b[i] = std::abs(normal(rng));
+      qp.b[i + 1] = qp.b[i] + 1e-9 * normal(rng);
+    }
+    qp.lo = Eigen::VectorXd::Constant(n, -2.0);
+    qp.hi = Eigen::VectorXd::Constant(n, 2.0);
+    DenseQpSolver solver;
+    DenseQpSolution sol;
+    solver.Solve(qp, sol);
+    if (!sol.solved) continue;  // a pair 1e-9 apart may leave no feasible point within rounding
+    ++solved;
+    INFO("trial " << trial);
+    // Every row met to 1e-9 (1 + |b|): the pairs' own spread, far above rounding's 1e-14.
+    const Eigen::VectorXd slack = (qp.C * sol.p - qp.b).array() / (1 + qp.b.array().abs());
+    CHECK(slack.minCoeff() >= -1e-9);
+    CHECK(sol.row_multiplier.minCoeff() >= 0.0);
+    // Stationarity to 1e-6 of the terms' scale: a pair's multipliers may be large and of
+    // opposite trend (their difference carries 1e-9 of the normal), their sum is what counts.
+    const Eigen::VectorXd residual = qp.G * sol.p + qp.a - qp.C.transpose() * sol.row_multiplier - sol.bound_multiplier;
+    const double scale = 1 + qp.a.norm() + (qp.C.transpose() * sol.row_multiplier).norm();
+    CHECK(residual.norm() <= 1e-6 * scale);
+  }
+  CHECK(solved >= 100);
+}
+
 }  // namespace
 }  // namespace tbridge
