@@ -763,6 +763,7 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
 double SizingProblem::mass_scale_kg() const { return impl_->mass_scale; }
 double SizingProblem::force_scale_n() const { return impl_->force_scale; }
 double SizingProblem::area_scale_m2(int group) const { return impl_->area_scale[group]; }
+double SizingProblem::row_scale(int r) const { return impl_->reference_resistance[r]; }
 
 const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }

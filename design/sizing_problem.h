@@ -132,6 +132,9 @@ class SizingProblem final : public NlpProblem {
   double mass_scale_kg() const;
   double force_scale_n() const;
   double area_scale_m2(int group) const;
+  // Row r's scale as posed: a strength row is (R(A) - kappa F) / row_scale(r), its member's
+  // resistance at the problem's own area [N]; 1 for the other rows.
+  double row_scale(int r) const;
   const std::vector<SizingCombination>& combinations() const;
   const std::vector<int>& group_of() const;  // per member
 
