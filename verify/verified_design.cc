@@ -296,11 +296,6 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     for (int r = 0; r < rows; ++r) {
       if (keep[r]) posed_rows.push_back(r);
     }
-    // The last sizing's multipliers (carried, CarriedRows) serve a start that nearly holds; one
-    // that violates a row by more than 1e-2 is another problem (a correction raised a demand
-    // factor by 1.41 at n = 8), and the solver estimates them there: from the carried ones it
-    // took 176 evaluations against 11.
-    if (round == 0 && lambda.size() == rows && (lo - posed_g).maxCoeff() > 1e-2) lambda.resize(0);
     if (!wandered && lambda.size() == rows) {
       round_options.start_multipliers.resize(static_cast<Eigen::Index>(posed_rows.size()));
       for (size_t i = 0; i < posed_rows.size(); ++i) round_options.start_multipliers[i] = lambda[posed_rows[i]];
