@@ -235,15 +235,15 @@ struct ActiveSet {
   Eigen::VectorXd multipliers;  // empty: none known
 };
 
-// Solves the sizing by active sets: the rows near their limits at the start are posed; after
-// each solve the whole problem is evaluated and the rows near their limits there join, until
-// the solution violates no row of the whole problem (at most 16 rounds). The posed problem is
-// hundreds of rows where the whole one has thousands (n = 5: 16 500), and the solver's dense
-// linear algebra shrinks with it. Its optimum is the whole problem's once it violates no row:
-// the posed problem is a relaxation of the whole one. `active`: on entry, the rows posed from
-// the first round (none: only those near their limits at the start) and the multipliers the
-// first round starts from (none: the solver estimates them); on return, every row posed and
-// the last round's multipliers.
+// Solves the sizing by active sets: each member's closest row at the start is posed
+// (NearLimits); after each solve the whole problem is evaluated and the closest rows there
+// join, until the solution violates no row of the whole problem (at most 16 rounds). The posed
+// problem is a few thousand rows where the whole one has tens of thousands (n = 5: 16 500),
+// and the solver's dense linear algebra shrinks with it. Its optimum is the whole problem's
+// once it violates no row: the posed problem is a relaxation of the whole one. `active`: on
+// entry, the rows posed from the first round besides those (none: only those) and the
+// multipliers the first round starts from (none: the solver estimates them); on return, every
+// row posed and the last round's multipliers.
 SolverOutcome SolveSizing(const Design& current, const SizingCorrections& corrections, const std::string& solver,
                           const SolverOptions& options, const SizingProblem& full, Eigen::VectorXd& x,
                           ActiveSet& active) {
