@@ -9,6 +9,10 @@ namespace tbridge {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// A constraint is independent of the active ones where the part of its transformed normal off
+// their span is above this fraction of it; below, the equality problem on them would take wild
+// multipliers, and a primal step's length would read rounding.
+constexpr double kIndependent = 1e-8;
 
 // The rotation that takes (a, b) to (hypot(a, b), 0), applied to columns i and j of M as
 // M <- M Q^T, so that M^T v becomes Q M^T v for any v. Eigen's plane rotation is vectorised.
@@ -81,10 +85,9 @@ void DenseQpSolver::StartFrom(const DenseQp& qp, const std::vector<int>& warm, E
     if (k < 0 || k >= total || is_active_[static_cast<size_t>(k)] || q_ >= n_) continue;
     TransformedNormal(qp, k);
     Split();
-    // Nearly dependent normals would give the equality problem below wild multipliers: such a
-    // constraint is left to the scans, which add it where it is violated.
+    // A nearly dependent normal is left to the scans, which add it where it is violated.
     const double z_norm = z_.norm();
-    if (!(z_norm > 1e-8 * nt_.norm())) continue;
+    if (!(z_norm > kIndependent * nt_.norm())) continue;
     Add(z_norm, k);
   }
   // In y = L^T p the minimiser on the active normals N~ = Q1 R as equalities is
@@ -253,13 +256,13 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
       for (int k = 0; k < q_; ++k) {
         if (r_[k] > 0.0 && u_[k] / r_[k] < t1) t1 = u_[k] / r_[k], l = k;
       }
-      // The candidate is independent of the active normals where its part off their span is
-      // above 1e-8 of it, as StartFrom judges. The primal step length is -slack / (z . nt), and
-      // z . nt = |z|^2 exactly (z is orthogonal to Q1), where the product itself is |z|^2 plus
-      // rounding of order 1e-14 |z| |nt|: below z/nt = 1e-7 that sign could flip, and a step
-      // of -1e6 left the active rows violated by 3e-4 in a program "solved" (n = 7).
+      // The candidate is independent of the active normals as StartFrom judges (kIndependent).
+      // The primal step length is -slack / (z . nt), and z . nt = |z|^2 exactly (z is orthogonal
+      // to Q1), where the product itself is |z|^2 plus rounding of order 1e-14 |z| |nt|: below
+      // z/nt = 1e-7 that sign could flip, and a step of -1e6 left the active rows violated by
+      // 3e-4 in a program "solved" (n = 7).
       const double z_norm = z_.norm();
-      const bool primal = z_norm > 1e-8 * nt_norm;
+      const bool primal = z_norm > kIndependent * nt_norm;
       const double t2 = primal ? -Slack(qp, kp, p) / (z_norm * z_norm) : kInf;
       if (!std::isfinite(t1) && !std::isfinite(t2)) {
         // kp lies in the active normals' span, and no active multiplier can give way: in exact

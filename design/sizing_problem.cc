@@ -375,6 +375,19 @@ struct SizingProblem::Impl {
     st.have_jac = true;
   }
 
+  // The Jacobian at x (rows x variables), formed once per point; NaN throughout at an unstable
+  // point, where the rows are NaN too.
+  const Eigen::MatrixXd& JacobianAt(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    Evaluate(x);
+    if (!st.lin) {
+      st.jac.setConstant(static_cast<Eigen::Index>(rows.size()), num_variables(),
+                         std::numeric_limits<double>::quiet_NaN());
+    } else if (!st.have_jac) {
+      Jacobian();
+    }
+    return st.jac;
+  }
+
   // Each row's derivative is linear in what moves it (Derivative): its coefficients.
   struct Coefficients {
     double force, vertical, reference, area;
@@ -677,29 +690,15 @@ const NlpProblem::Pattern& SizingProblem::JacobianPattern() const {
 }
 
 void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
-  const int nv = p.num_variables(), nr = static_cast<int>(p.rows.size());
-  if (!p.st.lin) {
-    std::fill(values, values + static_cast<size_t>(nr) * nv, std::numeric_limits<double>::quiet_NaN());
-    return;
-  }
-  if (!p.st.have_jac) p.Jacobian();
+  const Eigen::MatrixXd& jac = impl_->JacobianAt(x);
   // Row-major, as the pattern lists (r, v) pairs.
-  for (int r = 0; r < nr; ++r) {
-    for (int v = 0; v < nv; ++v) values[static_cast<size_t>(r) * nv + v] = p.st.jac(r, v);
+  for (Eigen::Index r = 0; r < jac.rows(); ++r) {
+    for (Eigen::Index v = 0; v < jac.cols(); ++v) values[r * jac.cols() + v] = jac(r, v);
   }
 }
 
 bool SizingProblem::DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
-  if (!p.st.lin) {
-    jac.setConstant(static_cast<Eigen::Index>(p.rows.size()), p.num_variables(), std::numeric_limits<double>::quiet_NaN());
-    return true;
-  }
-  if (!p.st.have_jac) p.Jacobian();
-  jac = p.st.jac;
+  jac = impl_->JacobianAt(x);
   return true;
 }
 
