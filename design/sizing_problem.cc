@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <stdexcept>
 
 #include <Eigen/SVD>
 
@@ -62,38 +63,89 @@ struct Resistance {
 
 }  // namespace
 
-std::vector<int> MirrorGroups(const Structure& s, double span) {
+namespace {
+
+// A mirror of the structure across one of its planes of symmetry (x = span / 2; between the
+// planes of a 3D bridge): each node's and member's image (-1 where it has none), and the sign
+// each component of a load takes in the image.
+struct Mirror {
+  std::vector<int> node, member;
+  Eigen::Vector3d flip = Eigen::Vector3d::Ones();
+  // Every node and member has an image, and a support's image is a support.
+  bool Complete(const Structure& s) const {
+    for (size_t a = 0; a < node.size(); ++a) {
+      if (node[a] < 0 || s.fixed[a] != s.fixed[static_cast<size_t>(node[a])]) return false;
+    }
+    return std::all_of(member.begin(), member.end(), [](int j) { return j >= 0; });
+  }
+  // The image of node loads (3 x nodes).
+  Eigen::Matrix3Xd Of(const Eigen::Matrix3Xd& loads) const {
+    Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, loads.cols());
+    for (Eigen::Index a = 0; a < loads.cols(); ++a) {
+      if (node[a] >= 0) out.col(node[a]) = flip.cwiseProduct(loads.col(a));
+    }
+    return out;
+  }
+  // Whether `loads` is its own image (to 1e-9 of its largest entry: the loads are built from
+  // the same nodal shares on both sides, and differ by rounding alone where they are alike).
+  bool Keeps(const Eigen::Matrix3Xd& loads) const { return Same(Of(loads), loads); }
+  static bool Same(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
+    return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  }
+};
+
+std::vector<Mirror> Mirrors(const Structure& s, double span) {
   const int nn = s.num_nodes(), nb = s.num_bars(), nm = nb + s.num_strings();
   const double tol = 1e-9 * span;
   const double z_mid = 0.5 * (s.nodes.row(2).minCoeff() + s.nodes.row(2).maxCoeff());
-  auto image = [&](int v, bool in_x, bool in_z) {
-    Eigen::Vector3d p = s.nodes.col(v);
-    if (in_x) p[0] = span - p[0];
-    if (in_z) p[2] = 2 * z_mid - p[2];
-    for (int w = 0; w < nn; ++w) {
-      if ((s.nodes.col(w) - p).cwiseAbs().maxCoeff() <= tol) return w;
-    }
-    return -1;
-  };
   std::map<std::pair<int, int>, int> member_at;
   for (int j = 0; j < nm; ++j) {
     const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
     member_at[{std::min(m.i, m.j), std::max(m.i, m.j)}] = j;
   }
+  std::vector<Mirror> out;
+  for (const bool in_x : {true, false}) {
+    Mirror mirror;
+    mirror.flip[in_x ? 0 : 2] = -1;
+    mirror.node.assign(static_cast<size_t>(nn), -1);
+    for (int v = 0; v < nn; ++v) {
+      Eigen::Vector3d p = s.nodes.col(v);
+      if (in_x) p[0] = span - p[0];
+      if (!in_x) p[2] = 2 * z_mid - p[2];
+      for (int w = 0; w < nn; ++w) {
+        if ((s.nodes.col(w) - p).cwiseAbs().maxCoeff() <= tol) {
+          mirror.node[static_cast<size_t>(v)] = w;
+          break;
+        }
+      }
+    }
+    mirror.member.assign(static_cast<size_t>(nm), -1);
+    for (int j = 0; j < nm; ++j) {
+      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+      const int a = mirror.node[static_cast<size_t>(m.i)], b = mirror.node[static_cast<size_t>(m.j)];
+      if (a < 0 || b < 0) continue;
+      const auto it = member_at.find({std::min(a, b), std::max(a, b)});
+      if (it == member_at.end() || (it->second < nb) != (j < nb)) continue;
+      mirror.member[static_cast<size_t>(j)] = it->second;
+    }
+    out.push_back(std::move(mirror));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<int> MirrorGroups(const Structure& s, double span) {
+  const int nm = s.num_bars() + s.num_strings();
   std::vector<int> root(nm);
   for (int j = 0; j < nm; ++j) root[j] = j;
   auto find = [&root](int j) {
     while (root[j] != j) j = root[j] = root[root[j]];
     return j;
   };
-  for (const auto& [in_x, in_z] : {std::pair{true, false}, std::pair{false, true}}) {
+  for (const Mirror& mirror : Mirrors(s, span)) {
     for (int j = 0; j < nm; ++j) {
-      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
-      const int a = image(m.i, in_x, in_z), b = image(m.j, in_x, in_z);
-      if (a < 0 || b < 0) continue;
-      const auto it = member_at.find({std::min(a, b), std::max(a, b)});
-      if (it == member_at.end() || (it->second < nb) != (j < nb)) continue;
-      root[find(it->second)] = find(j);
+      if (mirror.member[static_cast<size_t>(j)] >= 0) root[find(mirror.member[static_cast<size_t>(j)])] = find(j);
     }
   }
   std::vector<int> group(nm, -1), index(nm, -1);
@@ -161,6 +213,10 @@ struct SizingProblem::Impl {
   // nodes whose vertical displacement some row reads (LinearResponse::Adjoint's columns, the
   // members first), and per row its column (-1: the reference-taut rows, which read none).
   std::vector<int> adjoint_members, adjoint_nodes, row_functional;
+  // Under the problem's symmetries (SizingProblem::representatives): per row of the whole
+  // problem, the first row of its orbit (itself in a posed problem), and per member the first
+  // member of its.
+  std::vector<int> row_representative, member_representative;
 
   // The workspace: the last point evaluated, its values and (on demand) its Jacobian.
   struct State {
@@ -331,6 +387,128 @@ struct SizingProblem::Impl {
     const int n_members = static_cast<int>(adjoint_members.size());
     for (size_t r = 0; r < rows.size(); ++r) {
       if (read[r].second >= 0) row_functional[r] = read[r].second + (read[r].first ? n_members : 0);
+    }
+  }
+
+  // The problem's symmetries and, for the whole problem (`first_row`: per combination, its
+  // first row), each row's orbit under them (row_representative, member_representative).
+  void IndexImages(const Design& d, const std::vector<int>* first_row) {
+    const int n_rows = static_cast<int>(rows.size());
+    row_representative.resize(static_cast<size_t>(n_rows));
+    member_representative.resize(static_cast<size_t>(nm));
+    for (int r = 0; r < n_rows; ++r) row_representative[static_cast<size_t>(r)] = r;
+    for (int j = 0; j < nm; ++j) member_representative[static_cast<size_t>(j)] = j;
+    if (first_row == nullptr) return;
+    const int stations = static_cast<int>(d.actions.station_nodes.size());
+    const double span = d.config.bridge.span;
+    // Per symmetry, each combination's image.
+    std::vector<const Mirror*> symmetries;
+    std::vector<std::vector<int>> combo_image;
+    const std::vector<Mirror> mirrors = Mirrors(s, span);
+    std::vector<std::vector<int>> combo_at(d.cases.size(), std::vector<int>(static_cast<size_t>(stations) + 1, -1));
+    for (size_t c = 0; c < combos.size(); ++c) {
+      combo_at[static_cast<size_t>(combos[c].case_index)][static_cast<size_t>(combos[c].station + 1)] = static_cast<int>(c);
+    }
+    for (const Mirror& m : mirrors) {
+      if (!m.Complete(s) || !m.Keeps(d.loads)) continue;
+      // Each case's image: the case of its limit state and travelling load whose loads are the
+      // image of its own (itself for a symmetric case; the payload on the left for the right's).
+      std::vector<int> case_image(d.cases.size(), -1);
+      bool keeps = true;
+      for (size_t c = 0; c < d.cases.size() && keeps; ++c) {
+        const Eigen::Matrix3Xd image = m.Of(d.actions.Loads(d.cases[c]));
+        for (size_t c2 = 0; c2 < d.cases.size(); ++c2) {
+          const LoadCase &a = d.cases[c], &b = d.cases[c2];
+          if (a.state == b.state && a.station_load == b.station_load && Mirror::Same(image, d.actions.Loads(b))) {
+            case_image[c] = static_cast<int>(c2);
+            break;
+          }
+        }
+        keeps = case_image[c] >= 0;
+      }
+      // Each station's image: the station at its mirrored x whose load is the image of its own.
+      std::vector<int> station_image(static_cast<size_t>(stations), -1);
+      for (int k = 0; k < stations && keeps; ++k) {
+        const double x = m.flip[0] < 0 ? span - d.actions.station_x[k] : d.actions.station_x[k];
+        const Eigen::Matrix3Xd image = m.Of(d.actions.StationLoad(k, 1.0));
+        for (int k2 = 0; k2 < stations; ++k2) {
+          if (std::abs(d.actions.station_x[k2] - x) <= 1e-9 * span && Mirror::Same(image, d.actions.StationLoad(k2, 1.0))) {
+            station_image[static_cast<size_t>(k)] = k2;
+            break;
+          }
+        }
+        keeps = station_image[static_cast<size_t>(k)] >= 0;
+      }
+      if (!keeps) continue;
+      std::vector<int> image(combos.size());
+      for (size_t c = 0; c < combos.size(); ++c) {
+        const int k = combos[c].station;
+        image[c] = combo_at[static_cast<size_t>(case_image[static_cast<size_t>(combos[c].case_index)])]
+                          [static_cast<size_t>(k < 0 ? 0 : station_image[static_cast<size_t>(k)] + 1)];
+      }
+      symmetries.push_back(&m);
+      combo_image.push_back(std::move(image));
+    }
+    if (symmetries.empty()) return;
+    // Each row's place within its combination by kind and member (or node): the same in a
+    // combination and its image, which share a case. The reference-taut rows by member.
+    const int kinds = SizingRow::kReferenceTaut + 1;
+    const int width = std::max(nm, s.num_nodes());
+    std::vector<std::vector<int>> slot;     // per combination layout: kind x width -> offset
+    std::vector<int> layout(combos.size()); // per combination, its layout in `slot`
+    std::map<std::vector<char>, int> layouts;
+    std::vector<int> reference_taut(static_cast<size_t>(nm), -1);
+    // The reference-taut rows come last, after every combination's.
+    int combos_end = n_rows;
+    for (int r = n_rows - 1; r >= 0 && rows[static_cast<size_t>(r)].combination < 0; --r) {
+      combos_end = r;
+      reference_taut[static_cast<size_t>(rows[static_cast<size_t>(r)].member)] = r;
+    }
+    for (size_t c = 0; c < combos.size(); ++c) {
+      const int begin = (*first_row)[c], end = c + 1 < combos.size() ? (*first_row)[c + 1] : combos_end;
+      std::vector<char> key;  // the kinds in order: the layout
+      for (int r = begin; r < end; ++r) key.push_back(static_cast<char>(rows[static_cast<size_t>(r)].kind));
+      const auto [it, added] = layouts.try_emplace(key, static_cast<int>(slot.size()));
+      layout[c] = it->second;
+      if (!added) continue;
+      std::vector<int> offsets(static_cast<size_t>(kinds) * width, -1);
+      for (int r = begin; r < end; ++r) {
+        const SizingRow& row = rows[static_cast<size_t>(r)];
+        offsets[static_cast<size_t>(row.kind) * width + row.member] = r - begin;
+      }
+      slot.push_back(std::move(offsets));
+    }
+    const auto image_of = [&](size_t m, int r) {
+      const SizingRow& row = rows[static_cast<size_t>(r)];
+      const Mirror& mirror = *symmetries[m];
+      const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
+      const int member = deflection ? mirror.node[static_cast<size_t>(row.member)] : mirror.member[static_cast<size_t>(row.member)];
+      if (row.combination < 0) return reference_taut[static_cast<size_t>(member)];
+      const int c = combo_image[m][static_cast<size_t>(row.combination)];
+      if (c < 0) return -1;
+      const int offset = slot[static_cast<size_t>(layout[static_cast<size_t>(c)])][static_cast<size_t>(row.kind) * width + member];
+      return offset < 0 ? -1 : (*first_row)[static_cast<size_t>(c)] + offset;
+    };
+    std::vector<int> orbit;
+    for (int r = 0; r < n_rows; ++r) {
+      orbit.assign(1, r);
+      for (size_t m = 0; m < symmetries.size(); ++m) {
+        const size_t size = orbit.size();
+        for (size_t i = 0; i < size; ++i) {
+          const int image = image_of(m, orbit[i]);
+          if (image < 0) throw std::logic_error("SizingProblem: a row without its mirror image");
+          orbit.push_back(image);
+        }
+      }
+      row_representative[static_cast<size_t>(r)] = *std::min_element(orbit.begin(), orbit.end());
+    }
+    for (int j = 0; j < nm; ++j) {
+      int first = j;
+      for (const Mirror* m : symmetries) first = std::min(first, m->member[static_cast<size_t>(j)]);
+      for (const Mirror* m1 : symmetries) {
+        for (const Mirror* m2 : symmetries) first = std::min(first, m2->member[static_cast<size_t>(m1->member[static_cast<size_t>(j)])]);
+      }
+      member_representative[static_cast<size_t>(j)] = first;
     }
   }
 
@@ -561,7 +739,9 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   }
 
   // The rows.
+  std::vector<int> first_row;  // per combination
   for (int c = 0; c < static_cast<int>(p.combos.size()); ++c) {
+    first_row.push_back(static_cast<int>(p.rows.size()));
     if (p.combos[c].ultimate) {
       for (int j = 0; j < p.nm; ++j) {
         if (j < p.nb) {
@@ -612,6 +792,7 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     }
   }
   p.IndexFunctionals();
+  p.IndexImages(d, keep == nullptr ? &first_row : nullptr);
 }
 
 SizingProblem::~SizingProblem() = default;
@@ -767,5 +948,26 @@ double SizingProblem::row_scale(int r) const { return impl_->reference_resistanc
 const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }
 const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of; }
+
+const std::vector<int>& SizingProblem::representatives() const { return impl_->row_representative; }
+
+SizingCorrections SizingProblem::ImageCorrections(const SizingCorrections& c) const {
+  const Impl& p = *impl_;
+  SizingCorrections out = c;
+  out.demand_factor.resize(static_cast<size_t>(p.nm), 1.0);
+  out.taut_margin_n.resize(static_cast<size_t>(p.nm), 0.0);
+  std::vector<double> factor(static_cast<size_t>(p.nm), 0.0), margin(static_cast<size_t>(p.nm), -std::numeric_limits<double>::infinity());
+  for (int j = 0; j < p.nm; ++j) {
+    const size_t first = static_cast<size_t>(p.member_representative[static_cast<size_t>(j)]);
+    factor[first] = std::max(factor[first], out.demand_factor[static_cast<size_t>(j)]);
+    margin[first] = std::max(margin[first], out.taut_margin_n[static_cast<size_t>(j)]);
+  }
+  for (int j = 0; j < p.nm; ++j) {
+    const size_t first = static_cast<size_t>(p.member_representative[static_cast<size_t>(j)]);
+    out.demand_factor[static_cast<size_t>(j)] = factor[first];
+    out.taut_margin_n[static_cast<size_t>(j)] = margin[first];
+  }
+  return out;
+}
 
 }  // namespace tbridge

@@ -137,6 +137,18 @@ class SizingProblem final : public NlpProblem {
   double row_scale(int r) const;
   const std::vector<SizingCombination>& combinations() const;
   const std::vector<int>& group_of() const;  // per member
+  // The problem's symmetries are the mirrors that keep the structure and its reference loads
+  // and take every case onto a case (itself, or another: the payload on the left onto the
+  // right's) and every station onto a station. Under them
+  // a row and its images are one function of the variables once each member's corrections are
+  // the largest of its images' (ImageCorrections). Per row of the whole problem: the first row
+  // of its orbit (in a posed problem, each row itself).
+  const std::vector<int>& representatives() const;
+  // `c` with each member's demand factor and taut margin raised to the largest of its images'.
+  // The feasible set stays the same: a member and its images share one area and carry each
+  // other's forces in mirrored combinations, so each row of one holds where the row of the
+  // other with the larger factor does.
+  SizingCorrections ImageCorrections(const SizingCorrections& c) const;
 
  private:
   struct Impl;

@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <Eigen/QR>
+#include <map>
+#include <random>
 
 #include "design/design.h"
 #include "design/equilibrium.h"
@@ -208,6 +210,84 @@ TEST_CASE("the sizing poses no constant row and its strength rows hold where the
     // Both signs occur, so the agreement is not of rows that all hold.
     CHECK(negative > 0);
     CHECK(positive > 0);
+  }
+}
+
+TEST_CASE("the sizing's mirror-image rows are one function of the variables and keep the feasible set", "[design]") {
+  for (const int planes : {1, 2}) {
+    // Planar at n = 2 (mirror about mid-span; the payload on the left the image of the right's);
+    // 3D at n = 1, whose wind breaks the mirror between the planes but not the one about mid-span.
+    const Design d = RunDesign(planes == 1 ? SmallDesign().config : ThreeD(1));
+    const int nm = static_cast<int>(d.bars.size() + d.strings.size());
+    // Corrections that differ between a member and its images, as the moving load's run leaves them.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    SizingCorrections own;
+    own.demand_factor.resize(static_cast<size_t>(nm));
+    own.taut_margin_n.resize(static_cast<size_t>(nm));
+    for (int j = 0; j < nm; ++j) {
+      own.demand_factor[static_cast<size_t>(j)] = 1 + 0.5 * u(rng);
+      own.taut_margin_n[static_cast<size_t>(j)] = 200 * u(rng);
+    }
+    const SizingProblem by_member(d, own);
+    const SizingProblem merged(d, by_member.ImageCorrections(own));
+    const std::vector<int>& first = merged.representatives();
+    const int m = merged.num_constraints();
+    REQUIRE(by_member.representatives() == first);
+    // Areas off the design's by up to 30 % per group (the groups are symmetric), its prestress.
+    Eigen::VectorXd x = merged.VariablesOf(MemberAreas(d), merged.AlphaOf(d.reference_forces));
+    const int groups = *std::max_element(merged.group_of().begin(), merged.group_of().end()) + 1;
+    for (int g = 0; g < groups; ++g) x[g] *= 0.7 + 0.6 * u(rng);
+    Eigen::VectorXd g_own, g_merged;
+    by_member.Margins(x, g_own);
+    merged.Margins(x, g_merged);
+    REQUIRE(g_merged.allFinite());
+    // The symmetry is found: a planar bridge's rows pair up about mid-span (the members on the
+    // axis and the symmetric cases' own images aside), a 3D bridge's likewise (its wind keeps
+    // only that mirror).
+    int images = 0;
+    for (int r = 0; r < m; ++r) images += first[static_cast<size_t>(r)] != r;
+    INFO("planes " << planes << ": " << images << " of " << m << " rows are images");
+    CHECK(images > 0.4 * m);
+    // Each row reads as its orbit's first, to rounding: the loads and the stiffness are mirror
+    // images to 1e-15 and one linear solve loses a few digits (1e-9 of the margin, which is O(1)).
+    // And the orbit's tightest row with each member's own corrections is the merged row: the
+    // feasible set is the same. (A strength row whose force pulls the other way, margin above
+    // 1, is tightest with the smallest factor instead; it binds nowhere.)
+    std::map<int, double> tightest;
+    for (int r = 0; r < m; ++r) {
+      const auto [it, added] = tightest.try_emplace(first[static_cast<size_t>(r)], g_own[r]);
+      if (!added) it->second = std::min(it->second, g_own[r]);
+    }
+    for (int r = 0; r < m; ++r) {
+      const int f = first[static_cast<size_t>(r)];
+      INFO("row " << r << " (" << SizingRowKindName(merged.rows()[r].kind) << "), its orbit's first " << f);
+      CHECK(std::abs(g_merged[r] - g_merged[f]) <= 1e-9 * std::max(1.0, std::abs(g_merged[f])));
+      if (r == f && g_merged[f] < 1) CHECK(std::abs(tightest[f] - g_merged[f]) <= 1e-9 * std::max(1.0, std::abs(g_merged[f])));
+    }
+    // Their gradients too: a row and its image, posed together, give one Jacobian row (to 1e-9
+    // of its largest entry, as the values).
+    std::vector<char> keep(static_cast<size_t>(m), 0);
+    std::vector<std::pair<int, int>> pairs;
+    for (int r = 0; r < m && pairs.size() < 60; r += 7) {
+      const int f = first[static_cast<size_t>(r)];
+      if (f == r || keep[static_cast<size_t>(f)] || keep[static_cast<size_t>(r)]) continue;
+      keep[static_cast<size_t>(f)] = keep[static_cast<size_t>(r)] = 1;
+      pairs.emplace_back(f, r);
+    }
+    REQUIRE(pairs.size() >= 20);
+    const SizingProblem posed(d, by_member.ImageCorrections(own), &keep);
+    std::vector<int> index(static_cast<size_t>(m), -1);
+    for (int r = 0, i = 0; r < m; ++r) {
+      if (keep[static_cast<size_t>(r)]) index[static_cast<size_t>(r)] = i++;
+    }
+    Eigen::MatrixXd jac;
+    REQUIRE(posed.DenseJacobian(x, jac));
+    for (const auto& [f, r] : pairs) {
+      const Eigen::RowVectorXd a = jac.row(index[static_cast<size_t>(f)]), b = jac.row(index[static_cast<size_t>(r)]);
+      INFO("rows " << f << " and " << r);
+      CHECK((a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), 1e-300));
+    }
   }
 }
 
