@@ -588,9 +588,13 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                     : Format("travelling loads at all %d stations linearly, nonlinearly within loads.station_margin = "
                              "%g of a largest or a limit",
                              d.statics.stations, margin);
-    line(Format("static check: %d nonlinear solves (%s); largest "
+    const std::string mirrored =
+        d.statics.mirrored > 0 ? Format(", %d stations as mirror images of solved ones on this symmetric bridge",
+                                        d.statics.mirrored)
+                               : "";
+    line(Format("static check: %d nonlinear solves%s (%s); largest "
                 "deflection %.4g m (%s), limit span / %g = %.4g m; reactions balance the loads to %.1e",
-                d.statics.nonlinear_solves, stations.c_str(), d.statics.deflection_max_m,
+                d.statics.nonlinear_solves, mirrored.c_str(), stations.c_str(), d.statics.deflection_max_m,
                 d.statics.deflection_case.empty() ? "no serviceability case" : d.statics.deflection_case.c_str(),
                 d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
   }

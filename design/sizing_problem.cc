@@ -15,6 +15,7 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/linear_response.h"
+#include "design/mirror.h"
 #include "design/stability.h"
 
 namespace tbridge {
@@ -60,78 +61,6 @@ Eigen::MatrixXd SymmetricSelfStresses(const Eigen::MatrixXd& N, const std::vecto
 struct Resistance {
   double value = 0, derivative = 0;
 };
-
-}  // namespace
-
-namespace {
-
-// A mirror of the structure across one of its planes of symmetry (x = span / 2; between the
-// planes of a 3D bridge): each node's and member's image (-1 where it has none), and the sign
-// each component of a load takes in the image.
-struct Mirror {
-  std::vector<int> node, member;
-  Eigen::Vector3d flip = Eigen::Vector3d::Ones();
-  // Every node and member has an image, and a support's image is a support.
-  bool Complete(const Structure& s) const {
-    for (size_t a = 0; a < node.size(); ++a) {
-      if (node[a] < 0 || s.fixed[a] != s.fixed[static_cast<size_t>(node[a])]) return false;
-    }
-    return std::all_of(member.begin(), member.end(), [](int j) { return j >= 0; });
-  }
-  // The image of node loads (3 x nodes).
-  Eigen::Matrix3Xd Of(const Eigen::Matrix3Xd& loads) const {
-    Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, loads.cols());
-    for (Eigen::Index a = 0; a < loads.cols(); ++a) {
-      if (node[a] >= 0) out.col(node[a]) = flip.cwiseProduct(loads.col(a));
-    }
-    return out;
-  }
-  // Whether `loads` is its own image (to 1e-9 of its largest entry: the loads are built from
-  // the same nodal shares on both sides, and differ by rounding alone where they are alike).
-  bool Keeps(const Eigen::Matrix3Xd& loads) const { return Same(Of(loads), loads); }
-  static bool Same(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
-    return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
-  }
-};
-
-std::vector<Mirror> Mirrors(const Structure& s, double span) {
-  const int nn = s.num_nodes(), nb = s.num_bars(), nm = nb + s.num_strings();
-  const double tol = 1e-9 * span;
-  const double z_mid = 0.5 * (s.nodes.row(2).minCoeff() + s.nodes.row(2).maxCoeff());
-  std::map<std::pair<int, int>, int> member_at;
-  for (int j = 0; j < nm; ++j) {
-    const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
-    member_at[{std::min(m.i, m.j), std::max(m.i, m.j)}] = j;
-  }
-  std::vector<Mirror> out;
-  for (const bool in_x : {true, false}) {
-    Mirror mirror;
-    mirror.flip[in_x ? 0 : 2] = -1;
-    mirror.node.assign(static_cast<size_t>(nn), -1);
-    for (int v = 0; v < nn; ++v) {
-      Eigen::Vector3d p = s.nodes.col(v);
-      if (in_x) p[0] = span - p[0];
-      if (!in_x) p[2] = 2 * z_mid - p[2];
-      for (int w = 0; w < nn; ++w) {
-        if ((s.nodes.col(w) - p).cwiseAbs().maxCoeff() <= tol) {
-          mirror.node[static_cast<size_t>(v)] = w;
-          break;
-        }
-      }
-    }
-    mirror.member.assign(static_cast<size_t>(nm), -1);
-    for (int j = 0; j < nm; ++j) {
-      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
-      const int a = mirror.node[static_cast<size_t>(m.i)], b = mirror.node[static_cast<size_t>(m.j)];
-      if (a < 0 || b < 0) continue;
-      const auto it = member_at.find({std::min(a, b), std::max(a, b)});
-      if (it == member_at.end() || (it->second < nb) != (j < nb)) continue;
-      mirror.member[static_cast<size_t>(j)] = it->second;
-    }
-    out.push_back(std::move(mirror));
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -411,35 +340,9 @@ struct SizingProblem::Impl {
     }
     for (const Mirror& m : mirrors) {
       if (!m.Complete(s) || !m.Keeps(d.loads)) continue;
-      // Each case's image: the case of its limit state and travelling load whose loads are the
-      // image of its own (itself for a symmetric case; the payload on the left for the right's).
-      std::vector<int> case_image(d.cases.size(), -1);
-      bool keeps = true;
-      for (size_t c = 0; c < d.cases.size() && keeps; ++c) {
-        const Eigen::Matrix3Xd image = m.Of(d.actions.Loads(d.cases[c]));
-        for (size_t c2 = 0; c2 < d.cases.size(); ++c2) {
-          const LoadCase &a = d.cases[c], &b = d.cases[c2];
-          if (a.state == b.state && a.station_load == b.station_load && Mirror::Same(image, d.actions.Loads(b))) {
-            case_image[c] = static_cast<int>(c2);
-            break;
-          }
-        }
-        keeps = case_image[c] >= 0;
-      }
-      // Each station's image: the station at its mirrored x whose load is the image of its own.
-      std::vector<int> station_image(static_cast<size_t>(stations), -1);
-      for (int k = 0; k < stations && keeps; ++k) {
-        const double x = m.flip[0] < 0 ? span - d.actions.station_x[k] : d.actions.station_x[k];
-        const Eigen::Matrix3Xd image = m.Of(d.actions.StationLoad(k, 1.0));
-        for (int k2 = 0; k2 < stations; ++k2) {
-          if (std::abs(d.actions.station_x[k2] - x) <= 1e-9 * span && Mirror::Same(image, d.actions.StationLoad(k2, 1.0))) {
-            station_image[static_cast<size_t>(k)] = k2;
-            break;
-          }
-        }
-        keeps = station_image[static_cast<size_t>(k)] >= 0;
-      }
-      if (!keeps) continue;
+      const std::vector<int> case_image = CaseImages(m, d.actions, d.cases);
+      const std::vector<int> station_image = StationImages(m, d.actions, span);
+      if (case_image.empty() || (stations > 0 && station_image.empty())) continue;
       std::vector<int> image(combos.size());
       for (size_t c = 0; c < combos.size(); ++c) {
         const int k = combos[c].station;

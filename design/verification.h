@@ -63,6 +63,7 @@ struct StaticCheck {
   std::string deflection_case;
   int stations = 0;               // deck stations of a travelling family, each solved linearly
   int nonlinear_solves = 0;       // cases and stations solved nonlinearly (each in `cases`)
+  int mirrored = 0;  // stations in `cases` taken as the mirror image of their image's solve
   bool all_converged = true;
   // Not run when not done; failed when a case found no equilibrium, a deflection exceeds its
   // limit or a member's finding exceeds 1 (1e-9 allows for a member sized exactly to it).

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/two_lanes.h"
+#include "design/mirror.h"
 #include "design/static_model.h"
 #include "dynamics/modal.h"
 
@@ -68,9 +70,16 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   };
   // The standing loads, then each station from the last one's equilibrium (StaticSeries): its
   // load differs by one station's step. In two lanes (core/two_lanes.h): the standing loads
-  // and the first half of the stations, and the second half from the reference state.
+  // and the first half of the stations, and the second half from the reference state. On a
+  // symmetric bridge only the stations up to mid-span are solved: the response at the others
+  // is the mirror image of their images' (MidSpanMirror).
   const int stations = static_cast<int>(d.actions.station_nodes.size());
-  const int half = (stations + 1) / 2;
+  const std::optional<StationMirror> mirror = MidSpanMirror(statics, start, model.loads, d.actions, d.config.bridge.span);
+  std::vector<int> solved;
+  for (int k = 0; k < stations; ++k) {
+    if (!mirror || mirror->station_image[static_cast<size_t>(k)] >= k) solved.push_back(k);
+  }
+  const int half = (static_cast<int>(solved.size()) + 1) / 2;
   StaticResult at_rest;
   std::vector<StaticResult> at(static_cast<size_t>(stations));
   std::atomic<bool> stop{false};
@@ -78,13 +87,14 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
     StaticSeries series(statics, start, d.loads);
     if (standing_first) at_rest = series.Solve(model.loads);
     Eigen::Matrix3Xd loads = model.loads;
-    for (int k = first; k < last && !stop; ++k) {
+    for (int i = first; i < last && !stop; ++i) {
+      const int k = solved[static_cast<size_t>(i)];
       d.actions.AddStationLoad(k, force_n, loads);
       at[k] = series.Solve(loads);
       for (const int node : d.actions.station_nodes[k]) loads.col(node) = model.loads.col(node);
     }
   };
-  InTwoLanes([&] { run_lane(half, stations, false); },
+  InTwoLanes([&] { run_lane(half, static_cast<int>(solved.size()), false); },
              [&] {
                try {
                  run_lane(0, half, true);
@@ -93,6 +103,12 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
                  throw;
                }
              });
+  for (int k = 0; k < stations && mirror; ++k) {
+    const int image = mirror->station_image[static_cast<size_t>(k)];
+    if (image >= k) continue;
+    at[k] = at[image];
+    at[k].state = mirror->mirror.Of(at[image].state);
+  }
   converged = at_rest.converged;
   standing = at_rest.state;
   out.standing_forces = forces(standing);

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/two_lanes.h"
 #include "design/case_envelope.h"
+#include "design/mirror.h"
 #include "design/static_model.h"
 
 namespace tbridge {
@@ -160,9 +161,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     selected = SelectStations(d, families, *tangent, start, d.config.loads.station_margin);
   }
 
-  // The stations solved per case (-1: a case that does not travel), counted for the progress.
+  // The stations checked per case (-1: a case that does not travel).
   std::vector<std::vector<int>> stations_of(d.cases.size(), std::vector<int>{-1});
-  int solves = 0;
   for (size_t c = 0; c < d.cases.size(); ++c) {
     if (family_of[c] >= 0) {
       stations_of[c].clear();
@@ -170,27 +170,56 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
         if (selected[family_of[c]][k]) stations_of[c].push_back(k);
       }
     }
-    solves += static_cast<int>(stations_of[c].size());
   }
 
+  // A symmetric design under a travelling family that is its own mirror image: the response
+  // at a station is the mirror image of the response at its image station (MidSpanMirror),
+  // so only one station of each mirrored pair is solved.
+  std::optional<StationMirror> mirror;
+  std::vector<int> case_image;
+  if (!families.empty()) mirror = MidSpanMirror(model, start, d.loads, d.actions, d.config.bridge.span);
+  if (mirror) case_image = CaseImages(mirror->mirror, d.actions, d.cases);
+
   // The solves in their order (case by case, station by station), in two lanes: each case's
-  // stations split in halves, each half a series from the reference state and then from the
-  // last station's equilibrium; a case without stations goes to the lane with less work.
-  // The lanes are fixed by the design alone, so the results do not depend on the machine.
+  // stations to solve split in halves, each half a series from the reference state and then
+  // from the last station's equilibrium; a case without stations goes to the lane with less
+  // work. The lanes are fixed by the design alone, so the results do not depend on the machine.
   struct Job {
     int c = 0, station = -1, lane = 0;
     bool restart = true;  // the first of its series
+    int image_of = -1;    // the job whose mirror image this station's response is (not solved)
   };
   std::vector<Job> jobs;
   int lane_solves[2] = {0, 0};
+  int solves = 0;  // for the progress
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const std::vector<int>& st = stations_of[c];
-    const size_t half = st.size() > 1 ? (st.size() + 1) / 2 : st.size();
-    const int single_lane = lane_solves[1] < lane_solves[0] ? 1 : 0;
+    const bool paired = mirror && !case_image.empty() && case_image[c] == static_cast<int>(c) && !st.empty() && st.front() >= 0;
+    // Per station of the case, its job (to find the image's).
+    std::vector<int> job_at(static_cast<size_t>(out.stations), -1);
+    std::vector<size_t> solved;  // indexes into st
     for (size_t i = 0; i < st.size(); ++i) {
-      const int lane = st.size() > 1 ? (i < half ? 0 : 1) : single_lane;
-      jobs.push_back({static_cast<int>(c), st[i], lane, i == 0 || i == half});
-      ++lane_solves[lane];
+      const int image = paired ? mirror->station_image[static_cast<size_t>(st[i])] : -1;
+      if (image < 0 || image >= st[i] || !selected[static_cast<size_t>(family_of[c])][static_cast<size_t>(image)]) {
+        solved.push_back(i);
+      }
+    }
+    const size_t half = solved.size() > 1 ? (solved.size() + 1) / 2 : solved.size();
+    const int single_lane = lane_solves[1] < lane_solves[0] ? 1 : 0;
+    for (size_t i = 0, next = 0; i < st.size(); ++i) {
+      Job job{static_cast<int>(c), st[i], 0, false, -1};
+      if (next < solved.size() && solved[next] == i) {
+        job.lane = solved.size() > 1 ? (next < half ? 0 : 1) : single_lane;
+        job.restart = next == 0 || next == half;
+        ++lane_solves[job.lane];
+        ++solves;
+        ++next;
+      } else {
+        job.lane = -1;
+        job.image_of = job_at[static_cast<size_t>(mirror->station_image[static_cast<size_t>(st[i])])];
+      }
+      if (st[i] >= 0) job_at[static_cast<size_t>(st[i])] = static_cast<int>(jobs.size());
+      jobs.push_back(job);
     }
   }
   struct Solved {
@@ -225,6 +254,14 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
                  throw;
                }
              });
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const int j = jobs[i].image_of;
+    if (j < 0) continue;
+    solved[i] = solved[static_cast<size_t>(j)];
+    solved[i].result.state = mirror->mirror.Of(solved[static_cast<size_t>(j)].result.state);
+    solved[i].load_total = mirror->mirror.flip.cwiseProduct(solved[static_cast<size_t>(j)].load_total);
+    ++out.mirrored;
+  }
 
   for (size_t i = 0; i < jobs.size(); ++i) {
     const int c = jobs[i].c, station = jobs[i].station;
@@ -234,7 +271,7 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     r.case_index = c;
     r.station = station;
     r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, c, station});
-    ++out.nonlinear_solves;
+    if (jobs[i].image_of < 0) ++out.nonlinear_solves;
     r.converged = result.converged;
     r.message = result.message;
     r.slack_strings = result.slack_strings;

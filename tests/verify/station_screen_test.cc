@@ -95,10 +95,22 @@ TEST_CASE("the static check finds what every station's nonlinear solve finds", "
 
   // Every station nonlinearly (loads.station_margin = 1, the default).
   REQUIRE(d.config.loads.station_margin == 1.0);
+  // The bridge is symmetric: of each travelling family's 15 stations, the 7 past mid-span are
+  // the mirror images of the 7 before it, and 8 are solved.
   const StaticCheck every = CheckStatics(d);
   CHECK(every.stations == stations);
-  CHECK(every.nonlinear_solves == truth.solves);
+  CHECK(every.mirrored == 7 * 3);
+  CHECK(every.nonlinear_solves + every.mirrored == truth.solves);
   RequireSameFindings(every, truth);
+
+  // One string a hundredth larger and stiffer on one side: no mirror, every station solved.
+  Design lopsided = d;
+  lopsided.strings.front().area *= 1.01;
+  lopsided.strings.front().stiffness *= 1.01;
+  const StaticCheck one_sided = CheckStatics(lopsided);
+  CHECK(one_sided.mirrored == 0);
+  CHECK(one_sided.nonlinear_solves == truth.solves);
+  RequireSameFindings(one_sided, Solve(lopsided));
 
   // Screened by the linear pass at a margin of 0.3: on this design the station that governs
   // a member nonlinearly lies at most 0.12 of the largest below it in the linear pass.
