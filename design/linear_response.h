@@ -53,6 +53,8 @@ class LinearResponse {
   Eigen::MatrixXd ForceChanges(const Eigen::MatrixXd& solutions) const;
   // The vertical (y) displacement [m] of node `node` in each solution (0 for a pinned node).
   Eigen::RowVectorXd Vertical(const Eigen::MatrixXd& solutions, int node) const;
+  // The row of the solutions that holds node `node`'s vertical displacement; -1 for a pinned node.
+  int VerticalRow(int node) const { return dof_[node] < 0 ? -1 : dof_[node] + 1; }
 
   // How a parameter moves the state: dk_s/dp per string and dx_j/dp per member.
   struct Direction {

@@ -159,6 +159,7 @@ struct SizingProblem::Impl {
     Eigen::MatrixXd u, dx;  // solutions and force changes per column
     Eigen::VectorXd xr;
     std::vector<double> a;
+    std::vector<BarCapacity> bar_capacity;  // per bar, at its area a
     std::vector<Eigen::VectorXd> forces;  // per combination [N]
   };
   mutable State st;
@@ -180,9 +181,10 @@ struct SizingProblem::Impl {
     return f;
   }
   double Vertical(int c, int node, const Eigen::MatrixXd& u) const {
-    const Eigen::RowVectorXd v = st.lin->Vertical(u, node);
-    double out = v[base_column[c]];
-    if (station_factor[c] != 0) out += station_factor[c] * v[station_column0 + combos[c].station];
+    const int row = st.lin->VerticalRow(node);
+    if (row < 0) return 0.0;
+    double out = u(row, base_column[c]);
+    if (station_factor[c] != 0) out += station_factor[c] * u(row, station_column0 + combos[c].station);
     return out;
   }
 
@@ -192,6 +194,10 @@ struct SizingProblem::Impl {
     st.valid = true;
     st.have_jac = false;
     st.a = Areas(x);
+    // Each bar's resistances, once per point: a member's rows are many (n = 8: 777
+    // combinations), its resistance one.
+    st.bar_capacity.resize(static_cast<size_t>(nb));
+    for (int j = 0; j < nb; ++j) st.bar_capacity[static_cast<size_t>(j)] = BarResistance(st.a[j], length[j], rule, E_bar);
     st.xr = Reference(x);
     Eigen::VectorXd k(ns);
     for (int q = 0; q < ns; ++q) k[q] = (E * st.a[nb + q] + st.xr[nb + q]) / length[nb + q];
@@ -232,7 +238,12 @@ struct SizingProblem::Impl {
     return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
                                             : Resistance{cap.yield, cap.d_yield};
   }
-  Resistance ResistanceOf(const SizingRow& row) const { return ResistanceAt(row, st.a[row.member]); }
+  Resistance ResistanceOf(const SizingRow& row) const {
+    if (row.kind == SizingRow::kStrength) return {sigma_w * st.a[row.member], sigma_w};
+    const BarCapacity& cap = st.bar_capacity[static_cast<size_t>(row.member)];
+    return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
+                                            : Resistance{cap.yield, cap.d_yield};
+  }
 
   // Row r as the solvers see it. A strength row is posed as (R(A) - kappa F) / R_ref, R_ref its
   // resistance at the problem's own area: it holds where its margin 1 - kappa F / R(A) does,
