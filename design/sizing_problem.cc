@@ -124,11 +124,14 @@ struct SizingProblem::Impl {
   Eigen::MatrixXd N;      // members x states, orthonormal symmetric self-stresses
   Eigen::MatrixXd to_basis;  // the equilibrium solver's states x states: N's coefficients there
   Eigen::VectorXd x_g;    // the reference loads' particular forces [N]
-  Eigen::MatrixXd loads;  // free-DOF columns: each case's change from G, then a unit load per station
-  int station_column0 = 0;
+  // Free-DOF columns: each case's change from G, then a unit load per station; in a posed
+  // problem only those its rows read (a symmetric bridge's posed rows read half the stations).
+  Eigen::MatrixXd loads;
   std::vector<SizingCombination> combos;
   std::vector<double> station_factor;  // per combination: its station load [N] (0: none)
-  std::vector<int> base_column;        // per combination
+  std::vector<int> base_column;        // per combination: its case's column of `loads`
+  std::vector<int> station_column;     // per combination: its station's column (-1: none)
+  std::vector<char> combo_read;        // per combination: some row reads it
   std::vector<SizingRow> rows;
   // Per row: its member's resistance at the problem's own area [N] (strength rows; 1 for the
   // others), the scale of its posed form (Posed).
@@ -177,14 +180,14 @@ struct SizingProblem::Impl {
   // reference forces xr.
   Eigen::VectorXd Forces(int c, const Eigen::VectorXd& xr, const Eigen::MatrixXd& dx) const {
     Eigen::VectorXd f = xr + dx.col(base_column[c]);
-    if (station_factor[c] != 0) f += station_factor[c] * dx.col(station_column0 + combos[c].station);
+    if (station_factor[c] != 0) f += station_factor[c] * dx.col(station_column[c]);
     return f;
   }
   double Vertical(int c, int node, const Eigen::MatrixXd& u) const {
     const int row = st.lin->VerticalRow(node);
     if (row < 0) return 0.0;
     double out = u(row, base_column[c]);
-    if (station_factor[c] != 0) out += station_factor[c] * u(row, station_column0 + combos[c].station);
+    if (station_factor[c] != 0) out += station_factor[c] * u(row, station_column[c]);
     return out;
   }
 
@@ -219,7 +222,9 @@ struct SizingProblem::Impl {
     st.u = st.lin->Solve(loads);
     st.dx = st.lin->ForceChanges(st.u);
     st.forces.resize(combos.size());
-    for (size_t c = 0; c < combos.size(); ++c) st.forces[c] = Forces(static_cast<int>(c), st.xr, st.dx);
+    for (size_t c = 0; c < combos.size(); ++c) {
+      if (combo_read[c]) st.forces[c] = Forces(static_cast<int>(c), st.xr, st.dx);
+    }
     st.margin.resize(st.g.size());
     for (size_t r = 0; r < rows.size(); ++r) {
       st.margin[r] = Value(rows[r]);
@@ -330,6 +335,32 @@ struct SizingProblem::Impl {
     }
   }
 
+  // The combinations the rows read, and the load columns: only those read, renumbered.
+  void ReadColumns() {
+    combo_read.assign(combos.size(), 0);
+    for (const SizingRow& row : rows) {
+      if (row.combination >= 0) combo_read[static_cast<size_t>(row.combination)] = 1;
+    }
+    std::vector<int> column(static_cast<size_t>(loads.cols()), -1);
+    int used = 0;
+    for (size_t c = 0; c < combos.size(); ++c) {
+      if (!combo_read[c]) continue;
+      for (const int k : {base_column[c], station_column[c]}) {
+        if (k >= 0 && column[static_cast<size_t>(k)] < 0) column[static_cast<size_t>(k)] = used++;
+      }
+    }
+    if (used == loads.cols()) return;
+    Eigen::MatrixXd read(loads.rows(), used);
+    for (Eigen::Index k = 0; k < loads.cols(); ++k) {
+      if (column[static_cast<size_t>(k)] >= 0) read.col(column[static_cast<size_t>(k)]) = loads.col(k);
+    }
+    loads = std::move(read);
+    for (size_t c = 0; c < combos.size(); ++c) {
+      base_column[c] = column[static_cast<size_t>(base_column[c])];
+      if (station_column[c] >= 0) station_column[c] = column[static_cast<size_t>(station_column[c])];
+    }
+  }
+
   // The problem's symmetries and, for the whole problem (`first_row`: per combination, its
   // first row), each row's orbit under them (row_representative, member_representative).
   void IndexImages(const Design& d, const std::vector<int>* first_row) {
@@ -430,7 +461,7 @@ struct SizingProblem::Impl {
   // station's times the station load), as Forces and Vertical combine them.
   double Combined(const Eigen::MatrixXd& m, int row, int c) const {
     double out = m(row, base_column[c]);
-    if (station_factor[c] != 0) out += station_factor[c] * m(row, station_column0 + combos[c].station);
+    if (station_factor[c] != 0) out += station_factor[c] * m(row, station_column[c]);
     return out;
   }
 
@@ -547,7 +578,7 @@ struct SizingProblem::Impl {
       const auto d_value = [&](int f, int c) {
         double out = -adjoint_t.col(f).dot(action_t.col(base_column[c]));
         if (station_factor[c] != 0) {
-          out -= station_factor[c] * adjoint_t.col(f).dot(action_t.col(station_column0 + combos[c].station));
+          out -= station_factor[c] * adjoint_t.col(f).dot(action_t.col(station_column[c]));
         }
         return out;
       };
@@ -635,8 +666,8 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   const Eigen::VectorXd reference_free = free(d.loads);
   p.loads.resize(reference_free.size(), static_cast<Eigen::Index>(d.cases.size()) + stations);
   for (size_t c = 0; c < d.cases.size(); ++c) p.loads.col(c) = free(d.actions.Loads(d.cases[c])) - reference_free;
-  p.station_column0 = static_cast<int>(d.cases.size());
-  for (int k = 0; k < stations; ++k) p.loads.col(p.station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
+  const int station_column0 = static_cast<int>(d.cases.size());
+  for (int k = 0; k < stations; ++k) p.loads.col(station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
     for (int k = lc.station_load != 0 ? 0 : -1; k < (lc.station_load != 0 ? stations : 0); ++k) {
@@ -649,6 +680,7 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
       p.combos.push_back(combo);
       p.station_factor.push_back(k >= 0 ? lc.station_load : 0.0);
       p.base_column.push_back(static_cast<int>(c));
+      p.station_column.push_back(k >= 0 ? station_column0 + k : -1);
     }
   }
 
@@ -698,6 +730,7 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     }
     p.rows = std::move(kept);
   }
+  p.ReadColumns();
   p.reference_resistance.assign(p.rows.size(), 1.0);
   for (size_t r = 0; r < p.rows.size(); ++r) {
     const SizingRow& row = p.rows[r];
@@ -848,7 +881,7 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
   double largest = 0;
   if (!p.st.lin) return largest;
   for (size_t c = 0; c < p.combos.size(); ++c) {
-    if (p.combos[c].ultimate) continue;
+    if (p.combos[c].ultimate || !p.combo_read[c]) continue;  // a combination no row reads has no column
     for (int v : p.deck_nodes) largest = std::max(largest, std::abs(p.Vertical(static_cast<int>(c), v, p.st.u)));
   }
   return largest;
