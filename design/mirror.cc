@@ -32,9 +32,9 @@ bool Mirror::KeepsStrings(const std::vector<double>& per_string, int bars) const
   return true;
 }
 
-bool Mirror::Same(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
-  if (a.cols() != b.cols()) return false;
-  if (a.cols() == 0) return true;
+bool Mirror::Same(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+  if (a.size() == 0) return true;
   return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
 }
 
@@ -50,6 +50,12 @@ StaticState Mirror::Of(const StaticState& state) const {
   for (Eigen::Index k = 0; k < state.string_tension.size(); ++k) {
     out.string_tension[member[static_cast<size_t>(nb + k)] - nb] = state.string_tension[k];
   }
+  return out;
+}
+
+StaticResult Mirror::Of(const StaticResult& result) const {
+  StaticResult out = result;
+  out.state = Of(result.state);
   return out;
 }
 
@@ -135,11 +141,8 @@ std::optional<StationMirror> MidSpanMirror(const StaticModel& model, const Stati
   }
   // The reference state is its own image (to 1e-9 of its coordinates and forces: one solve's rounding).
   const StaticState image = m.Of(start);
-  const auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    return a.size() == 0 || (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
-  };
-  if (!Mirror::Same(image.nodes, start.nodes) || !same(image.bar_compression, start.bar_compression) ||
-      !same(image.string_tension, start.string_tension)) {
+  if (!Mirror::Same(image.nodes, start.nodes) || !Mirror::Same(image.bar_compression, start.bar_compression) ||
+      !Mirror::Same(image.string_tension, start.string_tension)) {
     return std::nullopt;
   }
   std::vector<int> stations = StationImages(m, actions, span);

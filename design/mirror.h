@@ -31,10 +31,13 @@ struct Mirror {
   // given one value per mirrored group, copied, not computed).
   bool KeepsStrings(const std::vector<double>& per_string, int bars) const;
   // Equal to 1e-9 of the larger entry: loads built from the same nodal shares on both sides
-  // differ by rounding alone where they are alike, and by the loads themselves where not.
-  static bool Same(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b);
-  // The image of a static state: positions, forces (member by member) and reactions.
+  // differ by rounding alone where they are alike, and by the loads themselves where not; a
+  // state's forces and positions likewise, by one solve's rounding.
+  static bool Same(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b);
+  // The image of a static state (positions, forces member by member, reactions), and of a
+  // solve's result; of a complete mirror only.
   StaticState Of(const StaticState& state) const;
+  StaticResult Of(const StaticResult& result) const;
 };
 
 // The two mirrors of `s`: about x = span / 2, then between the planes of a 3D bridge (on a

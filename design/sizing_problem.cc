@@ -235,19 +235,22 @@ struct SizingProblem::Impl {
   static bool IsStrength(const SizingRow& row) {
     return row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling || row.kind == SizingRow::kYield;
   }
-  // The resistance of row's member at `area` [N] and its derivative by the area [N/m^2]
-  // (strength rows).
-  Resistance ResistanceAt(const SizingRow& row, double area) const {
+  // The resistance of row's member [N] and its derivative by the area [N/m^2] (strength
+  // rows): a string's at `area`, a bar's of its capacity `cap` (unread for a string).
+  Resistance ResistanceOf(const SizingRow& row, double area, const BarCapacity& cap) const {
     if (row.kind == SizingRow::kStrength) return {sigma_w * area, sigma_w};
-    const BarCapacity cap = BarResistance(area, length[row.member], rule, E_bar);
     return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
                                             : Resistance{cap.yield, cap.d_yield};
   }
+  // At `area`.
+  Resistance ResistanceAt(const SizingRow& row, double area) const {
+    return ResistanceOf(row, area,
+                        row.kind == SizingRow::kStrength ? BarCapacity{} : BarResistance(area, length[row.member], rule, E_bar));
+  }
+  // At the evaluated state.
   Resistance ResistanceOf(const SizingRow& row) const {
-    if (row.kind == SizingRow::kStrength) return {sigma_w * st.a[row.member], sigma_w};
-    const BarCapacity& cap = st.bar_capacity[static_cast<size_t>(row.member)];
-    return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
-                                            : Resistance{cap.yield, cap.d_yield};
+    const size_t j = static_cast<size_t>(row.member);
+    return ResistanceOf(row, st.a[j], row.kind == SizingRow::kStrength ? BarCapacity{} : st.bar_capacity[j]);
   }
 
   // Row r as the solvers see it. A strength row is posed as (R(A) - kappa F) / R_ref, R_ref its

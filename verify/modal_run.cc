@@ -106,8 +106,7 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   for (int k = 0; k < stations && mirror; ++k) {
     const int image = mirror->station_image[static_cast<size_t>(k)];
     if (image >= k) continue;
-    at[k] = at[image];
-    at[k].state = mirror->mirror.Of(at[image].state);
+    at[k] = mirror->mirror.Of(at[image]);
   }
   converged = at_rest.converged;
   standing = at_rest.state;

@@ -257,8 +257,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   for (size_t i = 0; i < jobs.size(); ++i) {
     const int j = jobs[i].image_of;
     if (j < 0) continue;
-    solved[i] = solved[static_cast<size_t>(j)];
-    solved[i].result.state = mirror->mirror.Of(solved[static_cast<size_t>(j)].result.state);
+    solved[i].result = mirror->mirror.Of(solved[static_cast<size_t>(j)].result);
+    solved[i].load_abs_sum = solved[static_cast<size_t>(j)].load_abs_sum;
     solved[i].load_total = mirror->mirror.flip.cwiseProduct(solved[static_cast<size_t>(j)].load_total);
     ++out.mirrored;
   }
