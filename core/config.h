@@ -104,7 +104,8 @@ struct ComfortConfig {
   std::optional<double> damping_ratio;  // xi, (0, 1); absent: the construction's
   double pedestrian_mass_kg = 70.0;     // one pedestrian's mass [kg] (Sétra: 700 N)
   double vertical_trigger_hz = 5.0;     // EN 1990 A2.4.3.2(2): check below this (vertical)
-  double horizontal_trigger_hz = 2.5;   // EN 1990 A2.4.3.2(2): lateral and torsional
+  double horizontal_trigger_hz = 2.5;   // EN 1990 A2.4.3.2(2): lateral
+  double torsional_trigger_hz = 5.0;    // Sétra 2006 2.3: torsional modes in the vertical ranges
   double vertical_limit_m_s2 = 0.7;     // EN 1990 A2.4.3.2(1)
   double horizontal_limit_m_s2 = 0.2;   // EN 1990 A2.4.3.2(1), normal use
   double crowd_horizontal_limit_m_s2 = 0.4;  // EN 1990 A2.4.3.2(1), exceptional crowd conditions

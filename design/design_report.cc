@@ -430,10 +430,23 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"deck_beams", d.mass.deck_beams},
                      {"structure", d.mass.structure},
                      {"total", d.mass.total}};
+  const Resizing::Kkt& kkt = d.resizing.kkt;
   const json solver = {{"name", d.solver.solver},
                        {"status", d.solver.status},
                        {"iterations", d.solver.iterations},
-                       {"problem", d.solver_form}};
+                       {"problem", d.solver_form},
+                       {"kkt", !kkt.computed ? json(nullptr)
+                                             : json{{"stationarity", kkt.stationarity},
+                                                    {"feasibility", kkt.feasibility},
+                                                    {"complementarity", kkt.complementarity},
+                                                    {"second_order", kkt.second_order},
+                                                    {"second_order_by", kkt.second_order_by},
+                                                    {"proved_local_optimum", kkt.proved_local_optimum},
+                                                    {"failed", kkt.failed},
+                                                    {"active_rows", kkt.active_rows},
+                                                    {"active_bounds", kkt.active_bounds},
+                                                    {"free_variables", kkt.free_variables},
+                                                    {"null_space_dimension", kkt.null_space_dimension}}}};
   auto field = [&os](const char* key, const json& value, bool last = false) {
     std::string text = value.dump(2);
     for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
@@ -498,8 +511,7 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"second_start_kg", d.resizing.second_start_kg},
                      {"optima", d.resizing.optima},
                      {"why", d.resizing.why},
-                     {"comfort_stiffness_factor", d.resizing.comfort_stiffness_factor},
-                     {"comfort_governs", d.resizing.comfort_governs}});
+                     {"comfort_rows", d.resizing.comfort_rows}});
   field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);
   field("solver", solver);
@@ -620,10 +632,15 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     }
     if (!r.optima.empty()) line("  " + r.optima);
   }
-  if (d.resizing.comfort_stiffness_factor != 1.0) {
-    line(Format("resizing for comfort: %.4g times the stiffness the deflection limit asks for; governs: %s",
-                d.resizing.comfort_stiffness_factor, d.resizing.comfort_governs.c_str()));
+  if (d.resizing.kkt.computed) {
+    const Resizing::Kkt& k = d.resizing.kkt;
+    line(k.proved_local_optimum
+             ? Format("optimality: first- and second-order conditions hold (stationarity %.1e, feasibility %.1e, "
+                      "complementarity %.1e; second order by %s)",
+                      k.stationarity, k.feasibility, k.complementarity, k.second_order_by.c_str())
+             : "optimality: not proved: " + k.failed);
   }
+  for (const std::string& row : d.resizing.comfort_rows) line("comfort row of the sizing: " + row);
   if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {
     if (!r.done) {

@@ -62,15 +62,23 @@ int RiskRange(LoadAxis axis, double f) {
   return 4;
 }
 
-int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi) {
+int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi) { return RiskRangesOver(axis, f_lo, f_hi).front(); }
+
+std::vector<int> RiskRangesOver(LoadAxis axis, double f_lo, double f_hi) {
   if (f_hi < f_lo) std::swap(f_lo, f_hi);
   const Ranges r = RangesOf(axis);
-  int best = std::min(RiskRange(axis, f_lo), RiskRange(axis, f_hi));
-  // The ranges are intervals: the riskiest one met lies at an end or at a bound inside.
+  std::vector<int> met = {RiskRange(axis, f_lo), RiskRange(axis, f_hi)};
+  // The ranges are unions of intervals: each one met is met at an end or on either side of a
+  // bound inside.
   for (const double f : {r.r2_lo, r.r1_lo, r.r1_hi, r.r2_hi, r.r3_hi}) {
-    if (f > f_lo && f < f_hi) best = std::min(best, RiskRange(axis, f));
+    if (f > f_lo && f < f_hi) {
+      met.push_back(RiskRange(axis, f));
+      met.push_back(RiskRange(axis, std::nextafter(f, f_hi)));
+    }
   }
-  return best;
+  std::sort(met.begin(), met.end());
+  met.erase(std::unique(met.begin(), met.end()), met.end());
+  return met;
 }
 
 double Psi(LoadAxis axis, int harmonic, double f) { return PsiShape(axis, harmonic).At(f); }

@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tbridge {
 
@@ -32,6 +33,8 @@ int RiskRange(LoadAxis axis, double f_hz);
 // The riskiest range met by a frequency anywhere in [f_lo, f_hi] (the deck's frequency moves
 // there as the crowd builds up).
 int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi);
+// Every range met by a frequency in [f_lo, f_hi], riskiest first.
+std::vector<int> RiskRangesOver(LoadAxis axis, double f_lo, double f_hi);
 
 // Sétra Stage 4: psi(f), the factor on the harmonic load for the chance that the pedestrians'
 // pace meets f (a trapezoid: 0 outside, rising linearly to 1, 1 on its plateau: 1 over range 1

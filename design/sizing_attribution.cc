@@ -8,7 +8,16 @@
 namespace tbridge {
 namespace {
 
-enum KindIndex { kStrengthKind, kBucklingKind, kYieldKind, kDeflectionKind, kTautKind, kMinimumKind, kDynamicsKind };
+enum KindIndex {
+  kStrengthKind,
+  kBucklingKind,
+  kYieldKind,
+  kDeflectionKind,
+  kTautKind,
+  kMinimumKind,
+  kDynamicsKind,
+  kComfortKind
+};
 
 // The row's kind; a strength row's share that the dynamic runs add (`dynamic` of its member)
 // goes to "dynamics" (DynamicShare).
@@ -23,6 +32,8 @@ int KindOf(const SizingRow& row) {
     case SizingRow::kDeflectionDown:
     case SizingRow::kDeflectionUp:
       return kDeflectionKind;
+    case SizingRow::kComfort:
+      return kComfortKind;
     case SizingRow::kTaut:
     case SizingRow::kReferenceTaut:
       break;
@@ -49,6 +60,7 @@ const char* UnitOf(int kind) {
   return kind == kTautKind         ? "kg/N"
          : kind == kDeflectionKind ? "kg per unit deflection / limit"
          : kind == kMinimumKind    ? "kg/m^2"
+         : kind == kComfortKind    ? "kg per unit of omega^2 / its bound"
                                    : "kg per unit utilisation";
 }
 
@@ -130,7 +142,7 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
     if (r >= 0) {
       const int kind = DynamicShare(p.rows()[r], dynamic) > 0.5 ? kDynamicsKind : KindOf(p.rows()[r]);
       b.kind = kConstraintKinds[kind];
-      b.case_label = p.combinations()[p.rows()[r].combination].label;
+      b.case_label = p.RowLabel(r);
       b.multiplier = Physical(kind, z[r], p, v);
       b.unit = UnitOf(kind);
     } else if (r <= -2) {

@@ -101,9 +101,11 @@ const char* SizingRowKindName(SizingRow::Kind kind) {
     case SizingRow::kDeflectionUp:
       return "deflection";
     case SizingRow::kReferenceTaut:
+      return "reference_taut";
+    case SizingRow::kComfort:
       break;
   }
-  return "reference_taut";
+  return "comfort";
 }
 
 struct SizingProblem::Impl {
@@ -124,6 +126,10 @@ struct SizingProblem::Impl {
   Eigen::MatrixXd N;      // members x states, orthonormal symmetric self-stresses
   Eigen::MatrixXd to_basis;  // the equilibrium solver's states x states: N's coefficients there
   Eigen::VectorXd x_g;    // the reference loads' particular forces [N]
+  // The areas and reference forces of the design the problem is built from: the comfort rows'
+  // Rayleigh quotients are taken about them.
+  std::vector<double> area0;
+  Eigen::VectorXd xr0;
   // Free-DOF columns: each case's change from G, then a unit load per station; in a posed
   // problem only those its rows read (a symmetric bridge's posed rows read half the stations).
   Eigen::MatrixXd loads;
@@ -279,13 +285,59 @@ struct SizingProblem::Impl {
       case SizingRow::kTaut:
         return (st.forces[c][j] - corrections.taut_margin_n[j]) / force_scale;
       case SizingRow::kDeflectionDown:
-        return 1.0 + corrections.deflection_factor * corrections.stiffness_factor * Vertical(c, j, st.u) / deflection_limit_m;
+        return 1.0 + corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kDeflectionUp:
-        return 1.0 - corrections.deflection_factor * corrections.stiffness_factor * Vertical(c, j, st.u) / deflection_limit_m;
+        return 1.0 - corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kReferenceTaut:
+        return st.xr[j] / force_scale;
+      case SizingRow::kComfort:
         break;
     }
-    return st.xr[j] / force_scale;
+    const ComfortRow& k = corrections.comfort[static_cast<size_t>(j)];
+    const double ratio = ComfortOmega2(k, st.a, st.xr) / k.target_omega2;
+    return k.lower ? ratio - 1.0 : 1.0 - ratio;
+  }
+
+  // Comfort row k's eigenvalue at areas a and reference forces xr: its Rayleigh quotient
+  // (ComfortRow), numerator and denominator affine in both.
+  struct Quotient {
+    double stiffness = 0, mass = 1;
+    double value() const { return stiffness / mass; }
+  };
+  Quotient ComfortQuotient(const ComfortRow& k, const std::vector<double>& a, const Eigen::VectorXd& xr) const {
+    Quotient q{k.omega2, 1.0};
+    for (int j = 0; j < nm; ++j) {
+      const double da = a[static_cast<size_t>(j)] - area0[static_cast<size_t>(j)];
+      q.stiffness += k.by_area[static_cast<size_t>(j)] * da + k.by_force[static_cast<size_t>(j)] * (xr[j] - xr0[j]);
+      q.mass += k.mass_by_area[static_cast<size_t>(j)] * da;
+    }
+    return q;
+  }
+  double ComfortOmega2(const ComfortRow& k, const std::vector<double>& a, const Eigen::VectorXd& xr) const {
+    return ComfortQuotient(k, a, xr).value();
+  }
+
+  // The comfort rows' gradients at the evaluated state, by the quotient rule on
+  // ComfortQuotient: d omega^2 = (d stiffness - omega^2 d mass) / mass.
+  void ComfortGradients() const {
+    for (size_t r = 0; r < rows.size(); ++r) {
+      if (rows[r].kind != SizingRow::kComfort) continue;
+      const ComfortRow& k = corrections.comfort[static_cast<size_t>(rows[r].member)];
+      const Quotient q = ComfortQuotient(k, st.a, st.xr);
+      const double w2 = q.value(), sign = (k.lower ? 1.0 : -1.0) / (k.target_omega2 * q.mass);
+      for (int v = 0; v < groups; ++v) {
+        double d = 0;
+        for (const int j : members_of[static_cast<size_t>(v)]) {
+          d += (k.by_area[static_cast<size_t>(j)] - w2 * k.mass_by_area[static_cast<size_t>(j)]) * area_scale[static_cast<size_t>(v)];
+        }
+        st.jac(static_cast<Eigen::Index>(r), v) = sign * d;
+      }
+      for (int m = 0; m < states; ++m) {
+        double d = 0;
+        for (int j = 0; j < nm; ++j) d += k.by_force[static_cast<size_t>(j)] * N(j, m) * force_scale;
+        st.jac(static_cast<Eigen::Index>(r), groups + m) = sign * d;
+      }
+    }
   }
 
   // A row's derivative along a direction that moves its member's force in its combination by
@@ -305,13 +357,15 @@ struct SizingProblem::Impl {
       case SizingRow::kTaut:
         return d_force / force_scale;
       case SizingRow::kDeflectionDown:
-        return corrections.deflection_factor * corrections.stiffness_factor * d_vertical / deflection_limit_m;
+        return corrections.deflection_factor * d_vertical / deflection_limit_m;
       case SizingRow::kDeflectionUp:
-        return -corrections.deflection_factor * corrections.stiffness_factor * d_vertical / deflection_limit_m;
+        return -corrections.deflection_factor * d_vertical / deflection_limit_m;
       case SizingRow::kReferenceTaut:
-        break;
+        return d_reference / force_scale;
+      case SizingRow::kComfort:
+        break;  // read no force or displacement: ComfortGradients forms their rows
     }
-    return d_reference / force_scale;
+    return 0.0;
   }
 
   // Indexes what each row reads (adjoint_members, adjoint_nodes, row_functional): once, as
@@ -321,7 +375,7 @@ struct SizingProblem::Impl {
     std::vector<std::pair<bool, int>> read(rows.size(), {false, -1});
     for (size_t r = 0; r < rows.size(); ++r) {
       const SizingRow& row = rows[r];
-      if (row.kind == SizingRow::kReferenceTaut) continue;
+      if (row.kind == SizingRow::kReferenceTaut || row.kind == SizingRow::kComfort) continue;
       const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
       std::vector<int>& col = deflection ? node_col : member_col;
       std::vector<int>& list = deflection ? adjoint_nodes : adjoint_members;
@@ -400,17 +454,18 @@ struct SizingProblem::Impl {
     if (symmetries.empty()) return;
     // Each row's place within its combination by kind and member (or node): the same in a
     // combination and its image, which share a case. The reference-taut rows by member.
-    const int kinds = SizingRow::kReferenceTaut + 1;
-    const int width = std::max(nm, s.num_nodes());
+    const int kinds = SizingRow::kComfort + 1;
+    const int width = std::max({nm, s.num_nodes(), static_cast<int>(corrections.comfort.size())});
     std::vector<std::vector<int>> slot;     // per combination layout: kind x width -> offset
     std::vector<int> layout(combos.size()); // per combination, its layout in `slot`
     std::map<std::vector<char>, int> layouts;
     std::vector<int> reference_taut(static_cast<size_t>(nm), -1);
-    // The reference-taut rows come last, after every combination's.
+    // The comfort and reference-taut rows come last, after every combination's.
     int combos_end = n_rows;
     for (int r = n_rows - 1; r >= 0 && rows[static_cast<size_t>(r)].combination < 0; --r) {
       combos_end = r;
-      reference_taut[static_cast<size_t>(rows[static_cast<size_t>(r)].member)] = r;
+      const SizingRow& row = rows[static_cast<size_t>(r)];
+      if (row.kind == SizingRow::kReferenceTaut) reference_taut[static_cast<size_t>(row.member)] = r;
     }
     for (size_t c = 0; c < combos.size(); ++c) {
       const int begin = (*first_row)[c], end = c + 1 < combos.size() ? (*first_row)[c + 1] : combos_end;
@@ -428,6 +483,8 @@ struct SizingProblem::Impl {
     }
     const auto image_of = [&](size_t m, int r) {
       const SizingRow& row = rows[static_cast<size_t>(r)];
+      // A mode's eigenvalue reads the group variables only, which the mirrors keep.
+      if (row.kind == SizingRow::kComfort) return r;
       const Mirror& mirror = *symmetries[m];
       const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
       const int member = deflection ? mirror.node[static_cast<size_t>(row.member)] : mirror.member[static_cast<size_t>(row.member)];
@@ -498,6 +555,7 @@ struct SizingProblem::Impl {
     };
     const int half = (nv + 1) / 2;
     InTwoLanes([&] { columns(half, nv); }, [&] { columns(0, half); });
+    ComfortGradients();
     st.have_jac = true;
   }
 
@@ -661,6 +719,10 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   // The minimum-norm particular forces of symmetric loads are symmetric themselves.
   p.x_g = solver.Particular(FreeLoads(eq, d.loads)).col(0);
   p.force_scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
+  for (int j = 0; j < p.nm; ++j) p.area0.push_back(j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area);
+  // The design's reference forces as the problem reads them: G's particular forces and the
+  // symmetric part of its prestress.
+  p.xr0 = p.states ? Eigen::VectorXd(p.x_g + p.N * (p.N.transpose() * (d.reference_forces - p.x_g))) : p.x_g;
   p.mass_scale = std::max(d.mass.structure, 1e-3);
 
   // The load columns: each case's change from the reference loads, then a unit station load.
@@ -718,6 +780,8 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
       }
     }
   }
+  // The comfort rows: each a function of the variables alone, posed once.
+  for (size_t k = 0; k < p.corrections.comfort.size(); ++k) p.rows.push_back({SizingRow::kComfort, static_cast<int>(k), -1});
   // A string that no self-stress reaches (its row of the orthonormal N is rounding) has the
   // reference force G alone gives it, whatever the variables: its row would be a constant,
   // violated (n = 8: 126 strings at 0.95 of the row's margin once the weight had grown) or not,
@@ -764,11 +828,19 @@ void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) con
   const Impl& p = *impl_;
   lo.resize(p.num_variables());
   hi.resize(p.num_variables());
+  const double r = p.corrections.move_limit;
   for (int g = 0; g < p.groups; ++g) {
-    double floor = 0;
-    for (int j : p.members_of[g]) floor = std::max(floor, p.min_area[j]);
+    double floor = 0, start = 0;
+    for (int j : p.members_of[g]) {
+      floor = std::max(floor, p.min_area[j]);
+      start = std::max(start, p.area0[static_cast<size_t>(j)]);
+    }
     lo[g] = floor / p.area_scale[g];
     hi[g] = std::numeric_limits<double>::infinity();
+    if (r > 0) {
+      lo[g] = std::max(lo[g], start / (1 + r) / p.area_scale[g]);
+      hi[g] = std::max(lo[g], start * (1 + r) / p.area_scale[g]);
+    }
   }
   for (int m = 0; m < p.states; ++m) {
     lo[p.groups + m] = -std::numeric_limits<double>::infinity();
@@ -898,6 +970,22 @@ double SizingProblem::row_scale(int r) const { return impl_->reference_resistanc
 const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }
 const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of; }
+
+const std::string& SizingProblem::RowLabel(int r) const {
+  const Impl& p = *impl_;
+  const SizingRow& row = p.rows[static_cast<size_t>(r)];
+  if (row.kind == SizingRow::kComfort) return p.corrections.comfort[static_cast<size_t>(row.member)].label;
+  static const std::string kNone;
+  return row.combination >= 0 ? p.combos[static_cast<size_t>(row.combination)].label : kNone;
+}
+
+const std::vector<ComfortRow>& SizingProblem::comfort_rows() const { return impl_->corrections.comfort; }
+
+double SizingProblem::ComfortOmega2(int r, const Eigen::VectorXd& x) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  return p.ComfortOmega2(p.corrections.comfort[static_cast<size_t>(p.rows[static_cast<size_t>(r)].member)], p.st.a, p.st.xr);
+}
 
 const std::vector<int>& SizingProblem::representatives() const { return impl_->row_representative; }
 

@@ -11,6 +11,7 @@
 //        for every serviceability combination c:
 //          kappa_d |v_cn| <= span / deflection_limit at each deck node,
 //        T_s >= 0 in the reference state, A_j >= the member's minimum area,
+//        for each comfort row: omega_k^2(A, alpha) >= (or <=) its target (ComfortRow),
 //   x_c = x_G + N alpha + dx_c(A, alpha),  dx_c the linear response to f_c - f_G.
 //
 // kappa (per member) and kappa_d correct the linear demand by what the nonlinear static check
@@ -22,6 +23,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,22 +33,51 @@
 
 namespace tbridge {
 
+// One comfort row (verify/comfort_sizing.h builds them from a design's deck modes): a mode's
+// eigenvalue held above (or below) the frequency at which its Sétra acceleration meets its
+// limit or it leaves the risk ranges. The eigenvalue is the Rayleigh quotient of the mode's
+// shape at the design the problem is built from (x0),
+//
+//   omega^2(x) = (omega0^2 + sum_j by_area_j dA_j + sum_j by_force_j dF_j) / (1 + sum_j mass_by_area_j dA_j)
+//
+// with dA, dF each member's area and reference force less x0's: K and M are affine in both at
+// the shape and state held, so the row's value and gradient are the eigenvalue's at x0
+// (d omega^2 = phi^T (dK - omega^2 dM) phi, dynamics/modal_sensitivity.h), and the outer
+// iterations rebuild it from the next design's modes, as the corrections of the other rows.
+struct ComfortRow {
+  std::string label;        // the mode and what its bound is, for the report
+  std::string key;          // the mode and the bound's side ("vertical 2 crowded"), the same from sizing to sizing
+  bool lower = true;        // omega^2 >= target (stay above, or climb out of a range); else <=
+  double target_omega2 = 0; // [rad^2/s^2]
+  double omega2 = 0;        // at x0 [rad^2/s^2]
+  // Per member [bars; strings]:
+  std::vector<double> by_area;        // d omega^2 / dA through its stiffness [rad^2/s^2 per m^2]
+  std::vector<double> by_force;       // d omega^2 / d(its reference force, bars in compression) [rad^2/s^2 per N]
+  std::vector<double> mass_by_area;   // d(phi^T M phi) / dA [1/m^2]
+};
+
 // What the outer iterations tell the problem (all sized by [bars; strings]).
 struct SizingCorrections {
   std::vector<double> demand_factor;  // kappa_j on each member's linear demand (1: none)
   std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
   double deflection_factor = 1.0;     // kappa_d on the linear deflections
-  // kappa_k >= 1, also on the deflections: a stiffer bridge than the deflection limit asks, for
-  // the frequency the comfort check needs (verify/comfort_sizing.h).
-  double stiffness_factor = 1.0;
+  std::vector<ComfortRow> comfort;    // the comfort rows, about the design the problem is built from
+  // r > 0: each area group within [A0 / (1 + r), A0 (1 + r)] of its area A0 in the design the
+  // problem is built from (a trust region; 0: none). The comfort rows' Rayleigh quotients hold
+  // the mode's shape, which a far move changes: they overestimate the eigenvalue, and the sizing
+  // concentrates stiffness where they overestimate most (the default at n = 3: strings grown
+  // seven times, others to a tenth, its frequency foretold 4.0 Hz and found 2.7 Hz).
+  double move_limit = 0;
 };
 
 // One constraint row's meaning, for the report: which member (or deck node), combination and
 // kind.
 struct SizingRow {
-  enum Kind { kStrength, kBuckling, kYield, kTaut, kDeflectionDown, kDeflectionUp, kReferenceTaut };
+  enum Kind { kStrength, kBuckling, kYield, kTaut, kDeflectionDown, kDeflectionUp, kReferenceTaut, kComfort };
   Kind kind = kStrength;
-  int member = -1;  // [bars; strings] index, or the deck node for a deflection row
+  // [bars; strings] index, the deck node for a deflection row, the SizingCorrections::comfort
+  // entry for a comfort row
+  int member = -1;
   int combination = -1;
 };
 const char* SizingRowKindName(SizingRow::Kind kind);
@@ -136,6 +167,11 @@ class SizingProblem final : public NlpProblem {
   // resistance at the problem's own area [N]; 1 for the other rows.
   double row_scale(int r) const;
   const std::vector<SizingCombination>& combinations() const;
+  // What row r is about, for the report: its combination's label, or a comfort row's.
+  const std::string& RowLabel(int r) const;
+  const std::vector<ComfortRow>& comfort_rows() const;  // SizingCorrections::comfort
+  // The eigenvalue comfort row r's Rayleigh quotient gives at x [rad^2/s^2].
+  double ComfortOmega2(int r, const Eigen::VectorXd& x) const;
   const std::vector<int>& group_of() const;  // per member
   // The problem's symmetries are the mirrors that keep the structure and its reference loads
   // and take every case onto a case (itself, or another: the payload on the left onto the

@@ -118,9 +118,9 @@ struct DynamicCheck {
 
 // What drives the verified sizing's mass (design/sizing_attribution.h).
 // The kinds of constraint, in the order the outputs list them.
-inline constexpr const char* kConstraintKinds[] = {"strength", "buckling",      "yield",        "deflection",
-                                                  "taut_strings", "minimum_sizes", "dynamics"};
-inline constexpr int kNumConstraintKinds = 7;
+inline constexpr const char* kConstraintKinds[] = {"strength",      "buckling", "yield",  "deflection", "taut_strings",
+                                                  "minimum_sizes", "dynamics", "comfort"};
+inline constexpr int kNumConstraintKinds = 8;
 
 struct MemberBinding {
   std::string kind;         // one of kConstraintKinds: the constraint that costs its group most
@@ -198,10 +198,19 @@ struct Resizing {
   double second_start_kg = 0;             // the last sizing from twice the first design's areas
   std::string optima;                     // what that second start found, and which design was kept
   std::string why;                        // when not converged: the last verdict
-  // The comfort correction (verify/comfort_sizing.h): the factor on the stiffness the sizing
-  // asks for (1: none), and the failing mode that asked for it last.
-  double comfort_stiffness_factor = 1.0;
-  std::string comfort_governs;
+  // The comfort rows of the sizing that gave the design (verify/comfort_sizing.h): each deck
+  // mode's bound on its frequency, and why.
+  std::vector<std::string> comfort_rows;
+  // The certificate of local optimality of the program whose solution is the design
+  // (design/kkt_certificate.h), in its scaled variables, every row of the whole program counted.
+  struct Kkt {
+    bool computed = false;  // false where nothing was sized
+    double stationarity = 0, feasibility = 0, complementarity = 0;
+    bool second_order = false, proved_local_optimum = false;
+    std::string second_order_by;  // "vertex" | "reduced Hessian" | ""
+    std::string failed;           // what failed; "" when proved
+    int active_rows = 0, active_bounds = 0, free_variables = 0, null_space_dimension = 0;
+  } kkt;
   // Wall time by part over every design of the loop (the first design, each sizing, the
   // second start) [s]: what a run's time goes to (`tbridge design --progress` prints it). Not a
   // result, and not in the design's JSON: it varies from run to run.

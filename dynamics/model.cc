@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 #include "core/error.h"
@@ -60,7 +61,8 @@ void CheckModel(const DynamicModel& m, const std::string& where) {
   }
 }
 
-void ShareStringMass(DynamicModel& m, StringMassMode mode) {
+void ForEachStringMassShare(const DynamicModel& m, StringMassMode mode,
+                            const std::function<void(int string, int node, int bar, int count)>& share) {
   // Bars at each node in compressed rows (bars_at[a] .. bars_at[a + 1] in bar_of), built once so
   // that sharing is O(members). Each bar's shares arrive in the same order as a search over all
   // bars would add them (strings in order, end i then end j), so the sums are bit-identical.
@@ -78,18 +80,29 @@ void ShareStringMass(DynamicModel& m, StringMassMode mode) {
     bar_of[fill[b.i]++] = static_cast<int>(k);
     if (b.j != b.i) bar_of[fill[b.j]++] = static_cast<int>(k);
   }
-  for (const DynamicString& s : m.strings) {
+  for (size_t k = 0; k < m.strings.size(); ++k) {
+    const DynamicString s = m.strings[k];
     for (const int end : {s.i, s.j}) {
-      const double half = 0.5 * s.mass;
       if (m.fixed[end]) continue;  // carried by the support
       const int count = bars_at[end + 1] - bars_at[end];
       if (mode == StringMassMode::kAtNodes || (mode == StringMassMode::kOnBars && count == 0)) {
-        m.node_mass(end) += half;
+        share(static_cast<int>(k), end, -1, 1);
       } else if (mode == StringMassMode::kOnBars) {
-        for (int r = bars_at[end]; r < bars_at[end + 1]; ++r) m.bars.mass[bar_of[r]] += half / count;
+        for (int r = bars_at[end]; r < bars_at[end + 1]; ++r) share(static_cast<int>(k), end, bar_of[r], count);
       }
     }
   }
+}
+
+void ShareStringMass(DynamicModel& m, StringMassMode mode) {
+  ForEachStringMassShare(m, mode, [&m](int k, int node, int bar, int count) {
+    const double half = 0.5 * m.strings.mass[static_cast<size_t>(k)];
+    if (bar < 0) {
+      m.node_mass(node) += half;
+    } else {
+      m.bars.mass[static_cast<size_t>(bar)] += half / count;
+    }
+  });
 }
 
 void AddStructureWeight(DynamicModel& m) {

@@ -28,9 +28,13 @@ double NodeDeckArea(const Design& d) {
 }
 
 double Trigger(const ComfortConfig& c, DeckMotion motion) {
-  const bool horizontal = motion == DeckMotion::kLateral || motion == DeckMotion::kTorsional;
-  return horizontal ? c.horizontal_trigger_hz : c.vertical_trigger_hz;
+  if (motion == DeckMotion::kLateral) return c.horizontal_trigger_hz;
+  return motion == DeckMotion::kTorsional ? c.torsional_trigger_hz : c.vertical_trigger_hz;
 }
+
+// Sétra 2006 (2.4.3): in lateral ranges 1 and 2 the acceleration must stay below 0.10 m/s², the
+// threshold of lateral lock-in, whatever the comfort level allows.
+constexpr double kLateralLockInAcceleration = 0.10;
 
 double Limit(const ComfortConfig& c, LoadAxis axis) {
   const double level = ComfortLevelBound(axis, c.comfort_level);
@@ -39,14 +43,13 @@ double Limit(const ComfortConfig& c, LoadAxis axis) {
   return std::min(level, crowd ? c.crowd_horizontal_limit_m_s2 : c.horizontal_limit_m_s2);
 }
 
-// The frequency of the `rank`-th mode of `motion` (0-based) among `modes`; `fallback` when
-// there is none.
-double NthOf(const DeckModes& modes, DeckMotion motion, int rank, double fallback) {
+// The index of the `rank`-th mode of `motion` (0-based) among `modes`; -1 when there is none.
+int NthOf(const DeckModes& modes, DeckMotion motion, int rank) {
   for (size_t k = 0; k < modes.motions.size(); ++k) {
     if (modes.motions[k].motion != motion) continue;
-    if (rank-- == 0) return modes.modal.modes[k].frequency_hz;
+    if (rank-- == 0) return static_cast<int>(k);
   }
-  return fallback;
+  return -1;
 }
 
 // Step 2 for one relevant mode, then its response (RespondAt).
@@ -77,30 +80,43 @@ void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, doubl
   const LoadAxis axis = LoadAxisOf(m.direction);
   m.frequency_hz = crowd_hz;
   m.frequency_empty_hz = empty_hz;
-  m.range = RiskRangeOver(axis, crowd_hz, empty_hz);
+  const int riskiest = RiskRangeOver(axis, crowd_hz, empty_hz);
+  m.range = riskiest;
   m.limit_m_s2 = Limit(c, axis);
+  if (axis == LoadAxis::kLateral && riskiest <= 2) m.limit_m_s2 = std::min(m.limit_m_s2, kLateralLockInAcceleration);
   m.psi = m.equivalent_pedestrians = m.modal_force_n = m.acceleration_m_s2 = 0;
-  const std::optional<CrowdLoadCase> load = LoadCaseFor(check.traffic_class, m.range);
+  // Every range the frequencies meet, with its class's load case: the largest acceleration
+  // governs. The riskiest range's case alone missed the second harmonic where the frequencies
+  // span ranges 2 and 3 (2.59 to 2.97 Hz: case 1's psi is 0 there, case 3's is not).
   std::ostringstream model;
-  if (!load) {
-    model << "none: Sétra asks no load case of class " << check.traffic_class << " in range " << m.range;
-  } else {
-    m.psi = PsiOver(axis, load->harmonic, crowd_hz, empty_hz);
-    m.equivalent_pedestrians = EquivalentPedestrians(check.damping_ratio, check.pedestrians, load->very_dense);
-    const double pressure = PedestrianForceN(axis, load->harmonic) * m.equivalent_pedestrians * m.psi / DeckArea(d);
-    m.modal_force_n = pressure * m.load_weight_m2;
-    m.acceleration_m_s2 = m.modal_force_n / (2.0 * check.damping_ratio * m.modal_mass_kg);
+  bool loaded = false;
+  for (const int range : RiskRangesOver(axis, crowd_hz, empty_hz)) {
+    const std::optional<CrowdLoadCase> load = LoadCaseFor(check.traffic_class, range);
+    if (!load) continue;
+    const double psi = PsiOver(axis, load->harmonic, crowd_hz, empty_hz);
+    const double pedestrians = EquivalentPedestrians(check.damping_ratio, check.pedestrians, load->very_dense);
+    const double force = PedestrianForceN(axis, load->harmonic) * pedestrians * psi / DeckArea(d) * m.load_weight_m2;
+    const double acceleration = force / (2.0 * check.damping_ratio * m.modal_mass_kg);
+    if (loaded && acceleration <= m.acceleration_m_s2) continue;
+    loaded = true;
+    m.range = range;
+    m.psi = psi;
+    m.equivalent_pedestrians = pedestrians;
+    m.modal_force_n = force;
+    m.acceleration_m_s2 = acceleration;
+    model.str("");
     model << "Sétra case " << load->number << ": " << PedestrianForceN(axis, load->harmonic) << " N x "
-          << (load->very_dense ? "1.85 sqrt(n)" : "10.8 sqrt(xi n)") << " = " << m.equivalent_pedestrians
-          << " pedestrians x psi " << m.psi << " over " << DeckArea(d) << " m^2";
+          << (load->very_dense ? "1.85 sqrt(n)" : "10.8 sqrt(xi n)") << " = " << pedestrians << " pedestrians x psi "
+          << psi << " over " << DeckArea(d) << " m^2";
   }
+  if (!loaded) model << "none: Sétra asks no load case of class " << check.traffic_class << " in range " << riskiest;
   m.load_model = model.str();
   m.comfort_class = ComfortLevelName(ComfortLevelReached(axis, m.acceleration_m_s2));
   m.pass = m.acceleration_m_s2 <= m.limit_m_s2;
   m.lock_in_pedestrians = 0;
   if (axis == LoadAxis::kLateral) {
     m.lock_in_pedestrians = LockInPedestrians(check.damping_ratio, crowd_hz, m.modal_mass_kg);
-    if (m.range <= 2 && check.pedestrians >= m.lock_in_pedestrians) m.pass = false;
+    if (riskiest <= 2 && check.pedestrians >= m.lock_in_pedestrians) m.pass = false;
   }
 }
 
@@ -145,9 +161,12 @@ Eigen::Matrix3Xd CrowdModeLoad(const Design& d, const Mode& mode, const DeckMoti
   return load;
 }
 
-ComfortCheck CheckComfort(const Design& d) {
+ComfortCheck CheckComfort(const Design& d) { return AnalyseComfort(d).check; }
+
+ComfortAnalysis AnalyseComfort(const Design& d) {
   const ComfortConfig& c = d.config.comfort;
-  ComfortCheck out;
+  ComfortAnalysis analysis;
+  ComfortCheck& out = analysis.check;
   out.traffic_class = c.traffic_class;
   out.comfort_level = c.comfort_level;
   out.damping_ratio = c.damping_ratio ? *c.damping_ratio : ConstructionDamping(c.construction);
@@ -157,20 +176,24 @@ ComfortCheck CheckComfort(const Design& d) {
   out.planar = d.topology.planes == 1;
   if (KeepsPaperSwitches(d.config)) {
     out.note = "the paper's switches: comfort is not checked";
-    return out;
+    return analysis;
   }
   if (!c.check) {
     out.note = "comfort.check is false";
-    return out;
+    return analysis;
   }
-  DeckModes crowded, empty;
+  DeckModes& crowded = analysis.crowded;
+  DeckModes& empty = analysis.empty;
   try {
-    const double above_hz = std::max(c.vertical_trigger_hz, c.horizontal_trigger_hz);
-    crowded = ComputeDeckModes(ComfortModel(d, true), above_hz);
-    empty = ComputeDeckModes(ComfortModel(d, false), above_hz);
+    const double above_hz =
+        kNearTrigger * std::max({c.vertical_trigger_hz, c.horizontal_trigger_hz, c.torsional_trigger_hz});
+    analysis.crowded_model = ComfortModel(d, true);
+    analysis.empty_model = ComfortModel(d, false);
+    crowded = ComputeDeckModes(analysis.crowded_model, above_hz);
+    empty = ComputeDeckModes(analysis.empty_model, above_hz);
   } catch (const ModelError& e) {
     out.note = std::string("no modes: ") + e.what();
-    return out;
+    return analysis;
   }
   out.done = true;
   if (out.planar) out.note = "planar bridge: lateral and torsional comfort not checked";
@@ -179,11 +202,18 @@ ComfortCheck CheckComfort(const Design& d) {
     const Mode& mode = crowded.modal.modes[k];
     const DeckMotionReport& motion = crowded.motions[k];
     if (motion.motion == DeckMotion::kLocal) continue;
-    const double empty_hz = NthOf(empty, motion.motion, rank[motion.motion]++, mode.frequency_hz);
-    if (!(std::min(mode.frequency_hz, empty_hz) < Trigger(c, motion.motion))) continue;
-    out.required = true;
+    const int empty_index = NthOf(empty, motion.motion, rank[motion.motion]++);
+    const double empty_hz = empty_index >= 0 ? empty.modal.modes[static_cast<size_t>(empty_index)].frequency_hz
+                                             : mode.frequency_hz;
+    const double lower_hz = std::min(mode.frequency_hz, empty_hz), trigger_hz = Trigger(c, motion.motion);
+    if (!(lower_hz < kNearTrigger * trigger_hz)) continue;
     ComfortMode m = Assess(d, out, mode, motion, empty_hz);
     m.index = static_cast<int>(k) + 1;
+    analysis.modes.push_back(m);
+    analysis.crowded_mode.push_back(static_cast<int>(k));
+    analysis.empty_mode.push_back(empty_index);
+    if (!(lower_hz < trigger_hz)) continue;
+    out.required = true;
     out.modes.push_back(m);
   }
   if (!crowded.modal.all_modes && !crowded.modal.modes.empty() &&
@@ -191,7 +221,7 @@ ComfortCheck CheckComfort(const Design& d) {
     out.note += std::string(out.note.empty() ? "" : "; ") + "the lowest " +
                 std::to_string(crowded.modal.modes.size()) + " modes were found, all below the trigger";
   }
-  return out;
+  return analysis;
 }
 
 }  // namespace tbridge

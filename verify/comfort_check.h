@@ -68,4 +68,20 @@ Eigen::Matrix3Xd CrowdModeLoad(const Design& design, const Mode& mode, const Dec
 // comfort.check false, or when the modes cannot be found.
 ComfortCheck CheckComfort(const Design& design);
 
+// The same check with the models and modes it read, for the comfort rows of the sizing
+// (verify/comfort_sizing.h): `modes`, the deck modes below kNearTrigger times their trigger
+// assessed as the check assesses them (check.modes are those below the trigger), and per entry
+// its mode among `crowded` and its match among `empty` (the mode of the same motion and rank; -1
+// where there is none). The sizing bounds the modes near the trigger too: a sizing that stiffens
+// the modes below it would otherwise bring down a shape it did not see.
+inline constexpr double kNearTrigger = 1.25;
+struct ComfortAnalysis {
+  ComfortCheck check;
+  DynamicModel crowded_model, empty_model;
+  DeckModes crowded, empty;
+  std::vector<ComfortMode> modes;
+  std::vector<int> crowded_mode, empty_mode;
+};
+ComfortAnalysis AnalyseComfort(const Design& design);
+
 }  // namespace tbridge

@@ -1,35 +1,53 @@
-// The comfort check as a constraint of the verified sizing (verify/verified_design.h), by an
-// outer correction rather than eigenvalue sensitivities in the sizing's program.
+// The comfort check as rows of the verified sizing (design/sizing_problem.h, ComfortRow).
 //
-// At resonance a mode's steady acceleration F* / (2 xi M*) does not depend on its stiffness,
-// only on where its frequency lies: psi(f) and Sétra's range (which load case, if any). The deck
-// beams' and the crowd's mass is given and the damping too, so what the sizing can change is the
-// frequency, by the stiffness. For each failing mode the correction finds the least frequency
-// scale s >= 1 (both the crowded and the empty frequency moved by s, its modal mass and shape
-// kept) at which the mode passes: either its acceleration falls within the limit (psi falls on
-// the flank of its trapezoid), or it leaves the risk ranges its class is checked in (psi or the
-// load case vanish), whichever comes first, which is the lighter. The next sizing then asks
-// for s^2 times the stiffness (SizingCorrections::stiffness_factor on every deflection), and a
-// design that still fails is corrected again from its own frequencies.
+// At resonance a mode's steady acceleration F* / (2 xi M*) depends on its stiffness only through
+// where its frequency lies: Sétra's psi (piecewise linear in f, with kinks at its range ends) and
+// whether the traffic class has a load case in that range (a jump where it has none). With the
+// mode's shape, and so M* and F*, held at the design the sizing starts from, the acceleration is a
+// function of the frequency alone, and the mode passes on a window of frequencies. Each deck mode
+// the check considers gets the rows that keep its frequencies in the window that holds:
+// - a mode that passes keeps its crowded frequency above the window's lower end and its empty
+//   frequency below its upper end (where the window has ends within a factor 3);
+// - a mode that fails is sent up to the least frequency at which it passes (its acceleration
+//   within the limit on a falling flank of psi, or out of the ranges its class is loaded in),
+//   its crowded frequency above it.
+// The frequencies are eigenvalues of the areas and the prestress, with their own sensitivities
+// (dynamics/modal_sensitivity.h); the outer iterations rebuild the rows from each design's modes.
 #pragma once
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include "design/design.h"
 #include "design/sizing_problem.h"
+#include "verify/comfort_check.h"
 
 namespace tbridge {
 
-struct ComfortCorrection {
-  double stiffness_factor = 1.0;  // on the stiffness the next sizing asks for (1: comfort passes)
-  std::string governs;            // which mode asks for it and why; empty when none
-};
+// The comfort rows about `design` from its comfort analysis (AnalyseComfort(design)); none where
+// comfort.sizing_constraint is false or the check was not done. Changes nothing.
+std::vector<ComfortRow> ComfortRowsOf(const Design& design, const ComfortAnalysis& analysis);
 
-// The correction `design`'s comfort report asks for (design.comfort, recorded). Changes nothing.
-ComfortCorrection ComfortCorrectionOf(const Design& design);
+// How far the last sizing's comfort rows foretold the design it gave, and the outer correction of
+// the next rows: each row of `next` (built from that design's modes) whose mode the last sizing
+// bounded (matched by key) asks for its target times what the last row foretold over what the
+// design found, between 1 and kLargestCorrection: the quotient holds the shape, the static state
+// and the members' weight, and falls short by a like share again (the default at n = 3: 0.5 %
+// of omega^2 a sizing). The correction is the last step's alone, not a product over the steps:
+// as the designs settle it stays what one step misses by. Returns the largest
+// |omega^2 foretold / omega^2 found - 1| (0 where no row matches).
+inline constexpr double kLargestCorrection = 1.02;
+double CorrectComfortRows(const SizingProblem& problem, const Eigen::VectorXd& x,
+                          std::vector<ComfortRow>& next);
 
-// Applies it: the sizing's stiffness factor and the record's comfort fields. Does nothing when
-// comfort.sizing_constraint is false.
-void CorrectForComfort(const Design& design, SizingCorrections& corrections, Resizing& record);
+// Halves each row's step from the mode's eigenvalue to its target (in log frequency), for a
+// sizing that could not meet them; false where no row has a step to halve.
+bool EaseComfortRows(std::vector<ComfortRow>& rows);
+
+// One row's members' coefficients from a mode of `model` (a model of `design`, its members in the
+// design's order): the eigenvalue's derivatives by each member's area (through its stiffness, a
+// string's k = (E A + T_ref) / l), reference force (k and the state's forces follow it) and mass.
+ComfortRow ComfortRowOf(const Design& design, const DynamicModel& model, const Mode& mode);
 
 }  // namespace tbridge

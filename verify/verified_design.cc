@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <tuple>
@@ -13,6 +14,7 @@
 #include "core/error.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
+#include "design/kkt_certificate.h"
 #include "design/solvers.h"
 #include "verify/comfort_check.h"
 #include "verify/comfort_sizing.h"
@@ -202,7 +204,7 @@ std::map<std::pair<int, int>, int> ClosestRows(const SizingProblem& full, const 
   const auto closer = [&g](int a, int b) { return g[a] < g[b] || (!std::isnan(g[a]) && std::isnan(g[b])); };
   int width = 0;
   for (const SizingRow& row : rows) width = std::max(width, row.member + 1);
-  const int kinds = SizingRow::kReferenceTaut + 1;
+  const int kinds = SizingRow::kComfort + 1;
   std::vector<int> table(static_cast<size_t>(kinds) * static_cast<size_t>(width), -1);
   for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
     int& best = table[static_cast<size_t>(rows[r].kind) * width + rows[r].member];
@@ -232,8 +234,11 @@ std::map<std::pair<int, int>, int> ClosestRows(const SizingProblem& full, const 
 std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g) {
   std::vector<char> near(full.rows().size(), 0);
   for (const auto& [key, r] : ClosestRows(full, g)) {
-    const bool taut = key.first == SizingRow::kTaut || key.first == SizingRow::kReferenceTaut;
-    near[r] = taut || g[r] < 1.01;
+    // The taut strings' and the comfort rows are few, and each is the only one of its kind for its
+    // member or mode.
+    const bool always = key.first == SizingRow::kTaut || key.first == SizingRow::kReferenceTaut ||
+                        key.first == SizingRow::kComfort;
+    near[r] = always || g[r] < 1.01;
   }
   return near;
 }
@@ -241,7 +246,9 @@ std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g
 // Whether row's member is at its floor in x (its group's area variable on its lower bound, to
 // 1e-6 of it); false for a deflection row, which reads a node.
 bool AtFloor(const SizingProblem& full, const Eigen::VectorXd& x, const SizingRow& row) {
-  if (row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp) return false;
+  if (row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp || row.kind == SizingRow::kComfort) {
+    return false;
+  }
   Eigen::VectorXd lo, hi;
   full.VariableBounds(lo, hi);
   const int group = full.group_of()[static_cast<size_t>(row.member)];
@@ -414,7 +421,7 @@ Design Size(const Config& config, const Design& current, const SizingCorrections
             ProgressReporter* progress, ActiveSet& active, double tolerance) {
   Eigen::VectorXd lo, hi;
   problem.VariableBounds(lo, hi);
-  x = x.cwiseMax(lo);
+  x = x.cwiseMax(lo).cwiseMin(hi);
   SolverOptions options;
   options.tolerance = tolerance;
   options.max_iterations = config.design.max_iterations;
@@ -600,12 +607,87 @@ MassAttribution Attribution(const Design& current, const SizingCorrections& corr
   return AttributeMass(posed, x, dynamic, posed.VariablesOf(first.areas, first.alpha));
 }
 
+// The trust region of a sizing with comfort rows (SizingCorrections::move_limit): each area within
+// a factor 2 of the last design's.
+constexpr double kComfortMoveLimit = 1.0;
+constexpr double kComfortSmallestMove = 0.02;
+
+// How many times a sizing's comfort steps are halved when it is infeasible.
+constexpr int kComfortEases = 4;
+
+// A row counts as active in the certificate within this of its bound (as posed, in its scaled
+// units): the solver stops at kSizingTolerance on the rows, ten times finer.
+constexpr double kActiveRow = 1e-5;
+// The second-order test's finite differences cost two Jacobians of the active rows per
+// dimension of the null space; beyond this many free directions it is left out and said so.
+constexpr int kSecondOrderMaxFree = 64;
+
+// The certificate of local optimality of x (design/kkt_certificate.h) on the program the sizing
+// solved about `current`: every row of the whole program, each orbit's rows under the mirror
+// symmetries alike (ImageCorrections), as the sizing poses them. Of each member's (or deck
+// node's, or mode's) rows of one kind within kActiveRow of its bound, the closest is given as
+// active: the others are the same row at a neighbouring station, their normals near copies of
+// its own, and their multipliers are zero; every row counts in the feasibility.
+Resizing::Kkt Certify(const Design& current, const SizingCorrections& corrections, const SizingProblem& full,
+                      const Eigen::VectorXd& x, const std::string& why_not) {
+  Resizing::Kkt out;
+  out.computed = true;
+  // The program's own bounds: a trust region is the way to a solution, not part of the program,
+  // and a design at its edge is not proved optimal.
+  SizingCorrections alike = full.ImageCorrections(corrections);
+  alike.move_limit = 0;
+  const SizingProblem whole(current, alike);
+  const int rows = whole.num_constraints(), nv = whole.num_variables();
+  KktInput in;
+  in.x = x;
+  whole.VariableBounds(in.lo_x, in.hi_x);
+  in.grad_f.resize(nv);
+  whole.ObjectiveGradient(x, in.grad_f);
+  Eigen::VectorXd g(rows), lo, hi;
+  whole.Constraints(x, g);
+  whole.ConstraintBounds(lo, hi);
+  in.slack = g - lo;
+  std::vector<char> active(static_cast<size_t>(rows), 0);
+  for (const auto& [key, r] : ClosestRows(whole, in.slack)) {
+    if (in.slack[r] <= kActiveRow) active[static_cast<size_t>(r)] = 1, in.active.push_back(r);
+  }
+  std::sort(in.active.begin(), in.active.end());
+  const SizingProblem posed(current, alike, &active);
+  posed.DenseJacobian(x, in.jac_active);
+  int at_bounds = 0;
+  for (int v = 0; v < nv; ++v) at_bounds += x[v] <= in.lo_x[v] * (1 + 1e-6) + 1e-12 ? 1 : 0;
+  if (nv - at_bounds - static_cast<int>(in.active.size()) <= kSecondOrderMaxFree) {
+    in.at = [&posed, nv](const Eigen::VectorXd& y, Eigen::VectorXd& grad, Eigen::MatrixXd& jac) {
+      grad.resize(nv);
+      posed.ObjectiveGradient(y, grad);
+      posed.DenseJacobian(y, jac);
+    };
+  }
+  const KktCertificate c = CertifyLocalOptimum(in, kSizingTolerance);
+  out.stationarity = c.stationarity;
+  out.feasibility = c.feasibility;
+  out.complementarity = c.complementarity;
+  out.second_order = c.second_order;
+  out.second_order_by = c.second_order_by;
+  out.active_rows = c.active_rows;
+  out.active_bounds = c.active_bounds;
+  out.free_variables = c.free_variables;
+  out.null_space_dimension = c.null_space_dimension;
+  out.proved_local_optimum = c.proved_local_optimum && why_not.empty();
+  out.failed = c.failed;
+  if (!in.at && !c.second_order) out.failed += " (the second-order test was not run: more than " + std::to_string(kSecondOrderMaxFree) + " free directions)";
+  if (!why_not.empty()) out.failed = why_not + (out.failed.empty() ? "" : "; " + out.failed);
+  return out;
+}
+
 // The last sizing again from a second start, twice the first design's areas: the program is
 // not convex, and another optimum may be lighter. A lighter one that passes is kept in `best`;
 // either way `record` says what the second start found.
-void SecondStart(const Config& config, const Design& current, const SizingCorrections& corrections,
-                 const std::string& solver, const SizingProblem& problem, const FirstSizes& first, Design& best,
-                 Resizing& record, ProgressReporter* progress, std::vector<char> posed) {
+// Returns its solution where it replaced `best`.
+std::optional<Eigen::VectorXd> SecondStart(const Config& config, const Design& current,
+                                           const SizingCorrections& corrections, const std::string& solver,
+                                           const SizingProblem& problem, const FirstSizes& first, Design& best,
+                                           Resizing& record, ProgressReporter* progress, std::vector<char> posed) {
   // Its own start: the rows the last sizing posed, its multipliers estimated afresh.
   ActiveSet active{std::move(posed), Eigen::VectorXd()};
   if (progress != nullptr) progress->SetStagePrefix("second start: ");
@@ -631,11 +713,13 @@ void SecondStart(const Config& config, const Design& current, const SizingCorrec
       os << ": a second, lighter optimum than " << kept << " kg, kept";
       other.attribution = Attribution(current, corrections, problem, x, other.statics, other.dynamics, first);
       best = std::move(other);
-    } else {
-      os << ": another optimum; kept the lighter passing " << kept << " kg";
+      record.optima = os.str();
+      return x;
     }
+    os << ": another optimum; kept the lighter passing " << kept << " kg";
   }
   record.optima = os.str();
+  return std::nullopt;
 }
 
 // A design checked as it is, with no sizing: the paper's, or one the sizing cannot take.
@@ -703,21 +787,33 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     Design current;
     SizingCorrections corrections;
     Eigen::VectorXd x;
+    std::string not_optimal;  // why x is not the program's solution ("" where it is)
   };
   std::optional<BestSizing> best_sizing;
   std::optional<double> last_passing_kg;  // the structure's mass of the last design that passed
   CarriedRows carried;                    // the last sizing's active rows
+  bool current_passed = false;            // the design the sizing starts from passed
   for (record.iterations = 1;; ++record.iterations) {
     // The sizing about the current design's weight, from the current sizes and prestress.
-    const SizingProblem problem(current, corrections);
-    Eigen::VectorXd x = problem.VariablesOf(areas, alpha);
     if (progress != nullptr) {
       progress->SetStagePrefix("sizing " + std::to_string(record.iterations) + " (of at most " +
                                std::to_string(max_iterations) + "): ");
     }
-    ActiveSet active = carried.For(problem);
-    Design d =
-        Size(config, current, corrections, solver, problem, x, record.time_s, progress, active, kSizingTolerance);
+    std::unique_ptr<SizingProblem> posed;
+    Eigen::VectorXd x;
+    ActiveSet active;
+    Design d;
+    // A sizing whose comfort rows ask more than its trust region holds is infeasible: it is
+    // solved again with each comfort row's step halved (in log frequency), and the next design
+    // goes on from there.
+    for (int ease = 0;; ++ease) {
+      posed = std::make_unique<SizingProblem>(current, corrections);
+      x = posed->VariablesOf(areas, alpha);
+      active = carried.For(*posed);
+      d = Size(config, current, corrections, solver, *posed, x, record.time_s, progress, active, kSizingTolerance);
+      if (d.solver.success || ease == kComfortEases || !EaseComfortRows(corrections.comfort)) break;
+    }
+    const SizingProblem& problem = *posed;
     carried = CarriedRows(problem, active);
     // Settled: the sizing from a passing design's corrections lands within kSettled of that
     // design's mass, so the linear model says what the checks say and the corrections have
@@ -729,12 +825,15 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                          std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
     Verdict verdict;
     std::string repair;
+    bool mended = false;  // d is the sizing's design with its failing members mended
     if (!settled) {
       RunChecks(d, record.time_s, progress, Screen::kStaticFailure);
       // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended one.
       verdict = SizingVerdict(d);
       if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure && !verdict.pass) {
+        const Eigen::VectorXd solved = x;
         repair = Repair(config, problem, d, x, verdict, record.time_s, progress);
+        mended = x != solved;
       }
     }
     const SolverOutcome& outcome = d.solver;
@@ -747,7 +846,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     if (verdict.pass) last_passing_kg = d.mass.structure;
     if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) {
       best = d;
-      best_sizing = BestSizing{current, corrections, x};
+      best_sizing = BestSizing{current, corrections, x, mended ? "not proved optimal: mended" : ""};
     }
     const bool last = !settled && (record.iterations >= max_iterations || !outcome.success ||
                                    !d.statics.all_converged || verdict.outcome == VerdictOutcome::kIncomplete);
@@ -757,10 +856,19 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
         const SizingProblem best_problem(best_sizing->current, best_sizing->corrections);
         best->attribution = Attribution(best_sizing->current, best_sizing->corrections, best_problem, best_sizing->x,
                                         best->statics, best->dynamics, first_sizes);
-        SecondStart(config, current, corrections, solver, problem, first_sizes, *best, record, progress, active.posed);
+        if (const std::optional<Eigen::VectorXd> other = SecondStart(config, current, corrections, solver, problem,
+                                                                     first_sizes, *best, record, progress, active.posed)) {
+          best_sizing = BestSizing{current, corrections, *other, ""};
+        }
+        record.kkt = Certify(best_sizing->current, best_sizing->corrections, problem, best_sizing->x,
+                             best_sizing->not_optimal);
       }
       Design out = best ? *best : d;
       record.converged = settled;
+      record.comfort_rows.clear();
+      if (best) {
+        for (const ComfortRow& row : best_sizing->corrections.comfort) record.comfort_rows.push_back(row.label);
+      }
       if (!settled) {
         std::ostringstream why;
         why << (best ? "the lightest passing design of " : "no design passed in ") << record.iterations
@@ -773,7 +881,35 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
       return out;
     }
     record.changes.push_back(repair + Correct(corrections, problem, x, d, statics, dynamics, verdict.pass));
-    CorrectForComfort(d, corrections, record);
+    // The next sizing's comfort rows, about this design's own modes: each sizing moves a mode from
+    // its own shape, so the quotient's error (second order in the move) falls as the designs settle.
+    const ComfortAnalysis comfort = Timed(record.time_s.comfort_check, [&] { return AnalyseComfort(d); });
+    std::vector<ComfortRow> next = ComfortRowsOf(d, comfort);
+    // The trust region follows how well the last rows foretold this design: halved where they
+    // missed a mode's eigenvalue by more than 2 % or the design failed, doubled (up to
+    // kComfortMoveLimit) where they were within 0.5 % while no design has passed; after one has,
+    // it only shrinks, so that the designs settle on the optimum rather than swing about it.
+    const double missed = CorrectComfortRows(problem, x, next);
+    double& r = corrections.move_limit;
+    if (next.empty()) {
+      r = 0;
+    } else if (r == 0) {
+      r = kComfortMoveLimit;
+    } else {
+      // A failing design after a passing one is a step past a flat optimum (the default at n = 3
+      // swung 592 - 600 kg): the region shrinks too.
+      const bool shrink = missed > 2e-2 || (!verdict.pass && current_passed);
+      const bool grow = missed < 5e-3 && !last_passing_kg;
+      r = shrink ? std::max(r / 2, kComfortSmallestMove) : grow ? std::min(2 * r, kComfortMoveLimit) : r;
+    }
+    corrections.comfort = std::move(next);
+    current_passed = verdict.pass;
+    if (r > 0) {
+      std::ostringstream os;
+      os << "; comfort rows foretold within " << missed << " of omega^2, next areas within x" << 1 + r;
+      record.changes.back() += os.str();
+    }
+    for (const ComfortRow& row : corrections.comfort) record.changes.back() += "; comfort: " + row.label;
     current = std::move(d);
   }
 }
