@@ -351,9 +351,12 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
                  "limit. Never with the paper's switches (`loads.cases` `[\"paper\"]`)"},
          c.check);
   v.Bool(KeyInfo{"sizing_constraint", "–",
-                 "the verified sizing designs to the comfort check: each deck mode the check considers is a "
-                 "row of the sizing, its frequency (an eigenvalue of the areas and the prestress, with its "
-                 "sensitivities) kept in the window where its Sétra acceleration is within the limit, or sent "
+                 "the verified sizing designs to the comfort check: each deck mode the check "
+                 "considers is a "
+                 "row of the sizing, its frequency (an eigenvalue of the areas and the prestress, "
+                 "with its "
+                 "sensitivities) kept in the window where its Sétra acceleration is within the "
+                 "limit, or sent "
                  "to the nearest frequency above where it is (mass_attribution's `comfort`)"},
          c.sizing_constraint);
   v.Choice(KeyInfo{"traffic_class", "–",
@@ -388,11 +391,14 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
   v.Number(KeyInfo{"horizontal_trigger_hz", "Hz",
                    "EN 1990 A2.4.3.2(2): the same for a lateral deck frequency"},
            c.horizontal_trigger_hz, Range{0.0, 100.0, true, false});
-  v.Number(KeyInfo{"torsional_trigger_hz", "Hz",
-                   "the same for a torsional deck frequency: Sétra 2006 (2.3, 4.2) checks torsional modes in the "
-                   "vertical ranges (up to 5 Hz), stricter than EN 1990 A2.4.3.2(2)'s 2.5 Hz; a torsional mode "
-                   "below it is loaded, measured and limited as a vertical one at the deck's edge node"},
-           c.torsional_trigger_hz, Range{0.0, 100.0, true, false});
+  v.Number(
+      KeyInfo{"torsional_trigger_hz", "Hz",
+              "the same for a torsional deck frequency: Sétra 2006 (2.3, 4.2) checks torsional "
+              "modes in the "
+              "vertical ranges (up to 5 Hz), stricter than EN 1990 A2.4.3.2(2)'s 2.5 Hz; a "
+              "torsional mode "
+              "below it is loaded, measured and limited as a vertical one at the deck's edge node"},
+      c.torsional_trigger_hz, Range{0.0, 100.0, true, false});
   v.Number(KeyInfo{"vertical_limit_m_s2", "m/s²",
                    "EN 1990 A2.4.3.2(1): largest vertical deck acceleration (torsional modes too); the "
                    "smaller of this and the `comfort_level`'s bound applies"},

@@ -431,22 +431,23 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                      {"structure", d.mass.structure},
                      {"total", d.mass.total}};
   const Resizing::Kkt& kkt = d.resizing.kkt;
-  const json solver = {{"name", d.solver.solver},
-                       {"status", d.solver.status},
-                       {"iterations", d.solver.iterations},
-                       {"problem", d.solver_form},
-                       {"kkt", !kkt.computed ? json(nullptr)
-                                             : json{{"stationarity", kkt.stationarity},
-                                                    {"feasibility", kkt.feasibility},
-                                                    {"complementarity", kkt.complementarity},
-                                                    {"second_order", kkt.second_order},
-                                                    {"second_order_by", kkt.second_order_by},
-                                                    {"proved_local_optimum", kkt.proved_local_optimum},
-                                                    {"failed", kkt.failed},
-                                                    {"active_rows", kkt.active_rows},
-                                                    {"active_bounds", kkt.active_bounds},
-                                                    {"free_variables", kkt.free_variables},
-                                                    {"null_space_dimension", kkt.null_space_dimension}}}};
+  const json solver = {
+      {"name", d.solver.solver},
+      {"status", d.solver.status},
+      {"iterations", d.solver.iterations},
+      {"problem", d.solver_form},
+      {"kkt", !kkt.computed ? json(nullptr)
+                            : json{{"stationarity", kkt.stationarity},
+                                   {"feasibility", kkt.feasibility},
+                                   {"complementarity", kkt.complementarity},
+                                   {"second_order", kkt.second_order},
+                                   {"second_order_by", kkt.second_order_by},
+                                   {"proved_local_optimum", kkt.proved_local_optimum},
+                                   {"failed", kkt.failed},
+                                   {"active_rows", kkt.active_rows},
+                                   {"active_bounds", kkt.active_bounds},
+                                   {"free_variables", kkt.free_variables},
+                                   {"null_space_dimension", kkt.null_space_dimension}}}};
   auto field = [&os](const char* key, const json& value, bool last = false) {
     std::string text = value.dump(2);
     for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
@@ -502,16 +503,18 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("reactions", ReactionsJson(d));
   // A design read from its file (tbridge check) was not sized here: no record, rather than
   // one that reads "not converged".
-  field("resizing", d.solver_form == kReadFromFile ? json(nullptr) : json{{"iterations", d.resizing.iterations},
-                     {"converged", d.resizing.converged},
-                     {"tolerance", d.resizing.tolerance},
-                     {"structure_mass_kg", d.resizing.structure_mass_kg},
-                     {"utilisation_max", d.resizing.utilisation_max},
-                     {"changes", d.resizing.changes},
-                     {"second_start_kg", d.resizing.second_start_kg},
-                     {"optima", d.resizing.optima},
-                     {"why", d.resizing.why},
-                     {"comfort_rows", d.resizing.comfort_rows}});
+  field("resizing", d.solver_form == kReadFromFile
+                        ? json(nullptr)
+                        : json{{"iterations", d.resizing.iterations},
+                               {"converged", d.resizing.converged},
+                               {"tolerance", d.resizing.tolerance},
+                               {"structure_mass_kg", d.resizing.structure_mass_kg},
+                               {"utilisation_max", d.resizing.utilisation_max},
+                               {"changes", d.resizing.changes},
+                               {"second_start_kg", d.resizing.second_start_kg},
+                               {"optima", d.resizing.optima},
+                               {"why", d.resizing.why},
+                               {"comfort_rows", d.resizing.comfort_rows}});
   field("self_weight_iterations", d.self_weight_iterations);
   field("self_stress_states", d.self_stress_states);
   field("solver", solver);
@@ -635,7 +638,8 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   if (d.resizing.kkt.computed) {
     const Resizing::Kkt& k = d.resizing.kkt;
     line(k.proved_local_optimum
-             ? Format("optimality: first- and second-order conditions hold (stationarity %.1e, feasibility %.1e, "
+             ? Format("optimality: first- and second-order conditions hold (stationarity %.1e, "
+                      "feasibility %.1e, "
                       "complementarity %.1e; second order by %s)",
                       k.stationarity, k.feasibility, k.complementarity, k.second_order_by.c_str())
              : "optimality: not proved: " + k.failed);

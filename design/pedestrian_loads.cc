@@ -62,7 +62,9 @@ int RiskRange(LoadAxis axis, double f) {
   return 4;
 }
 
-int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi) { return RiskRangesOver(axis, f_lo, f_hi).front(); }
+int RiskRangeOver(LoadAxis axis, double f_lo, double f_hi) {
+  return RiskRangesOver(axis, f_lo, f_hi).front();
+}
 
 std::vector<int> RiskRangesOver(LoadAxis axis, double f_lo, double f_hi) {
   if (f_hi < f_lo) std::swap(f_lo, f_hi);

@@ -304,16 +304,19 @@ struct SizingProblem::Impl {
     double stiffness = 0, mass = 1;
     double value() const { return stiffness / mass; }
   };
-  Quotient ComfortQuotient(const ComfortRow& k, const std::vector<double>& a, const Eigen::VectorXd& xr) const {
+  Quotient ComfortQuotient(const ComfortRow& k, const std::vector<double>& a,
+                           const Eigen::VectorXd& xr) const {
     Quotient q{k.omega2, 1.0};
     for (int j = 0; j < nm; ++j) {
       const double da = a[static_cast<size_t>(j)] - area0[static_cast<size_t>(j)];
-      q.stiffness += k.by_area[static_cast<size_t>(j)] * da + k.by_force[static_cast<size_t>(j)] * (xr[j] - xr0[j]);
+      q.stiffness += k.by_area[static_cast<size_t>(j)] * da +
+                     k.by_force[static_cast<size_t>(j)] * (xr[j] - xr0[j]);
       q.mass += k.mass_by_area[static_cast<size_t>(j)] * da;
     }
     return q;
   }
-  double ComfortOmega2(const ComfortRow& k, const std::vector<double>& a, const Eigen::VectorXd& xr) const {
+  double ComfortOmega2(const ComfortRow& k, const std::vector<double>& a,
+                       const Eigen::VectorXd& xr) const {
     return ComfortQuotient(k, a, xr).value();
   }
 
@@ -328,13 +331,15 @@ struct SizingProblem::Impl {
       for (int v = 0; v < groups; ++v) {
         double d = 0;
         for (const int j : members_of[static_cast<size_t>(v)]) {
-          d += (k.by_area[static_cast<size_t>(j)] - w2 * k.mass_by_area[static_cast<size_t>(j)]) * area_scale[static_cast<size_t>(v)];
+          d += (k.by_area[static_cast<size_t>(j)] - w2 * k.mass_by_area[static_cast<size_t>(j)]) *
+               area_scale[static_cast<size_t>(v)];
         }
         st.jac(static_cast<Eigen::Index>(r), v) = sign * d;
       }
       for (int m = 0; m < states; ++m) {
         double d = 0;
-        for (int j = 0; j < nm; ++j) d += k.by_force[static_cast<size_t>(j)] * N(j, m) * force_scale;
+        for (int j = 0; j < nm; ++j)
+          d += k.by_force[static_cast<size_t>(j)] * N(j, m) * force_scale;
         st.jac(static_cast<Eigen::Index>(r), groups + m) = sign * d;
       }
     }
@@ -465,7 +470,8 @@ struct SizingProblem::Impl {
     for (int r = n_rows - 1; r >= 0 && rows[static_cast<size_t>(r)].combination < 0; --r) {
       combos_end = r;
       const SizingRow& row = rows[static_cast<size_t>(r)];
-      if (row.kind == SizingRow::kReferenceTaut) reference_taut[static_cast<size_t>(row.member)] = r;
+      if (row.kind == SizingRow::kReferenceTaut)
+        reference_taut[static_cast<size_t>(row.member)] = r;
     }
     for (size_t c = 0; c < combos.size(); ++c) {
       const int begin = (*first_row)[c], end = c + 1 < combos.size() ? (*first_row)[c + 1] : combos_end;
@@ -719,10 +725,12 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   // The minimum-norm particular forces of symmetric loads are symmetric themselves.
   p.x_g = solver.Particular(FreeLoads(eq, d.loads)).col(0);
   p.force_scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
-  for (int j = 0; j < p.nm; ++j) p.area0.push_back(j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area);
+  for (int j = 0; j < p.nm; ++j)
+    p.area0.push_back(j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area);
   // The design's reference forces as the problem reads them: G's particular forces and the
   // symmetric part of its prestress.
-  p.xr0 = p.states ? Eigen::VectorXd(p.x_g + p.N * (p.N.transpose() * (d.reference_forces - p.x_g))) : p.x_g;
+  p.xr0 = p.states ? Eigen::VectorXd(p.x_g + p.N * (p.N.transpose() * (d.reference_forces - p.x_g)))
+                   : p.x_g;
   p.mass_scale = std::max(d.mass.structure, 1e-3);
 
   // The load columns: each case's change from the reference loads, then a unit station load.
@@ -781,7 +789,8 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     }
   }
   // The comfort rows: each a function of the variables alone, posed once.
-  for (size_t k = 0; k < p.corrections.comfort.size(); ++k) p.rows.push_back({SizingRow::kComfort, static_cast<int>(k), -1});
+  for (size_t k = 0; k < p.corrections.comfort.size(); ++k)
+    p.rows.push_back({SizingRow::kComfort, static_cast<int>(k), -1});
   // A string that no self-stress reaches (its row of the orthonormal N is rounding) has the
   // reference force G alone gives it, whatever the variables: its row would be a constant,
   // violated (n = 8: 126 strings at 0.95 of the row's margin once the weight had grown) or not,
@@ -974,17 +983,22 @@ const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of
 const std::string& SizingProblem::RowLabel(int r) const {
   const Impl& p = *impl_;
   const SizingRow& row = p.rows[static_cast<size_t>(r)];
-  if (row.kind == SizingRow::kComfort) return p.corrections.comfort[static_cast<size_t>(row.member)].label;
+  if (row.kind == SizingRow::kComfort)
+    return p.corrections.comfort[static_cast<size_t>(row.member)].label;
   static const std::string kNone;
   return row.combination >= 0 ? p.combos[static_cast<size_t>(row.combination)].label : kNone;
 }
 
-const std::vector<ComfortRow>& SizingProblem::comfort_rows() const { return impl_->corrections.comfort; }
+const std::vector<ComfortRow>& SizingProblem::comfort_rows() const {
+  return impl_->corrections.comfort;
+}
 
 double SizingProblem::ComfortOmega2(int r, const Eigen::VectorXd& x) const {
   const Impl& p = *impl_;
   p.Evaluate(x);
-  return p.ComfortOmega2(p.corrections.comfort[static_cast<size_t>(p.rows[static_cast<size_t>(r)].member)], p.st.a, p.st.xr);
+  return p.ComfortOmega2(
+      p.corrections.comfort[static_cast<size_t>(p.rows[static_cast<size_t>(r)].member)], p.st.a,
+      p.st.xr);
 }
 
 const std::vector<int>& SizingProblem::representatives() const { return impl_->row_representative; }

@@ -38,22 +38,25 @@ namespace tbridge {
 // limit or it leaves the risk ranges. The eigenvalue is the Rayleigh quotient of the mode's
 // shape at the design the problem is built from (x0),
 //
-//   omega^2(x) = (omega0^2 + sum_j by_area_j dA_j + sum_j by_force_j dF_j) / (1 + sum_j mass_by_area_j dA_j)
+//   omega^2(x) = (omega0^2 + sum_j by_area_j dA_j + sum_j by_force_j dF_j) / (1 + sum_j
+//   mass_by_area_j dA_j)
 //
 // with dA, dF each member's area and reference force less x0's: K and M are affine in both at
 // the shape and state held, so the row's value and gradient are the eigenvalue's at x0
 // (d omega^2 = phi^T (dK - omega^2 dM) phi, dynamics/modal_sensitivity.h), and the outer
 // iterations rebuild it from the next design's modes, as the corrections of the other rows.
 struct ComfortRow {
-  std::string label;        // the mode and what its bound is, for the report
-  std::string key;          // the mode and the bound's side ("vertical 2 crowded"), the same from sizing to sizing
-  bool lower = true;        // omega^2 >= target (stay above, or climb out of a range); else <=
-  double target_omega2 = 0; // [rad^2/s^2]
-  double omega2 = 0;        // at x0 [rad^2/s^2]
+  std::string label;  // the mode and what its bound is, for the report
+  std::string
+      key;  // the mode and the bound's side ("vertical 2 crowded"), the same from sizing to sizing
+  bool lower = true;         // omega^2 >= target (stay above, or climb out of a range); else <=
+  double target_omega2 = 0;  // [rad^2/s^2]
+  double omega2 = 0;         // at x0 [rad^2/s^2]
   // Per member [bars; strings]:
-  std::vector<double> by_area;        // d omega^2 / dA through its stiffness [rad^2/s^2 per m^2]
-  std::vector<double> by_force;       // d omega^2 / d(its reference force, bars in compression) [rad^2/s^2 per N]
-  std::vector<double> mass_by_area;   // d(phi^T M phi) / dA [1/m^2]
+  std::vector<double> by_area;  // d omega^2 / dA through its stiffness [rad^2/s^2 per m^2]
+  std::vector<double>
+      by_force;  // d omega^2 / d(its reference force, bars in compression) [rad^2/s^2 per N]
+  std::vector<double> mass_by_area;  // d(phi^T M phi) / dA [1/m^2]
 };
 
 // What the outer iterations tell the problem (all sized by [bars; strings]).
@@ -61,7 +64,7 @@ struct SizingCorrections {
   std::vector<double> demand_factor;  // kappa_j on each member's linear demand (1: none)
   std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
   double deflection_factor = 1.0;     // kappa_d on the linear deflections
-  std::vector<ComfortRow> comfort;    // the comfort rows, about the design the problem is built from
+  std::vector<ComfortRow> comfort;  // the comfort rows, about the design the problem is built from
   // r > 0: each area group within [A0 / (1 + r), A0 (1 + r)] of its area A0 in the design the
   // problem is built from (a trust region; 0: none). The comfort rows' Rayleigh quotients hold
   // the mode's shape, which a far move changes: they overestimate the eigenvalue, and the sizing
@@ -73,7 +76,16 @@ struct SizingCorrections {
 // One constraint row's meaning, for the report: which member (or deck node), combination and
 // kind.
 struct SizingRow {
-  enum Kind { kStrength, kBuckling, kYield, kTaut, kDeflectionDown, kDeflectionUp, kReferenceTaut, kComfort };
+  enum Kind {
+    kStrength,
+    kBuckling,
+    kYield,
+    kTaut,
+    kDeflectionDown,
+    kDeflectionUp,
+    kReferenceTaut,
+    kComfort
+  };
   Kind kind = kStrength;
   // [bars; strings] index, the deck node for a deflection row, the SizingCorrections::comfort
   // entry for a comfort row

@@ -118,8 +118,9 @@ struct DynamicCheck {
 
 // What drives the verified sizing's mass (design/sizing_attribution.h).
 // The kinds of constraint, in the order the outputs list them.
-inline constexpr const char* kConstraintKinds[] = {"strength",      "buckling", "yield",  "deflection", "taut_strings",
-                                                  "minimum_sizes", "dynamics", "comfort"};
+inline constexpr const char* kConstraintKinds[] = {"strength",   "buckling",     "yield",
+                                                   "deflection", "taut_strings", "minimum_sizes",
+                                                   "dynamics",   "comfort"};
 inline constexpr int kNumConstraintKinds = 8;
 
 struct MemberBinding {

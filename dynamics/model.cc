@@ -61,8 +61,9 @@ void CheckModel(const DynamicModel& m, const std::string& where) {
   }
 }
 
-void ForEachStringMassShare(const DynamicModel& m, StringMassMode mode,
-                            const std::function<void(int string, int node, int bar, int count)>& share) {
+void ForEachStringMassShare(
+    const DynamicModel& m, StringMassMode mode,
+    const std::function<void(int string, int node, int bar, int count)>& share) {
   // Bars at each node in compressed rows (bars_at[a] .. bars_at[a + 1] in bar_of), built once so
   // that sharing is O(members). Each bar's shares arrive in the same order as a search over all
   // bars would add them (strings in order, end i then end j), so the sums are bit-identical.
@@ -88,7 +89,8 @@ void ForEachStringMassShare(const DynamicModel& m, StringMassMode mode,
       if (mode == StringMassMode::kAtNodes || (mode == StringMassMode::kOnBars && count == 0)) {
         share(static_cast<int>(k), end, -1, 1);
       } else if (mode == StringMassMode::kOnBars) {
-        for (int r = bars_at[end]; r < bars_at[end + 1]; ++r) share(static_cast<int>(k), end, bar_of[r], count);
+        for (int r = bars_at[end]; r < bars_at[end + 1]; ++r)
+          share(static_cast<int>(k), end, bar_of[r], count);
       }
     }
   }

@@ -175,8 +175,9 @@ void ShareStringMass(DynamicModel& model, StringMassMode mode);
 // Where ShareStringMass puts string mass, the one statement of the rule: for each string, half
 // its mass at each unpinned end, on that node (`bar` -1, `count` 1) or split evenly over the
 // `count` bars meeting there, one call per bar. Pinned ends call nothing.
-void ForEachStringMassShare(const DynamicModel& model, StringMassMode mode,
-                            const std::function<void(int string, int node, int bar, int count)>& share);
+void ForEachStringMassShare(
+    const DynamicModel& model, StringMassMode mode,
+    const std::function<void(int string, int node, int bar, int count)>& share);
 
 // Adds the weight -m g (along y, g = model.gravity) of the bars (half at each end) and the
 // node masses to model.loads.

@@ -83,7 +83,8 @@ void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, doubl
   const int riskiest = RiskRangeOver(axis, crowd_hz, empty_hz);
   m.range = riskiest;
   m.limit_m_s2 = Limit(c, axis);
-  if (axis == LoadAxis::kLateral && riskiest <= 2) m.limit_m_s2 = std::min(m.limit_m_s2, kLateralLockInAcceleration);
+  if (axis == LoadAxis::kLateral && riskiest <= 2)
+    m.limit_m_s2 = std::min(m.limit_m_s2, kLateralLockInAcceleration);
   m.psi = m.equivalent_pedestrians = m.modal_force_n = m.acceleration_m_s2 = 0;
   // Every range the frequencies meet, with its class's load case: the largest acceleration
   // governs. The riskiest range's case alone missed the second harmonic where the frequencies
@@ -94,8 +95,10 @@ void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, doubl
     const std::optional<CrowdLoadCase> load = LoadCaseFor(check.traffic_class, range);
     if (!load) continue;
     const double psi = PsiOver(axis, load->harmonic, crowd_hz, empty_hz);
-    const double pedestrians = EquivalentPedestrians(check.damping_ratio, check.pedestrians, load->very_dense);
-    const double force = PedestrianForceN(axis, load->harmonic) * pedestrians * psi / DeckArea(d) * m.load_weight_m2;
+    const double pedestrians =
+        EquivalentPedestrians(check.damping_ratio, check.pedestrians, load->very_dense);
+    const double force =
+        PedestrianForceN(axis, load->harmonic) * pedestrians * psi / DeckArea(d) * m.load_weight_m2;
     const double acceleration = force / (2.0 * check.damping_ratio * m.modal_mass_kg);
     if (loaded && acceleration <= m.acceleration_m_s2) continue;
     loaded = true;
@@ -105,11 +108,13 @@ void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, doubl
     m.modal_force_n = force;
     m.acceleration_m_s2 = acceleration;
     model.str("");
-    model << "Sétra case " << load->number << ": " << PedestrianForceN(axis, load->harmonic) << " N x "
-          << (load->very_dense ? "1.85 sqrt(n)" : "10.8 sqrt(xi n)") << " = " << pedestrians << " pedestrians x psi "
-          << psi << " over " << DeckArea(d) << " m^2";
+    model << "Sétra case " << load->number << ": " << PedestrianForceN(axis, load->harmonic)
+          << " N x " << (load->very_dense ? "1.85 sqrt(n)" : "10.8 sqrt(xi n)") << " = "
+          << pedestrians << " pedestrians x psi " << psi << " over " << DeckArea(d) << " m^2";
   }
-  if (!loaded) model << "none: Sétra asks no load case of class " << check.traffic_class << " in range " << riskiest;
+  if (!loaded)
+    model << "none: Sétra asks no load case of class " << check.traffic_class << " in range "
+          << riskiest;
   m.load_model = model.str();
   m.comfort_class = ComfortLevelName(ComfortLevelReached(axis, m.acceleration_m_s2));
   m.pass = m.acceleration_m_s2 <= m.limit_m_s2;
@@ -185,8 +190,8 @@ ComfortAnalysis AnalyseComfort(const Design& d) {
   DeckModes& crowded = analysis.crowded;
   DeckModes& empty = analysis.empty;
   try {
-    const double above_hz =
-        kNearTrigger * std::max({c.vertical_trigger_hz, c.horizontal_trigger_hz, c.torsional_trigger_hz});
+    const double above_hz = kNearTrigger * std::max({c.vertical_trigger_hz, c.horizontal_trigger_hz,
+                                                     c.torsional_trigger_hz});
     analysis.crowded_model = ComfortModel(d, true);
     analysis.empty_model = ComfortModel(d, false);
     crowded = ComputeDeckModes(analysis.crowded_model, above_hz);
@@ -203,9 +208,11 @@ ComfortAnalysis AnalyseComfort(const Design& d) {
     const DeckMotionReport& motion = crowded.motions[k];
     if (motion.motion == DeckMotion::kLocal) continue;
     const int empty_index = NthOf(empty, motion.motion, rank[motion.motion]++);
-    const double empty_hz = empty_index >= 0 ? empty.modal.modes[static_cast<size_t>(empty_index)].frequency_hz
-                                             : mode.frequency_hz;
-    const double lower_hz = std::min(mode.frequency_hz, empty_hz), trigger_hz = Trigger(c, motion.motion);
+    const double empty_hz = empty_index >= 0
+                                ? empty.modal.modes[static_cast<size_t>(empty_index)].frequency_hz
+                                : mode.frequency_hz;
+    const double lower_hz = std::min(mode.frequency_hz, empty_hz),
+                 trigger_hz = Trigger(c, motion.motion);
     if (!(lower_hz < kNearTrigger * trigger_hz)) continue;
     ComfortMode m = Assess(d, out, mode, motion, empty_hz);
     m.index = static_cast<int>(k) + 1;

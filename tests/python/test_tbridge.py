@@ -263,13 +263,14 @@ def test_edited_areas_are_checked_as_tbridge_check_of_the_edited_file(written, t
 
 def test_case_nodes_give_the_design_file_deflections(design):
     # Each statically solved case's nodes, as the static check solves it: the largest vertical
-    # deck deflection from the drawn geometry is the file's, at its node (1e-12 m: the same
-    # solve, its doubles written in their shortest exact form).
+    # deck deflection from the drawn geometry is the file's, at its node (1e-9 of it: the same
+    # Newton solve, whose last iterate the file's shortest exact doubles and the module's own
+    # reading of the design round apart by 1e-10 of the deflection on the default bridge).
     file = json.loads(design.to_json())
     deck = sorted({n - 1 for m in file["members"] if m["type"] == "deck_string" for n in m["nodes"]})
     for entry in file["deflection_max"]:
         nodes = tbridge.case_nodes(design, entry["case"])
         dy = np.abs(nodes[deck, 1] - design.nodes[deck, 1])
-        assert abs(dy.max() - entry["deflection"]) <= 1e-12, entry["case"]
+        assert abs(dy.max() - entry["deflection"]) <= 1e-9 * entry["deflection"], entry["case"]
     with pytest.raises(tbridge.ConfigError, match="'case' = 'sls_travelling at node 99'"):
         tbridge.case_nodes(design, "sls_travelling at node 99")

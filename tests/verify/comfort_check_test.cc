@@ -146,8 +146,9 @@ TEST_CASE("the 3D bridge: lateral and torsional modes checked, lateral lock-in b
   for (const ComfortMode& m : check.modes) {
     if (m.direction != "torsional") continue;
     CHECK(m.frequency_hz < config.comfort.torsional_trigger_hz);
-    CHECK(m.limit_m_s2 == std::min(config.comfort.vertical_limit_m_s2,
-                                   ComfortLevelBound(LoadAxis::kVertical, config.comfort.comfort_level)));
+    CHECK(m.limit_m_s2 ==
+          std::min(config.comfort.vertical_limit_m_s2,
+                   ComfortLevelBound(LoadAxis::kVertical, config.comfort.comfort_level)));
   }
   // With the trigger at EN 1990's 2.5 Hz it is not checked: the key is read.
   Config en1990 = config;
@@ -183,7 +184,8 @@ TEST_CASE("the 3D bridge: lateral and torsional modes checked, lateral lock-in b
   CHECK(check.pedestrians < 8 * std::numbers::pi * xi * 0.9 * 2e5 / 300);  // the heavy one does not
 }
 
-TEST_CASE("the verified sizing designs to comfort as rows of its own, and the mass says so", "[comfort][verify]") {
+TEST_CASE("the verified sizing designs to comfort as rows of its own, and the mass says so",
+          "[comfort][verify]") {
   Config config;
   config.bridge.n = 2;
   const Design d = DesignAndVerify(config);
