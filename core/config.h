@@ -49,7 +49,7 @@ struct DesignConfig {
   // paper's A >= 2 l sqrt(SF C / (pi E)) with SF = buckling_safety_factor.
   std::string bar_resistance = "column_curve";
   double imperfection_factor = 0.49;     // alpha of the column curve (curve c: solid sections)
-  int max_sizings = 15;                  // the verified sizing's designs at most (outer iterations)
+  int max_sizings = 25;                  // the verified sizing's designs at most (outer iterations)
   // The static utilisation above which the verified sizing does not run the dynamic runs on
   // one of its own designs (it fails whatever they find); the design it delivers runs them.
   double dynamic_screen = 1.1;

@@ -66,7 +66,8 @@ struct SizingCorrections {
   double deflection_factor = 1.0;     // kappa_d on the linear deflections
   std::vector<ComfortRow> comfort;  // the comfort rows, about the design the problem is built from
   // r > 0: each area group within [A0 / (1 + r), A0 (1 + r)] of its area A0 in the design the
-  // problem is built from (a trust region; 0: none). The comfort rows' Rayleigh quotients hold
+  // problem is built from, and each prestress coefficient within r times the largest of that
+  // design's (a trust region; 0: none). The comfort rows' Rayleigh quotients hold
   // the mode's shape, which a far move changes: they overestimate the eigenvalue, and the sizing
   // concentrates stiffness where they overestimate most (the default at n = 3: strings grown
   // seven times, others to a tenth, its frequency foretold 4.0 Hz and found 2.7 Hz).
