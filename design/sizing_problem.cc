@@ -855,7 +855,8 @@ void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) con
   // start's (the quotient is affine in the prestress too, and the 3D bridge's 9 and more states
   // let a sizing follow its overestimate as far as the areas did).
   const Eigen::VectorXd alpha0 =
-      p.states ? Eigen::VectorXd(p.N.transpose() * (p.xr0 - p.x_g) / p.force_scale) : Eigen::VectorXd();
+      p.states ? Eigen::VectorXd(p.N.transpose() * (p.xr0 - p.x_g) / p.force_scale)
+               : Eigen::VectorXd();
   const double reach = p.states ? r * std::max(alpha0.cwiseAbs().maxCoeff(), 1e-3) : 0.0;
   for (int m = 0; m < p.states; ++m) {
     lo[p.groups + m] = r > 0 ? alpha0[m] - reach : -std::numeric_limits<double>::infinity();

@@ -40,8 +40,8 @@ TEST_CASE("progress of a verified design: per sizing, check and run, with the sh
   }
   const std::string drawn = ReadAll(file);
   std::fclose(file);
-  CHECK_THAT(drawn, Catch::Contains("sizing 1 (of at most 15): dynamic check: moving_load"));
-  CHECK_THAT(drawn, Catch::Contains("sizing 2 (of at most 15): "));
+  CHECK_THAT(drawn, Catch::Contains("sizing 1 (of at most 25): dynamic check: moving_load"));
+  CHECK_THAT(drawn, Catch::Contains("sizing 2 (of at most 25): "));
   CHECK_THAT(drawn, Catch::Contains("%"));  // the run's share done, with its ETA
   CHECK_THAT(drawn, Catch::Contains("ETA"));
 }

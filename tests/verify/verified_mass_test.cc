@@ -179,20 +179,25 @@ TEST_CASE("two starts give the same verified mass where the program has one opti
 }
 
 TEST_CASE("where two starts reach two optima, both are reported and the lighter passing one is kept", "[verify]") {
-  // The default bridge at n = 4 with its comfort rows: the frequency bound makes the program's
+  // The default bridge at n = 2 with its comfort rows: the frequency bound makes the program's
   // feasible set less convex, and the second start (twice the first design's areas) settles
-  // 0.14 % heavier (427.2 against 426.6 kg; at n = 1 and 3 the two meet within 5e-4). The output
-  // names both; the design kept is the lighter and passes.
+  // 0.2 % lighter (838.1 against 840.0 kg) on a design that fails its checks (at n = 1, 3, 4
+  // and 5 the two meet within 5e-4). The output names both; the design kept is the lighter
+  // passing one.
   Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
-  config.bridge.n = 4;
+  config.bridge.n = 2;
   const Design d = DesignAndVerify(config);
   INFO(d.resizing.optima);
   REQUIRE(d.resizing.second_start_kg > 0);
   REQUIRE(std::abs(d.resizing.second_start_kg - d.mass.structure) > 1e-3 * d.mass.structure);  // two optima
-  CHECK(d.mass.structure < d.resizing.second_start_kg);
-  CHECK_THAT(d.resizing.optima, Catch::Contains("kept"));
-  // A heavier optimum cannot replace the design, so it is not checked, and the output says so.
-  CHECK_THAT(d.resizing.optima, Catch::Contains("heavier optimum, not checked"));
+  CHECK_THAT(d.resizing.optima, Catch::Contains("kept the lighter passing"));
+  if (d.resizing.second_start_kg < d.mass.structure) {
+    // A lighter optimum is checked, and replaces the design only where it passes.
+    CHECK_THAT(d.resizing.optima, Catch::Contains("FAIL: another optimum"));
+  } else {
+    // A heavier optimum cannot replace the design, so it is not checked, and the output says so.
+    CHECK_THAT(d.resizing.optima, Catch::Contains("heavier optimum, not checked"));
+  }
   CHECK(DesignVerdict(d).pass);
 }
 
