@@ -258,12 +258,27 @@ void DenseQpSolver::Drop(int l) {
   --q_;
 }
 
+const char* DenseQpStatusName(DenseQpStatus status) {
+  switch (status) {
+    case DenseQpStatus::kSolved:
+      return "solved";
+    case DenseQpStatus::kInfeasible:
+      return "infeasible";
+    case DenseQpStatus::kStepLimit:
+      return "step limit";
+    case DenseQpStatus::kNotPositiveDefinite:
+      return "not positive definite";
+  }
+  return "unknown";
+}
+
 void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance,
                           const std::vector<int>* warm) {
   const int n = static_cast<int>(qp.G.rows());
   const int m = static_cast<int>(qp.C.rows());
   Resize(n, m);
   out.solved = false;
+  out.status = DenseQpStatus::kStepLimit;
   out.steps = 0;
   out.active.clear();
   out.row_multiplier.setZero(m);
@@ -273,12 +288,18 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
   diagonal_ = qp.G.isDiagonal(0.0);
   if (diagonal_) {
     // The sequential QP's G is diagonal: L = sqrt(G), with no dense factorisation.
-    if (!(qp.G.diagonal().array() > 0).all()) return;
+    if (!(qp.G.diagonal().array() > 0).all()) {
+      out.status = DenseQpStatus::kNotPositiveDefinite;
+      return;
+    }
     inv_sqrt_ = qp.G.diagonal().cwiseSqrt().cwiseInverse();
     p = -qp.a.cwiseQuotient(qp.G.diagonal());
   } else {
     llt_.compute(qp.G);
-    if (llt_.info() != Eigen::Success) return;
+    if (llt_.info() != Eigen::Success) {
+      out.status = DenseQpStatus::kNotPositiveDefinite;
+      return;
+    }
     p = -llt_.solve(qp.a);
   }
   q_ = 0;
@@ -294,6 +315,7 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
     const int kp = MostViolated(qp, p, tolerance);
     if (kp < 0) {
       out.solved = true;
+      out.status = DenseQpStatus::kSolved;
       break;
     }
     TransformedNormal(qp, kp);
@@ -332,6 +354,7 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
           left_out_ = true;
           break;
         }
+        out.status = DenseQpStatus::kInfeasible;
         return;
       }
       const double t = std::min(t1, t2);

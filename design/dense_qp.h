@@ -30,8 +30,20 @@ struct DenseQp {
   Eigen::VectorXd hi;  // n, may be +inf
 };
 
+// How a solve ended: each failure is its own, as its lever differs (an infeasible program
+// wants its rows relaxed, a step limit more steps or a warm start, a G that is not positive
+// definite its curvature floored).
+enum class DenseQpStatus {
+  kSolved,
+  kInfeasible,           // a violated constraint lies in the active normals' span
+  kStepLimit,            // 10 (m + 2 n) + 10 steps without a solution
+  kNotPositiveDefinite,  // G has a non-positive pivot (or diagonal entry)
+};
+const char* DenseQpStatusName(DenseQpStatus status);
+
 struct DenseQpSolution {
-  bool solved = false;               // false: infeasible, or the step limit was reached
+  bool solved = false;  // status == kSolved
+  DenseQpStatus status = DenseQpStatus::kStepLimit;
   Eigen::VectorXd p;                 // the minimiser
   Eigen::VectorXd row_multiplier;    // m, >= 0: the multipliers of C p >= b
   Eigen::VectorXd bound_multiplier;  // n: > 0 where p sits on lo, < 0 where on hi

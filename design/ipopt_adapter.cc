@@ -103,15 +103,19 @@ class NlpTnlp : public Ipopt::TNLP {
   }
 
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
-                         const Number*, Index, const Number*, const Number*, Number obj,
+                         const Number*, Index m, const Number*, const Number* lambda, Number obj,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
     x_ = Eigen::Map<const Eigen::VectorXd>(x, n);
+    // Ipopt's lambda is <= 0 on a binding row g >= lo (its Lagrangian adds lambda g); the
+    // outcome's are >= 0 there, as the SQP's.
+    multipliers_ = -Eigen::Map<const Eigen::VectorXd>(lambda, m);
     final_status_ = status;
     objective_ = obj;
   }
 
   Ipopt::SolverReturn final_status() const { return final_status_; }
   double objective() const { return objective_; }
+  const Eigen::VectorXd& multipliers() const { return multipliers_; }
 
  private:
   static double Finite(double v) { return std::isfinite(v) ? v : (v > 0 ? 2e19 : -2e19); }
@@ -121,6 +125,7 @@ class NlpTnlp : public Ipopt::TNLP {
   Eigen::VectorXd x_lo_, x_hi_, g_lo_, g_hi_;
   Ipopt::SolverReturn final_status_ = Ipopt::INTERNAL_ERROR;
   double objective_ = 0;
+  Eigen::VectorXd multipliers_;
 };
 
 std::string StatusName(Ipopt::ApplicationReturnStatus s) {
@@ -227,6 +232,7 @@ SolverOutcome SolveHere(const NlpProblem& problem, const SolverOptions& options,
   out.success = status == Ipopt::Solve_Succeeded || status == Ipopt::Solved_To_Acceptable_Level;
   out.iterations = Ipopt::IsValid(app->Statistics()) ? app->Statistics()->IterationCount() : 0;
   out.objective = problem.Objective(x);
+  out.multipliers = nlp->multipliers();
   out.message = out.success ? "optimal" : "Ipopt stopped with " + out.status;
   return out;
 }

@@ -53,7 +53,8 @@ struct SolverOutcome {
   int iterations = 0;
   bool success = false;
   double objective = 0;  // f at the returned x
-  // The rows' multipliers at the returned x (the SQP's last subproblem's; empty for the others).
+  // The rows' multipliers at the returned x, >= 0 on a binding row g >= lo (the SQP's last
+  // subproblem's, Ipopt's own; empty for NLopt).
   Eigen::VectorXd multipliers;
 };
 

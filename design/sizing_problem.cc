@@ -1,13 +1,12 @@
 #include "design/sizing_problem.h"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <stdexcept>
-
-#include <Eigen/SVD>
 
 #include "core/error.h"
 #include "core/two_lanes.h"
@@ -16,6 +15,7 @@
 #include "design/equilibrium_basis.h"
 #include "design/linear_response.h"
 #include "design/mirror.h"
+#include "design/reciprocal_curvature.h"
 #include "design/stability.h"
 
 namespace tbridge {
@@ -146,7 +146,8 @@ struct SizingProblem::Impl {
   // problem, whose rows are only evaluated, never needs it (n = 7: 64 M entries, 512 MB).
   mutable Pattern jacobian;
   mutable std::once_flag jacobian_formed;
-  Pattern hessian;
+  mutable Pattern hessian;  // the diagonal, formed on first use
+  mutable std::once_flag hessian_formed;
   // What each row reads, for the adjoint Jacobian: the members whose force change and the deck
   // nodes whose vertical displacement some row reads (LinearResponse::Adjoint's columns, the
   // members first), and per row its column (-1: the reference-taut rows, which read none).
@@ -921,9 +922,31 @@ bool SizingProblem::DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Ei
   return true;
 }
 
-const NlpProblem::Pattern& SizingProblem::HessianPattern() const { return impl_->hessian; }
+const NlpProblem::Pattern& SizingProblem::HessianPattern() const {
+  const Impl& p = *impl_;
+  std::call_once(p.hessian_formed, [&p]() {
+    for (int v = 0; v < p.num_variables(); ++v) p.hessian.emplace_back(v, v);
+  });
+  return p.hessian;
+}
 
-void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, double, const double*, double*) const {}
+// The reciprocal diagonal the SQP takes (design/reciprocal_curvature.h), in NlpProblem's sign:
+// its Lagrangian is sigma f + sum lambda_r g_r, where a binding row g_r >= lo_r has lambda_r <= 0
+// (Ipopt's), so the curvature's multipliers are -lambda. The prestress variables get none: the
+// SQP's secant there is learnt along its own path, which another solver does not walk, and the
+// rows are nearly linear in the prestress (a strength row exactly, at given areas); Ipopt's
+// inertia correction adds what its step needs there.
+void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma,
+                                  const double* lambda, double* values) const {
+  const Impl& p = *impl_;
+  const Eigen::MatrixXd& jac = p.JacobianAt(x);
+  const Eigen::VectorXd binding = -Eigen::Map<const Eigen::VectorXd>(lambda, jac.rows());
+  Eigen::VectorXd grad(p.num_variables());
+  ObjectiveGradient(x, grad);
+  for (int v = 0; v < p.num_variables(); ++v)
+    values[v] =
+        v < p.groups ? ReciprocalCurvature(x[v], jac.col(v), binding, sigma * grad[v]) : 0.0;
+}
 
 Eigen::VectorXd SizingProblem::VariablesOf(const std::vector<double>& areas, const Eigen::VectorXd& alpha) const {
   const Impl& p = *impl_;

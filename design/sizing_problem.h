@@ -18,8 +18,9 @@
 // and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut margin
 // they ask.
 // The members' weight in G is held at the design the problem was built from (the outer
-// iterations update it). Gradients are exact (adjoint sensitivities); no Hessian: the solvers
-// approximate it (Ipopt's limited-memory BFGS, NLopt's SLSQP).
+// iterations update it). Gradients are exact (adjoint sensitivities); the Hessian is the
+// reciprocal diagonal of design/reciprocal_curvature.h, the SQP's own curvature (NLopt's SLSQP
+// approximates it instead).
 #pragma once
 
 #include <Eigen/Core>
@@ -141,7 +142,7 @@ class SizingProblem final : public NlpProblem {
   const Pattern& JacobianPattern() const override;
   void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override;
   bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const override;
-  const Pattern& HessianPattern() const override;  // empty: the solvers approximate it
+  const Pattern& HessianPattern() const override;  // the diagonal
   void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma, const double* lambda,
                      double* values) const override;
 

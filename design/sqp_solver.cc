@@ -8,6 +8,7 @@
 
 #include "design/dense_qp.h"
 #include "design/nnls.h"
+#include "design/reciprocal_curvature.h"
 
 namespace tbridge {
 
@@ -101,6 +102,32 @@ void RelaxUnreachable(DenseQp& qp, const Eigen::VectorXd& b) {
   }
 }
 
+// The outcome of a subproblem the dense QP could not solve (its elastic form, which always has
+// a solution in exact arithmetic): a status per cause, with what to try.
+void QpFailure(DenseQpStatus status, SolverOutcome& out) {
+  switch (status) {
+    case DenseQpStatus::kInfeasible:
+      out.status = "QP_INFEASIBLE";
+      out.message =
+          "the quadratic subproblem's rows were dependent and contradictory to rounding "
+          "(try design.solver \"ipopt\")";
+      return;
+    case DenseQpStatus::kNotPositiveDefinite:
+      out.status = "QP_NOT_POSITIVE_DEFINITE";
+      out.message =
+          "the quadratic subproblem's curvature was not positive definite (a row or the "
+          "mass not finite at this point)";
+      return;
+    case DenseQpStatus::kStepLimit:
+    case DenseQpStatus::kSolved:
+      out.status = "QP_STEP_LIMIT";
+      out.message =
+          "the quadratic subproblem took more active-set steps than its limit "
+          "(try design.solver \"ipopt\")";
+      return;
+  }
+}
+
 // The quadratic subproblem at `cur` (its right-hand sides apart): the Lagrangian's diagonal
 // Hessian, the gradients and the move limits (move_lo, move_hi: where a move limit, not a
 // bound, limits the step).
@@ -113,10 +140,8 @@ void PoseSubproblem(const Point& cur, const Eigen::VectorXd& lambda, const Eigen
   for (int j = 0; j < n; ++j) {
     // The reciprocal rows' curvature in a positive variable, at least the secant's.
     double h = secant[j];
-    if (lo[j] > 0) {
-      const double raise = (cur.jac.col(j).array().max(0.0) * lambda.array().max(0.0)).sum();
-      h = std::max(h, 2.0 / cur.x[j] * (raise + std::max(0.0, -cur.grad[j])));
-    }
+    if (lo[j] > 0)
+      h = std::max(h, ReciprocalCurvature(cur.x[j], cur.jac.col(j), lambda, cur.grad[j]));
     double step_lo, step_hi;
     if (lo[j] > 0) {
       step_lo = cur.x[j] / (1 + reach[j]) - cur.x[j];
@@ -243,8 +268,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
       PoseElastic(qp, std::max({10.0 * nu, 10.0 * cur.grad.cwiseAbs().maxCoeff(), 1.0}), elastic);
       qp_solver.Solve(elastic, sol);
       if (!sol.solved) {
-        out.status = "QP_FAILURE";
-        out.message = "the quadratic subproblem could not be solved";
+        QpFailure(sol.status, out);
         break;
       }
       sol.p.conservativeResize(n);
