@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <limits>
 #include <random>
+#include <string>
 
 namespace tbridge {
 namespace {
@@ -222,6 +223,35 @@ TEST_CASE("dense QP: a constraint its active ones imply is met within 1e-8, and 
   qp.hi[0] = 1.0 - 1e-3;
   solver.Solve(qp, sol);
   CHECK_FALSE(sol.solved);
+  CHECK(sol.status == DenseQpStatus::kInfeasible);
+}
+
+TEST_CASE("dense QP: each failure has its own status", "[qp]") {
+  DenseQpSolver solver;
+  DenseQpSolution sol;
+  // A solvable program: solved.
+  DenseQp qp = Unbounded(2, 1);
+  qp.C(0, 0) = 1.0;
+  qp.b[0] = 1.0;
+  solver.Solve(qp, sol);
+  REQUIRE(sol.solved);
+  CHECK(sol.status == DenseQpStatus::kSolved);
+  // A G with a zero pivot, diagonal or not: not positive definite, before any step.
+  qp.G(1, 1) = 0.0;
+  solver.Solve(qp, sol);
+  CHECK_FALSE(sol.solved);
+  CHECK(sol.status == DenseQpStatus::kNotPositiveDefinite);
+  qp.G << 1.0, 1.0, 1.0, 1.0;  // singular, not diagonal: its Cholesky factorisation fails
+  solver.Solve(qp, sol);
+  CHECK(sol.status == DenseQpStatus::kNotPositiveDefinite);
+  // p_0 >= 1 and -p_0 >= 0: infeasible.
+  qp = Unbounded(2, 2);
+  qp.C(0, 0) = 1.0;
+  qp.b[0] = 1.0;
+  qp.C(1, 0) = -1.0;
+  solver.Solve(qp, sol);
+  CHECK(sol.status == DenseQpStatus::kInfeasible);
+  CHECK(std::string(DenseQpStatusName(sol.status)) == "infeasible");
 }
 
 TEST_CASE("dense QP: rows nearly parallel to active ones hold at the minimiser to rounding", "[qp]") {

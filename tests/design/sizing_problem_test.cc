@@ -3,9 +3,9 @@
 
 #include "design/sizing_problem.h"
 
-#include <catch2/catch.hpp>
-
 #include <Eigen/QR>
+#include <algorithm>
+#include <catch2/catch.hpp>
 #include <map>
 #include <random>
 
@@ -84,6 +84,38 @@ TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[des
     REQUIRE(SizingProblem::SymmetricStates(d) >= 2);
     CheckJacobian(d);
   }
+}
+
+TEST_CASE("the sizing problem's Hessian is the reciprocal diagonal, in Ipopt's sign", "[design]") {
+  // What could be wrong is the sign and where it lands: NlpProblem's Lagrangian is
+  // sigma f + sum lambda g, and a binding row g >= lo has lambda <= 0 there (Ipopt's). A row
+  // weighted so (lambda_r = -1) adds 2 max(0, dg_r/dx_v) / x_v on each area and nothing on the
+  // prestress; a row weighted the other way, or the mass alone (it rises with every area), adds
+  // nothing. Exact: the same sums in the same order.
+  const Design d = SmallDesign();
+  const SizingProblem problem(d, {});
+  const Eigen::VectorXd x =
+      problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
+  const int n = problem.num_variables(), m = problem.num_constraints();
+  const int groups = *std::max_element(problem.group_of().begin(), problem.group_of().end()) + 1;
+  REQUIRE(problem.HessianPattern().size() == static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) CHECK(problem.HessianPattern()[v] == std::make_pair(v, v));
+  Eigen::MatrixXd jac;
+  REQUIRE(problem.DenseJacobian(x, jac));
+  // The row that rises most with the first area.
+  Eigen::Index r = 0;
+  jac.col(0).maxCoeff(&r);
+  REQUIRE(jac(r, 0) > 0);
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m), h(n);
+  lambda[r] = -1;
+  problem.HessianValues(x, 1.0, lambda.data(), h.data());
+  for (int v = 0; v < n; ++v) {
+    const double expected = v < groups ? 2 * std::max(0.0, jac(r, v)) / x[v] : 0.0;
+    CHECK(h[v] == expected);
+  }
+  lambda[r] = 1;  // the wrong sign for a binding row: no curvature
+  problem.HessianValues(x, 1.0, lambda.data(), h.data());
+  CHECK(h.cwiseAbs().maxCoeff() == 0.0);
 }
 
 TEST_CASE("the sizing's prestress: every self-stress that gives mirror images one force", "[design]") {
