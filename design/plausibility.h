@@ -25,6 +25,25 @@ inline constexpr double kMinPrintedMass = 5e-4;  // [kg]
 // a density below water's: timber is about 450 kg/m^3, but a metal given in t/m^3 is 1000
 // times too small.
 inline constexpr double kMinPlausibleDensity = 1000;  // [kg/m^3]
+// The payload over the deck's area, bridge.payload / (span x deck_width). EN 1991-2 5.3.2.1
+// asks 2.5 to 5 kPa of a footbridge and Load Model 1 (4.3.2) about 10 kPa on a road lane with
+// its tandem spread out: below 0.5 kPa is less than a sparse crowd (the paper's 12 kN on 12 m by
+// 1.5 m is 0.67 kPa), above 50 kPa ten times a footbridge crowd; both more likely a unit slip (a
+// payload in kN is 1000 times too small).
+inline constexpr double kMinPlausiblePayloadPressure = 500;    // [Pa]
+inline constexpr double kMaxPlausiblePayloadPressure = 50000;  // [Pa]
+// A motorway deck of six lanes with hard shoulders is about 30 m wide; a width in mm is 1000
+// times too large.
+inline constexpr double kMaxPlausibleDeckWidth = 30;  // [m]
+
+// Results of a designed bridge (not with the paper's switches, whose blanket factor of 10 and
+// one case are no engineering design):
+// a string thicker than the largest spiral strands and locked-coil ropes made (about 180 mm).
+inline constexpr double kMaxPlausibleStringDiameter = 0.2;  // [m]
+// The whole bridge, deck beams included, per metre of span: a steel road girder bridge of
+// 30-100 m weighs about 1-2 t/m, a footbridge a few hundred kg/m; above 3 t/m the loads or the
+// materials are more likely wrong than the bridge heavy.
+inline constexpr double kMaxPlausibleMassPerSpan = 3000;  // [kg/m]
 
 // One sentence per implausible config value of a designed bridge, empty when none; each names
 // the key, the value, the threshold and the likely slip. Throws nothing.

@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -39,13 +40,45 @@ namespace tbridge {
 
 namespace {
 
-// A config given as a dict (read as its JSON text, which Python writes with every float exact)
-// or as a path to its file.
-Config ConfigOf(const py::object& config) {
-  if (py::isinstance<py::dict>(config)) {
-    const std::string text = py::module_::import("json").attr("dumps")(config).cast<std::string>();
-    return ParseConfig(nlohmann::json::parse(text));
+// Throws the ConfigError the tool gives for a bad key when a float under `value` (a dict, list
+// or tuple, walked down to its numbers) is NaN or infinite: json.dumps would write it as the
+// bare NaN or Infinity, which is no JSON, and the parse would name no key. `path` is the key
+// path so far, as the tool writes it ("bridge.payload", "structure.nodes[2]").
+void CheckFinite(const py::handle& value, const std::string& path) {
+  if (py::isinstance<py::dict>(value)) {
+    for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
+      const std::string name = py::str(key).cast<std::string>();
+      CheckFinite(item, path.empty() ? name : path + "." + name);
+    }
+  } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    size_t k = 0;
+    for (const py::handle item : value) {
+      std::string element = path;
+      element += "[";
+      element += std::to_string(k++);
+      element += "]";
+      CheckFinite(item, element);
+    }
+  } else if (py::isinstance<py::float_>(value)) {
+    const double number = value.cast<double>();
+    if (!std::isfinite(number)) {
+      throw ConfigError(path.empty() ? "(root)" : path, NumberText(number),
+                        "must be a finite number (JSON has no NaN or infinity)");
+    }
   }
+}
+
+// The JSON of a config given as a dict, as Python writes it (every float exact), its numbers
+// checked finite first.
+nlohmann::json JsonOf(const py::object& config) {
+  CheckFinite(config, "");
+  return nlohmann::json::parse(
+      py::module_::import("json").attr("dumps")(config).cast<std::string>());
+}
+
+// A config given as a dict or as a path to its file.
+Config ConfigOf(const py::object& config) {
+  if (py::isinstance<py::dict>(config)) return ParseConfig(JsonOf(config));
   return LoadConfig(py::str(py::module_::import("os").attr("fspath")(config)).cast<std::string>());
 }
 
@@ -353,14 +386,16 @@ PYBIND11_MODULE(tbridge, m) {
 
   m.def(
       "sweep",
-      [](const py::object& config, std::optional<int> threads, std::optional<std::string> shard_text) {
-        const SweepSpec spec = py::isinstance<py::dict>(config)
-                                   ? ParseSweepSpec(nlohmann::json::parse(
-                                         py::module_::import("json").attr("dumps")(config).cast<std::string>()))
-                                   : LoadSweepSpec(py::str(py::module_::import("os").attr("fspath")(config)));
+      [](const py::object& config, std::optional<int> threads,
+         std::optional<std::string> shard_text) {
+        const SweepSpec spec =
+            py::isinstance<py::dict>(config)
+                ? ParseSweepSpec(JsonOf(config))
+                : LoadSweepSpec(py::str(py::module_::import("os").attr("fspath")(config)));
         SweepRunOptions options;
         options.threads = threads ? *threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-        if (options.threads < 1) throw ConfigError("threads", std::to_string(options.threads), "a whole number >= 1");
+        if (options.threads < 1)
+          throw ConfigError("threads", std::to_string(options.threads), "a whole number >= 1");
         std::optional<Shard> shard;
         if (shard_text) shard = ParseShard(*shard_text, "shard");
         if (shard) options.shard = *shard;
@@ -377,9 +412,12 @@ PYBIND11_MODULE(tbridge, m) {
         return out;
       },
       py::arg("config"), py::arg("threads") = py::none(), py::arg("shard") = py::none(),
-      "the sweep of a config's \"sweep\" grid (a dict, or the path of its JSON file), as tbridge sweep: `threads` "
-      "workers (None: the number of cores), `shard` \"i/N\" for the candidates with index % N == i - 1 (no "
-      "choice then). Ctrl-C stops it once the candidate in the calling thread is done (KeyboardInterrupt)");
+      "the sweep of a config's \"sweep\" grid (a dict, or the path of its JSON file), as tbridge "
+      "sweep: `threads` "
+      "workers (None: the number of cores), `shard` \"i/N\" for the candidates with index % N == i "
+      "- 1 (no "
+      "choice then). Ctrl-C stops it once the candidate in the calling thread is done "
+      "(KeyboardInterrupt)");
   m.def(
       "modes",
       [](const py::object& config_or_design, int count) {

@@ -756,8 +756,11 @@ struct BestSizing {
 // to the tolerance, where the SQP's is the mass's change (the default with comfort off at n = 3,
 // 5: stationarity 2.9e-5, 6.9e-4 after the SQP, 1.9e-7, 6.4e-7 after Ipopt; BENCHMARKS.md). The
 // outer sizings keep the sizing's solver: Ipopt took 4-17 times as long for them.
-std::string PolishSolver(const std::string& solver) {
-  return SolverBuiltIn("ipopt") ? "ipopt" : solver;
+// A program with comfort rows is polished by the sizing's solver: it keeps its trust region
+// (below), so its polish tightens the tolerance but cannot prove it, and Ipopt there costs time
+// for that alone (and ran to its iteration limit where the rows were less smooth).
+std::string PolishSolver(const std::string& solver, const SizingCorrections& corrections) {
+  return corrections.comfort.empty() && SolverBuiltIn("ipopt") ? "ipopt" : solver;
 }
 
 // The kept design's own program solved again from its solution at kPolishTolerance, without the
@@ -774,7 +777,7 @@ constexpr int kPolishRounds = 3;
 void Polish(const Config& config, const std::string& solver, BestSizing& kept, Design& best,
             Resizing& record, ProgressReporter* progress) {
   if (progress != nullptr) progress->SetStagePrefix("polish: ");
-  const std::string polisher = PolishSolver(solver);
+  const std::string polisher = PolishSolver(solver, kept.corrections);
   BestSizing at = kept;
   // A program with comfort rows keeps its trust region: their quotients are the kept design's
   // mode shapes, which overestimate its frequencies far from it (the default at n = 3: without

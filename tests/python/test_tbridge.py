@@ -83,6 +83,23 @@ def test_bad_config_raises_with_the_key_named_as_the_cli_says(tmp_path):
     assert str(raised.value) in err
 
 
+@pytest.mark.parametrize("value, shown", [(math.nan, "nan"), (math.inf, "inf"), (-math.inf, "-inf")])
+def test_a_non_finite_float_raises_with_the_key_named(value, shown):
+    # json.dumps writes NaN and Infinity bare, which is no JSON: the error names the key instead.
+    with open(DEFAULT) as f:
+        config = json.load(f)
+    config["bridge"]["payload"] = value
+    with pytest.raises(tbridge.ConfigError, match=rf"config key 'bridge\.payload' = {shown}: must be a finite number"):
+        tbridge.design(config)
+    # In a list too, and in a sweep's config.
+    config["bridge"]["payload"] = 12000.0
+    config["loads"]["cases"] = ["permanent", value]
+    with pytest.raises(tbridge.ConfigError, match=rf"'loads\.cases\[1\]' = {shown}"):
+        tbridge.modes(config)
+    with pytest.raises(tbridge.ConfigError, match=rf"'sweep\.beta_deg\[0\]' = {shown}"):
+        tbridge.sweep({"bridge": {"n": 1}, "sweep": {"beta_deg": [value]}}, threads=1)
+
+
 def test_bad_export_format_raises_with_the_key_named(design):
     with pytest.raises(tbridge.ConfigError, match="'format' = 'abaqus': expected calculix or opensees"):
         tbridge.export(design, "abaqus")

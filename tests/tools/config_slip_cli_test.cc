@@ -75,4 +75,26 @@ TEST_CASE("design: a density below water's warns, and --strict refuses it writin
   CHECK_FALSE(fs::exists(out));
 }
 
+TEST_CASE(
+    "design: a payload given in kN warns naming the key, and --strict refuses it writing nothing") {
+  const fs::path dir = FreshDir("slip_payload_kn");
+  const fs::path config = dir / "c.json", out = dir / "o.json";
+  // The 20 m by 2 m footbridge's 176 kN crowd written as 176: 4.4 Pa of deck, a bridge that
+  // designs and passes, for a load 1000 times too small.
+  std::ofstream(config) << R"({"bridge": {"n": 2, "span": 20, "deck_width": 2, "payload": 176}})";
+  const CliResult r =
+      RunTbridge(dir, "design " + Quote(config.string()) + " -q -o " + Quote(out.string()));
+  INFO(r.err);
+  CHECK(r.code != 2);
+  CHECK_THAT(r.err, Catch::Contains("tbridge: warning: bridge.payload = 176 N") &&
+                        Catch::Contains("below 0.5 kPa") && Catch::Contains("kN"));
+  CHECK(fs::exists(out));
+  fs::remove(out);
+  const CliResult strict = RunTbridge(
+      dir, "design " + Quote(config.string()) + " -q --strict -o " + Quote(out.string()));
+  CHECK(strict.code == 2);
+  CHECK_THAT(strict.err, Catch::Contains("--strict") && Catch::Contains("bridge.payload = 176 N"));
+  CHECK_FALSE(fs::exists(out));
+}
+
 }  // namespace
