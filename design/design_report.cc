@@ -393,6 +393,56 @@ json VerdictJson(const Design& d, const Verdict& v) {
           {"notes", d.notes}};
 }
 
+// A failing design's largest violation, by what the verdict reads (each as its ratio to its
+// limit, less 1), and the config keys that move it: what a user can change, not a
+// re-statement of the verdict. "" where the design does not fail.
+std::string WhatMovesIt(const Design& d, const Verdict& v) {
+  if (v.outcome != VerdictOutcome::kFail) return "";
+  struct Violation {
+    double over = -1;
+    std::string kind, keys;
+  };
+  std::vector<Violation> found;
+  double members = 0;
+  for (const auto* list : {&d.bars, &d.strings}) {
+    for (const MemberSizing& m : *list) members = std::max(members, m.utilisation);
+  }
+  found.push_back(
+      {members - 1, "a member's strength",
+       "bridge.beta_deg and bridge.n (a deeper substructure carries the load with less "
+       "force), the material's yield_stress, design.max_sizings (where the sizing stopped "
+       "before a design passed)"});
+  found.push_back({v.deck_beams.utilisation - 1, "the deck beams' bending",
+                   "bridge.n (shorter deck sections)"});
+  found.push_back(
+      {v.deck_beams.SagRatio() - 1, "the deck beams' sag", "loads.deck_sag_limit, bridge.n"});
+  if (d.statics.done && d.statics.deflection_limit_m > 0) {
+    found.push_back({d.statics.deflection_max_m / d.statics.deflection_limit_m - 1,
+                     "the deflection", "loads.deflection_limit, bridge.beta_deg, bridge.n"});
+  }
+  for (const ComfortMode& m : d.comfort.modes) {
+    if (m.pass) continue;
+    const double over =
+        m.acceleration_m_s2 > m.limit_m_s2 && m.limit_m_s2 > 0
+            ? m.acceleration_m_s2 / m.limit_m_s2 - 1
+            : (m.lock_in_pedestrians > 0 ? d.comfort.pedestrians / m.lock_in_pedestrians - 1 : 0);
+    found.push_back({over, "comfort (" + m.direction + " mode " + std::to_string(m.index) + ")",
+                     "comfort.comfort_level, comfort.traffic_class, bridge.beta_deg, bridge.n, "
+                     "design.max_sizings"});
+  }
+  if (!d.stability.stable) {
+    found.push_back({std::numeric_limits<double>::infinity(), "stability",
+                     "design.deck_string_min_radius, design.transverse_string_min_radius"});
+  }
+  const auto worst =
+      std::max_element(found.begin(), found.end(),
+                       [](const Violation& a, const Violation& b) { return a.over < b.over; });
+  if (worst == found.end() || !(worst->over > 0)) return "";
+  const std::string by =
+      std::isfinite(worst->over) ? Format(", %.3g %% over its limit", 100 * worst->over) : "";
+  return "what moves it: the largest violation is " + worst->kind + by + "; keys: " + worst->keys;
+}
+
 }  // namespace
 
 void WriteDesignJson(const Design& d, std::ostream& os) {
@@ -614,10 +664,12 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                 d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
   }
   if (d.resizing.iterations > 1) {
-    line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg (the lightest that passed); %s",
+    line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg (%s); %s",
                 d.resizing.iterations, d.resizing.structure_mass_kg.front(), d.mass.structure,
+                verdict.pass ? "the lightest that passed" : "none passed: the last design",
                 d.resizing.converged
-                    ? Format("converged: a sizing within %g of the last passing design's mass", d.resizing.tolerance)
+                    ? Format("converged: a sizing within %g of the last passing design's mass",
+                             d.resizing.tolerance)
                           .c_str()
                     : "did not converge"));
     // Each sizing: its mass, its largest utilisation under the checks, and what that changed;
@@ -662,6 +714,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   }
   for (const std::string& text : ComfortSummaryLines(d)) line(text);
   line(verdict.summary);
+  if (const std::string lever = WhatMovesIt(d, verdict); !lever.empty()) line(lever);
   line("scope: " + verdict.scope);
   line("");
 

@@ -139,3 +139,31 @@ TEST_CASE("the prestress the checks leave unfactored is the deck chain's self-st
 
 }  // namespace
 }  // namespace tbridge
+
+namespace tbridge {
+namespace {
+
+TEST_CASE("a failing design's summary names its largest violation and the keys that move it",
+          "[verify]") {
+  // The verified default (comfort off) with every area at 0.8 of its own: its members fail their
+  // strength by some 20 %, the largest violation; a passing design prints no such line.
+  Config config;
+  config.comfort.check = false;
+  const Design d = DesignAndVerify(config);
+  REQUIRE(DesignVerdict(d).pass);
+  CHECK_THAT(DesignSummary(d, 0), !Catch::Contains("what moves it"));
+  CHECK_THAT(DesignSummary(d, 0), Catch::Contains("(the lightest that passed)"));
+  std::vector<double> areas = MemberAreas(d);
+  for (double& a : areas) a *= 0.8;
+  Design thin = SizedDesign(config, areas, d.alpha);
+  CheckAgain(thin);
+  REQUIRE(DesignVerdict(thin).outcome == VerdictOutcome::kFail);
+  const std::string summary = DesignSummary(thin, 0);
+  INFO(summary);
+  CHECK_THAT(summary,
+             Catch::Contains("what moves it: the largest violation is a member's strength") &&
+                 Catch::Contains("keys: bridge.beta_deg and bridge.n"));
+}
+
+}  // namespace
+}  // namespace tbridge
