@@ -1,5 +1,7 @@
 #include "design/plausibility.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <optional>
@@ -43,6 +45,102 @@ void CountMembers(const Design& d, const std::function<bool(const MemberSizing&)
                                                 : " member";
   out.push_back(std::to_string(count) + noun + (count == 1 ? " " : "s ") + what + " (worst " +
                 worst->name + ": " + show(*worst) + ")");
+}
+
+// One abutment's largest horizontal reaction over the ultimate cases, with that case's load.
+struct AbutmentThrust {
+  std::vector<int> nodes;  // 0-based support nodes at this end of the span
+  double x = 0;            // [m], where the end is
+  double h = -1;           // [N], the in-plan vector sum of its nodes' horizontal reactions
+  double w = 0;            // [N], the case's total vertical load
+  double thrust = 0;       // [N], that load's own thrust W L / (8 d)
+  std::string label;       // the case
+  double Ratio() const { return h / thrust; }
+};
+
+// An abutment named by its end and nodes: "the abutment at x = 0 m (node 15)".
+std::string AbutmentName(const AbutmentThrust& a) {
+  std::string nodes;
+  for (int v : a.nodes) {
+    nodes += nodes.empty() ? "" : " and ";
+    nodes += std::to_string(v + 1);
+  }
+  return "the abutment at x = " + Format("%g m", a.x) +
+         (a.nodes.size() == 1 ? " (node " : " (nodes ") + nodes + ")";
+}
+
+// Warns where an abutment's horizontal reaction over the ultimate cases exceeds
+// kMaxAbutmentThrustRatio times the thrust the load of that case gives by itself.
+void CheckAbutmentThrust(const Design& d, std::vector<std::string>& out) {
+  const Structure& s = d.topology.structure;
+  const double span = d.config.bridge.span;
+  // The two ends of the span: one support each on a planar bridge, two (one per plane) on the
+  // 3D bridge.
+  AbutmentThrust ends[2];
+  ends[1].x = span;
+  double deck = 0;
+  int supports = 0;
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (!s.fixed[v]) continue;
+    ends[s.nodes(0, v) < span / 2 ? 0 : 1].nodes.push_back(v);
+    deck += s.nodes(1, v);
+    ++supports;
+  }
+  if (ends[0].nodes.empty() || ends[1].nodes.empty()) return;
+  // The substructure's depth at mid-span: from the deck level (the supports' height: they are
+  // the deck's ends) down to the lowest node within a quarter span of mid-span. There the p = 1
+  // bridge has its deepest node, L/2 tan(beta/2) under mid-span; a module of p >= 2 bars has
+  // its deepest vertices off the middle (at 3/8 and 5/8 of the span for p = 2), still inside.
+  deck /= supports;
+  double lowest = deck;
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (std::abs(s.nodes(0, v) - span / 2) <= span / 4) lowest = std::min(lowest, s.nodes(1, v));
+  }
+  const double depth = deck - lowest;  // [m]
+  if (!(depth > 0)) return;
+  for (const CaseResponse& c : d.statics.cases) {
+    if (!c.converged || c.case_index < 0 || c.case_index >= static_cast<int>(d.cases.size()) ||
+        d.cases[c.case_index].state != LimitState::kUltimate ||
+        c.reactions.cols() != s.num_nodes()) {
+      continue;
+    }
+    double w = 0;  // the reactions balance every applied load: their vertical sum is the load
+    for (const AbutmentThrust& end : ends) {
+      for (int v : end.nodes) w += c.reactions(1, v);
+    }
+    if (!(w > 0)) continue;
+    for (AbutmentThrust& end : ends) {
+      double hx = 0, hz = 0;
+      for (int v : end.nodes) hx += c.reactions(0, v), hz += c.reactions(2, v);
+      const double h = std::hypot(hx, hz);
+      if (h <= end.h) continue;
+      end.h = h;
+      end.w = w;
+      end.thrust = w * span / (8 * depth);
+      end.label = c.label;
+    }
+  }
+  // The worse end named in full, the other's numbers added when it is beyond the ratio too.
+  const int worst = ends[1].h > ends[0].h * (1 + 1e-9) ? 1 : 0;  // x = 0 first when alike
+  const AbutmentThrust& a = ends[worst];
+  const AbutmentThrust& other = ends[1 - worst];
+  if (a.label.empty() || !(a.Ratio() > kMaxAbutmentThrustRatio)) return;
+  std::string text =
+      AbutmentName(a) + " takes a horizontal reaction H = " + Format("%.4g kN", a.h / 1000) + " (" +
+      a.label + "), " + Format("%.3g times", a.Ratio()) +
+      " the load path's own thrust W L / (8 d) = " + Format("%.4g kN", a.thrust / 1000) +
+      " (W = " + Format("%.4g kN", a.w / 1000) +
+      ", that case's vertical load; L = " + Format("%g m; d = %.3g m", span, depth) +
+      ", the substructure's depth at mid-span), above " +
+      Format("%g times", kMaxAbutmentThrustRatio);
+  if (!other.label.empty() && other.Ratio() > kMaxAbutmentThrustRatio) {
+    text += "; " + AbutmentName(other) + " takes " +
+            Format("%.4g kN, %.3g times", other.h / 1000, other.Ratio());
+  }
+  out.push_back(
+      text +
+      ": there prestress, not the load, sets the thrust, so the abutments must be designed for it, "
+      "as a stressed ribbon's anchorage is");
 }
 
 }  // namespace
@@ -142,6 +240,7 @@ std::vector<std::string> PlausibilityWarnings(const Design& d) {
           ": a steel road bridge weighs about 1 to 2 t/m, a footbridge a few hundred kg/m; are "
           "bridge.payload, bridge.deck_width and material.density in SI units?");
     }
+    CheckAbutmentThrust(d, out);
   }
   const std::pair<const char*, double> masses[] = {
       {"bars", d.mass.bars}, {"strings", d.mass.strings}, {"structure", d.mass.structure}, {"total", d.mass.total}};

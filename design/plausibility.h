@@ -44,6 +44,14 @@ inline constexpr double kMaxPlausibleStringDiameter = 0.2;  // [m]
 // 30-100 m weighs about 1-2 t/m, a footbridge a few hundred kg/m; above 3 t/m the loads or the
 // materials are more likely wrong than the bridge heavy.
 inline constexpr double kMaxPlausibleMassPerSpan = 3000;  // [kg/m]
+// An abutment's horizontal reaction over the load path's own thrust W L / (8 d): a truss or
+// cable of depth d that carries a uniform load W over the span L pushes or pulls its supports
+// with the simply supported moment W L / 8 over its lever arm d, and the same load concentrated
+// at mid-span with twice that, W L / (4 d). Above twice no distribution of the load explains
+// the thrust: the supports are free in the minimum-mass problem, so prestress against them is
+// the cheapest stiffness, and it sets the thrust; the abutments must be designed for it, as a
+// stressed ribbon's anchorage is.
+inline constexpr double kMaxAbutmentThrustRatio = 2;
 
 // One sentence per implausible config value of a designed bridge, empty when none; each names
 // the key, the value, the threshold and the likely slip. Throws nothing.

@@ -1,8 +1,12 @@
 // Config values inside their ranges that are still no bridge practice give a plausibility
-// warning naming the key and the likely slip; no shipped config gives one.
+// warning naming the key and the likely slip; no shipped config gives one. A designed bridge's
+// results warn too; the abutment thrust warning is true of every shipped engineering bridge,
+// whose prestress against its supports sets the thrust (tests/tools/trust_cli_test.cc).
 
 #include "design/plausibility.h"
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -134,6 +138,70 @@ TEST_CASE("a bridge over 3 t per metre of span warns naming the mass and the spa
                        Catch::Contains("above 3 t/m"));
 }
 
+// The n = 1 bridge of `config` on the default 12 m span at beta = 10 deg, drawn: its one
+// substructure node lies d = 6 m x tan(5 deg) = 0.524932 m under mid-span, so the vertical load
+// W = 10 kN has the thrust W L / (8 d) = 10 kN x 12 m / (8 x 0.524932 m) = 28.5751 kN. One
+// case, of limit state `state`, whose supports share W and take `h` [N] horizontally outwards
+// at each end, split between the end's nodes, each node also taking `transverse` [N] across
+// the bridge away from the other plane (which the end's in-plan sum cancels).
+constexpr double kW = 10000;                 // [N]
+constexpr double kThrust = 28575.130756903;  // [N], W L / (8 d) as above
+Design Abutments(const char* config, double h, LimitState state = LimitState::kUltimate,
+                 double transverse = 0) {
+  Design d = Sketch(config, 0.02, 1000);
+  d.topology = MakeBridge(d.config.bridge);
+  const Structure& s = d.topology.structure;
+  LoadCase c;
+  c.name = "uls_payload_full";
+  c.state = state;
+  d.cases = {c};
+  CaseResponse r;
+  r.label = c.name;
+  r.case_index = 0;
+  r.converged = true;
+  r.reactions = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
+  const double supports = static_cast<double>(std::count(s.fixed.begin(), s.fixed.end(), true));
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (!s.fixed[v]) continue;
+    r.reactions(0, v) = (s.nodes(0, v) < 6 ? -h : h) / (supports / 2);
+    r.reactions(1, v) = kW / supports;
+    r.reactions(2, v) = s.nodes(2, v) > 0 ? transverse : -transverse;
+  }
+  d.statics.done = true;
+  d.statics.cases = {r};
+  return d;
+}
+
+TEST_CASE("an abutment thrust over twice the load's own W L / (8 d) warns naming the abutment") {
+  const char* planar = R"({"bridge": {"n": 1}})";
+  // At twice the thrust the load can explain it (all of W at mid-span): plausible.
+  CHECK(PlausibilityWarnings(Abutments(planar, 2 * kThrust * (1 - 1e-9))).empty());
+  const std::vector<std::string> w = PlausibilityWarnings(Abutments(planar, 2 * kThrust * 1.001));
+  REQUIRE(w.size() == 1);
+  // 2 x 28.5751 kN x 1.001 = 57.2074 kN, 2.002 times; both ends alike, x = 0 named first.
+  CHECK_THAT(w[0], Catch::Contains("the abutment at x = 0 m (node 3) takes a horizontal reaction "
+                                   "H = 57.21 kN (uls_payload_full), 2 times") &&
+                       Catch::Contains("W L / (8 d) = 28.58 kN (W = 10 kN") &&
+                       Catch::Contains("L = 12 m; d = 0.525 m") &&
+                       Catch::Contains("the abutment at x = 12 m (node 4) takes 57.21 kN") &&
+                       Catch::Contains("prestress, not the load, sets the thrust") &&
+                       Catch::Contains("stressed ribbon's anchorage"));
+  // A serviceability case's reactions are not the abutment's design load.
+  CHECK(PlausibilityWarnings(Abutments(planar, 10 * kThrust, LimitState::kServiceability)).empty());
+  // The 3D bridge: an abutment is the two supports at one end, its H their in-plan vector sum.
+  // Each node's transverse 1000 kN cancels in the sum; below twice the thrust still plausible.
+  const char* coupled = R"({"bridge": {"n": 1, "planes": 2}})";
+  CHECK(
+      PlausibilityWarnings(Abutments(coupled, 2 * kThrust * (1 - 1e-9), LimitState::kUltimate, 1e6))
+          .empty());
+  const std::vector<std::string> w3 =
+      PlausibilityWarnings(Abutments(coupled, 2 * kThrust * 1.001, LimitState::kUltimate, 1e6));
+  REQUIRE(w3.size() == 1);
+  CHECK_THAT(w3[0], Catch::Contains("the abutment at x = 0 m (nodes ") &&
+                        Catch::Contains(" and ") && Catch::Contains("H = 57.21 kN") &&
+                        Catch::Contains("d = 0.525 m"));
+}
+
 TEST_CASE("the paper's switches raise none of the engineering warnings") {
   // Each value beyond its threshold, with the paper's one case: the paper's blanket factor of
   // 10 and its 12 kN are its own.
@@ -147,8 +215,12 @@ TEST_CASE("the paper's switches raise none of the engineering warnings") {
           .empty());
   const char* paper = R"({"bridge": {"n": 3}, "loads": {"cases": ["paper"]}})";
   CHECK(PlausibilityWarnings(Sketch(paper, 0.5, 1e6)).empty());
+  // An abutment thrust ten times the load's: the paper's one case designs no abutment.
+  CHECK(PlausibilityWarnings(Abutments(paper, 10 * kThrust)).empty());
 }
 
+// The config's warnings only: the designs of default.json and footbridge_*.json warn of their
+// abutment thrust, which is true of them (tests/tools/trust_cli_test.cc).
 TEST_CASE("no shipped config gives a config warning") {
   int bridges = 0;
   for (const fs::directory_entry& e : fs::directory_iterator(TBRIDGE_SOURCE_DIR "/configs")) {
