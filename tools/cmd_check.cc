@@ -1,5 +1,6 @@
-// `tbridge check DESIGN.json -o OUT.json [--quiet] [--progress]`: the checks of a written design run again
-// on the design as written: the nonlinear static solve of every case and the dynamic runs.
+// `tbridge check DESIGN.json -o OUT.json [--quiet] [--progress] [--strict]`: the checks of a
+// written design run again on the design as written: the nonlinear static solve of every case and
+// the dynamic runs; the plausibility warnings as `design` gives them.
 
 #include <iostream>
 #include <string>
@@ -9,6 +10,7 @@
 #include "core/progress.h"
 #include "design/design_reader.h"
 #include "design/design_report.h"
+#include "design/plausibility.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 #include "verify/verified_design.h"
@@ -23,6 +25,7 @@ const CommandSpec& CheckSpec() {
       {"DESIGN.json"},
       {{{"-o", "--output"}, "OUT.json", "where to write the checked design, a JSON file", true},
        ProgressOption(),
+       StrictOption(),
        {{"-q", "--quiet"}, "", "do not print the summary", false}},
       "Reads DESIGN.json, a design written by tbridge design, and checks it as written: every\n"
       "load case solved as a nonlinear static problem (deflections, reactions, member forces,\n"
@@ -54,6 +57,9 @@ int RunCheckCommand(const std::vector<std::string>& args) {
   CheckAgain(design, &progress);
   progress.Finish();
   WriteDesignJson(design, json);
+  // The checked design's own warnings (its abutment thrust, its members' sizes), as `design`
+  // gives them: an edited design is checked as the engineer left it.
+  ReportWarnings(PlausibilityWarnings(design), parsed.Flag("--strict"));
   outputs.Commit();
   if (!parsed.Flag("-q")) std::cout << DesignSummary(design) << "\nwrote " << out_path << "\n";
   return DesignVerdict(design).pass ? kExitOk : kExitNotOk;

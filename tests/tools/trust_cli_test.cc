@@ -389,6 +389,20 @@ TEST_CASE("plausibility: every shipped engineering bridge warns of its abutment 
   CHECK_THAT(strict.err,
              Catch::Contains("--strict") && Catch::Contains("the abutment at x = 0 m (node 15)"));
   CHECK_FALSE(fs::exists(out));
+  // `check` of that design warns as `design` does, and under --strict refuses it, writing nothing.
+  const fs::path design = dir / "design.json", checked = dir / "checked.json";
+  REQUIRE(Run(dir, "design " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") + " -o " +
+                       Quote(design.string()) + " -q")
+              .code == 0);
+  const CliResult check =
+      Run(dir, "check " + Quote(design.string()) + " -o " + Quote(checked.string()) + " -q");
+  CHECK(check.code == 0);
+  CHECK_THAT(check.err, Catch::Contains("tbridge: warning: the abutment at x = 0 m (node 15)"));
+  fs::remove(checked);
+  const CliResult strict_check = Run(
+      dir, "check " + Quote(design.string()) + " -o " + Quote(checked.string()) + " -q --strict");
+  CHECK(strict_check.code == 2);
+  CHECK_FALSE(fs::exists(checked));
 }
 
 TEST_CASE("plausibility and progress: n = 12 and 16 on a 12 m span warn of their tiny members and deck") {
