@@ -752,6 +752,13 @@ struct BestSizing {
   std::string not_optimal;  // why x is not the program's solution ("" where it is)
 };
 
+// The solver a failed sizing is tried with again: Ipopt for the SQP or NLopt, the SQP for Ipopt;
+// "" where the build has no other.
+std::string OtherSolver(const std::string& solver) {
+  if (solver != "ipopt" && SolverBuiltIn("ipopt")) return "ipopt";
+  return solver == "sqp" ? "" : "sqp";
+}
+
 // The polish's solver: Ipopt where it is built in, as its stop is a test of the KKT conditions
 // to the tolerance, where the SQP's is the mass's change (the default with comfort off at n = 3,
 // 5: stationarity 2.9e-5, 6.9e-4 after the SQP, 1.9e-7, 6.4e-7 after Ipopt; BENCHMARKS.md). The
@@ -962,6 +969,23 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
         corrections.move_limit = 0;
       }
     }
+    // A sizing the solver could not finish is solved again by another solver from the same start
+    // before the loop stops on it (the SQP's failures are its own: a subproblem it could not
+    // solve, a step limit), and the record says what was tried.
+    std::string retried;
+    if (!d.solver.success) {
+      const std::string other = OtherSolver(solver);
+      if (!other.empty()) {
+        const std::string failed = d.solver.status;
+        x = posed->VariablesOf(areas, alpha);
+        ActiveSet fresh;
+        d = Size(config, current, corrections, other, *posed, x, record.time_s, progress, fresh,
+                 kSizingTolerance);
+        active = fresh;
+        retried = solver + " stopped with " + failed + "; " + other + " from the same start " +
+                  (d.solver.success ? "solved it" : "stopped with " + d.solver.status);
+      }
+    }
     const SizingProblem& problem = *posed;
     carried = CarriedRows(problem, active);
     // Settled: the sizing from a passing design's corrections lands within kSettled of that
@@ -1032,13 +1056,14 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
         why << (best ? "the lightest passing design of " : "no design passed in ")
             << record.iterations << " sizings; the last: " << verdict.summary;
         if (!outcome.success) why << "; the sizing's solver stopped with " << outcome.status;
+        if (!retried.empty()) why << " (" << retried << ")";
         record.why = why.str();
       }
       out.resizing = record;
       if (progress != nullptr) progress->SetStagePrefix("");
       return out;
     }
-    record.changes.push_back(repair +
+    record.changes.push_back((retried.empty() ? "" : retried + "; ") + repair +
                              Correct(corrections, problem, x, d, statics, dynamics, verdict.pass));
     // The next sizing's comfort rows, about this design's own modes: each sizing moves a mode from
     // its own shape, so the quotient's error (second order in the move) falls as the designs

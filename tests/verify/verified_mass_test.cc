@@ -115,6 +115,27 @@ TEST_CASE("the polished design carries a certificate that proves it locally opti
   CHECK_FALSE(d.resizing.kkt.failed.empty());
 }
 
+TEST_CASE("a sizing the solver cannot finish is tried again by another solver, and says so",
+          "[verify]") {
+  // Two evaluations are too few for the SQP's first sizing (it stops with MAXEVAL_REACHED) and
+  // for Ipopt's from the same start: the loop stops, naming both; a build without Ipopt has no
+  // other solver to try, and says only the first.
+  Config config;
+  config.bridge.n = 2;
+  config.comfort.check = false;
+  config.design.max_iterations = 2;
+  const Design d = DesignAndVerify(config);
+  INFO(d.resizing.why);
+  CHECK_FALSE(d.resizing.converged);
+  CHECK_THAT(d.resizing.why, Catch::Contains("the sizing's solver stopped with"));
+  if (SolverBuiltIn("ipopt")) {
+    CHECK_THAT(d.resizing.why,
+               Catch::Contains("sqp stopped with MAXEVAL_REACHED; ipopt from the same start"));
+  } else {
+    CHECK_THAT(d.resizing.why, !Catch::Contains("from the same start"));
+  }
+}
+
 TEST_CASE("three solvers give the same verified mass", "[verify]") {
   // The sizing's own SQP (the default), NLopt's SLSQP and Ipopt (the reciprocal diagonal as its
   // Hessian): second and third algorithms on the same program. 1e-4 relative: the outer iterations
