@@ -214,6 +214,7 @@ SolverOutcome SolveHere(const NlpProblem& problem, const SolverOptions& options,
   app->Options()->SetNumericValue("constr_viol_tol", options.tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
   app->Options()->SetStringValue("mu_strategy", "adaptive");
+  if (!options.acceptable) app->Options()->SetIntegerValue("acceptable_iter", 0);
   // Bounds are exact physical limits (zero force, prestress floors): do not relax them.
   app->Options()->SetNumericValue("bound_relax_factor", 0.0);
   // A problem that gives no Hessian (its pattern empty) has it approximated (L-BFGS).

@@ -67,6 +67,10 @@ struct SolverOptions {
   std::function<void(int)> each_iteration;
   // The rows' multipliers at the start, one per row (the SQP; empty: it estimates them).
   Eigen::VectorXd start_multipliers;
+  // Whether a solver may stop at its own looser "acceptable" level (Ipopt's, after iterations
+  // that make no progress) and call it a success. A solve whose point is to be certified to
+  // the tolerance does not let it.
+  bool acceptable = true;
 };
 
 // Adapters: each is the only file that includes its solver's headers, and each is its own
