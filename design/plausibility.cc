@@ -171,15 +171,16 @@ std::vector<std::string> ConfigWarnings(const Config& c) {
   const std::string payload = "bridge.payload = " + Format("%g N", c.bridge.payload) +
                               " over the " + Format("%g m x %g m deck", span, width) + " is " +
                               Format("%.3g kPa", pressure / 1000);
+  // EN 1991-2 5.3.2.1's footbridge crowd, 2.5 to 5 kPa, on this deck.
+  const std::string crowd = "2.5 to 5 kPa, EN 1991-2 5.3.2.1: between " +
+                            Format("%g N and %g N here", 2500 * span * width, 5000 * span * width);
   if (pressure < kMinPlausiblePayloadPressure) {
     out.push_back(payload + ", below " + Format("%g kPa", kMinPlausiblePayloadPressure / 1000) +
-                  ": a footbridge crowd is 2.5 to 5 kPa (EN 1991-2 5.3.2.1), so between " +
-                  Format("%g N and %g N here", 2500 * span * width, 5000 * span * width) +
+                  ": a footbridge crowd is " + crowd +
                   "; a payload given in kN is 1000 times too small");
   } else if (pressure > kMaxPlausiblePayloadPressure) {
     out.push_back(payload + ", above " + Format("%g kPa", kMaxPlausiblePayloadPressure / 1000) +
-                  ", ten times a footbridge crowd (2.5 to 5 kPa, EN 1991-2 5.3.2.1: between " +
-                  Format("%g N and %g N here", 2500 * span * width, 5000 * span * width) +
+                  ", ten times a footbridge crowd (" + crowd +
                   "): is the payload or bridge.deck_width in the wrong unit?");
   }
   if (width > kMaxPlausibleDeckWidth) {

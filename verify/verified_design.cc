@@ -800,6 +800,7 @@ void Polish(const Config& config, const std::string& solver, BestSizing& kept, D
   std::ostringstream os;
   os << "polish (" << polisher << ", " << (at.corrections.move_limit > 0 ? "within" : "without")
      << " the trust region, to " << kPolishTolerance << "):";
+  const auto say = [&] { record.optima += (record.optima.empty() ? "" : "; ") + os.str(); };
   std::string failed;
   for (int round = 0; round < kPolishRounds && failed.empty(); ++round) {
     const SizingProblem problem(at.current, at.corrections);
@@ -820,7 +821,7 @@ void Polish(const Config& config, const std::string& solver, BestSizing& kept, D
     const Verdict verdict = SizingVerdict(d);
     if (verdict.pass) {
       os << " " << VerdictName(DesignVerdict(d).outcome) << ", kept";
-      record.optima += (record.optima.empty() ? "" : "; ") + os.str();
+      say();
       best = std::move(d);
       kept = BestSizing{at.current, at.corrections, x, ""};
       return;
@@ -831,7 +832,7 @@ void Polish(const Config& config, const std::string& solver, BestSizing& kept, D
   }
   if (failed.empty()) failed = "none of " + std::to_string(kPolishRounds) + " rounds passed";
   os << " " << failed << "; kept " << best.mass.structure << " kg";
-  record.optima += (record.optima.empty() ? "" : "; ") + os.str();
+  say();
   if (kept.not_optimal.empty()) kept.not_optimal = "not proved optimal: the " + os.str();
 }
 
@@ -985,10 +986,9 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
       if (!other.empty()) {
         const std::string failed = d.solver.status;
         x = posed->VariablesOf(areas, alpha);
-        ActiveSet fresh;
-        d = Size(config, current, corrections, other, *posed, x, record.time_s, progress, fresh,
+        active = ActiveSet{};
+        d = Size(config, current, corrections, other, *posed, x, record.time_s, progress, active,
                  kSizingTolerance);
-        active = fresh;
         retried = solver + " stopped with " + failed + "; " + other + " from the same start " +
                   (d.solver.success ? "solved it" : "stopped with " + d.solver.status);
       }
