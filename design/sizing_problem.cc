@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -171,6 +172,8 @@ struct SizingProblem::Impl {
     std::vector<double> a;
     std::vector<BarCapacity> bar_capacity;  // per bar, at its area a
     std::vector<Eigen::VectorXd> forces;  // per combination [N]
+    // Per comfort entry that follows its mode: its row about this point, found on first use.
+    std::vector<std::optional<ComfortRow>> followed;
   };
   mutable State st;
 
@@ -203,6 +206,7 @@ struct SizingProblem::Impl {
     st.x = x;
     st.valid = true;
     st.have_jac = false;
+    st.followed.assign(corrections.comfort.size(), std::nullopt);
     st.a = Areas(x);
     // Each bar's resistances, once per point: a member's rows are many (n = 8: 777
     // combinations), its resistance one.
@@ -295,30 +299,44 @@ struct SizingProblem::Impl {
         break;
     }
     const ComfortRow& k = corrections.comfort[static_cast<size_t>(j)];
-    const double ratio = ComfortOmega2(k, st.a, st.xr) / k.target_omega2;
+    const double ratio = ComfortQuotient(j).value() / k.target_omega2;
     return k.lower ? ratio - 1.0 : 1.0 - ratio;
   }
 
-  // Comfort row k's eigenvalue at areas a and reference forces xr: its Rayleigh quotient
-  // (ComfortRow), numerator and denominator affine in both.
+  // Comfort entry k's row about the evaluated point: a row that follows its mode is the mode's own
+  // there (found once per point), a held one the quotient about the design the problem is built
+  // from.
+  const ComfortRow& ComfortAbout(int k, const std::vector<double>*& a0,
+                                 const Eigen::VectorXd*& f0) const {
+    const ComfortRow& held = corrections.comfort[static_cast<size_t>(k)];
+    a0 = &area0;
+    f0 = &xr0;
+    if (!held.follow) return held;
+    std::optional<ComfortRow>& here = st.followed[static_cast<size_t>(k)];
+    if (!here) here = held.follow(st.a, st.xr);
+    a0 = &st.a;
+    f0 = &st.xr;
+    return *here;
+  }
+
+  // Comfort entry k's eigenvalue at the evaluated point: its row's Rayleigh quotient (ComfortRow),
+  // numerator and denominator affine in the areas and reference forces.
   struct Quotient {
     double stiffness = 0, mass = 1;
     double value() const { return stiffness / mass; }
   };
-  Quotient ComfortQuotient(const ComfortRow& k, const std::vector<double>& a,
-                           const Eigen::VectorXd& xr) const {
+  Quotient ComfortQuotient(int index) const {
+    const std::vector<double>* a0 = nullptr;
+    const Eigen::VectorXd* f0 = nullptr;
+    const ComfortRow& k = ComfortAbout(index, a0, f0);
     Quotient q{k.omega2, 1.0};
     for (int j = 0; j < nm; ++j) {
-      const double da = a[static_cast<size_t>(j)] - area0[static_cast<size_t>(j)];
+      const double da = st.a[static_cast<size_t>(j)] - (*a0)[static_cast<size_t>(j)];
       q.stiffness += k.by_area[static_cast<size_t>(j)] * da +
-                     k.by_force[static_cast<size_t>(j)] * (xr[j] - xr0[j]);
+                     k.by_force[static_cast<size_t>(j)] * (st.xr[j] - (*f0)[j]);
       q.mass += k.mass_by_area[static_cast<size_t>(j)] * da;
     }
     return q;
-  }
-  double ComfortOmega2(const ComfortRow& k, const std::vector<double>& a,
-                       const Eigen::VectorXd& xr) const {
-    return ComfortQuotient(k, a, xr).value();
   }
 
   // The comfort rows' gradients at the evaluated state, by the quotient rule on
@@ -326,9 +344,13 @@ struct SizingProblem::Impl {
   void ComfortGradients() const {
     for (size_t r = 0; r < rows.size(); ++r) {
       if (rows[r].kind != SizingRow::kComfort) continue;
-      const ComfortRow& k = corrections.comfort[static_cast<size_t>(rows[r].member)];
-      const Quotient q = ComfortQuotient(k, st.a, st.xr);
-      const double w2 = q.value(), sign = (k.lower ? 1.0 : -1.0) / (k.target_omega2 * q.mass);
+      const int index = rows[r].member;
+      const ComfortRow& held = corrections.comfort[static_cast<size_t>(index)];
+      const std::vector<double>* a0 = nullptr;
+      const Eigen::VectorXd* f0 = nullptr;
+      const ComfortRow& k = ComfortAbout(index, a0, f0);
+      const Quotient q = ComfortQuotient(index);
+      const double w2 = q.value(), sign = (held.lower ? 1.0 : -1.0) / (held.target_omega2 * q.mass);
       for (int v = 0; v < groups; ++v) {
         double d = 0;
         for (const int j : members_of[static_cast<size_t>(v)]) {
@@ -838,30 +860,15 @@ void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) con
   const Impl& p = *impl_;
   lo.resize(p.num_variables());
   hi.resize(p.num_variables());
-  const double r = p.corrections.move_limit;
   for (int g = 0; g < p.groups; ++g) {
-    double floor = 0, start = 0;
-    for (int j : p.members_of[g]) {
-      floor = std::max(floor, p.min_area[j]);
-      start = std::max(start, p.area0[static_cast<size_t>(j)]);
-    }
+    double floor = 0;
+    for (int j : p.members_of[g]) floor = std::max(floor, p.min_area[j]);
     lo[g] = floor / p.area_scale[g];
     hi[g] = std::numeric_limits<double>::infinity();
-    if (r > 0) {
-      lo[g] = std::max(lo[g], start / (1 + r) / p.area_scale[g]);
-      hi[g] = std::max(lo[g], start * (1 + r) / p.area_scale[g]);
-    }
   }
-  // The prestress within the same region: each coefficient within r times the largest of the
-  // start's (the quotient is affine in the prestress too, and the 3D bridge's 9 and more states
-  // let a sizing follow its overestimate as far as the areas did).
-  const Eigen::VectorXd alpha0 =
-      p.states ? Eigen::VectorXd(p.N.transpose() * (p.xr0 - p.x_g) / p.force_scale)
-               : Eigen::VectorXd();
-  const double reach = p.states ? r * std::max(alpha0.cwiseAbs().maxCoeff(), 1e-3) : 0.0;
   for (int m = 0; m < p.states; ++m) {
-    lo[p.groups + m] = r > 0 ? alpha0[m] - reach : -std::numeric_limits<double>::infinity();
-    hi[p.groups + m] = r > 0 ? alpha0[m] + reach : std::numeric_limits<double>::infinity();
+    lo[p.groups + m] = -std::numeric_limits<double>::infinity();
+    hi[p.groups + m] = std::numeric_limits<double>::infinity();
   }
 }
 
@@ -1026,9 +1033,7 @@ const std::vector<ComfortRow>& SizingProblem::comfort_rows() const {
 double SizingProblem::ComfortOmega2(int r, const Eigen::VectorXd& x) const {
   const Impl& p = *impl_;
   p.Evaluate(x);
-  return p.ComfortOmega2(
-      p.corrections.comfort[static_cast<size_t>(p.rows[static_cast<size_t>(r)].member)], p.st.a,
-      p.st.xr);
+  return p.ComfortQuotient(p.rows[static_cast<size_t>(r)].member).value();
 }
 
 const std::vector<int>& SizingProblem::representatives() const { return impl_->row_representative; }

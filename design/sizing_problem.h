@@ -24,6 +24,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -58,6 +59,14 @@ struct ComfortRow {
   std::vector<double>
       by_force;  // d omega^2 / d(its reference force, bars in compression) [rad^2/s^2 per N]
   std::vector<double> mass_by_area;  // d(phi^T M phi) / dA [1/m^2]
+  // Where set, the row follows its mode: the mode's own eigenvalue and coefficients at the areas
+  // and reference forces given (per member [bars; strings]), its shape found again there with the
+  // static state held (verify/comfort_sizing.h). The row is then the eigenvalue itself, not the
+  // quotient of a shape held: that quotient overestimates the eigenvalue after a move, and a
+  // sizing left free with it concentrated stiffness where it overestimated most (the default at
+  // n = 3: strings grown seven times, others to a tenth, its frequency foretold 4.0 Hz and found
+  // 2.7 Hz).
+  std::function<ComfortRow(const std::vector<double>& areas, const Eigen::VectorXd& forces)> follow;
 };
 
 // What the outer iterations tell the problem (all sized by [bars; strings]).
@@ -66,13 +75,6 @@ struct SizingCorrections {
   std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
   double deflection_factor = 1.0;     // kappa_d on the linear deflections
   std::vector<ComfortRow> comfort;  // the comfort rows, about the design the problem is built from
-  // r > 0: each area group within [A0 / (1 + r), A0 (1 + r)] of its area A0 in the design the
-  // problem is built from, and each prestress coefficient within r times the largest of that
-  // design's (a trust region; 0: none). The comfort rows' Rayleigh quotients hold
-  // the mode's shape, which a far move changes: they overestimate the eigenvalue, and the sizing
-  // concentrates stiffness where they overestimate most (the default at n = 3: strings grown
-  // seven times, others to a tenth, its frequency foretold 4.0 Hz and found 2.7 Hz).
-  double move_limit = 0;
 };
 
 // One constraint row's meaning, for the report: which member (or deck node), combination and

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
 
+#include "core/error.h"
 #include "core/material.h"
 #include "dynamics/modal_sensitivity.h"
 
@@ -27,6 +30,9 @@ constexpr double kLargestStep = 1.5;
 // Rayleigh quotient of the held shape, which the new design's own frequency follows to second
 // order in the step.
 constexpr double kFrequencyMargin = 1e-3;
+// A row's mode is followed among the modes up to this factor above its frequency: a sizing moves
+// it at most kLargestStep.
+constexpr double kFollowedUpTo = 2.0;
 
 // Whether `mode` passes with both its frequencies scaled by s.
 bool PassesAt(const ComfortMode& mode, const ComfortCheck& check, const Design& d, double s) {
@@ -76,36 +82,164 @@ ComfortRow Bounded(ComfortRow row, bool lower, double now_hz, double frequency_h
 
 }  // namespace
 
-ComfortRow ComfortRowOf(const Design& d, const DynamicModel& model, const Mode& mode) {
-  const ModeEnergies e = ModeEnergiesOf(model, mode, ModelOptions{}.string_mass);
-  const int nb = static_cast<int>(d.bars.size()), nm = nb + static_cast<int>(d.strings.size());
+namespace {
+
+// What a comfort row reads of the design's members, per member [bars; strings]: its drawn length
+// and (strings) rest length, and the materials.
+struct RowMembers {
+  int bars = 0;
+  std::vector<double> length, rest_length;  // [m]
+  double string_modulus = 0, bar_density = 0, string_density = 0;
+};
+
+RowMembers RowMembersOf(const Design& d) {
+  RowMembers out;
+  out.bars = static_cast<int>(d.bars.size());
+  for (const MemberSizing& b : d.bars) {
+    out.length.push_back(b.length);
+    out.rest_length.push_back(b.length);
+  }
+  for (const MemberSizing& s : d.strings) {
+    out.length.push_back(s.length);
+    out.rest_length.push_back(s.rest_length);
+  }
   const MemberMaterial bars = BarMaterial(d.config), strings = StringMaterial(d.config);
+  out.string_modulus = strings.youngs_modulus;
+  out.bar_density = bars.density;
+  out.string_density = strings.density;
+  return out;
+}
+
+ComfortRow RowOf(const RowMembers& members, const DynamicModel& model, const Mode& mode) {
+  const ModeEnergies e = ModeEnergiesOf(model, mode, ModelOptions{}.string_mass);
+  const size_t nm = members.length.size();
   ComfortRow row;
   row.omega2 = mode.omega_squared;
-  row.by_area.assign(static_cast<size_t>(nm), 0.0);
-  row.by_force.assign(static_cast<size_t>(nm), 0.0);
-  row.mass_by_area.assign(static_cast<size_t>(nm), 0.0);
-  for (int j = 0; j < nm; ++j) {
-    const size_t k = static_cast<size_t>(j);
-    if (j < nb) {
+  row.by_area.assign(nm, 0.0);
+  row.by_force.assign(nm, 0.0);
+  row.mass_by_area.assign(nm, 0.0);
+  for (size_t k = 0; k < nm; ++k) {
+    if (static_cast<int>(k) < members.bars) {
       // A rigid bar: its compression's geometric stiffness and its mass rho A l.
       row.by_force[k] = e.by_force[k];
-      row.mass_by_area[k] = e.mass_energy[k] * bars.density * d.bars[k].length;
+      row.mass_by_area[k] = e.mass_energy[k] * members.bar_density * members.length[k];
     } else {
       // A string: k = (E A + T_ref) / l (its rest length makes it carry T_ref at its drawn
       // length l), and the state's tension follows T_ref one for one (to its strain).
-      const MemberSizing& s = d.strings[k - static_cast<size_t>(nb)];
-      row.by_area[k] = e.by_stiffness[k] * strings.youngs_modulus / s.length;
-      row.by_force[k] = e.by_stiffness[k] / s.length + e.by_force[k];
-      row.mass_by_area[k] = e.mass_energy[k] * strings.density * s.rest_length;
+      row.by_area[k] = e.by_stiffness[k] * members.string_modulus / members.length[k];
+      row.by_force[k] = e.by_stiffness[k] / members.length[k] + e.by_force[k];
+      row.mass_by_area[k] = e.mass_energy[k] * members.string_density * members.rest_length[k];
     }
   }
   return row;
 }
 
+// A mode a row follows (ComfortRow::follow): the model it was found in (the comfort model of the
+// design, at its static state), its shape there, and the design's areas and reference forces.
+struct FollowedMode {
+  RowMembers members;
+  std::shared_ptr<const DynamicModel> held;
+  Eigen::Matrix3Xd shape;
+  std::vector<double> area;
+  Eigen::VectorXd force;
+  double above_hz = 0;  // the modes are sought up to here
+};
+
+// `held` moved to areas a and reference forces f as the row's coefficients assume, so that the
+// row's gradient is the moved eigenvalue's own: each string's axial stiffness by (E dA + dF) / l
+// and its tension by dF at the state's length, each member's own mass by rho dA l (a string's on
+// its rest length, shared as the model shares string mass); the bars' forces follow the nodes'
+// equilibrium, as the model finds them.
+DynamicModel Moved(const FollowedMode& f, const std::vector<double>& a,
+                   const Eigen::VectorXd& force) {
+  DynamicModel m = *f.held;
+  const RowMembers& r = f.members;
+  for (int j = 0; j < r.bars; ++j) {
+    const size_t k = static_cast<size_t>(j);
+    m.bars.mass[k] += r.bar_density * (a[k] - f.area[k]) * r.length[k];
+  }
+  std::vector<double> added(m.strings.size(), 0.0);
+  for (size_t q = 0; q < m.strings.size(); ++q) {
+    const size_t k = static_cast<size_t>(r.bars) + q;
+    const double da = a[k] - f.area[k],
+                 df = force[static_cast<Eigen::Index>(k)] - f.force[static_cast<Eigen::Index>(k)];
+    const double s = (m.positions.col(m.strings.j[q]) - m.positions.col(m.strings.i[q])).norm();
+    const double k0 = m.strings.stiffness[q];
+    const double tension = k0 * (s - m.strings.rest_length[q]) + df;
+    const double k1 = k0 + (r.string_modulus * da + df) / r.length[k];
+    if (!(k1 > 0)) throw ModelError("a string's stiffness falls to zero");
+    m.strings.stiffness[q] = k1;
+    m.strings.rest_length[q] = s - tension / k1;
+    m.strings.area[q] = a[k];
+    added[q] = r.string_density * da * r.rest_length[k];
+    m.strings.mass[q] += added[q];
+  }
+  ForEachStringMassShare(m, ModelOptions{}.string_mass, [&](int q, int node, int bar, int count) {
+    const double half = 0.5 * added[static_cast<size_t>(q)];
+    if (bar < 0) {
+      m.node_mass(node) += half;
+    } else {
+      m.bars.mass[static_cast<size_t>(bar)] += half / count;
+    }
+  });
+  return m;
+}
+
+// The row of f's mode at areas a and reference forces `force`: of the moved model's modes, the
+// one whose shape is closest to the held one's (the largest modal assurance criterion), so that
+// the row keeps to its mode where modes cross. A model without modes gives a row of NaN, which the
+// solvers step back from.
+ComfortRow Follow(const FollowedMode& f, const std::vector<double>& a,
+                  const Eigen::VectorXd& force) {
+  try {
+    const DynamicModel moved = Moved(f, a, force);
+    const DeckModes modes = ComputeDeckModes(moved, f.above_hz);
+    const Mode* best = nullptr;
+    double best_mac = -1;
+    const double held_norm = f.shape.squaredNorm();
+    for (const Mode& mode : modes.modal.modes) {
+      const double dot = (mode.shape.array() * f.shape.array()).sum();
+      const double mac = dot * dot / (mode.shape.squaredNorm() * held_norm);
+      if (mac > best_mac) {
+        best_mac = mac;
+        best = &mode;
+      }
+    }
+    if (best == nullptr) throw ModelError("no modes");
+    return RowOf(f.members, moved, *best);
+  } catch (const ModelError&) {
+    ComfortRow nan;
+    nan.omega2 = std::numeric_limits<double>::quiet_NaN();
+    nan.by_area.assign(a.size(), 0.0);
+    nan.by_force = nan.by_area;
+    nan.mass_by_area = nan.by_area;
+    return nan;
+  }
+}
+
+}  // namespace
+
+ComfortRow ComfortRowOf(const Design& d, const DynamicModel& model, const Mode& mode) {
+  return RowOf(RowMembersOf(d), model, mode);
+}
+
 std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a) {
   std::vector<ComfortRow> out;
   if (!d.config.comfort.sizing_constraint || !a.check.done) return out;
+  // Each row follows its mode (ComfortRow::follow) from the models it was found in.
+  const RowMembers members = RowMembersOf(d);
+  const std::vector<double> areas = MemberAreas(d);
+  const auto crowded_model = std::make_shared<const DynamicModel>(a.crowded_model);
+  const auto empty_model = std::make_shared<const DynamicModel>(a.empty_model);
+  const auto Following = [&](const std::shared_ptr<const DynamicModel>& model, const Mode& mode) {
+    ComfortRow row = RowOf(members, *model, mode);
+    const auto f = std::make_shared<const FollowedMode>(FollowedMode{
+        members, model, mode.shape, areas, d.reference_forces, kFollowedUpTo * mode.frequency_hz});
+    row.follow = [f](const std::vector<double>& at, const Eigen::VectorXd& force) {
+      return Follow(*f, at, force);
+    };
+    return row;
+  };
   std::map<std::string, int> rank;  // how many modes of each motion came before
   for (size_t i = 0; i < a.modes.size(); ++i) {
     const ComfortMode& m = a.modes[i];
@@ -117,13 +251,12 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a)
     // The rows on the crowded frequency (lower bounds: its interval's lower end) and on the empty
     // one (upper bounds).
     const auto crowded_row = [&] {
-      ComfortRow row = ComfortRowOf(d, a.crowded_model, crowded);
+      ComfortRow row = Following(crowded_model, crowded);
       row.key = name + " crowded";
       return row;
     };
     const auto empty_row = [&] {
-      ComfortRow row =
-          ComfortRowOf(d, a.empty_model, a.empty.modal.modes[static_cast<size_t>(empty)]);
+      ComfortRow row = Following(empty_model, a.empty.modal.modes[static_cast<size_t>(empty)]);
       row.key = name + " empty";
       return row;
     };

@@ -638,11 +638,6 @@ MassAttribution Attribution(const Design& current, const SizingCorrections& corr
   return AttributeMass(posed, x, dynamic, posed.VariablesOf(first.areas, first.alpha));
 }
 
-// The trust region of a sizing with comfort rows (SizingCorrections::move_limit): each area within
-// a factor 2 of the last design's.
-constexpr double kComfortMoveLimit = 1.0;
-constexpr double kComfortSmallestMove = 0.02;
-
 // How many times a sizing's comfort steps are halved when it is infeasible.
 constexpr int kComfortEases = 4;
 
@@ -667,10 +662,7 @@ Resizing::Kkt Certify(const Design& current, const SizingCorrections& correction
                       const std::string& why_not) {
   Resizing::Kkt out;
   out.computed = true;
-  // The program's own bounds: a trust region is the way to a solution, not part of the program,
-  // and a design at its edge is not proved optimal.
-  SizingCorrections alike = full.ImageCorrections(corrections);
-  alike.move_limit = 0;
+  const SizingCorrections alike = full.ImageCorrections(corrections);
   const SizingProblem whole(current, alike);
   const int rows = whole.num_constraints(), nv = whole.num_variables();
   KktInput in;
@@ -727,25 +719,6 @@ Resizing::Kkt Certify(const Design& current, const SizingCorrections& correction
     out.failed += " (the second-order test was not run: more than " +
                   std::to_string(kSecondOrderMaxFree) + " free directions)";
   }
-  if (!c.proved_local_optimum && corrections.move_limit > 0) {
-    // The sizing's trust region, read from the posed rows' problem with it.
-    SizingCorrections trusted = alike;
-    trusted.move_limit = corrections.move_limit;
-    Eigen::VectorXd lo_t, hi_t;
-    SizingProblem(current, trusted, &active).VariableBounds(lo_t, hi_t);
-    int at_edge = 0;
-    for (int v = 0; v < nv; ++v) {
-      const bool edge =
-          (x[v] <= lo_t[v] * (1 + 1e-6) && lo_t[v] > in.lo_x[v]) || x[v] >= hi_t[v] * (1 - 1e-6);
-      at_edge += edge ? 1 : 0;
-    }
-    if (at_edge > 0) {
-      std::ostringstream os;
-      os << "; the sizing's trust region (areas within x" << 1 + corrections.move_limit << ") held "
-         << at_edge << " variables at its edge";
-      out.failed += os.str();
-    }
-  }
   if (!why_not.empty()) out.failed = why_not + (out.failed.empty() ? "" : "; " + out.failed);
   return out;
 }
@@ -769,17 +742,15 @@ std::string OtherSolver(const std::string& solver) {
 // The polish's solver: Ipopt where it is built in, as its stop is a test of the KKT conditions
 // to the tolerance, where the SQP's is the mass's change (the default with comfort off at n = 3,
 // 5: stationarity 2.9e-5, 6.9e-4 after the SQP, 1.9e-7, 6.4e-7 after Ipopt; BENCHMARKS.md). The
-// outer sizings keep the sizing's solver: Ipopt took 4-17 times as long for them.
-// A program with comfort rows is polished by the sizing's solver: it keeps its trust region
-// (below), so its polish tightens the tolerance but cannot prove it, and Ipopt there costs time
-// for that alone (and ran to its iteration limit where the rows were less smooth).
-std::string PolishSolver(const std::string& solver, const SizingCorrections& corrections) {
-  return corrections.comfort.empty() && SolverBuiltIn("ipopt") ? "ipopt" : solver;
+// outer sizings keep the sizing's solver: Ipopt took 4-17 times as long for them. The comfort rows
+// follow their modes (ComfortRow::follow), so a program with them is polished alike (the default
+// at n = 3 to 5: stationarity 3e-5 after the SQP, 1e-7 to 4e-9 after Ipopt).
+std::string PolishSolver(const std::string& solver) {
+  return SolverBuiltIn("ipopt") ? "ipopt" : solver;
 }
 
-// The kept design's own program solved again from its solution at kPolishTolerance, without the
-// comfort rows' trust region where it has no comfort rows, and checked: a certificate is of a
-// program's solution, and a design at its trust region's edge, mended, or stopped on the mass's
+// The kept design's own program solved again from its solution at kPolishTolerance and checked:
+// a certificate is of a program's solution, and a mended design or one stopped on the mass's
 // change at the sizing's tolerance is not one. A polished design that fails has its rows corrected
 // by its own checks (Correct) and is solved again about itself, up to kPolishRounds times (a mended
 // design's program gives back the design that failed by a hair: the default with comfort off at n =
@@ -791,15 +762,10 @@ constexpr int kPolishRounds = 3;
 void Polish(const Config& config, const std::string& solver, BestSizing& kept, Design& best,
             Resizing& record, ProgressReporter* progress) {
   if (progress != nullptr) progress->SetStagePrefix("polish: ");
-  const std::string polisher = PolishSolver(solver, kept.corrections);
+  const std::string polisher = PolishSolver(solver);
   BestSizing at = kept;
-  // A program with comfort rows keeps its trust region: their quotients are the kept design's
-  // mode shapes, which overestimate its frequencies far from it (the default at n = 3: without
-  // it, the program's optimum of 511 kg had its first mode at 2.6 Hz where the rows read 4.9).
-  if (at.corrections.comfort.empty()) at.corrections.move_limit = 0;
   std::ostringstream os;
-  os << "polish (" << polisher << ", " << (at.corrections.move_limit > 0 ? "within" : "without")
-     << " the trust region, to " << kPolishTolerance << "):";
+  os << "polish (" << polisher << ", to " << kPolishTolerance << "):";
   const auto say = [&] { record.optima += (record.optima.empty() ? "" : "; ") + os.str(); };
   std::string failed;
   for (int round = 0; round < kPolishRounds && failed.empty(); ++round) {
@@ -945,7 +911,6 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   std::optional<BestSizing> best_sizing;
   std::optional<double> last_passing_kg;  // the structure's mass of the last design that passed
   CarriedRows carried;                    // the last sizing's active rows
-  bool current_passed = false;            // the design the sizing starts from passed
   for (record.iterations = 1;; ++record.iterations) {
     // The sizing about the current design's weight, from the current sizes and prestress.
     if (progress != nullptr) {
@@ -956,9 +921,9 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     Eigen::VectorXd x;
     ActiveSet active;
     Design d;
-    // A sizing whose comfort rows and trust region ask more than it can hold fails: it is solved
-    // again with each comfort row's step halved (in log frequency), then without them, and the
-    // next design goes on from there.
+    // A sizing whose comfort rows ask more than it can hold fails: it is solved again with each
+    // comfort row's step halved (in log frequency), then without them, and the next design goes
+    // on from there.
     for (int ease = 0; ease <= kComfortEases + 1; ++ease) {
       posed = std::make_unique<SizingProblem>(current, corrections);
       x = posed->VariablesOf(areas, alpha);
@@ -966,15 +931,11 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
       d = Size(config, current, corrections, solver, *posed, x, record.time_s, progress, active,
                kSizingTolerance);
       if (d.solver.success) break;
-      // Then this sizing goes without them and their trust region, for strength alone: the region
-      // may hold a member below what its raised demand factor asks (the 40 m footbridge's first
-      // sizing under the paper's travelling load: x2.01), and the next design's rows start again.
-      // (Widened instead, the region let the 3D 40 m footbridge follow the quotient's
-      // overestimate to 6e5 kg.)
+      // Then this sizing goes without them, for strength alone, and the next design's rows start
+      // again.
       if (ease >= kComfortEases || !EaseComfortRows(corrections.comfort)) {
         if (corrections.comfort.empty()) break;
         corrections.comfort.clear();
-        corrections.move_limit = 0;
       }
     }
     // A sizing the solver could not finish is solved again by another solver from the same start
@@ -1082,33 +1043,15 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     // footbridge's first sizing, at 6.8 under wind, asked x7 of its members).
     std::vector<ComfortRow> next;
     if (verdict.utilisation_max <= config.design.dynamic_screen) next = ComfortRowsOf(d, comfort);
-    // The trust region follows how well the last rows foretold this design: halved where they
-    // missed a mode's eigenvalue by more than 1 % or the design failed, doubled (up to
-    // kComfortMoveLimit) where they were within 0.5 % while no design has passed; after one has,
-    // it only shrinks, so that the designs settle on the optimum rather than swing about it.
+    // How far the last rows foretold this design's eigenvalues (the static state and the
+    // members' weight they hold), which raises the next rows' targets.
     const double missed = CorrectComfortRows(problem, x, next);
-    double& r = corrections.move_limit;
-    if (next.empty()) {
-      r = 0;
-    } else if (r == 0) {
-      r = kComfortMoveLimit;
-    } else {
-      // A failing design after a passing one is a step past a flat optimum (the default at n = 3
-      // swung 592 - 600 kg): the region shrinks too.
-      const bool shrink = missed > 1e-2 || (!verdict.pass && current_passed);
-      const bool grow = missed < 5e-3 && !last_passing_kg;
-      r = shrink ? std::max(r / 2, kComfortSmallestMove)
-          : grow ? std::min(2 * r, kComfortMoveLimit)
-                 : r;
-    }
-    corrections.comfort = std::move(next);
-    current_passed = verdict.pass;
-    if (r > 0) {
+    if (!corrections.comfort.empty() && !next.empty()) {
       std::ostringstream os;
-      os << "; comfort rows foretold within " << missed << " of omega^2, next areas within x"
-         << 1 + r;
+      os << "; comfort rows foretold within " << missed << " of omega^2";
       record.changes.back() += os.str();
     }
+    corrections.comfort = std::move(next);
     for (const ComfortRow& row : corrections.comfort)
       record.changes.back() += "; comfort: " + row.label;
     current = std::move(d);

@@ -197,6 +197,16 @@ TEST_CASE("the verified sizing designs to comfort as rows of its own, and the ma
   CHECK(!d.resizing.comfort_rows.empty());
   CHECK(d.attribution.mass_by_kind_kg[7] > 0.0);
   CHECK(std::string(kConstraintKinds[7]) == "comfort");
+  // Complementary slackness: the split is the multipliers', so it adds up to the structure's mass
+  // (to the stationarity residual, 1e-6 on a proved design; 1e-5 of the mass allows for it), and a
+  // kind none of whose rows is active holds none of it. The deflections are far inside their
+  // limit here, so their rows hold no mass.
+  double booked = 0;
+  for (const double kg : d.attribution.mass_by_kind_kg) booked += kg;
+  CHECK(booked == Approx(d.attribution.structure_kg).epsilon(1e-5));
+  REQUIRE(d.statics.deflection_max_m < 0.9 * d.statics.deflection_limit_m);
+  CHECK(std::string(kConstraintKinds[3]) == "deflection");
+  CHECK(d.attribution.mass_by_kind_kg[3] == 0.0);
   // Without the constraint the lightest design fails comfort: the rows cost something.
   config.comfort.sizing_constraint = false;
   const Design unconstrained = DesignAndVerify(config);

@@ -106,13 +106,17 @@ TEST_CASE("the polished design carries a certificate that proves it locally opti
     CHECK(kkt.second_order);
     CHECK_THAT(d.resizing.optima, Catch::Contains("polish"));
   }
-  // With comfort on, the default's sizing ends with its comfort rows' trust region at its edge:
-  // not proved, and the certificate says why (not a claim the tool cannot back).
+  // With comfort on, the comfort rows follow their modes (ComfortRow::follow), so the kept
+  // design is its program's solution too: proved, and no heavier than 0.5 % over the lightest
+  // design the joint search has found the checks to pass (588.15 kg; tests/verify/
+  // joint_search_test.cc), where the held mode shapes' trust region left 593.9 kg unproved.
   Config comfort;
+  comfort.bridge.n = 3;  // configs/default.json
   const Design d = DesignAndVerify(comfort);
-  INFO(d.resizing.kkt.failed);
-  CHECK_FALSE(d.resizing.kkt.proved_local_optimum);
-  CHECK_FALSE(d.resizing.kkt.failed.empty());
+  INFO(d.mass.structure << " kg; " << d.resizing.optima << "; " << d.resizing.kkt.failed);
+  REQUIRE(DesignVerdict(d).pass);
+  CHECK(d.resizing.kkt.proved_local_optimum);
+  CHECK(d.mass.structure <= 588.15 * 1.005);
 }
 
 TEST_CASE("a sizing the solver cannot finish is tried again by another solver, and says so",
@@ -249,13 +253,19 @@ TEST_CASE("two starts give the same verified mass where the program has one opti
 TEST_CASE(
     "where two starts reach two optima, both are reported and the lighter passing one is kept",
     "[verify]") {
-  // The default bridge at n = 2 with its comfort rows: the frequency bound makes the program's
-  // feasible set less convex, and the second start (twice the first design's areas) settles
-  // 0.2 % lighter (838.1 against 840.0 kg) on a design that fails its checks (at n = 1, 3, 4
-  // and 5 the two meet within 5e-4). The output names both; the design kept is the lighter
-  // passing one.
-  Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
+  // The 40 m steel footbridge built as a 3D bridge (two planes) at n = 2 under wind, comfort
+  // off: its many self-stresses make the program far from convex, and the second start (twice
+  // the first design's areas) settles on 6 407 kg, a design that fails its checks, where the
+  // loop kept 11 785 kg. (The default at n = 2 did this with its comfort rows while they held
+  // their modes' shapes; with the rows following their modes its two starts meet within 5e-4, as
+  // on the default and the shipped footbridges at n = 1 to 3.) The output names both; the design
+  // kept is the lighter passing one.
+  Config config =
+      LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/footbridge_steel_40m.json");
+  config.bridge.planes = 2;
   config.bridge.n = 2;
+  config.loads.cases.push_back("wind");
+  config.comfort.check = false;
   const Design d = DesignAndVerify(config);
   INFO(d.resizing.optima);
   REQUIRE(d.resizing.second_start_kg > 0);
