@@ -52,6 +52,7 @@ struct ComfortRow {
   std::string
       key;  // the mode and the bound's side ("vertical 2 crowded"), the same from sizing to sizing
   bool lower = true;         // omega^2 >= target (stay above, or climb out of a range); else <=
+  bool below = false;        // the mode held on the passing piece below (ComfortRowsOf's `below`)
   double target_omega2 = 0;  // [rad^2/s^2]
   double omega2 = 0;         // at x0 [rad^2/s^2]
   // Per member [bars; strings]:

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -41,14 +42,14 @@ bool PassesAt(const ComfortMode& mode, const ComfortCheck& check, const Design& 
   return moved.pass;
 }
 
-// From s = 1 in the direction of `step` (> 1 up, < 1 down): the first scale at which the mode's
-// pass differs from its pass at 1, bisected to the last scale with its pass at 1; none within
-// kLargestScale.
+// From scale `from` in the direction of `step` (> 1 up, < 1 down): the first scale at which the
+// mode's pass differs from its pass at `from`, bisected to the last scale with its pass at `from`
+// where that passes, else to the first that passes; none within kLargestScale of 1.
 std::optional<double> WindowEnd(const ComfortMode& mode, const ComfortCheck& check, const Design& d,
-                                double step) {
-  const bool at_one = PassesAt(mode, check, d, 1.0);
-  double inside = 1.0;
-  for (double s = step; s < kLargestScale && s > 1.0 / kLargestScale; s *= step) {
+                                double step, double from = 1.0) {
+  const bool at_one = PassesAt(mode, check, d, from);
+  double inside = from;
+  for (double s = from * step; s < kLargestScale && s > 1.0 / kLargestScale; s *= step) {
     if (PassesAt(mode, check, d, s) == at_one) {
       inside = s;
       continue;
@@ -219,11 +220,20 @@ ComfortRow Follow(const FollowedMode& f, const std::vector<double>& a,
 
 }  // namespace
 
+std::optional<double> PieceBelow(const ComfortMode& mode, const ComfortCheck& check,
+                                 const Design& d) {
+  if (!mode.pass) return WindowEnd(mode, check, d, 1.0 / kScaleStep);
+  const std::optional<double> lower_end = WindowEnd(mode, check, d, 1.0 / kScaleStep);
+  if (!lower_end) return std::nullopt;
+  return WindowEnd(mode, check, d, 1.0 / kScaleStep, *lower_end / kScaleStep);
+}
+
 ComfortRow ComfortRowOf(const Design& d, const DynamicModel& model, const Mode& mode) {
   return RowOf(RowMembersOf(d), model, mode);
 }
 
-std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a) {
+std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
+                                      const std::set<std::string>& below) {
   std::vector<ComfortRow> out;
   if (!d.config.comfort.sizing_constraint || !a.check.done) return out;
   // Each row follows its mode (ComfortRow::follow) from the models it was found in.
@@ -263,6 +273,20 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a)
     std::ostringstream what;
     what << m.direction << " mode " << m.index << " (" << m.frequency_hz << " Hz crowded, "
          << m.frequency_empty_hz << " Hz empty, " << (m.pass ? "passes" : "fails") << ")";
+    if (below.count(name) != 0) {
+      // The piece below: the mode held under its top, on its empty frequency where it has one
+      // (the higher of the two), as the sizing that tries it asks (ComfortRowsOf).
+      if (const std::optional<double> top = PieceBelow(m, a.check, d)) {
+        out.push_back(empty >= 0
+                          ? Bounded(empty_row(), false, m.frequency_empty_hz,
+                                    m.frequency_empty_hz * *top,
+                                    what.str() + ": the piece below, empty")
+                          : Bounded(crowded_row(), false, m.frequency_hz, m.frequency_hz * *top,
+                                    what.str() + ": the piece below, crowded"));
+        out.back().below = true;
+        continue;
+      }
+    }
     const std::optional<double> up = WindowEnd(m, a.check, d, kScaleStep);
     const std::optional<double> down = WindowEnd(m, a.check, d, 1.0 / kScaleStep);
     if (!m.pass) {

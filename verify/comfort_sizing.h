@@ -16,6 +16,8 @@
 #pragma once
 
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,13 @@
 namespace tbridge {
 
 // The comfort rows about `design` from its comfort analysis (AnalyseComfort(design)); none where
-// comfort.sizing_constraint is false or the check was not done. Changes nothing.
-std::vector<ComfortRow> ComfortRowsOf(const Design& design, const ComfortAnalysis& analysis);
+// comfort.sizing_constraint is false or the check was not done. A mode named in `below` (its
+// direction and rank among the modes of that direction: "vertical 1", as ComfortRow::key begins)
+// is held under the top of the passing piece below the one it is in or sent up to, where there is
+// one (the sizing tries that piece when the mode's row binds, and keeps the lighter passing
+// design); its row is marked `below`. Changes nothing.
+std::vector<ComfortRow> ComfortRowsOf(const Design& design, const ComfortAnalysis& analysis,
+                                      const std::set<std::string>& below = {});
 
 // How far the last sizing's comfort rows foretold the design it gave, and the outer correction of
 // the next rows: each row of `next` (built from that design's modes) whose mode the last sizing
@@ -40,6 +47,13 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& design, const ComfortAnalysi
 inline constexpr double kLargestCorrection = 1.02;
 double CorrectComfortRows(const SizingProblem& problem, const Eigen::VectorXd& x,
                           std::vector<ComfortRow>& next);
+
+// The top of the passing piece below the one `mode` is held in or sent up to, as a scale of both
+// its frequencies (the mode passes at it and fails just above): for a failing mode the first
+// passing scale under 1; for a passing one, the first under its window's lower end and the
+// failing band beneath it. None down to a third. Changes nothing.
+std::optional<double> PieceBelow(const ComfortMode& mode, const ComfortCheck& check,
+                                 const Design& design);
 
 // Halves each row's step from the mode's eigenvalue to its target (in log frequency), for a
 // sizing that could not meet them; false where no row has a step to halve.

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -844,6 +846,56 @@ std::optional<Eigen::VectorXd> SecondStart(const Config& config, const Design& c
   return std::nullopt;
 }
 
+// The mode whose comfort row holds it above a piece of Sétra's a(f) and binds at the kept design
+// (within kBindingComfort of its bound), by its name ("vertical 1"): the sizing tries the passing
+// piece below it once (ComfortRowsOf's `below`). None where no such row binds. 1 % of omega^2:
+// the kept design is often a mended one, or its row's target was raised by the last correction,
+// so the row it was sized by reads a little slack (the default at n = 3: 2e-3) where the polished
+// program holds it active.
+constexpr double kBindingComfort = 1e-2;
+std::optional<std::string> BindingComfortMode(const BestSizing& kept) {
+  if (kept.corrections.comfort.empty()) return std::nullopt;
+  const SizingProblem problem(kept.current, kept.corrections);
+  Eigen::VectorXd g(problem.num_constraints()), lo, hi;
+  problem.Constraints(kept.x, g);
+  problem.ConstraintBounds(lo, hi);
+  for (int r = 0; r < problem.num_constraints(); ++r) {
+    const SizingRow& row = problem.rows()[static_cast<size_t>(r)];
+    if (row.kind != SizingRow::kComfort || g[r] - lo[r] > kBindingComfort) continue;
+    const ComfortRow& comfort = problem.comfort_rows()[static_cast<size_t>(row.member)];
+    if (comfort.lower && !comfort.below) return comfort.key.substr(0, comfort.key.rfind(' '));
+  }
+  return std::nullopt;
+}
+
+// At most this many sizings try the piece below: a mode stepped down by at most 1.5 in frequency
+// a sizing reaches a piece three times lower in three.
+constexpr int kPieceBelowSizings = 8;
+
+// The loop's first run, kept while it tries a binding comfort row's piece below: what its end
+// reads (the design kept, its sizing, the last sizing's start, corrections, problem and rows).
+struct FirstRun {
+  Design best;
+  BestSizing sizing;
+  Design current;
+  SizingCorrections corrections;
+  std::unique_ptr<SizingProblem> problem;
+  std::vector<char> posed;
+  bool settled = false;
+  std::string why;  // record.why of its end ("" where it settled)
+};
+
+// What record.why says of a loop that ended without settling.
+std::string WhyUnsettled(bool passed, int iterations, const Verdict& verdict,
+                         const SolverOutcome& outcome, const std::string& retried) {
+  std::ostringstream why;
+  why << (passed ? "the lightest passing design of " : "no design passed in ") << iterations
+      << " sizings; the last: " << verdict.summary;
+  if (!outcome.success) why << "; the sizing's solver stopped with " << outcome.status;
+  if (!retried.empty()) why << " (" << retried << ")";
+  return why.str();
+}
+
 // A design checked as it is, with no sizing: the paper's, or one the sizing cannot take.
 Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) {
   RequireStable(d);
@@ -909,8 +961,17 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   SizingCorrections corrections;
   std::optional<Design> best;  // the lightest design that passed
   std::optional<BestSizing> best_sizing;
-  std::optional<double> last_passing_kg;  // the structure's mass of the last design that passed
+  // The structure's mass of the last design that passed (NaN: none yet; a plain double, as GCC 12
+  // read an optional reset inside the loop as used uninitialised).
+  double last_passing_kg = std::numeric_limits<double>::quiet_NaN();
   CarriedRows carried;                    // the last sizing's active rows
+  // The piece below a binding comfort row's mode, tried once: the modes held there, the last
+  // sizing of the trial, and the first run while it runs.
+  bool tried_below = false;
+  std::set<std::string> below;
+  int last_below = 0;
+  std::optional<FirstRun> first_run;
+  std::string below_note;  // what the trial found, for resizing.optima
   for (record.iterations = 1;; ++record.iterations) {
     // The sizing about the current design's weight, from the current sizes and prestress.
     if (progress != nullptr) {
@@ -962,9 +1023,8 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     // could only replace the passing one by a lighter one within kSettled of it (n = 7: its
     // checks failed by a hair three sizings running, each mended, before a second design passed;
     // 13 designs, 7.7 s, against 10, 5.4 s, for 6e-6 of the mass).
-    const bool settled =
-        last_passing_kg && d.solver.success &&
-        std::abs(d.mass.structure - *last_passing_kg) <= kSettled * d.mass.structure;
+    const bool settled = d.solver.success && std::abs(d.mass.structure - last_passing_kg) <=
+                                                 kSettled * d.mass.structure;
     Verdict verdict;
     std::string repair;
     bool mended = false;  // d is the sizing's design with its failing members mended
@@ -992,16 +1052,102 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
       best = d;
       best_sizing = BestSizing{current, corrections, x, mended ? "not proved optimal: mended" : ""};
     }
+    // The trial of the piece below ends at its own count, or once a sizing is heavier than the
+    // first run's design (the corrections only add to it).
+    const bool heavier_than_first =
+        first_run && d.solver.success &&
+        d.mass.structure > first_run->best.mass.structure * (1 + kSettled);
     const bool last =
-        !settled && (record.iterations >= max_iterations || !outcome.success ||
-                     !d.statics.all_converged || verdict.outcome == VerdictOutcome::kIncomplete);
+        !settled && (record.iterations >= (first_run ? last_below : max_iterations) ||
+                     !outcome.success || !d.statics.all_converged ||
+                     verdict.outcome == VerdictOutcome::kIncomplete || heavier_than_first);
+    if ((settled || last) && best && !tried_below) {
+      tried_below = true;
+      if (const std::optional<std::string> mode = BindingComfortMode(*best_sizing)) {
+        std::vector<ComfortRow> rows = ComfortRowsOf(*best, AnalyseComfort(*best), {*mode});
+        if (std::any_of(rows.begin(), rows.end(), [](const ComfortRow& r) { return r.below; })) {
+          // Sized again from the kept design, its mode held on the piece below.
+          std::ostringstream os;
+          os << (settled ? "the loop settled" : "the loop stopped") << " at "
+             << best->mass.structure << " kg with " << *mode
+             << "'s comfort row binding: the piece below tried, from that design";
+          for (const ComfortRow& row : rows) os << "; comfort: " << row.label;
+          if (settled) {
+            // The settling sizing was not checked and is no design of the record: the note goes
+            // with the sizing before it, and the trial's first sizing takes its number.
+            record.structure_mass_kg.pop_back();
+            --record.iterations;
+            record.changes.back() += "; " + os.str();
+          } else {
+            record.changes.push_back(os.str());
+          }
+          first_run = FirstRun{
+              *best,
+              *best_sizing,
+              current,
+              corrections,
+              std::move(posed),
+              active.posed,
+              settled,
+              settled ? "" : WhyUnsettled(true, record.iterations, verdict, outcome, retried)};
+          below = {*mode};
+          last_below = record.iterations + kPieceBelowSizings;
+          corrections = best_sizing->corrections;
+          corrections.comfort = std::move(rows);
+          current = *best;
+          areas = MemberAreas(current);
+          alpha = current.alpha;
+          best.reset();
+          best_sizing.reset();
+          last_passing_kg = std::numeric_limits<double>::quiet_NaN();
+          carried = CarriedRows();
+          continue;
+        }
+        below_note = *mode +
+                     "'s comfort row binds at the kept design; no frequency down to a third of its "
+                     "own passes: no piece below to try";
+      }
+    }
     if (settled || last) {
+      // The end of the trial of the piece below: the lighter passing design of the two runs.
+      const SizingProblem* last_problem = &problem;
+      std::vector<char> last_posed = active.posed;
+      bool converged = settled;
+      std::string why =
+          settled ? ""
+                  : WhyUnsettled(best.has_value(), record.iterations, verdict, outcome, retried);
+      if (first_run) {
+        const double first_kg = first_run->best.mass.structure;
+        const bool lighter = best && best->mass.structure < first_kg * (1 - kSettled);
+        std::ostringstream os;
+        os << "the piece below: ";
+        if (best) {
+          os << best->mass.structure << " kg passes, "
+             << (lighter ? "lighter than" : "not lighter than") << " the first run's " << first_kg
+             << " kg";
+        } else {
+          os << "no design passed";
+        }
+        os << "; kept " << (lighter ? "the piece below's" : "the first run's");
+        below_note = os.str();
+        if (!lighter) {
+          best = std::move(first_run->best);
+          best_sizing = std::move(first_run->sizing);
+          current = std::move(first_run->current);
+          corrections = std::move(first_run->corrections);
+          last_problem = first_run->problem.get();
+          last_posed = first_run->posed;
+          converged = first_run->settled;
+          why = first_run->why;
+        }
+      }
       if (best) {
         if (const std::optional<Eigen::VectorXd> other =
-                SecondStart(config, current, corrections, solver, problem, first_sizes, *best,
-                            record, progress, active.posed)) {
+                SecondStart(config, current, corrections, solver, *last_problem, first_sizes, *best,
+                            record, progress, last_posed)) {
           best_sizing = BestSizing{current, corrections, *other, ""};
         }
+        if (!below_note.empty()) record.optima = below_note + "; " + record.optima;
         Polish(config, solver, *best_sizing, *best, record, progress);
         // What drives the mass and the certificate, of the design kept only (a problem built
         // again for it).
@@ -1013,20 +1159,13 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
                              best_sizing->x, best_sizing->not_optimal);
       }
       Design out = best ? *best : d;
-      record.converged = settled;
+      record.converged = converged;
       record.comfort_rows.clear();
       if (best) {
         for (const ComfortRow& row : best_sizing->corrections.comfort)
           record.comfort_rows.push_back(row.label);
       }
-      if (!settled) {
-        std::ostringstream why;
-        why << (best ? "the lightest passing design of " : "no design passed in ")
-            << record.iterations << " sizings; the last: " << verdict.summary;
-        if (!outcome.success) why << "; the sizing's solver stopped with " << outcome.status;
-        if (!retried.empty()) why << " (" << retried << ")";
-        record.why = why.str();
-      }
+      if (!converged) record.why = why;
       out.resizing = record;
       if (progress != nullptr) progress->SetStagePrefix("");
       return out;
@@ -1042,7 +1181,8 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
     // design.dynamic_screen is corrected by them first, as its dynamic runs wait (the 3D 40 m
     // footbridge's first sizing, at 6.8 under wind, asked x7 of its members).
     std::vector<ComfortRow> next;
-    if (verdict.utilisation_max <= config.design.dynamic_screen) next = ComfortRowsOf(d, comfort);
+    if (verdict.utilisation_max <= config.design.dynamic_screen)
+      next = ComfortRowsOf(d, comfort, below);
     // How far the last rows foretold this design's eigenvalues (the static state and the
     // members' weight they hold), which raises the next rows' targets.
     const double missed = CorrectComfortRows(problem, x, next);

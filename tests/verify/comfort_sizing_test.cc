@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "core/config.h"
 #include "design/equilibrium.h"
@@ -224,6 +227,60 @@ TEST_CASE("a row that follows its mode is the moved model's eigenvalue, its grad
   }
   CHECK(compared >= 2);
   CHECK(lowest == 1);
+}
+
+// Whether `mode` passes with both its frequencies scaled by s (as the comfort rows read it).
+bool PassesScaled(const ComfortMode& mode, const ComfortCheck& check, const Design& d, double s) {
+  ComfortMode moved = mode;
+  RespondAt(moved, check, d, mode.frequency_hz * s, mode.frequency_empty_hz * s);
+  return moved.pass;
+}
+
+TEST_CASE("a binding comfort row's piece below is tried, and the lighter passing design kept",
+          "[comfort][sizing]") {
+  // The 20 m cables footbridge: its first vertical mode is held above 4.7 Hz (Sétra's range 3
+  // fails under it), and a passing piece lies below the failing band, up to 2.89 Hz empty.
+  const Config config =
+      LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/footbridge_cables_20m.json");
+  const Design d = DesignAndVerify(config);
+  INFO(d.resizing.optima);
+  REQUIRE(DesignVerdict(d).pass);
+  const ComfortAnalysis a = AnalyseComfort(d);
+  REQUIRE(a.check.done);
+  REQUIRE(!a.modes.empty());
+  const ComfortMode& mode = a.modes[0];
+  REQUIRE(mode.direction == "vertical");
+  REQUIRE(mode.pass);
+  // The piece below: the mode passes at its top and fails just above it, and between it and the
+  // mode's own window the mode fails (a piece of its own, not the window it is in).
+  const std::optional<double> top = PieceBelow(mode, a.check, d);
+  REQUIRE(top.has_value());
+  CHECK(*top < 1.0);
+  CHECK(PassesScaled(mode, a.check, d, *top));
+  CHECK_FALSE(PassesScaled(mode, a.check, d, *top * 1.001));  // the bisection's step is 1e-7
+  bool fails_between = false;
+  for (double s = *top; s < 1.0; s *= 1.01) fails_between |= !PassesScaled(mode, a.check, d, s);
+  CHECK(fails_between);
+  // The rows that hold it there: one upper bound, marked, on the empty frequency.
+  const std::vector<ComfortRow> rows = ComfortRowsOf(d, a, {"vertical 1"});
+  int marked = 0;
+  for (const ComfortRow& row : rows) {
+    if (!row.below) continue;
+    ++marked;
+    CHECK_FALSE(row.lower);
+    CHECK(row.key == "vertical 1 empty");
+    CHECK(row.target_omega2 < row.omega2);
+  }
+  CHECK(marked == 1);
+  // The sizing tried it (its row bound at the kept design) and says what it kept: no design of the
+  // piece below passed here, so the first run's.
+  CHECK_THAT(d.resizing.optima, Catch::Contains("the piece below: "));
+  CHECK_THAT(d.resizing.optima, Catch::Contains("kept the first run's"));
+  bool tried = false;
+  for (const std::string& change : d.resizing.changes)
+    tried |= change.find("the piece below tried") != std::string::npos;
+  CHECK(tried);
+  CHECK(d.resizing.kkt.proved_local_optimum);
 }
 
 }  // namespace tbridge
