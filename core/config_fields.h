@@ -357,7 +357,9 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
                  "with its "
                  "sensitivities) kept in the window where its Sétra acceleration is within the "
                  "limit, or sent "
-                 "to the nearest frequency above where it is (mass_attribution's `comfort`)"},
+                 "to the nearest frequency above where it is (mass_attribution's `comfort`); where "
+                 "a row holding a mode above a failing band binds, the passing piece below the "
+                 "band is tried too and the lighter passing design kept"},
          c.sizing_constraint);
   v.Choice(KeyInfo{"traffic_class", "–",
                    "Sétra Stage 1 class, and its crowd density d: `\"IV\"` seldom used (no check), `\"III\"` "

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -28,11 +29,11 @@ constexpr double kLargestScale = 3.0;
 // 3.1 and 3.9 Hz, their shapes another), and the next sizing goes on from the new shape.
 constexpr double kLargestStep = 1.5;
 // Each bound is posed this much inside the window (relative, on the frequency): the row holds the
-// Rayleigh quotient of the held shape, which the new design's own frequency follows to second
-// order in the step.
+// static state under the crowd and the members' weight of the design it starts from, which the
+// new design's own move a little.
 constexpr double kFrequencyMargin = 1e-3;
-// A row's mode is followed among the modes up to this factor above its frequency: a sizing moves
-// it at most kLargestStep.
+// The rows' modes are followed among the modes up to this factor above the highest frequency a row
+// starts from: a sizing moves a mode at most kLargestStep.
 constexpr double kFollowedUpTo = 2.0;
 
 // Whether `mode` passes with both its frequencies scaled by s.
@@ -135,15 +136,24 @@ ComfortRow RowOf(const RowMembers& members, const DynamicModel& model, const Mod
   return row;
 }
 
-// A mode a row follows (ComfortRow::follow): the model it was found in (the comfort model of the
-// design, at its static state), its shape there, and the design's areas and reference forces.
-struct FollowedMode {
+// A model the rows follow their modes in (ComfortRow::follow): the comfort model of the design
+// at its static state, the design's areas and reference forces, and the modes of the model last
+// moved, which the rows of one point share: each point asks for one moved model's modes, found
+// once however many rows read it (the 40 m footbridge at n = 6 poses several on one model).
+struct HeldModel {
   RowMembers members;
-  std::shared_ptr<const DynamicModel> held;
-  Eigen::Matrix3Xd shape;
+  DynamicModel model;
   std::vector<double> area;
   Eigen::VectorXd force;
   double above_hz = 0;  // the modes are sought up to here
+  struct Moved {
+    std::vector<double> area;
+    Eigen::VectorXd force;
+    std::optional<DynamicModel> model;  // none where the moved model has no modes
+    DeckModes modes;
+  };
+  mutable std::mutex mutex;
+  mutable std::shared_ptr<const Moved> last;
 };
 
 // `held` moved to areas a and reference forces f as the row's coefficients assume, so that the
@@ -151,19 +161,19 @@ struct FollowedMode {
 // and its tension by dF at the state's length, each member's own mass by rho dA l (a string's on
 // its rest length, shared as the model shares string mass); the bars' forces follow the nodes'
 // equilibrium, as the model finds them.
-DynamicModel Moved(const FollowedMode& f, const std::vector<double>& a,
-                   const Eigen::VectorXd& force) {
-  DynamicModel m = *f.held;
-  const RowMembers& r = f.members;
+DynamicModel MovedModel(const HeldModel& held, const std::vector<double>& a,
+                        const Eigen::VectorXd& force) {
+  DynamicModel m = held.model;
+  const RowMembers& r = held.members;
   for (int j = 0; j < r.bars; ++j) {
     const size_t k = static_cast<size_t>(j);
-    m.bars.mass[k] += r.bar_density * (a[k] - f.area[k]) * r.length[k];
+    m.bars.mass[k] += r.bar_density * (a[k] - held.area[k]) * r.length[k];
   }
   std::vector<double> added(m.strings.size(), 0.0);
   for (size_t q = 0; q < m.strings.size(); ++q) {
     const size_t k = static_cast<size_t>(r.bars) + q;
-    const double da = a[k] - f.area[k],
-                 df = force[static_cast<Eigen::Index>(k)] - f.force[static_cast<Eigen::Index>(k)];
+    const Eigen::Index e = static_cast<Eigen::Index>(k);
+    const double da = a[k] - held.area[k], df = force[e] - held.force[e];
     const double s = (m.positions.col(m.strings.j[q]) - m.positions.col(m.strings.i[q])).norm();
     const double k0 = m.strings.stiffness[q];
     const double tension = k0 * (s - m.strings.rest_length[q]) + df;
@@ -186,36 +196,55 @@ DynamicModel Moved(const FollowedMode& f, const std::vector<double>& a,
   return m;
 }
 
-// The row of f's mode at areas a and reference forces `force`: of the moved model's modes, the
-// one whose shape is closest to the held one's (the largest modal assurance criterion), so that
-// the row keeps to its mode where modes cross. A model without modes gives a row of NaN, which the
-// solvers step back from.
-ComfortRow Follow(const FollowedMode& f, const std::vector<double>& a,
-                  const Eigen::VectorXd& force) {
+// The held model moved to (a, force) and its modes: the last found where the point is the same.
+std::shared_ptr<const HeldModel::Moved> MovedModes(const HeldModel& held,
+                                                   const std::vector<double>& a,
+                                                   const Eigen::VectorXd& force) {
+  const std::lock_guard<std::mutex> lock(held.mutex);
+  if (held.last && held.last->area == a && held.last->force.size() == force.size() &&
+      held.last->force == force) {
+    return held.last;
+  }
+  auto moved = std::make_shared<HeldModel::Moved>();
+  moved->area = a;
+  moved->force = force;
   try {
-    const DynamicModel moved = Moved(f, a, force);
-    const DeckModes modes = ComputeDeckModes(moved, f.above_hz);
-    const Mode* best = nullptr;
-    double best_mac = -1;
-    const double held_norm = f.shape.squaredNorm();
-    for (const Mode& mode : modes.modal.modes) {
-      const double dot = (mode.shape.array() * f.shape.array()).sum();
+    moved->model = MovedModel(held, a, force);
+    moved->modes = ComputeDeckModes(*moved->model, held.above_hz);
+  } catch (const ModelError&) {
+    moved->model.reset();
+  }
+  held.last = moved;
+  return held.last;
+}
+
+// The row of the mode of shape `shape` at areas a and reference forces `force`: of the moved
+// model's modes, the one whose shape is closest to it (the largest modal assurance criterion), so
+// that the row keeps to its mode where modes cross. A model without modes gives a row of NaN,
+// which the solvers step back from.
+ComfortRow Follow(const HeldModel& held, const Eigen::Matrix3Xd& shape,
+                  const std::vector<double>& a, const Eigen::VectorXd& force) {
+  const std::shared_ptr<const HeldModel::Moved> moved = MovedModes(held, a, force);
+  const Mode* best = nullptr;
+  double best_mac = -1;
+  const double held_norm = shape.squaredNorm();
+  if (moved->model) {
+    for (const Mode& mode : moved->modes.modal.modes) {
+      const double dot = (mode.shape.array() * shape.array()).sum();
       const double mac = dot * dot / (mode.shape.squaredNorm() * held_norm);
       if (mac > best_mac) {
         best_mac = mac;
         best = &mode;
       }
     }
-    if (best == nullptr) throw ModelError("no modes");
-    return RowOf(f.members, moved, *best);
-  } catch (const ModelError&) {
-    ComfortRow nan;
-    nan.omega2 = std::numeric_limits<double>::quiet_NaN();
-    nan.by_area.assign(a.size(), 0.0);
-    nan.by_force = nan.by_area;
-    nan.mass_by_area = nan.by_area;
-    return nan;
   }
+  if (best != nullptr) return RowOf(held.members, *moved->model, *best);
+  ComfortRow nan;
+  nan.omega2 = std::numeric_limits<double>::quiet_NaN();
+  nan.by_area.assign(a.size(), 0.0);
+  nan.by_force = nan.by_area;
+  nan.mass_by_area = nan.by_area;
+  return nan;
 }
 
 }  // namespace
@@ -239,14 +268,25 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
   // Each row follows its mode (ComfortRow::follow) from the models it was found in.
   const RowMembers members = RowMembersOf(d);
   const std::vector<double> areas = MemberAreas(d);
-  const auto crowded_model = std::make_shared<const DynamicModel>(a.crowded_model);
-  const auto empty_model = std::make_shared<const DynamicModel>(a.empty_model);
-  const auto Following = [&](const std::shared_ptr<const DynamicModel>& model, const Mode& mode) {
-    ComfortRow row = RowOf(members, *model, mode);
-    const auto f = std::make_shared<const FollowedMode>(FollowedMode{
-        members, model, mode.shape, areas, d.reference_forces, kFollowedUpTo * mode.frequency_hz});
-    row.follow = [f](const std::vector<double>& at, const Eigen::VectorXd& force) {
-      return Follow(*f, at, force);
+  double highest_hz = 0;
+  for (const ComfortMode& m : a.modes)
+    highest_hz = std::max({highest_hz, m.frequency_hz, m.frequency_empty_hz});
+  const auto held = [&](const DynamicModel& model) {
+    auto h = std::make_shared<HeldModel>();
+    h->members = members;
+    h->model = model;
+    h->area = areas;
+    h->force = d.reference_forces;
+    h->above_hz = kFollowedUpTo * highest_hz;
+    return std::shared_ptr<const HeldModel>(std::move(h));
+  };
+  const std::shared_ptr<const HeldModel> crowded_model = held(a.crowded_model);
+  const std::shared_ptr<const HeldModel> empty_model = held(a.empty_model);
+  const auto Following = [&](const std::shared_ptr<const HeldModel>& model, const Mode& mode) {
+    ComfortRow row = RowOf(members, model->model, mode);
+    row.follow = [model, shape = mode.shape](const std::vector<double>& at,
+                                             const Eigen::VectorXd& force) {
+      return Follow(*model, shape, at, force);
     };
     return row;
   };
