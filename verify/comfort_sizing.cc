@@ -32,9 +32,12 @@ constexpr double kLargestStep = 1.5;
 // static state under the crowd and the members' weight of the design it starts from, which the
 // new design's own move a little.
 constexpr double kFrequencyMargin = 1e-3;
-// The rows' modes are followed among the modes up to this factor above the highest frequency a row
-// starts from: a sizing moves a mode at most kLargestStep.
-constexpr double kFollowedUpTo = 2.0;
+// The rows' modes are followed among the lowest modes of their model, up to this many beyond the
+// highest a row starts from: a sizing reorders a few (it moves a mode at most kLargestStep), and
+// the lowest modes of a large model cost one shift-invert Lanczos solve, where all modes to twice
+// the highest frequency (the deck's local modes among them) took most of a sizing of the 40 m
+// footbridge at n = 6.
+constexpr int kFollowedBeyond = 8;
 
 // Whether `mode` passes with both its frequencies scaled by s.
 bool PassesAt(const ComfortMode& mode, const ComfortCheck& check, const Design& d, double s) {
@@ -145,12 +148,12 @@ struct HeldModel {
   DynamicModel model;
   std::vector<double> area;
   Eigen::VectorXd force;
-  double above_hz = 0;  // the modes are sought up to here
+  int modes = 0;  // the lowest this many modes are sought
   struct Moved {
     std::vector<double> area;
     Eigen::VectorXd force;
     std::optional<DynamicModel> model;  // none where the moved model has no modes
-    DeckModes modes;
+    ModalResult modes;
   };
   mutable std::mutex mutex;
   mutable std::shared_ptr<const Moved> last;
@@ -210,7 +213,11 @@ std::shared_ptr<const HeldModel::Moved> MovedModes(const HeldModel& held,
   moved->force = force;
   try {
     moved->model = MovedModel(held, a, force);
-    moved->modes = ComputeDeckModes(*moved->model, held.above_hz);
+    ModalOptions options;
+    options.count = held.modes;
+    options.highest = false;
+    options.solver = ModalSolver::kSparse;  // the lowest few; every mode where they are nearly all
+    moved->modes = ComputeModes(*moved->model, options);
   } catch (const ModelError&) {
     moved->model.reset();
   }
@@ -229,7 +236,7 @@ ComfortRow Follow(const HeldModel& held, const Eigen::Matrix3Xd& shape,
   double best_mac = -1;
   const double held_norm = shape.squaredNorm();
   if (moved->model) {
-    for (const Mode& mode : moved->modes.modal.modes) {
+    for (const Mode& mode : moved->modes.modes) {
       const double dot = (mode.shape.array() * shape.array()).sum();
       const double mac = dot * dot / (mode.shape.squaredNorm() * held_norm);
       if (mac > best_mac) {
@@ -268,16 +275,16 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
   // Each row follows its mode (ComfortRow::follow) from the models it was found in.
   const RowMembers members = RowMembersOf(d);
   const std::vector<double> areas = MemberAreas(d);
-  double highest_hz = 0;
-  for (const ComfortMode& m : a.modes)
-    highest_hz = std::max({highest_hz, m.frequency_hz, m.frequency_empty_hz});
+  int highest = 0;  // the highest mode a row starts from, 1-based
+  for (size_t i = 0; i < a.modes.size(); ++i)
+    highest = std::max({highest, a.crowded_mode[i] + 1, a.empty_mode[i] + 1});
   const auto held = [&](const DynamicModel& model) {
     auto h = std::make_shared<HeldModel>();
     h->members = members;
     h->model = model;
     h->area = areas;
     h->force = d.reference_forces;
-    h->above_hz = kFollowedUpTo * highest_hz;
+    h->modes = highest + kFollowedBeyond;
     return std::shared_ptr<const HeldModel>(std::move(h));
   };
   const std::shared_ptr<const HeldModel> crowded_model = held(a.crowded_model);
