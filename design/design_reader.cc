@@ -49,6 +49,66 @@ void RequireDerived(const json& member, const char* key, double derived, const s
           "of this key would be ignored: edit the config and run tbridge design instead");
 }
 
+bool Derives(const json& member, const char* key, double derived, const std::string& where) {
+  return std::abs(Number(member, key, where) - derived) <= kDerivedTolerance * std::abs(derived);
+}
+
+// A member whose radius, mass or stiffness is not what its area and rest length give was edited
+// by hand: refused, naming the key that was edited (told apart by which of the others still
+// agree) and what to change with it, as check reads a member from its area and rest length. A
+// string whose stiffness and reference force are those of another rest length had its rest
+// length edited: k_file (s - E A / k_file) is then its reference force to rounding (1e-9: the
+// file's shortest round-trip digits leave 1e-13 of it, where a stiffness edited by 1e-9 moves it
+// by about 1e-6).
+void RequireSection(const json& j, const MemberSizing& m, const MemberMaterial& mat, bool bar,
+                    const std::string& where) {
+  const bool radius = Derives(j, "radius", m.radius, where),
+             mass = Derives(j, "mass", m.mass, where),
+             stiffness = bar || Derives(j, "stiffness", m.stiffness, where);
+  if (radius && mass && stiffness) return;
+  const std::string with =
+      "`radius` = sqrt(area / pi) = " + NumberText(m.radius) +
+      " m, `mass` = density x area x length = " + NumberText(m.mass) + " kg" +
+      (bar ? "" : ", `stiffness` = E x area / rest_length = " + NumberText(m.stiffness) + " N/m");
+  const std::string then = "; tbridge check then checks the member as built";
+  if (!radius && !mass && (bar || !stiffness)) {
+    throw ConfigError(where + ".area", NumberText(m.area),
+                      "member " + m.name +
+                          ": its area was edited without the keys that follow it: set " + with +
+                          then);
+  }
+  if (!radius) {
+    const double r = Number(j, "radius", where), area = std::numbers::pi * r * r;
+    throw ConfigError(
+        where + ".radius", NumberText(r),
+        "member " + m.name + ": its radius was edited alone; the section is `area`: for " +
+            "this radius set `area` = pi r^2 = " + NumberText(area) +
+            " m^2 and the keys that follow it (`mass`" + (bar ? "" : ", `stiffness`") + ")" + then);
+  }
+  if (!mass) {
+    throw ConfigError(where + ".mass", NumberText(Number(j, "mass", where)),
+                      "member " + m.name + ": its mass follows its area: " + with +
+                          " as the area gives, or change `area` with all three");
+  }
+  const double k = Number(j, "stiffness", where);
+  const double old_rest = mat.youngs_modulus * m.area / k;
+  if (std::abs(k * (m.length - old_rest) - m.reference_force) <=
+      1e-9 * std::max(std::abs(m.reference_force), 1.0)) {
+    throw ConfigError(where + ".rest_length", NumberText(m.rest_length),
+                      "member " + m.name + ": its rest length was edited from " +
+                          NumberText(old_rest) +
+                          " m without its stiffness: set `stiffness` = E x " +
+                          "area / rest_length = " + NumberText(m.stiffness) +
+                          " N/m; tbridge check then re-derives the reference state as built");
+  }
+  throw ConfigError(where + ".stiffness", NumberText(k),
+                    "member " + m.name +
+                        ": its stiffness follows `area` and `rest_length` (E x area / "
+                        "rest_length = " +
+                        NumberText(m.stiffness) +
+                        " N/m): change either of them, with the stiffness they give");
+}
+
 // The deck as the file gives it, which must be the config's: the members' reference forces
 // carry its weight, so a deck of another thickness is another design.
 void RequireDeck(const json& file, const Deck& deck) {
@@ -279,8 +339,6 @@ Design ReadDesign(const json& file) {
       }
     }
     RequireDerived(j, "length", m.length, where, m.name, "the length between its nodes");
-    RequireDerived(j, "radius", m.radius, where, m.name, "sqrt(area / pi)");
-    RequireDerived(j, "mass", m.mass, where, m.name, "density x area x length");
     if (bar) {
       if (!j.contains("stiffness") || !j.at("stiffness").is_null()) {
         throw ConfigError(where + ".stiffness",
@@ -288,9 +346,8 @@ Design ReadDesign(const json& file) {
                           "member " + m.name +
                               " is a bar, rigid in the model: null, as tbridge design writes it");
       }
-    } else {
-      RequireDerived(j, "stiffness", m.stiffness, where, m.name, "E x area / rest_length");
     }
+    RequireSection(j, m, mat, bar, where);
     m.force = m.reference_force;
     m.force_density = m.force / m.length;
     m.stress = m.area > 0 ? m.force / m.area : 0.0;

@@ -80,15 +80,47 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
   const json original = ReadJson(design);
   const int string_index = original["topology"]["bars"].get<int>();  // the first string
   {
-    // A string's area doubled alone: its radius, mass and stiffness are still the old area's,
-    // so the edit is not one an engineer means; refused at the first of them, the radius.
+    // A string's area doubled alone: its radius, mass and stiffness are still the old area's
+    // (all three disagree with it, so the area is the key edited); refused naming the area and
+    // the keys to set with it.
     json edited = original;
     edited["members"][string_index]["area"] = 2 * original["members"][string_index]["area"].get<double>();
     WriteJson(dir / "area.json", edited);
     const auto r = RunTbridge(dir, "check " + Quote((dir / "area.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Contains("members[" + std::to_string(string_index) + "].radius"));
+    CHECK_THAT(r.err, Catch::Contains("members[" + std::to_string(string_index) + "].area") &&
+                          Catch::Contains("set `radius`") && Catch::Contains("`stiffness`"));
     CHECK_FALSE(fs::exists(out));
+  }
+  {
+    // A string's rest length shortened by 1e-3 alone (a fabrication error): its stiffness and
+    // reference force are still the old rest length's, so the rest length is the key edited;
+    // refused naming it, its old value and the stiffness to set. Set as told, check runs the
+    // string as built and lists it among the edits.
+    json edited = original;
+    json& m = edited["members"][string_index];
+    const double rest = m["rest_length"].get<double>() * (1 - 1e-3);
+    m["rest_length"] = rest;
+    WriteJson(dir / "rest.json", edited);
+    auto r = RunTbridge(
+        dir, "check " + Quote((dir / "rest.json").string()) + " -o " + Quote(out.string()));
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err,
+               Catch::Contains("'members[" + std::to_string(string_index) + "].rest_length'") &&
+                   Catch::Contains("without its stiffness: set `stiffness`"));
+    CHECK_FALSE(fs::exists(out));
+    m["stiffness"] = m["area"].get<double>() *
+                     original["config"]["material"]["youngs_modulus"].get<double>() / rest;
+    WriteJson(dir / "rest.json", edited);
+    r = RunTbridge(dir,
+                   "check " + Quote((dir / "rest.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code != 2);
+    REQUIRE(fs::exists(out));
+    const json checked = ReadJson(out);
+    CHECK(checked["as_built"]["edited"].dump().find(
+              original["members"][string_index]["name"].get<std::string>()) != std::string::npos);
+    fs::remove(out);
   }
   // A member's radius, mass or stiffness edited beside its area: check reads a member from its
   // area and rest length, so the edit would be ignored; it is refused naming the member and the
