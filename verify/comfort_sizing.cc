@@ -85,10 +85,6 @@ ComfortRow Bounded(ComfortRow row, bool lower, double now_hz, double frequency_h
   return row;
 }
 
-}  // namespace
-
-namespace {
-
 // What a comfort row reads of the design's members, per member [bars; strings]: its drawn length
 // and (strings) rest length, and the materials.
 struct RowMembers {
