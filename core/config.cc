@@ -94,7 +94,7 @@ Config ParseConfig(const nlohmann::json& root) {
                         "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
                         "not both");
     }
-    for (const char* section : {"material", "design", "loads", "comfort"}) {
+    for (const char* section : {"material", "design", "loads", "comfort", "supports"}) {
       if (top.Has(section)) {
         throw ConfigError(section, "(section)",
                           "not allowed with \"structure\": a custom scene gives its masses, stiffnesses and rest "
@@ -112,6 +112,7 @@ Config ParseConfig(const nlohmann::json& root) {
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
     CheckCasesForBridge(c.bridge, c.loads);
     c.comfort = ParseSection<ComfortConfig>(top.Section("comfort"));
+    c.supports = ParseSection<SupportsConfig>(top.Section("supports"));
   }
   if (top.Has("dynamics")) {
     c.dynamics = ParseDynamicsConfig(top.Section("dynamics"));
@@ -139,6 +140,7 @@ nlohmann::json ToJson(const Config& c) {
   j["design"] = EchoFields(c.design);
   j["loads"] = EchoFields(c.loads);
   j["comfort"] = EchoFields(c.comfort);
+  j["supports"] = EchoFields(c.supports);
   if (c.dynamics) j["dynamics"] = ToJson(*c.dynamics);
   return j;
 }
@@ -157,6 +159,7 @@ void Validate(const Config& c) {
     CheckLoadsRules(c.loads);
     CheckCasesForBridge(c.bridge, c.loads);
     ValidateFields(c.comfort, kComfortSection.name);
+    ValidateFields(c.supports, kSupportsSection.name);
   }
   if (c.dynamics) {
     ValidateFields(*c.dynamics, kDynamicsSection.name);
@@ -174,6 +177,7 @@ std::string ConfigKeyTable(const std::string& section) {
   if (section == kDesignSection.name) return KeyTableOf(DesignConfig{});
   if (section == kLoadsSection.name) return KeyTableOf(LoadsConfig{});
   if (section == kComfortSection.name) return KeyTableOf(ComfortConfig{});
+  if (section == kSupportsSection.name) return KeyTableOf(SupportsConfig{});
   if (section == kDynamicsSection.name) return KeyTableOf(DynamicsConfig{});
   if (section == kStructureSection.name) return KeyTableOf(StructureConfig{});
   throw std::invalid_argument("ConfigKeyTable: no described section '" + section + "'");

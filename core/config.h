@@ -111,6 +111,13 @@ struct ComfortConfig {
   double crowd_horizontal_limit_m_s2 = 0.4;  // EN 1990 A2.4.3.2(1), exceptional crowd conditions
 };
 
+// The abutments' capacities (verify/static_check.h checks them, the verified sizing designs to
+// them). Unset: rigid hinges of unlimited capacity, the paper's supports.
+struct SupportsConfig {
+  std::optional<double> horizontal_capacity_n;  // [N], per abutment, in-plan vector sum
+  std::optional<double> vertical_capacity_n;    // [N], per abutment, |V| (uplift included)
+};
+
 // A config describes either a designed bridge ("bridge", with "material" and "design") or a
 // custom scene ("structure"); `structure` is set exactly in the second case, and then
 // `bridge`, `material` and `design` keep their defaults and are not echoed.
@@ -120,6 +127,7 @@ struct Config {
   DesignConfig design;
   LoadsConfig loads;
   ComfortConfig comfort;
+  SupportsConfig supports;
   std::optional<StructureConfig> structure;  // present when the file has a "structure" section
   std::optional<DynamicsConfig> dynamics;    // present when the file has a "dynamics" section
 };
@@ -138,8 +146,9 @@ inline constexpr int kMaxBarsPerModule = 8;
 Config ParseConfig(const nlohmann::json& root);
 Config LoadConfig(const std::string& path);
 // Checks a config built in code as ParseConfig checks a file: every described key of
-// `bridge`, `material`, `design`, `loads` and `comfort` (or `structure`) and of `dynamics` in its range, and the
-// rules across keys. Throws ConfigError naming the key path, the value and what is allowed.
+// `bridge`, `material`, `design`, `loads`, `comfort` and `supports` (or `structure`) and of
+// `dynamics` in its range, and the rules across keys. Throws ConfigError naming the key path, the
+// value and what is allowed.
 void Validate(const Config& config);
 // The paper's switches (SPEC.md): its one unfactored load case, no self-weight, yield factor
 // 10, plain Euler buckling with factor 1, and in a run no deck inertia and no structure

@@ -39,6 +39,9 @@ inline const SectionInfo kLoadsSection{
 inline const SectionInfo kComfortSection{
     "comfort", "footbridge comfort under pedestrians (Sétra 2006, HiVoSS 2008, EN 1990 A2.4.3.2)", ""};
 
+inline const SectionInfo kSupportsSection{
+    "supports", "the abutments' capacities (unset: rigid hinges of unlimited capacity)", ""};
+
 // Ranges whose ends catch unit slips: a value beyond them is no bridge in the key's unit, and
 // the refusal says which unit it was likely given in (configs/README.md, "Plausibility
 // warnings"). 2000 m is about the longest span ever built (suspension bridges); 1 deg of beta,
@@ -412,6 +415,29 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
   v.Number(KeyInfo{"crowd_horizontal_limit_m_s2", "m/s²",
                    "EN 1990 A2.4.3.2(1): the same in exceptional crowd conditions (traffic classes I and II)"},
            c.crowd_horizontal_limit_m_s2, Range{0.0, 100.0, true, false});
+}
+
+template <class S, class V>
+void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, SupportsConfig> {
+  v.OptionalNumber(
+      KeyInfo{
+          "horizontal_capacity_n", "N",
+          "the largest horizontal reaction one abutment takes: the in-plan vector sum of its "
+          "support "
+          "nodes' horizontal reactions (one node on a planar bridge, two on the 3D bridge). A row "
+          "of the "
+          "verified sizing in every ultimate case and station, and a finding of the static check "
+          "(mass_attribution's `supports`); the dynamic runs' reactions are not limited. Null: "
+          "unlimited, with a warning where prestress, not the load, sets the thrust",
+          false, nullptr, "unlimited"},
+      s.horizontal_capacity_n, Range::Positive(), Absent::kNull);
+  v.OptionalNumber(
+      KeyInfo{"vertical_capacity_n", "N",
+              "the largest vertical reaction one abutment takes, bearing or uplift alike (its "
+              "magnitude), the sum over its support nodes; a row and a finding as "
+              "`horizontal_capacity_n`. Null: unlimited",
+              false, nullptr, "unlimited"},
+      s.vertical_capacity_n, Range::Positive(), Absent::kNull);
 }
 
 // The README's text of one section: SectionHeading, a blank line, then SectionBody: the rules

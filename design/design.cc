@@ -116,6 +116,37 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
   return reduced_forces();
 }
 
+// Each abutment's reactions against its capacities (supports.*) in the verdict: the governing
+// utilisation where one is the largest, a failure where one exceeds 1.
+void AbutmentVerdicts(const StaticCheck& statics, Verdict& v, std::vector<std::string>& fails) {
+  for (const AbutmentFinding& a : statics.abutments) {
+    const struct {
+      const char* what;
+      double utilisation, demand_n, capacity_n;
+      const std::string& governing_case;
+    } sides[] = {{"horizontal", a.HorizontalUtilisation(), a.horizontal_n, a.horizontal_capacity_n,
+                  a.horizontal_case},
+                 {"vertical", a.VerticalUtilisation(), a.vertical_n, a.vertical_capacity_n,
+                  a.vertical_case}};
+    for (const auto& side : sides) {
+      if (side.capacity_n <= 0) continue;
+      std::ostringstream name;
+      name << "abutment at x = " << a.x_m << " m (" << side.what << " reaction, "
+           << side.governing_case << ")";
+      if (side.utilisation > v.utilisation_max) {
+        v.utilisation_max = side.utilisation;
+        v.governing = name.str();
+      }
+      if (side.utilisation > 1.0 + 1e-9) {
+        std::ostringstream os;
+        os << name.str() << ": " << side.demand_n / 1000 << " kN > capacity "
+           << side.capacity_n / 1000 << " kN (supports." << side.what << "_capacity_n)";
+        fails.push_back(os.str());
+      }
+    }
+  }
+}
+
 }  // namespace
 
 const char* VerdictName(VerdictOutcome outcome) {
@@ -166,6 +197,7 @@ Verdict DesignVerdict(const Design& d) {
        << deck.sag_limit_m << " m (" << deck.sag_case << ")";
     fails.push_back(os.str());
   }
+  AbutmentVerdicts(d.statics, v, fails);
   if (!d.stability.stable) fails.push_back("unstable");
   if (d.statics.done && !d.statics.all_converged) fails.push_back("a static case found no equilibrium");
   if (d.statics.done && d.statics.deflection_max_m > d.statics.deflection_limit_m) {

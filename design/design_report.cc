@@ -23,37 +23,93 @@ using nlohmann::json;
 // Units of every numeric field, mirroring the document's layout.
 json Units() {
   return json{
-      {"config", "SI units unless the key name says otherwise (beta_deg in degrees); "
-                 "see configs/README.md"},
-      {"topology", {{"n", "1"}, {"p", "1"}, {"beta_deg", "deg"}, {"planes", "1"},
-                    {"nodes", "1"}, {"bars", "1"}, {"strings", "1"}, {"class", "1"},
-                    {"fixed_nodes", "1 (1-based node numbers)"}}},
-      {"deck", {{"section_length", "m"}, {"section_mass", "kg"}, {"thickness", "m"},
-                {"node_load", "N"}, {"total_load", "N"}, {"beams_mass", "kg"},
-                {"check", {{"utilisation", "1"}, {"stress_ed", "Pa"}, {"stress_rd", "Pa"}, {"moment_ed", "N m"},
-                           {"lateral_moment_ed", "N m"}, {"sag", "m"}, {"sag_limit", "m"}}}}},
+      {"config",
+       "SI units unless the key name says otherwise (beta_deg in degrees); "
+       "see configs/README.md"},
+      {"topology",
+       {{"n", "1"},
+        {"p", "1"},
+        {"beta_deg", "deg"},
+        {"planes", "1"},
+        {"nodes", "1"},
+        {"bars", "1"},
+        {"strings", "1"},
+        {"class", "1"},
+        {"fixed_nodes", "1 (1-based node numbers)"}}},
+      {"deck",
+       {{"section_length", "m"},
+        {"section_mass", "kg"},
+        {"thickness", "m"},
+        {"node_load", "N"},
+        {"total_load", "N"},
+        {"beams_mass", "kg"},
+        {"check",
+         {{"utilisation", "1"},
+          {"stress_ed", "Pa"},
+          {"stress_rd", "Pa"},
+          {"moment_ed", "N m"},
+          {"lateral_moment_ed", "N m"},
+          {"sag", "m"},
+          {"sag_limit", "m"}}}}},
       {"nodes", "m"},
-      {"mass_attribution", {{"by_constraint_kg", "kg"}, {"premium_by_constraint_kg", "kg"}, {"structure_kg", "kg"},
-                            {"stationarity_residual", "1"}, {"active_rows", "1"}}},
-      {"members", {{"binding", {{"multiplier", "as its unit says"}}}, {"nodes", "1 (1-based node numbers)"}, {"length", "m"}, {"force", "N"}, {"force_min", "N"},
-                   {"reference_force", "N"}, {"utilisation", "1 (demand / resistance)"},
-                   {"demand", "N (for mode slack: the strain measure, 1)"},
-                   {"resistance", "N (for mode slack: the working strain, 1)"},
-                   {"force_density", "N/m"}, {"area", "m^2"}, {"radius", "m"},
-                   {"mass", "kg"}, {"rest_length", "m"}, {"stiffness", "N/m"},
-                   {"stress", "Pa"}}},
-      {"materials", {{"density", "kg/m^3"}, {"yield_stress", "Pa"}, {"youngs_modulus", "Pa"}, {"partial_factor", "1"},
-                     {"breaking_stress", "Pa"}, {"end_efficiency", "1"}, {"design_stress", "Pa"}}},
-      {"mass", {{"bars", "kg"}, {"strings", "kg"}, {"deck_strings", "kg"},
-                {"deck_beams", "kg"}, {"structure", "kg"}, {"total", "kg"}}},
+      {"mass_attribution",
+       {{"by_constraint_kg", "kg"},
+        {"premium_by_constraint_kg", "kg"},
+        {"structure_kg", "kg"},
+        {"stationarity_residual", "1"},
+        {"active_rows", "1"}}},
+      {"members",
+       {{"binding", {{"multiplier", "as its unit says"}}},
+        {"nodes", "1 (1-based node numbers)"},
+        {"length", "m"},
+        {"force", "N"},
+        {"force_min", "N"},
+        {"reference_force", "N"},
+        {"utilisation", "1 (demand / resistance)"},
+        {"demand", "N (for mode slack: the strain measure, 1)"},
+        {"resistance", "N (for mode slack: the working strain, 1)"},
+        {"force_density", "N/m"},
+        {"area", "m^2"},
+        {"radius", "m"},
+        {"mass", "kg"},
+        {"rest_length", "m"},
+        {"stiffness", "N/m"},
+        {"stress", "Pa"}}},
+      {"materials",
+       {{"density", "kg/m^3"},
+        {"yield_stress", "Pa"},
+        {"youngs_modulus", "Pa"},
+        {"partial_factor", "1"},
+        {"breaking_stress", "Pa"},
+        {"end_efficiency", "1"},
+        {"design_stress", "Pa"}}},
+      {"mass",
+       {{"bars", "kg"},
+        {"strings", "kg"},
+        {"deck_strings", "kg"},
+        {"deck_beams", "kg"},
+        {"structure", "kg"},
+        {"total", "kg"}}},
       {"solver", {{"iterations", "1"}}},
       {"equilibrium_residual_N", "N"},
       {"self_stress_states", "1"},
-      {"stability", {{"negative_pivots", "1"}, {"zero_pivots", "1"}, {"free_dofs", "1"}, {"reduced_dofs", "1"},
-                     {"min_pivot", "N/m"}, {"critical_load_factor", "1"}}},
+      {"stability",
+       {{"negative_pivots", "1"},
+        {"zero_pivots", "1"},
+        {"free_dofs", "1"},
+        {"reduced_dofs", "1"},
+        {"min_pivot", "N/m"},
+        {"critical_load_factor", "1"}}},
       {"reactions", {{"node", "1 (1-based node number)"}, {"force", "N"}}},
-      {"reaction_envelope", {{"supports", {{"node", "1 (1-based node number)"}, {"x", "N"}, {"y", "N"}, {"z", "N"}}}}},
-      {"deflection_max", {{"deflection", "m"}, {"limit", "m"}, {"node", "1 (1-based node number)"}}},
+      {"reaction_envelope",
+       {{"supports", {{"node", "1 (1-based node number)"}, {"x", "N"}, {"y", "N"}, {"z", "N"}}},
+        {"abutments",
+         {{"x", "m"},
+          {"nodes", "1 (1-based node numbers)"},
+          {"horizontal", {{"max", "N"}, {"capacity", "N"}, {"utilisation", "1"}}},
+          {"vertical", {{"max", "N"}, {"capacity", "N"}, {"utilisation", "1"}}}}}}},
+      {"deflection_max",
+       {{"deflection", "m"}, {"limit", "m"}, {"node", "1 (1-based node number)"}}},
       {"utilisation_max", "1"},
       {"self_weight_iterations", "1"},
       {"comfort", ComfortUnits()}};
@@ -295,7 +351,46 @@ json ReactionEnvelopeJson(const Design& d) {
     }
     list.push_back(node);
   }
-  return {{"over", "the ultimate cases of the static check"}, {"includes", kReactionsInclude}, {"supports", list}};
+  json abutments = json::array();
+  for (const AbutmentFinding& a : d.statics.abutments) {
+    json nodes = json::array();
+    for (const int v : a.nodes) nodes.push_back(v + 1);
+    const auto side = [](double demand, const std::string& at, double capacity,
+                         double utilisation) {
+      return json{{"max", demand},
+                  {"case", at},
+                  {"capacity", capacity > 0 ? json(capacity) : json(nullptr)},
+                  {"utilisation", capacity > 0 ? json(utilisation) : json(nullptr)}};
+    };
+    abutments.push_back({{"x", a.x_m},
+                         {"nodes", nodes},
+                         {"horizontal", side(a.horizontal_n, a.horizontal_case,
+                                             a.horizontal_capacity_n, a.HorizontalUtilisation())},
+                         {"vertical", side(a.vertical_n, a.vertical_case, a.vertical_capacity_n,
+                                           a.VerticalUtilisation())}});
+  }
+  return {{"over", "the ultimate cases of the static check"},
+          {"includes", kReactionsInclude},
+          {"supports", list},
+          {"abutments", abutments}};
+}
+
+// One abutment's largest reactions in kN, each with its capacity, utilisation and case:
+// "abutment at x = 0 m: H 812.3 kN of 1000 kN (0.812, uls_payload_full); V 95.2 kN (unlimited,
+// ...)".
+std::string AbutmentLine(const AbutmentFinding& a) {
+  const auto side = [](const char* name, double demand, double capacity, double utilisation,
+                       const std::string& at) {
+    return Format("%s %.4g kN ", name, demand / 1000) +
+           (capacity > 0 ? Format("of %.4g kN (%.3f, ", capacity / 1000, utilisation)
+                         : std::string("(unlimited, ")) +
+           at + ")";
+  };
+  return Format("  abutment at x = %g m: ", a.x_m) +
+         side("H", a.horizontal_n, a.horizontal_capacity_n, a.HorizontalUtilisation(),
+              a.horizontal_case) +
+         "; " +
+         side("V", a.vertical_n, a.vertical_capacity_n, a.VerticalUtilisation(), a.vertical_case);
 }
 
 json ReactionsJson(const Design& d) {
@@ -419,6 +514,15 @@ std::string WhatMovesIt(const Design& d, const Verdict& v) {
   if (d.statics.done && d.statics.deflection_limit_m > 0) {
     found.push_back({d.statics.deflection_max_m / d.statics.deflection_limit_m - 1,
                      "the deflection", "loads.deflection_limit, bridge.beta_deg, bridge.n"});
+  }
+  for (const AbutmentFinding& a : d.statics.abutments) {
+    found.push_back({a.HorizontalUtilisation() - 1, "an abutment's horizontal reaction",
+                     "supports.horizontal_capacity_n, bridge.beta_deg (a deeper substructure "
+                     "thrusts less), bridge.n, design.deck_string_min_radius (the deck chain's "
+                     "prestress floor thrusts on the abutments)"});
+    found.push_back(
+        {a.VerticalUtilisation() - 1, "an abutment's vertical reaction",
+         "supports.vertical_capacity_n, bridge.payload, loads.superimposed_dead_n_per_m"});
   }
   for (const ComfortMode& m : d.comfort.modes) {
     if (m.pass) continue;
@@ -639,6 +743,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
       }
       line(Format("  node %d:%s", supports[k] + 1, text.c_str()));
     }
+    for (const AbutmentFinding& a : d.statics.abutments) line(AbutmentLine(a));
   }
   line(Format("load cases: %zu (%s)%s", d.cases.size(), d.config.design.self_weight ? "self-weight in G" : "no self-weight",
               d.self_weight_iterations > 1 ? Format(", self-weight fixed point in %d sizings", d.self_weight_iterations).c_str()

@@ -151,6 +151,11 @@ Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members, const s
   return l;
 }
 
+Eigen::MatrixXd LinearResponse::AdjointOf(Eigen::MatrixXd functionals) const {
+  lu_.SolveTransposed(functionals);
+  return functionals;
+}
+
 Eigen::MatrixXd LinearResponse::StringStretches(const Eigen::MatrixXd& u) const {
   Eigen::MatrixXd out(ns_, u.cols());
   out.noalias() = stretch_ * u;

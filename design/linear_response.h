@@ -54,7 +54,12 @@ class LinearResponse {
   // The vertical (y) displacement [m] of node `node` in each solution (0 for a pinned node).
   Eigen::RowVectorXd Vertical(const Eigen::MatrixXd& solutions, int node) const;
   // The row of the solutions that holds node `node`'s vertical displacement; -1 for a pinned node.
-  int VerticalRow(int node) const { return dof_[node] < 0 ? -1 : dof_[node] + 1; }
+  int VerticalRow(int node) const { return DisplacementRow(node, 1); }
+  // The row that holds its displacement along `axis` (0: x, 1: y, 2: z on a 3D structure); -1
+  // for a pinned node or an axis the structure does not have.
+  int DisplacementRow(int node, int axis) const {
+    return dof_[node] < 0 || axis >= dim_ ? -1 : dof_[node] + axis;
+  }
 
   // How a parameter moves the state: dk_s/dp per string and dx_j/dp per member.
   struct Direction {
@@ -74,6 +79,8 @@ class LinearResponse {
   // for a string dk_s/dp times its stretch: one solve per functional instead of one per
   // direction and load column.
   Eigen::MatrixXd Adjoint(const std::vector<int>& members, const std::vector<int>& nodes) const;
+  // The adjoint solutions KKT^-T l of any functionals, each a column over the solutions' rows.
+  Eigen::MatrixXd AdjointOf(Eigen::MatrixXd functionals) const;
   // e^T (u_j - u_i) of every string [m] in each solution: n_s x columns.
   Eigen::MatrixXd StringStretches(const Eigen::MatrixXd& solutions) const;
   // d(force changes)/dp: (n_b + n_s) x columns, from the solutions and their derivative.

@@ -7,6 +7,8 @@
 #include <optional>
 #include <utility>
 
+#include "design/abutments.h"
+
 namespace tbridge {
 
 namespace {
@@ -49,8 +51,7 @@ void CountMembers(const Design& d, const std::function<bool(const MemberSizing&)
 
 // One abutment's largest horizontal reaction over the ultimate cases, with that case's load.
 struct AbutmentThrust {
-  std::vector<int> nodes;  // 0-based support nodes at this end of the span
-  double x = 0;            // [m], where the end is
+  Abutment abutment;
   double h = -1;           // [N], the in-plan vector sum of its nodes' horizontal reactions
   double w = 0;            // [N], the case's total vertical load
   double thrust = 0;       // [N], that load's own thrust W L / (8 d)
@@ -58,35 +59,22 @@ struct AbutmentThrust {
   double Ratio() const { return h / thrust; }
 };
 
-// An abutment named by its end and nodes: "the abutment at x = 0 m (node 15)".
-std::string AbutmentName(const AbutmentThrust& a) {
-  std::string nodes;
-  for (int v : a.nodes) {
-    nodes += nodes.empty() ? "" : " and ";
-    nodes += std::to_string(v + 1);
-  }
-  return "the abutment at x = " + Format("%g m", a.x) +
-         (a.nodes.size() == 1 ? " (node " : " (nodes ") + nodes + ")";
-}
-
 // Warns where an abutment's horizontal reaction over the ultimate cases exceeds
-// kMaxAbutmentThrustRatio times the thrust the load of that case gives by itself.
+// kMaxAbutmentThrustRatio times the thrust the load of that case gives by itself; not where the
+// config gives the abutments a capacity, which the static check holds them to.
 void CheckAbutmentThrust(const Design& d, std::vector<std::string>& out) {
+  if (d.config.supports.horizontal_capacity_n) return;
   const Structure& s = d.topology.structure;
   const double span = d.config.bridge.span;
-  // The two ends of the span: one support each on a planar bridge, two (one per plane) on the
-  // 3D bridge.
+  const std::array<Abutment, 2> abutments = AbutmentsOf(s, span);
   AbutmentThrust ends[2];
-  ends[1].x = span;
   double deck = 0;
   int supports = 0;
-  for (int v = 0; v < s.num_nodes(); ++v) {
-    if (!s.fixed[v]) continue;
-    ends[s.nodes(0, v) < span / 2 ? 0 : 1].nodes.push_back(v);
-    deck += s.nodes(1, v);
-    ++supports;
+  for (int e = 0; e < 2; ++e) {
+    ends[e].abutment = abutments[static_cast<size_t>(e)];
+    for (const int v : ends[e].abutment.nodes) deck += s.nodes(1, v), ++supports;
   }
-  if (ends[0].nodes.empty() || ends[1].nodes.empty()) return;
+  if (ends[0].abutment.nodes.empty() || ends[1].abutment.nodes.empty()) return;
   // The substructure's depth at mid-span: from the deck level (the supports' height: they are
   // the deck's ends) down to the lowest node within a quarter span of mid-span. There the p = 1
   // bridge has its deepest node, L/2 tan(beta/2) under mid-span; a module of p >= 2 bars has
@@ -104,15 +92,12 @@ void CheckAbutmentThrust(const Design& d, std::vector<std::string>& out) {
         c.reactions.cols() != s.num_nodes()) {
       continue;
     }
-    double w = 0;  // the reactions balance every applied load: their vertical sum is the load
-    for (const AbutmentThrust& end : ends) {
-      for (int v : end.nodes) w += c.reactions(1, v);
-    }
+    // The reactions balance every applied load: their vertical sum is the load.
+    const double w =
+        ReactionOf(ends[0].abutment, c.reactions).y + ReactionOf(ends[1].abutment, c.reactions).y;
     if (!(w > 0)) continue;
     for (AbutmentThrust& end : ends) {
-      double hx = 0, hz = 0;
-      for (int v : end.nodes) hx += c.reactions(0, v), hz += c.reactions(2, v);
-      const double h = std::hypot(hx, hz);
+      const double h = ReactionOf(end.abutment, c.reactions).Horizontal();
       if (h <= end.h) continue;
       end.h = h;
       end.w = w;
@@ -126,15 +111,16 @@ void CheckAbutmentThrust(const Design& d, std::vector<std::string>& out) {
   const AbutmentThrust& other = ends[1 - worst];
   if (a.label.empty() || !(a.Ratio() > kMaxAbutmentThrustRatio)) return;
   std::string text =
-      AbutmentName(a) + " takes a horizontal reaction H = " + Format("%.4g kN", a.h / 1000) + " (" +
-      a.label + "), " + Format("%.3g times", a.Ratio()) +
+      AbutmentName(a.abutment) +
+      " takes a horizontal reaction H = " + Format("%.4g kN", a.h / 1000) + " (" + a.label + "), " +
+      Format("%.3g times", a.Ratio()) +
       " the load path's own thrust W L / (8 d) = " + Format("%.4g kN", a.thrust / 1000) +
       " (W = " + Format("%.4g kN", a.w / 1000) +
       ", that case's vertical load; L = " + Format("%g m; d = %.3g m", span, depth) +
       ", the substructure's depth at mid-span), above " +
       Format("%g times", kMaxAbutmentThrustRatio);
   if (!other.label.empty() && other.Ratio() > kMaxAbutmentThrustRatio) {
-    text += "; " + AbutmentName(other) + " takes " +
+    text += "; " + AbutmentName(other.abutment) + " takes " +
             Format("%.4g kN, %.3g times", other.h / 1000, other.Ratio());
   }
   out.push_back(

@@ -16,7 +16,8 @@ enum KindIndex {
   kTautKind,
   kMinimumKind,
   kDynamicsKind,
-  kComfortKind
+  kComfortKind,
+  kSupportsKind
 };
 
 // The row's kind; a strength row's share that the dynamic runs add (`dynamic` of its member)
@@ -34,6 +35,9 @@ int KindOf(const SizingRow& row) {
       return kDeflectionKind;
     case SizingRow::kComfort:
       return kComfortKind;
+    case SizingRow::kSupportHorizontal:
+    case SizingRow::kSupportVertical:
+      return kSupportsKind;
     case SizingRow::kTaut:
     case SizingRow::kReferenceTaut:
       break;
@@ -61,6 +65,7 @@ const char* UnitOf(int kind) {
          : kind == kDeflectionKind ? "kg per unit deflection / limit"
          : kind == kMinimumKind    ? "kg/m^2"
          : kind == kComfortKind    ? "kg per unit of omega^2 / its bound"
+         : kind == kSupportsKind   ? "kg per unit of reaction / capacity"
                                    : "kg per unit utilisation";
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/two_lanes.h"
+#include "design/abutments.h"
 #include "design/case_envelope.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
@@ -103,6 +104,9 @@ const char* SizingRowKindName(SizingRow::Kind kind) {
       return "deflection";
     case SizingRow::kReferenceTaut:
       return "reference_taut";
+    case SizingRow::kSupportHorizontal:
+    case SizingRow::kSupportVertical:
+      return "supports";
     case SizingRow::kComfort:
       break;
   }
@@ -124,6 +128,39 @@ struct SizingProblem::Impl {
   std::vector<std::vector<int>> members_of;
   std::vector<bool> must_taut;
   std::vector<int> deck_nodes;
+  // The abutments and their capacities [N] (0: none given, no rows of that kind). An abutment's
+  // reaction in combination c is, to first order about the reference state (as the linear
+  // response is),
+  //   R_c = sum_j w_j F_cj - sum_j t_j (I - e_j e_j^T) / l_j u_c(far end of j) + reaction_load[c]
+  // over the members j on its nodes: w_j the reaction to a unit force along the drawn direction
+  // (SupportReactions), t_j the member's reference tension (a bar's: minus its compression) turned
+  // by its far end's displacement, and the reaction to the loads on its nodes. The turning term
+  // is what the prestress adds as the deck deflects: on the default at n = 3, 6.7 kN of a 24 kN
+  // vertical reaction under a 440 kN thrust.
+  std::array<Abutment, 2> abutments;
+  std::vector<int> abutment_of_node;  // per node: its abutment, -1 at a free node
+  double horizontal_capacity = 0, vertical_capacity = 0;
+  struct ReactionTerm {
+    int member;
+    Eigen::Vector3d w;
+    int far = -1;     // the member's other end where it is free, else -1 (it does not turn)
+    double sign = 1;  // its tension per unit force: +1 a string, -1 a bar
+    Eigen::Matrix3d turn = Eigen::Matrix3d::Zero();  // (I - e e^T) / l [1/m]
+  };
+  // The reaction rows' adjoint columns come after the members' and nodes': per abutment a, the
+  // turning term's components 3 a + x, y, z.
+  int TurnColumn(int a, int axis) const {
+    return static_cast<int>(adjoint_members.size() + adjoint_nodes.size()) + 3 * a + axis;
+  }
+  std::array<std::vector<ReactionTerm>, 2> reaction_terms;
+  std::vector<std::array<Eigen::Vector3d, 2>> reaction_load;  // per combination [N]
+  // The vertical reaction is statically determinate (moment equilibrium about the other
+  // abutment): no stiffness moves it, only the loads, and of those the sizing moves the
+  // members' own weight. Per abutment, per member: the weight it puts on the abutment per unit
+  // area, rho g l_j (1 - |x_a - x_mid,j| / L) [N/m^2] (half of it at each end node); per
+  // combination, its self-weight factor. G holds the weight at area0, so the row adds the change.
+  std::array<std::vector<double>, 2> weight_share;
+  std::vector<double> self_weight_factor;
   Eigen::MatrixXd N;      // members x states, orthonormal symmetric self-stresses
   Eigen::MatrixXd to_basis;  // the equilibrium solver's states x states: N's coefficients there
   Eigen::VectorXd x_g;    // the reference loads' particular forces [N]
@@ -153,6 +190,7 @@ struct SizingProblem::Impl {
   // nodes whose vertical displacement some row reads (LinearResponse::Adjoint's columns, the
   // members first), and per row its column (-1: the reference-taut rows, which read none).
   std::vector<int> adjoint_members, adjoint_nodes, row_functional;
+  std::vector<int> member_functional;  // per member: its column among the adjoints, -1: none
   // Under the problem's symmetries (SizingProblem::representatives): per row of the whole
   // problem, the first row of its orbit (itself in a posed problem), and per member the first
   // member of its.
@@ -174,6 +212,10 @@ struct SizingProblem::Impl {
     std::vector<Eigen::VectorXd> forces;  // per combination [N]
     // Per comfort entry that follows its mode: its row about this point, found on first use.
     std::vector<std::optional<ComfortRow>> followed;
+    // Per combination read (with support rows), per abutment: the turning term of its reaction [N].
+    std::vector<std::array<Eigen::Vector3d, 2>> turned;
+    // Per abutment: the change of the members' weight on it from G's [N] (weight_share).
+    std::array<double, 2> weight_change{};
   };
   mutable State st;
 
@@ -236,11 +278,105 @@ struct SizingProblem::Impl {
     for (size_t c = 0; c < combos.size(); ++c) {
       if (combo_read[c]) st.forces[c] = Forces(static_cast<int>(c), st.xr, st.dx);
     }
+    for (int a = 0; a < 2; ++a) {
+      const std::vector<double>& share = weight_share[static_cast<size_t>(a)];
+      double& change = st.weight_change[static_cast<size_t>(a)];
+      change = 0;
+      for (size_t j = 0; j < share.size(); ++j) change += share[j] * (st.a[j] - area0[j]);
+    }
+    st.turned.resize(reaction_load.empty() ? 0 : combos.size());
+    for (size_t c = 0; c < st.turned.size(); ++c) {
+      if (!combo_read[c]) continue;
+      for (int a = 0; a < 2; ++a) {
+        st.turned[c][static_cast<size_t>(a)] =
+            Turned(a, static_cast<int>(c), [this](int m) { return st.xr[m]; });
+      }
+    }
     st.margin.resize(st.g.size());
     for (size_t r = 0; r < rows.size(); ++r) {
       st.margin[r] = Value(rows[r]);
       st.g[r] = Posed(static_cast<int>(r));
     }
+  }
+
+  static bool IsSupport(const SizingRow& row) {
+    return row.kind == SizingRow::kSupportHorizontal || row.kind == SizingRow::kSupportVertical;
+  }
+  // The displacement of term t's far end in combination c at the evaluated state [m].
+  Eigen::Vector3d FarDisplacement(const ReactionTerm& t, int c) const {
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    for (int axis = 0; axis < 3; ++axis) {
+      const int row = st.lin->DisplacementRow(t.far, axis);
+      if (row >= 0) u[axis] = Combined(st.u, row, c);
+    }
+    return u;
+  }
+  // The turning term of abutment a's reaction in combination c with reference forces
+  // reference(member) [N] (or their change along a direction).
+  template <class Reference>
+  Eigen::Vector3d Turned(int a, int c, Reference reference) const {
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    for (const ReactionTerm& t : reaction_terms[static_cast<size_t>(a)]) {
+      if (t.far >= 0) r -= t.sign * reference(t.member) * (t.turn * FarDisplacement(t, c));
+    }
+    return r;
+  }
+  // The functionals whose values are the turning terms (each column TurnColumn(a, axis) less the
+  // first): over the solutions' rows, -t_j (I - e e^T) / l at the far ends' displacements.
+  Eigen::MatrixXd TurnFunctionals() const {
+    Eigen::MatrixXd l = Eigen::MatrixXd::Zero(st.u.rows(), 6);
+    for (int a = 0; a < 2; ++a) {
+      for (const ReactionTerm& t : reaction_terms[static_cast<size_t>(a)]) {
+        if (t.far < 0) continue;
+        for (int axis = 0; axis < 3; ++axis) {
+          const int row = st.lin->DisplacementRow(t.far, axis);
+          if (row < 0) continue;
+          for (int k = 0; k < 3; ++k)
+            l(row, 3 * a + k) -= t.sign * st.xr[t.member] * t.turn(k, axis);
+        }
+      }
+    }
+    return l;
+  }
+  // Abutment a's reaction in combination c at the evaluated state [N].
+  Eigen::Vector3d Reaction(int c, int a) const {
+    Eigen::Vector3d r = reaction_load[static_cast<size_t>(c)][static_cast<size_t>(a)] +
+                        st.turned[static_cast<size_t>(c)][static_cast<size_t>(a)];
+    for (const ReactionTerm& t : reaction_terms[static_cast<size_t>(a)])
+      r += t.w * st.forces[c][t.member];
+    if (!self_weight_factor.empty()) {
+      r.y() +=
+          self_weight_factor[static_cast<size_t>(c)] * st.weight_change[static_cast<size_t>(a)];
+    }
+    return r;
+  }
+  // d R_y / d x_v of abutment a in combination c through the members' weight [N per unit x_v].
+  double WeightChange(int a, int c, int v) const {
+    const std::vector<double>& share = weight_share[static_cast<size_t>(a)];
+    if (share.empty()) return 0.0;
+    double d = 0;
+    for (const int j : members_of[static_cast<size_t>(v)]) d += share[static_cast<size_t>(j)];
+    return self_weight_factor[static_cast<size_t>(c)] * d * area_scale[static_cast<size_t>(v)];
+  }
+  // A support row's derivative along a direction that moves each member's force in the row's
+  // combination by force_change(member) [N] and its abutment's turning term by turn_change(axis):
+  // the reaction's change dR = sum_j w_j dF_j + d turned, then the row's,
+  // d(1 - kappa_h |(R_x, R_z)| / cap) or d(1 - kappa_v |R_y| / cap).
+  template <class ForceChange, class TurnChange>
+  double SupportDerivative(const SizingRow& row, ForceChange force_change,
+                           TurnChange turn_change) const {
+    Eigen::Vector3d dr(turn_change(0), turn_change(1), turn_change(2));
+    for (const ReactionTerm& t : reaction_terms[static_cast<size_t>(row.member)])
+      dr += t.w * force_change(t.member);
+    const Eigen::Vector3d r = Reaction(row.combination, row.member);
+    if (row.kind == SizingRow::kSupportVertical) {
+      return -corrections.vertical_reaction_factor * (r.y() < 0 ? -dr.y() : dr.y()) /
+             vertical_capacity;
+    }
+    const double h = std::hypot(r.x(), r.z());
+    if (h == 0) return 0.0;  // |H| has no gradient at 0, where its row is far from binding
+    return -corrections.horizontal_reaction_factor * (r.x() * dr.x() + r.z() * dr.z()) /
+           (h * horizontal_capacity);
   }
 
   static bool IsStrength(const SizingRow& row) {
@@ -295,6 +431,14 @@ struct SizingProblem::Impl {
         return 1.0 - corrections.deflection_factor * Vertical(c, j, st.u) / deflection_limit_m;
       case SizingRow::kReferenceTaut:
         return st.xr[j] / force_scale;
+      case SizingRow::kSupportHorizontal: {
+        const Eigen::Vector3d r = Reaction(c, j);
+        return 1.0 - corrections.horizontal_reaction_factor * std::hypot(r.x(), r.z()) /
+                         horizontal_capacity;
+      }
+      case SizingRow::kSupportVertical:
+        return 1.0 - corrections.vertical_reaction_factor * std::abs(Reaction(c, j).y()) /
+                         vertical_capacity;
       case SizingRow::kComfort:
         break;
     }
@@ -390,8 +534,10 @@ struct SizingProblem::Impl {
         return -corrections.deflection_factor * d_vertical / deflection_limit_m;
       case SizingRow::kReferenceTaut:
         return d_reference / force_scale;
+      case SizingRow::kSupportHorizontal:
+      case SizingRow::kSupportVertical:
       case SizingRow::kComfort:
-        break;  // read no force or displacement: ComfortGradients forms their rows
+        break;  // read several forces (SupportDerivative), or none (ComfortGradients)
     }
     return 0.0;
   }
@@ -399,10 +545,21 @@ struct SizingProblem::Impl {
   // Indexes what each row reads (adjoint_members, adjoint_nodes, row_functional): once, as
   // the rows are fixed.
   void IndexFunctionals() {
-    std::vector<int> member_col(nm, -1), node_col(s.num_nodes(), -1);
+    member_functional.assign(static_cast<size_t>(nm), -1);
+    std::vector<int>& member_col = member_functional;
+    std::vector<int> node_col(s.num_nodes(), -1);
     std::vector<std::pair<bool, int>> read(rows.size(), {false, -1});
     for (size_t r = 0; r < rows.size(); ++r) {
       const SizingRow& row = rows[r];
+      if (IsSupport(row)) {  // reads the forces of its abutment's members
+        for (const ReactionTerm& t : reaction_terms[static_cast<size_t>(row.member)]) {
+          if (member_col[t.member] < 0) {
+            member_col[t.member] = static_cast<int>(adjoint_members.size());
+            adjoint_members.push_back(t.member);
+          }
+        }
+        continue;
+      }
       if (row.kind == SizingRow::kReferenceTaut || row.kind == SizingRow::kComfort) continue;
       const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
       std::vector<int>& col = deflection ? node_col : member_col;
@@ -417,6 +574,67 @@ struct SizingProblem::Impl {
     const int n_members = static_cast<int>(adjoint_members.size());
     for (size_t r = 0; r < rows.size(); ++r) {
       if (read[r].second >= 0) row_functional[r] = read[r].second + (read[r].first ? n_members : 0);
+    }
+  }
+
+  // The abutments, their members' coefficients and each combination's reaction to the loads on
+  // their nodes (reaction_terms, reaction_load), where a capacity is given.
+  void IndexReactions(const Design& d) {
+    abutments = AbutmentsOf(s, d.config.bridge.span);
+    abutment_of_node.assign(static_cast<size_t>(s.num_nodes()), -1);
+    for (int a = 0; a < 2; ++a) {
+      for (const int v : abutments[static_cast<size_t>(a)].nodes)
+        abutment_of_node[static_cast<size_t>(v)] = a;
+    }
+    const auto vector = [](const AbutmentReaction& r) { return Eigen::Vector3d(r.x, r.y, r.z); };
+    const Eigen::Matrix3Xd no_loads = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(nm);
+    for (int j = 0; j < nm; ++j) {
+      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+      const int ends[] = {abutment_of_node[static_cast<size_t>(m.i)],
+                          abutment_of_node[static_cast<size_t>(m.j)]};
+      if (ends[0] < 0 && ends[1] < 0) continue;
+      unit[j] = 1;
+      const Eigen::Matrix3Xd r = SupportReactions(s, unit, no_loads);
+      unit[j] = 0;
+      for (int a = 0; a < 2; ++a) {
+        if (ends[0] != a && ends[1] != a) continue;
+        const Eigen::Vector3d w = vector(ReactionOf(abutments[static_cast<size_t>(a)], r));
+        if (w.norm() == 0) continue;  // both ends on this abutment
+        ReactionTerm t{j, w};
+        const int far = ends[0] == a ? m.j : m.i;
+        t.far = s.fixed[static_cast<size_t>(far)] ? -1 : far;
+        t.sign = j < nb ? -1.0 : 1.0;
+        const Eigen::Vector3d e = (s.nodes.col(m.j) - s.nodes.col(m.i)).normalized();
+        t.turn = (Eigen::Matrix3d::Identity() - e * e.transpose()) / s.Length(m);
+        reaction_terms[static_cast<size_t>(a)].push_back(t);
+      }
+    }
+    if (d.config.design.self_weight) {
+      const double span = d.config.bridge.span;
+      for (int a = 0; a < 2; ++a) {
+        std::vector<double>& share = weight_share[static_cast<size_t>(a)];
+        for (int j = 0; j < nm; ++j) {
+          const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+          const double x_mid = 0.5 * (s.nodes(0, m.i) + s.nodes(0, m.j));
+          share.push_back(rho[static_cast<size_t>(j)] * d.config.design.gravity *
+                          length[static_cast<size_t>(j)] *
+                          (1 - std::abs(abutments[static_cast<size_t>(a)].x_m - x_mid) / span));
+        }
+      }
+      for (const SizingCombination& combo : combos) {
+        self_weight_factor.push_back(
+            d.cases[static_cast<size_t>(combo.case_index)].factor[kSelfWeight]);
+      }
+    }
+    reaction_load.resize(combos.size());
+    for (size_t c = 0; c < combos.size(); ++c) {
+      const Eigen::Matrix3Xd r =
+          SupportReactions(s, Eigen::VectorXd::Zero(nm),
+                           d.actions.Loads(d.cases[combos[c].case_index], combos[c].station));
+      for (int a = 0; a < 2; ++a)
+        reaction_load[c][static_cast<size_t>(a)] =
+            vector(ReactionOf(abutments[static_cast<size_t>(a)], r));
     }
   }
 
@@ -516,7 +734,11 @@ struct SizingProblem::Impl {
       if (row.kind == SizingRow::kComfort) return r;
       const Mirror& mirror = *symmetries[m];
       const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
-      const int member = deflection ? mirror.node[static_cast<size_t>(row.member)] : mirror.member[static_cast<size_t>(row.member)];
+      const int member = IsSupport(row)
+                             ? abutment_of_node[static_cast<size_t>(mirror.node[static_cast<size_t>(
+                                   abutments[static_cast<size_t>(row.member)].nodes.front())])]
+                         : deflection ? mirror.node[static_cast<size_t>(row.member)]
+                                      : mirror.member[static_cast<size_t>(row.member)];
       if (row.combination < 0) return reference_taut[static_cast<size_t>(member)];
       const int c = combo_image[m][static_cast<size_t>(row.combination)];
       if (c < 0) return -1;
@@ -567,7 +789,12 @@ struct SizingProblem::Impl {
   // the adjoints for every area, as a self-stress needs, took half the Jacobian's time at n = 6.
   void Jacobian() const {
     const int nv = num_variables(), nr = static_cast<int>(rows.size());
-    const Eigen::MatrixXd adjoint = st.lin->Adjoint(adjoint_members, adjoint_nodes);
+    Eigen::MatrixXd adjoint = st.lin->Adjoint(adjoint_members, adjoint_nodes);
+    if (!reaction_load.empty()) {  // the turning terms' columns (TurnColumn)
+      const Eigen::Index first = adjoint.cols();
+      adjoint.conservativeResize(Eigen::NoChange, first + 6);
+      adjoint.rightCols(6) = st.lin->AdjointOf(TurnFunctionals());
+    }
     const Eigen::MatrixXd stretch = st.lin->StringStretches(st.u);
     const Eigen::MatrixXd adjoint_stretch = st.lin->StringStretches(adjoint);  // strings x functionals
     st.jac.resize(nr, nv);
@@ -616,9 +843,34 @@ struct SizingProblem::Impl {
       for (int j : members_of[v]) {
         if (j >= nb) strings.emplace_back(j - nb, E * area_scale[v] / length[j]);
       }
+      // A member's force change in combination c: through the strings' stiffness on the load's
+      // stretches (the adjoint's), and a string's own on its stretch.
+      const auto force_change = [&](int m, int c) {
+        const int f = member_functional[static_cast<size_t>(m)];
+        double d = 0;
+        for (const auto& [q, dk] : strings) {
+          d -= dk * adjoint_stretch(q, f) * Combined(stretch, q, c);
+          if (q == m - nb) d += dk * Combined(stretch, q, c);
+        }
+        return d;
+      };
       for (int r = 0; r < nr; ++r) {
         const SizingRow& row = rows[r];
         const int j = row.member, c = row.combination, f = row_functional[r];
+        if (IsSupport(row)) {
+          // The turning term moves with the far ends' displacements only: d(l^T u) through the
+          // strings' stiffness, as a force change less the string's own.
+          const auto turn_change = [&](int axis) {
+            const int col = TurnColumn(j, axis);
+            double d = axis == 1 ? WeightChange(j, c, v) : 0.0;
+            for (const auto& [q, dk] : strings)
+              d -= dk * adjoint_stretch(q, col) * Combined(stretch, q, c);
+            return d;
+          };
+          st.jac(r, v) = SupportDerivative(
+              row, [&](int m) { return force_change(m, c); }, turn_change);
+          continue;
+        }
         double d_value = 0;
         for (const auto& [q, dk] : strings) {
           if (f >= 0) d_value -= dk * adjoint_stretch(q, f) * Combined(stretch, q, c);
@@ -672,9 +924,24 @@ struct SizingProblem::Impl {
         }
         return out;
       };
+      const auto force_change = [&](int m, int c) {
+        double d = dp.forces[m] + d_value(member_functional[static_cast<size_t>(m)], c);
+        if (m >= nb) d += dp.stiffness[m - nb] * Combined(stretch, m - nb, c);
+        return d;
+      };
       for (int r = 0; r < nr; ++r) {
         const SizingRow& row = rows[r];
         const int j = row.member, c = row.combination, f = row_functional[r];
+        if (IsSupport(row)) {
+          // The turning term moves with the displacements and with the members' own tension.
+          const Eigen::Vector3d turned = Turned(j, c, [&dp](int m) { return dp.forces[m]; });
+          const auto turn_change = [&](int axis) {
+            return d_value(TurnColumn(j, axis), c) + turned[axis];
+          };
+          st.jac(r, v) = SupportDerivative(
+              row, [&](int m) { return force_change(m, c); }, turn_change);
+          continue;
+        }
         double d_force = 0, d_vertical = 0;
         if (f >= n_members) {
           d_vertical = d_value(f, c);
@@ -780,6 +1047,10 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     }
   }
 
+  p.horizontal_capacity = config.supports.horizontal_capacity_n.value_or(0.0);
+  p.vertical_capacity = config.supports.vertical_capacity_n.value_or(0.0);
+  if (p.horizontal_capacity > 0 || p.vertical_capacity > 0) p.IndexReactions(d);
+
   // The rows.
   std::vector<int> first_row;  // per combination
   for (int c = 0; c < static_cast<int>(p.combos.size()); ++c) {
@@ -792,6 +1063,13 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
         } else {
           p.rows.push_back({SizingRow::kStrength, j, c});
         }
+      }
+      for (int a = 0; a < 2; ++a) {
+        if (p.horizontal_capacity > 0) p.rows.push_back({SizingRow::kSupportHorizontal, a, c});
+        // Without the members' weight no variable moves a vertical reaction (weight_share):
+        // the check holds it, as a row it would be a constant.
+        if (p.vertical_capacity > 0 && config.design.self_weight)
+          p.rows.push_back({SizingRow::kSupportVertical, a, c});
       }
     }
     // The strings that must stay taut (the prestressed ones) do so in every combination. The
@@ -1006,6 +1284,20 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
     for (int v : p.deck_nodes) largest = std::max(largest, std::abs(p.Vertical(static_cast<int>(c), v, p.st.u)));
   }
   return largest;
+}
+
+SizingProblem::Reactions SizingProblem::LargestReactions(const Eigen::VectorXd& x) const {
+  const Impl& p = *impl_;
+  p.Evaluate(x);
+  Reactions out;
+  if (!p.st.lin) return out;
+  for (const SizingRow& row : p.rows) {
+    if (!Impl::IsSupport(row)) continue;
+    const Eigen::Vector3d r = p.Reaction(row.combination, row.member);
+    out.horizontal = std::max(out.horizontal, std::hypot(r.x(), r.z()));
+    out.vertical = std::max(out.vertical, std::abs(r.y()));
+  }
+  return out;
 }
 
 double SizingProblem::mass_scale_kg() const { return impl_->mass_scale; }

@@ -12,13 +12,15 @@
 //          kappa_d |v_cn| <= span / deflection_limit at each deck node,
 //        T_s >= 0 in the reference state, A_j >= the member's minimum area,
 //        for each comfort row: omega_k^2(A, alpha) >= (or <=) its target (ComfortRow),
+//        for every ultimate combination c and abutment a, where supports.* gives a capacity:
+//          kappa_h |H_ca| <= H_cap, kappa_v |V_ca| <= V_cap (the reactions at the drawn
+//          directions: minus the member forces on the abutment's nodes and their loads),
 //   x_c = x_G + N alpha + dx_c(A, alpha),  dx_c the linear response to f_c - f_G.
 //
-// kappa (per member) and kappa_d correct the linear demand by what the nonlinear static check
-// and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut margin
-// they ask.
-// The members' weight in G is held at the design the problem was built from (the outer
-// iterations update it). Gradients are exact (adjoint sensitivities); the Hessian is the
+// kappa (per member), kappa_d and kappa_h, kappa_v correct the linear demand by what the nonlinear
+// static check and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut
+// margin they ask. The members' weight in G is held at the design the problem was built from (the
+// outer iterations update it). Gradients are exact (adjoint sensitivities); the Hessian is the
 // reciprocal diagonal of design/reciprocal_curvature.h, the SQP's own curvature (NLopt's SLSQP
 // approximates it instead).
 #pragma once
@@ -75,6 +77,10 @@ struct SizingCorrections {
   std::vector<double> demand_factor;  // kappa_j on each member's linear demand (1: none)
   std::vector<double> taut_margin_n;  // tau_s [N] per member (strings that must stay taut)
   double deflection_factor = 1.0;     // kappa_d on the linear deflections
+  // kappa_h, kappa_v on the linear abutment reactions: the static check's reactions at the
+  // deformed geometry over the linear ones at the drawn directions.
+  double horizontal_reaction_factor = 1.0;
+  double vertical_reaction_factor = 1.0;
   std::vector<ComfortRow> comfort;  // the comfort rows, about the design the problem is built from
 };
 
@@ -89,11 +95,13 @@ struct SizingRow {
     kDeflectionDown,
     kDeflectionUp,
     kReferenceTaut,
-    kComfort
+    kSupportHorizontal,
+    kSupportVertical,
+    kComfort  // the last: kComfort + 1 kinds
   };
   Kind kind = kStrength;
-  // [bars; strings] index, the deck node for a deflection row, the SizingCorrections::comfort
-  // entry for a comfort row
+  // [bars; strings] index, the deck node for a deflection row, the abutment (0: x = 0, 1: the
+  // far end) for a support row, the SizingCorrections::comfort entry for a comfort row
   int member = -1;
   int combination = -1;
 };
@@ -171,6 +179,13 @@ class SizingProblem final : public NlpProblem {
   // The largest vertical deck deflection over the serviceability combinations [m], as the
   // linear analysis gives it (without kappa_d).
   double LargestDeflection(const Eigen::VectorXd& x) const;
+  // The largest horizontal and vertical abutment reactions over the ultimate combinations [N],
+  // as the linear analysis gives them (without kappa_h, kappa_v); zero where no capacity is
+  // given (the problem has no support rows of that kind).
+  struct Reactions {
+    double horizontal = 0, vertical = 0;
+  };
+  Reactions LargestReactions(const Eigen::VectorXd& x) const;
   const std::vector<SizingRow>& rows() const;
   // The scales of the program: objective = mass / mass_scale_kg; a tension row = force /
   // force_scale_n; an area variable = area / area_scale_m2(its group), the group's area in the

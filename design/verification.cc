@@ -50,7 +50,11 @@ void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress, d
 
 CheckStatus StaticCheck::Status() const {
   if (!done) return CheckStatus::kNotRun;
-  const bool fails = !all_converged || deflection_max_m > deflection_limit_m || AnyOver(members);
+  bool over = AnyOver(members);
+  for (const AbutmentFinding& a : abutments) {
+    over = over || std::max(a.HorizontalUtilisation(), a.VerticalUtilisation()) > 1 + 1e-9;
+  }
+  const bool fails = !all_converged || deflection_max_m > deflection_limit_m || over;
   return fails ? CheckStatus::kFailed : CheckStatus::kPassed;
 }
 

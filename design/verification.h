@@ -50,6 +50,22 @@ struct CaseResponse {
   int slack_strings = 0;
 };
 
+// One abutment's largest reactions over the converged ultimate cases of the static check, and
+// the capacities it is held to (supports.*).
+struct AbutmentFinding {
+  std::vector<int> nodes;                   // 0-based support nodes
+  double x_m = 0;                           // where it is along the span [m]
+  double horizontal_n = 0, vertical_n = 0;  // the largest |H| (in-plan) and |V| [N]
+  std::string horizontal_case, vertical_case;
+  double horizontal_capacity_n = 0, vertical_capacity_n = 0;  // [N], 0: unlimited
+  double HorizontalUtilisation() const {
+    return horizontal_capacity_n > 0 ? horizontal_n / horizontal_capacity_n : 0.0;
+  }
+  double VerticalUtilisation() const {
+    return vertical_capacity_n > 0 ? vertical_n / vertical_capacity_n : 0.0;
+  }
+};
+
 struct StaticCheck {
   bool done = false;
   // Per member [bars; strings]: what the nonlinear ultimate and serviceability cases demand.
@@ -65,8 +81,10 @@ struct StaticCheck {
   int nonlinear_solves = 0;       // cases and stations solved nonlinearly (each in `cases`)
   int mirrored = 0;  // stations in `cases` taken as the mirror image of their image's solve
   bool all_converged = true;
+  std::vector<AbutmentFinding> abutments;  // x = 0 first
   // Not run when not done; failed when a case found no equilibrium, a deflection exceeds its
-  // limit or a member's finding exceeds 1 (1e-9 allows for a member sized exactly to it).
+  // limit, or a member's finding or an abutment's reaction exceeds 1 of its resistance or
+  // capacity (1e-9 allows for one sized exactly to it).
   CheckStatus Status() const;
 };
 
@@ -120,8 +138,8 @@ struct DynamicCheck {
 // The kinds of constraint, in the order the outputs list them.
 inline constexpr const char* kConstraintKinds[] = {"strength",   "buckling",     "yield",
                                                    "deflection", "taut_strings", "minimum_sizes",
-                                                   "dynamics",   "comfort"};
-inline constexpr int kNumConstraintKinds = 8;
+                                                   "dynamics",   "comfort",      "supports"};
+inline constexpr int kNumConstraintKinds = 9;
 
 struct MemberBinding {
   std::string kind;         // one of kConstraintKinds: the constraint that costs its group most

@@ -34,9 +34,9 @@ int RunKeysCommand(const std::vector<std::string>& args) {
     std::cout << Usage(spec);
     return 0;
   }
-  for (const SectionInfo* section : {&kBridgeSection, &kMaterialSection, &kDesignSection, &kLoadsSection,
-                                     &kComfortSection,
-                                     &kDynamicsSection, &kStructureSection}) {
+  for (const SectionInfo* section :
+       {&kBridgeSection, &kMaterialSection, &kDesignSection, &kLoadsSection, &kComfortSection,
+        &kSupportsSection, &kDynamicsSection, &kStructureSection}) {
     std::cout << ConfigSectionText(*section) << "\n";
   }
   std::cout << SweepSectionText() << "\n";

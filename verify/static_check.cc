@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/two_lanes.h"
+#include "design/abutments.h"
 #include "design/case_envelope.h"
 #include "design/mirror.h"
 #include "design/static_model.h"
@@ -107,7 +108,11 @@ std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector
                                               const StaticState& start, double margin) {
   const int stations = static_cast<int>(d.actions.station_nodes.size());
   std::vector<std::vector<char>> selected(families.size(), std::vector<char>(stations, 0));
-  if (margin >= 1 || !tangent.ok()) {
+  // The linear pass measures members and deflections, not reactions: with an abutment capacity
+  // to hold, every station is solved.
+  const SupportsConfig& supports = d.config.supports;
+  if (margin >= 1 || !tangent.ok() || supports.horizontal_capacity_n ||
+      supports.vertical_capacity_n) {
     for (std::vector<char>& f : selected) std::fill(f.begin(), f.end(), 1);
     return selected;
   }
@@ -122,6 +127,31 @@ std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector
     }
   });
   return selected;
+}
+
+// Each abutment's largest horizontal and vertical reactions over the converged ultimate cases,
+// against the config's capacities.
+std::vector<AbutmentFinding> AbutmentFindings(const Design& d,
+                                              const std::vector<CaseResponse>& cases) {
+  std::vector<AbutmentFinding> out;
+  const SupportsConfig& capacity = d.config.supports;
+  for (const Abutment& a : AbutmentsOf(d.topology.structure, d.config.bridge.span)) {
+    AbutmentFinding f;
+    f.nodes = a.nodes;
+    f.x_m = a.x_m;
+    f.horizontal_capacity_n = capacity.horizontal_capacity_n.value_or(0.0);
+    f.vertical_capacity_n = capacity.vertical_capacity_n.value_or(0.0);
+    for (const CaseResponse& c : cases) {
+      if (!c.converged || d.cases[static_cast<size_t>(c.case_index)].state != LimitState::kUltimate)
+        continue;
+      const AbutmentReaction r = ReactionOf(a, c.reactions);
+      if (r.Horizontal() > f.horizontal_n)
+        f.horizontal_n = r.Horizontal(), f.horizontal_case = c.label;
+      if (r.Vertical() > f.vertical_n) f.vertical_n = r.Vertical(), f.vertical_case = c.label;
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
 }
 
 }  // namespace
@@ -321,6 +351,7 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   for (double& f : out.force_min) {
     if (std::isinf(f)) f = 0;  // no case converged
   }
+  out.abutments = AbutmentFindings(d, out.cases);
   return out;
 }
 

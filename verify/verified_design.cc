@@ -265,7 +265,8 @@ std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g
 // 1e-6 of it); false for a deflection row, which reads a node.
 bool AtFloor(const SizingProblem& full, const Eigen::VectorXd& x, const SizingRow& row) {
   if (row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp ||
-      row.kind == SizingRow::kComfort) {
+      row.kind == SizingRow::kComfort || row.kind == SizingRow::kSupportHorizontal ||
+      row.kind == SizingRow::kSupportVertical) {
     return false;
   }
   Eigen::VectorXd lo, hi;
@@ -523,6 +524,32 @@ std::string Repair(const Config& config, const SizingProblem& problem, Design& d
 // off and adding at once swung the 40 m footbridge across its least passing design).
 double Step(double ratio, bool passes) { return ratio >= 1 || passes ? ratio : 1.0; }
 
+// The factors on the linear abutment reactions: the static check's largest over the linear
+// analysis's (each the largest over the abutments and the ultimate cases), as the deflection's.
+void CorrectReactions(SizingCorrections& corrections, const SizingProblem::Reactions& linear,
+                      const StaticCheck& statics, bool passes, std::ostringstream& os) {
+  double horizontal = 0, vertical = 0;
+  for (const AbutmentFinding& a : statics.abutments) {
+    horizontal = std::max(horizontal, a.horizontal_n);
+    vertical = std::max(vertical, a.vertical_n);
+  }
+  const struct {
+    const char* name;
+    double checked, linear;
+    double& factor;
+  } sides[] = {
+      {"horizontal", horizontal, linear.horizontal * corrections.horizontal_reaction_factor,
+       corrections.horizontal_reaction_factor},
+      {"vertical", vertical, linear.vertical * corrections.vertical_reaction_factor,
+       corrections.vertical_reaction_factor}};
+  for (const auto& side : sides) {
+    if (!(side.linear > 0) || !(side.checked > 0)) continue;
+    const double step = Step(side.checked / side.linear, passes);
+    side.factor *= step;
+    os << "; " << side.name << " reaction factor x" << step;
+  }
+}
+
 // Corrects the linear model by what the checks found, member by member, both ways: the ratio
 // of the checks' utilisation to the linear one becomes the factor on the member's demand, and
 // of the nonlinear deflection to the linear one the factor on deflections; a slack taut
@@ -572,6 +599,7 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
     os << "; deflection factor x" << step;
   }
   if (taut) os << "; tension margin for " << taut << " slack string findings";
+  CorrectReactions(corrections, problem.LargestReactions(x), statics, passes, os);
   return os.str();
 }
 

@@ -78,6 +78,11 @@ TEST_CASE("parse, echo, Validate and the README agree on every described key", "
   CheckDescribedSection(CoreSection(kDesignSection, &Config::design, DesignConfig{}), readme);
   CheckDescribedSection(CoreSection(kLoadsSection, &Config::loads, LoadsConfig{}), readme);
   CheckDescribedSection(CoreSection(kComfortSection, &Config::comfort, ComfortConfig{}), readme);
+  // Both capacities given, so that each is echoed and probed.
+  SupportsConfig supports;
+  supports.horizontal_capacity_n = 1e6;
+  supports.vertical_capacity_n = 5e5;
+  CheckDescribedSection(CoreSection(kSupportsSection, &Config::supports, supports), readme);
   CheckDescribedSection(
       DescribedSection<DynamicsConfig>{
           kDynamicsSection, ConfigSectionText(kDynamicsSection),

@@ -29,10 +29,25 @@ Config ThreeD(int n) {
   return config;
 }
 
+// Abutment capacities, so that the problem has support rows (values that bind nowhere: the rows'
+// gradients and images are what the tests read).
+Config WithCapacities(Config config) {
+  config.supports.horizontal_capacity_n = 5e6;
+  config.supports.vertical_capacity_n = 1e6;
+  return config;
+}
+
+int CountKind(const SizingProblem& problem, SizingRow::Kind kind) {
+  return static_cast<int>(std::count_if(problem.rows().begin(), problem.rows().end(),
+                                        [kind](const SizingRow& row) { return row.kind == kind; }));
+}
+
 void CheckJacobian(const Design& d) {
   SizingCorrections corrections;
   corrections.demand_factor.assign(d.bars.size() + d.strings.size(), 1.3);  // kappa enters every row
   corrections.deflection_factor = 1.2;
+  corrections.horizontal_reaction_factor = 1.1;
+  corrections.vertical_reaction_factor = 1.05;
   const SizingProblem problem(d, corrections);
   const Eigen::VectorXd x = problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
   const int n = problem.num_variables(), m = problem.num_constraints();
@@ -83,6 +98,16 @@ TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[des
     const Design d = RunDesign(ThreeD(1));
     REQUIRE(SizingProblem::SymmetricStates(d) >= 2);
     CheckJacobian(d);
+  }
+  // The support rows read several members' forces each (|(H_x, H_z)| and |V| of an abutment's
+  // nodes); on the 3D bridge the wind gives H_z, so both components of the in-plan norm move.
+  SECTION("planar, n = 2, with abutment capacities") {
+    const Design d = RunDesign(WithCapacities(SmallDesign().config));
+    REQUIRE(CountKind(SizingProblem(d, {}), SizingRow::kSupportHorizontal) > 0);
+    CheckJacobian(d);
+  }
+  SECTION("3D, n = 1, with abutment capacities") {
+    CheckJacobian(RunDesign(WithCapacities(ThreeD(1))));
   }
 }
 
@@ -249,7 +274,8 @@ TEST_CASE("the sizing's mirror-image rows are one function of the variables and 
   for (const int planes : {1, 2}) {
     // Planar at n = 2 (mirror about mid-span; the payload on the left the image of the right's);
     // 3D at n = 1, whose wind breaks the mirror between the planes but not the one about mid-span.
-    const Design d = RunDesign(planes == 1 ? SmallDesign().config : ThreeD(1));
+    // With abutment capacities: a support row's image is the other abutment's.
+    const Design d = RunDesign(WithCapacities(planes == 1 ? SmallDesign().config : ThreeD(1)));
     const int nm = static_cast<int>(d.bars.size() + d.strings.size());
     // Corrections that differ between a member and its images, as the moving load's run leaves them.
     std::mt19937 rng(7);
@@ -317,7 +343,9 @@ TEST_CASE("the sizing's mirror-image rows are one function of the variables and 
     REQUIRE(posed.DenseJacobian(x, jac));
     for (const auto& [f, r] : pairs) {
       const Eigen::RowVectorXd a = jac.row(index[static_cast<size_t>(f)]), b = jac.row(index[static_cast<size_t>(r)]);
-      INFO("rows " << f << " and " << r);
+      INFO("rows " << f << " and " << r << " ("
+                   << SizingRowKindName(posed.rows()[index[static_cast<size_t>(f)]].kind)
+                   << "): " << a << " / " << b);
       CHECK((a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), 1e-300));
     }
   }
