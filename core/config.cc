@@ -58,6 +58,24 @@ void CheckLoadsRules(const LoadsConfig& l) {
 
 // bridge and loads together: the cases asked for must leave one this bridge carries ("wind"
 // is dropped on a planar bridge, design/load_cases.h).
+// design: the rules across keys (kDesignSection.rules).
+void CheckDesignRules(const DesignConfig& d) {
+  const std::vector<double>& r = d.beta_range_deg;
+  if (r.size() != 2 || !(r[0] < r[1])) {
+    throw ConfigError("design.beta_range_deg", nlohmann::json(r).dump(),
+                      "must be two angles [low, high] with low < high, each in [1, 90) deg");
+  }
+}
+
+void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
+  if (b.beta_auto && l.cases == std::vector<std::string>{"paper"}) {
+    throw ConfigError(
+        "bridge.beta_deg", "\"auto\"",
+        "must be a number with loads.cases [\"paper\"]: the paper's design is checked, not "
+        "resized, at its own angle; \"auto\" chooses the angle by the verified design");
+  }
+}
+
 void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
   const auto wind = [](const std::string& c) { return c == "wind"; };
   if (b.planes == 1 && std::all_of(l.cases.begin(), l.cases.end(), wind)) {
@@ -108,9 +126,10 @@ Config ParseConfig(const nlohmann::json& root) {
     }
     c.bridge = ParseSection<BridgeConfig>(top.Section("bridge"), CheckBridgeRules);
     c.material = ParseSection<Material>(top.Section("material"), CheckMaterialRules);
-    c.design = ParseSection<DesignConfig>(top.Section("design"));
+    c.design = ParseSection<DesignConfig>(top.Section("design"), CheckDesignRules);
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
     CheckCasesForBridge(c.bridge, c.loads);
+    CheckAngleForCases(c.bridge, c.loads);
     c.comfort = ParseSection<ComfortConfig>(top.Section("comfort"));
     c.supports = ParseSection<SupportsConfig>(top.Section("supports"));
   }
@@ -155,9 +174,11 @@ void Validate(const Config& c) {
     ValidateFields(c.material, kMaterialSection.name);
     CheckMaterialRules(c.material);
     ValidateFields(c.design, kDesignSection.name);
+    CheckDesignRules(c.design);
     ValidateFields(c.loads, kLoadsSection.name);
     CheckLoadsRules(c.loads);
     CheckCasesForBridge(c.bridge, c.loads);
+    CheckAngleForCases(c.bridge, c.loads);
     ValidateFields(c.comfort, kComfortSection.name);
     ValidateFields(c.supports, kSupportsSection.name);
   }

@@ -18,11 +18,14 @@ namespace tbridge {
 struct BridgeConfig {
   int n = 2;                // complexity: self-similar iterations, 1..16
   int p = 1;                // bars per substructure module, 1..8
-  double beta_deg = 10.0;   // aspect angle [deg], (0, 90)
+  double beta_deg = 10.0;   // aspect angle [deg], (0, 90); with beta_auto, the angle chosen
   double span = 12.0;       // L [m]
   double payload = 12000.0; // F, total external payload [N]
   double deck_width = 1.5;  // w_d, deck beam width and distance between planes [m]
   int planes = 1;           // 1 = planar bridge, 2 = 3D bridge of two coupled planes
+  // beta_deg given as "auto": the verified design chooses it in design.beta_range_deg
+  // (verify/angle_search.h), and beta_deg then holds the angle chosen.
+  bool beta_auto = false;
 };
 
 // The defaults are an engineer's (EN 1993-2's recommended partial factors for steel bridges,
@@ -53,6 +56,8 @@ struct DesignConfig {
   // The static utilisation above which the verified sizing does not run the dynamic runs on
   // one of its own designs (it fails whatever they find); the design it delivers runs them.
   double dynamic_screen = 1.1;
+  // [deg]: where bridge.beta_deg "auto" searches (config_fields.h says why these ends).
+  std::vector<double> beta_range_deg{10.0, 60.0};
 };
 
 // The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each

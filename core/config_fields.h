@@ -29,7 +29,11 @@ inline const SectionInfo kMaterialSection{
     "`material` and for each member kind as resolved; `strings.breaking_stress` > `strings.yield_stress` (a "
     "cable's proof strength is below its breaking strength); `strings.end_efficiency` only with "
     "`strings.breaking_stress`."};
-inline const SectionInfo kDesignSection{"design", "minimum-mass problem and sizing", ""};
+inline const SectionInfo kDesignSection{
+    "design", "minimum-mass problem and sizing",
+    "`beta_range_deg` has two angles, the first below the second; `bridge.beta_deg` `\"auto\"` "
+    "needs a "
+    "verified design, so not with `loads.cases` `[\"paper\"]` (the paper's angle is fixed)."};
 inline const SectionInfo kLoadsSection{
     "loads", "actions and their combinations",
     "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the "
@@ -74,10 +78,18 @@ void DescribeFields(B& b, V& v) requires std::is_same_v<std::remove_const_t<B>, 
                     "bars per substructure module (eq. 2): n_b = p(2^n − 1), n_s = (p+1)(2^n − 1) + 2^n. p ≥ 2 makes "
                     "bars share nodes (class k)"},
             b.p, 1, kMaxBarsPerModule);
-  v.Number(KeyInfo{"beta_deg", "deg",
-                   "aspect angle beta. Every cable of a module slopes at beta/2 from the horizontal: the node below a "
-                   "sub-span [a, b] lies (b − a)/2 · tan(beta/2) under the deck"},
-           b.beta_deg, kBetaDegRange);
+  v.NumberOrAuto(
+      KeyInfo{
+          "beta_deg", "deg",
+          "aspect angle beta. Every cable of a module slopes at beta/2 from the horizontal: the "
+          "node "
+          "below a sub-span [a, b] lies (b − a)/2 · tan(beta/2) under the deck. `\"auto\"`: the "
+          "verified design chooses it in `design.beta_range_deg` by its verified mass: a scan "
+          "every "
+          "5 deg, ends included, then a golden section about the best to 0.5 deg (masses within "
+          "5e-4 count as equal, the smaller angle kept; `angle_search` lists every angle tried); "
+          "`topology.beta_deg` then holds the angle chosen and the summary the masses either side"},
+      b.beta_deg, b.beta_auto, kBetaDegRange);
   v.Number(KeyInfo{"span", "m", "L, distance between the two hinged supports"}, b.span, kSpanRange);
   v.Number(KeyInfo{"payload", "N", "F, total external payload on the deck (eq. 9: F_tot = F + 2^n·m_d·g)"},
            b.payload, Range::Positive());
@@ -237,6 +249,17 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                    "Such a design's record says the runs were not run and why. A design that passes has every run "
                    "done, whatever this is; `tbridge check` runs every check. 1e9: run them on every design"},
            d.dynamic_screen, Range::AtLeast(1.0));
+  v.Numbers(
+      KeyInfo{
+          "beta_range_deg", "deg",
+          "[low, high]: where `bridge.beta_deg` `\"auto\"` searches. 10 deg is the paper's angle, "
+          "below "
+          "which the substructure is so shallow that its thrust on the abutments grows as 1 / "
+          "tan(beta/2); "
+          "above 60 deg the substructure is deeper than a third of the span and its long bars "
+          "buckle, "
+          "so the verified mass rises again (the 30 m steel footbridge: lightest near 45-60 deg)"},
+      d.beta_range_deg, kBetaDegRange);
 }
 
 template <class L, class V>

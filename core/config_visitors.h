@@ -12,6 +12,8 @@
 //   v.OptionalNumber(key, std::optional<double>, range, absent)
 //                                                 absent = off; Absent::kNull also reads and
 //                                                 echoes null as off, kOmitted leaves it out
+//   v.NumberOrAuto(key, double, bool is_auto, range)  finite, in `range`, or the string
+//                                                 "auto" (is_auto set, the number kept)
 //   v.Integers(key, std::vector<int>, lo, hi)     each in [lo, hi]
 //   v.Numbers(key, std::vector<double>, range)    each in `range`
 //   v.Vector3(key, std::array<double, 3>)         [x, y, z], finite
@@ -100,6 +102,19 @@ struct ParseVisitor {
     }
     field = s.Number(key.name, std::nullopt, range);
   }
+  void NumberOrAuto(const KeyInfo& key, double& field, bool& is_auto, Range range) {
+    const nlohmann::json* raw = s.Has(key.name) ? s.Raw(key.name) : nullptr;
+    if (raw != nullptr && raw->is_string()) {
+      if (*raw != "auto") {
+        throw ConfigError(s.PathOf(key.name), Show(*raw),
+                          "must be a number, " + range.Describe() + ", or \"auto\"");
+      }
+      is_auto = true;
+      return;
+    }
+    is_auto = false;
+    Number(key, field, range);
+  }
   void Integers(const KeyInfo& key, std::vector<int>& field, int lo, int hi) {
     field = s.Integers(key.name, Fallback(key, field), lo, hi);
   }
@@ -156,6 +171,13 @@ struct EchoVisitor {
       Put(key, *field);
     } else if (absent == Absent::kNull) {
       out[key.name] = nullptr;
+    }
+  }
+  void NumberOrAuto(const KeyInfo& key, double field, bool is_auto, Range) {
+    if (is_auto) {
+      out[key.name] = "auto";
+    } else {
+      Put(key, field);
     }
   }
   void Integers(const KeyInfo& key, const std::vector<int>& field, int, int) { Put(key, field); }
@@ -230,6 +252,9 @@ struct ValidateVisitor {
                       Absent) const {
     if (field) CheckNumber(Path(key), *field, range);
   }
+  void NumberOrAuto(const KeyInfo& key, double field, bool is_auto, Range range) const {
+    if (!is_auto) CheckNumber(Path(key), field, range);
+  }
   void Integers(const KeyInfo& key, const std::vector<int>& field, int lo, int hi) const {
     for (std::size_t k = 0; k < field.size(); ++k)
       CheckInteger(Item(Path(key), k), field[k], lo, hi);
@@ -285,6 +310,9 @@ struct TableVisitor {
         : absent == Absent::kNull ? "off (null)"
                                   : "none",
         range.Interval());
+  }
+  void NumberOrAuto(const KeyInfo& key, double field, bool is_auto, Range range) {
+    Row(key, is_auto ? "`\"auto\"`" : NumberText(field), range.Interval() + " or `\"auto\"`");
   }
   void Integers(const KeyInfo& key, const std::vector<int>& field, int lo, int hi);
   void Numbers(const KeyInfo& key, const std::vector<double>& field, Range range);

@@ -63,6 +63,7 @@ struct Design {
   bool unchecked_cases = false;      // some asked-for cases were left out (notes say which)
   StaticCheck statics;               // the nonlinear static check, when it was run (verify/)
   Resizing resizing;                 // the verification's resizing, when it was run (verify/)
+  AngleSearch angle;  // the angle's search, where bridge.beta_deg is "auto" (verify/)
   DynamicCheck dynamics;             // the dynamic check, when it was run (verify/)
   MassAttribution attribution;       // what drives the verified sizing's mass; members empty when not sized
   ComfortCheck comfort;              // the footbridge comfort check, when it was run (verify/)

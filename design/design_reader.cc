@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "core/string_law.h"
 #include "design/design_report.h"
 #include "design/equilibrium.h"
@@ -237,6 +238,22 @@ void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::strin
   for (int k = 0; k < ns; ++k) a.slack_strings += state.string_tension[k] <= 0 ? 1 : 0;
 }
 
+// The angle a design of bridge.beta_deg "auto" chose: its topology.beta_deg, from which the
+// geometry is drawn.
+double ChosenAngle(const json& file) {
+  const json* beta = file.contains("topology") && file.at("topology").is_object() &&
+                             file.at("topology").contains("beta_deg")
+                         ? &file.at("topology").at("beta_deg")
+                         : nullptr;
+  if (beta == nullptr || !beta->is_number() ||
+      !(beta->get<double>() > 0 && beta->get<double>() < 90)) {
+    throw ConfigError(
+        "topology.beta_deg", beta == nullptr ? "(missing)" : Show(*beta),
+        "the angle a design of config.bridge.beta_deg \"auto\" chose, in (0, 90) deg");
+  }
+  return beta->get<double>();
+}
+
 }  // namespace
 
 Design ReadDesign(const json& file) {
@@ -247,6 +264,7 @@ Design ReadDesign(const json& file) {
   Design d;
   d.config = ParseConfig(file.at("config"));
   if (d.config.structure) throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
+  if (d.config.bridge.beta_auto) d.config.bridge.beta_deg = ChosenAngle(file);
   DesignInputs in = PrepareDesign(d.config);
   d.topology = std::move(in.topology);
   RequireDeck(file, in.deck);

@@ -204,6 +204,20 @@ struct ComfortCheck {
 };
 
 // The resizing loop's record (verify/verified_design.h).
+// The angle chosen where bridge.beta_deg is "auto" (verify/angle_search.h).
+struct AngleSearch {
+  bool done = false;  // the angle was searched
+  double low_deg = 0, high_deg = 0, chosen_deg = 0;
+  struct Trial {
+    double beta_deg = 0;
+    double mass_kg = 0;  // the verified design's structure
+    bool pass = false;
+    double utilisation_max = 0;
+  };
+  std::vector<Trial> trials;  // in the order designed
+  std::string note;  // where the angle ends at a range end, or no angle passed; "" when none
+};
+
 struct Resizing {
   int iterations = 0;                     // designs run
   // A sizing from a passing design's corrections within `tolerance` of that design's mass.

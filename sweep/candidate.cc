@@ -143,6 +143,12 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
       // The verdict says what failed, or which dynamic run was skipped and why.
       if (!verdict.pass || !design.dynamics.NotDone().empty()) row.note = verdict.summary;
     }
+    // With bridge.beta_deg "auto" the candidate is at the angle its search chose.
+    if (design.angle.done) {
+      row.candidate.beta_deg = design.config.bridge.beta_deg;
+      if (!design.angle.note.empty())
+        row.note += (row.note.empty() ? "" : "; ") + ("angle: " + design.angle.note);
+    }
     row.allowed_stress = StringMaterial(design.config).DesignStress();
     const bool prestrained = candidate.deck_prestrain < 1.0;
     // keep_area's rest lengths go to the models (dynamics.prestrain), as tbridge simulate takes them.

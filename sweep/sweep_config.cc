@@ -122,6 +122,15 @@ SweepSpec ParseSweepSpec(const nlohmann::json& root) {
     throw ConfigError("structure", "(custom scene)", "a sweep designs bridges: give a \"bridge\" section instead");
   }
   CheckSweepRules(spec.sweep, spec.base.bridge);
+  // With "auto" each candidate searches its own angle (verify/angle_search.h): a list of angles
+  // would design the same bridges again.
+  if (spec.base.bridge.beta_auto && root["sweep"].is_object() &&
+      root["sweep"].contains("beta_deg")) {
+    throw ConfigError(
+        "sweep.beta_deg", Show(root["sweep"]["beta_deg"]),
+        "not allowed with bridge.beta_deg \"auto\": each candidate searches its own angle in "
+        "design.beta_range_deg; give the angles here and a number there to sweep them instead");
+  }
   return spec;
 }
 

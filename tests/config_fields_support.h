@@ -84,6 +84,9 @@ struct CollectKeys {
   void OptionalNumber(const KeyInfo& key, const std::optional<double>&, Range range, Absent) {
     Add(key, OutsideOf(range), "");
   }
+  void NumberOrAuto(const KeyInfo& key, double, bool, Range range) {
+    Add(key, OutsideOf(range), "");
+  }
   void Integers(const KeyInfo& key, const std::vector<int>&, int, int hi) {
     Add(key, {hi + 1}, "[0]");
   }
@@ -132,6 +135,9 @@ struct SetKey {
   void Choices(const KeyInfo& key, std::vector<std::string>& f, const std::vector<std::string>&) { Put(key, f); }
   void OptionalNumber(const KeyInfo& key, std::optional<double>& f, Range, Absent) {
     if (prefix + key.name == target) f = value.get<double>();
+  }
+  void NumberOrAuto(const KeyInfo& key, double& f, bool& is_auto, Range) {
+    if (prefix + key.name == target) f = value.get<double>(), is_auto = false;
   }
   void Integers(const KeyInfo& key, std::vector<int>& f, int, int) { Put(key, f); }
   void Numbers(const KeyInfo& key, std::vector<double>& f, Range) { Put(key, f); }

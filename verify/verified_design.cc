@@ -18,6 +18,7 @@
 #include "design/sizing_attribution.h"
 #include "design/sizing_problem.h"
 #include "design/solvers.h"
+#include "verify/angle_search.h"
 #include "verify/comfort_check.h"
 #include "verify/comfort_sizing.h"
 #include "verify/dynamic_check.h"
@@ -940,6 +941,7 @@ Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) 
 }  // namespace
 
 Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
+  if (config.bridge.beta_auto) return DesignAtBestAngle(config, progress);
   const int max_iterations = config.design.max_sizings;
   const std::string solver = SizingSolver(config);
   Resizing record;

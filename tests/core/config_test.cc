@@ -109,6 +109,39 @@ TEST_CASE("unknown keys are rejected at every level") {
   ExpectRejected(design, "design.solvr", "\"ipopt\"", "unknown key");
 }
 
+TEST_CASE("bridge.beta_deg takes an angle or auto searched in design.beta_range_deg") {
+  json automatic = GoodConfig();
+  automatic["design"]["yield_safety_factor"] = 1.1;  // an engineering design, not the paper's
+  automatic["bridge"]["beta_deg"] = "auto";
+  const Config c = ParseConfig(automatic);
+  CHECK(c.bridge.beta_auto);
+  CHECK(c.design.beta_range_deg == std::vector<double>{10.0, 60.0});
+  const json echoed = ToJson(c);
+  CHECK(echoed["bridge"]["beta_deg"] == "auto");
+  CHECK(ToJson(ParseConfig(echoed)) == echoed);
+  CHECK_NOTHROW(Validate(c));
+  // Any other text is refused, naming the key and both forms allowed.
+  json other = automatic;
+  other["bridge"]["beta_deg"] = "automatic";
+  ExpectRejected(other, "bridge.beta_deg", "\"automatic\"", "or \"auto\"");
+  // The range: two angles, the first below the second, each an angle.
+  for (const json& range :
+       {json::array({60.0, 10.0}), json::array({10.0}), json::array({10.0, 20.0, 30.0})}) {
+    json bad = automatic;
+    bad["design"]["beta_range_deg"] = range;
+    ExpectRejected(bad, "design.beta_range_deg", range.dump(),
+                   "two angles [low, high] with low < high");
+  }
+  json beyond = automatic;
+  beyond["design"]["beta_range_deg"] = json::array({10.0, 95.0});
+  ExpectRejected(beyond, "design.beta_range_deg[1]", "95", "[1, 90)");
+  // The paper's design is checked at its own angle, never searched.
+  json paper = automatic;
+  paper["loads"] = {{"cases", {"paper"}}};
+  ExpectRejected(paper, "bridge.beta_deg", "\"auto\"",
+                 "must be a number with loads.cases [\"paper\"]");
+}
+
 TEST_CASE("wrong types are rejected") {
   json n_text = GoodConfig();
   n_text["bridge"]["n"] = "3";
