@@ -146,6 +146,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     // With bridge.beta_deg "auto" the candidate is at the angle its search chose.
     if (design.angle.done) {
       row.candidate.beta_deg = design.config.bridge.beta_deg;
+      row.angle_note = design.angle.note;
       if (!design.angle.note.empty())
         row.note += (row.note.empty() ? "" : "; ") + ("angle: " + design.angle.note);
     }

@@ -63,6 +63,9 @@ struct CandidateRow {
   std::optional<std::string> dynamic_runs;
   bool feasible = false;
   std::vector<std::string> violated;  // constraint names, in the order above
+  // With bridge.beta_deg "auto": what the angle's search noted (the angle at a range end, no
+  // angle passing), "" when nothing.
+  std::string angle_note;
 };
 
 // Evaluates one candidate of `spec`. Design or run failures (ModelError) give a row with

@@ -116,6 +116,9 @@ SweepChoice Choose(const std::vector<CandidateRow>& rows) {
       why << "objective minimum (" << Describe(*best) << ", " << Fixed(best->objective) << " kg)";
     }
   }
+  // A candidate whose angle was searched (bridge.beta_deg "auto") says where it ended at a range
+  // end.
+  if (!best->angle_note.empty()) why << "; its angle: " << best->angle_note;
   c.reason = why.str();
   return c;
 }
