@@ -58,6 +58,14 @@ struct DesignConfig {
   double dynamic_screen = 1.1;
   // [deg]: where bridge.beta_deg "auto" searches (config_fields.h says why these ends).
   std::vector<double> beta_range_deg{10.0, 60.0};
+  // The strings' stress under the characteristic (serviceability) combinations is held to a
+  // serviceability limit (MemberMaterial::ServiceStress): a rod's f_y / gamma_M,ser (EN 1993-2
+  // 7.3), a cable's f_const = this ratio x f_uk (EN 1993-1-11 7.2).
+  double rod_gamma_m_ser = 1.0;
+  double cable_f_const_ratio = 0.5;
+  // The fraction of the prestress lost over the bridge's life (relaxation, creep, anchorage
+  // set): the design passes with the self-stress reduced by it, the permanent part kept.
+  double prestress_loss = 0.05;
 };
 
 // The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each
@@ -142,6 +150,15 @@ inline MemberMaterial StringMaterial(const Config& c) {
   return StringMaterial(c.material, c.design.yield_safety_factor);
 }
 inline MemberMaterial BarMaterial(const Config& c) { return BarMaterial(c.material, c.design.yield_safety_factor); }
+// The prestress loss the design passes with (design.prestress_loss); none with the paper's
+// switches, whose one case is the paper's.
+inline double PrestressLossOf(const Config& c) {
+  return c.loads.cases == std::vector<std::string>{"paper"} ? 0.0 : c.design.prestress_loss;
+}
+// The strings' serviceability stress limit [Pa] under the characteristic combinations.
+inline double StringServiceStress(const Config& c) {
+  return StringMaterial(c).ServiceStress(c.design.rod_gamma_m_ser, c.design.cable_f_const_ratio);
+}
 
 // Allowed structural limits checked by ParseConfig (exposed for messages and tests).
 inline constexpr int kMaxComplexity = 16;

@@ -260,6 +260,37 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
           "buckle, "
           "so the verified mass rises again (the 30 m steel footbridge: lightest near 45-60 deg)"},
       d.beta_range_deg, kBetaDegRange);
+  v.Number(KeyInfo{"rod_gamma_m_ser", "–",
+                   "gamma_M,ser: a string of steel rod (no `material.strings.breaking_stress`) "
+                   "keeps its stress "
+                   "under every characteristic (serviceability) combination at most f_y / "
+                   "gamma_M,ser (EN 1993-2 "
+                   "7.3(1), recommended 1.0), a row of the verified sizing and a finding of the "
+                   "static check"},
+           d.rod_gamma_m_ser, Range::Closed(1.0, 10.0));
+  v.Number(KeyInfo{"cable_f_const_ratio", "–",
+                   "f_const / f_uk: a cable string (`material.strings.breaking_stress` given) "
+                   "keeps its stress under "
+                   "every characteristic (serviceability) combination at most f_const = this x "
+                   "f_uk (EN 1993-1-11 "
+                   "7.2(2), Table 7.1's recommended 0.50 for the persistent situation; national "
+                   "annexes may set "
+                   "less), a row of the verified sizing and a finding of the static check"},
+           d.cable_f_const_ratio, Range{0.0, 1.0, true, false});
+  v.Number(
+      KeyInfo{
+          "prestress_loss", "–",
+          "the fraction of the prestress lost over the bridge's life (the strings' relaxation and "
+          "creep, "
+          "the anchorages' set): the verified sizing poses every row again with the self-stress "
+          "coefficients reduced by it (the forces that carry the permanent load kept), and the "
+          "static "
+          "check runs again on the bridge so relaxed; the design passes with and without it. 0.05 "
+          "is "
+          "of the order of a low-relaxation strand's long-term relaxation with a few millimetres "
+          "of "
+          "anchorage set. Not with the paper's one case"},
+      d.prestress_loss, Range{0.0, 1.0, false, true});
 }
 
 template <class L, class V>

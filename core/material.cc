@@ -26,6 +26,14 @@ double MemberMaterial::DesignStress() const {
 
 const char* MemberMaterial::TensionClause() const { return cable() ? "EN 1993-1-11 6.3.2" : "EN 1993-1-1 6.2.3"; }
 
+double MemberMaterial::ServiceStress(double gamma_m_ser, double f_const_ratio) const {
+  return cable() ? f_const_ratio * breaking_stress : yield_stress / gamma_m_ser;
+}
+
+const char* MemberMaterial::ServiceClause() const {
+  return cable() ? "EN 1993-1-11 7.2(2)" : "EN 1993-2 7.3(1)";
+}
+
 MemberMaterial StringMaterial(const Material& m, double yield_safety_factor) {
   MemberMaterial out = Resolve(m, m.strings, yield_safety_factor);
   out.breaking_stress = m.strings.breaking_stress.value_or(0.0);

@@ -47,6 +47,13 @@ struct MemberMaterial {
   double DesignStress() const;
   // The clause the tension resistance follows ("EN 1993-1-1 6.2.3", "EN 1993-1-11 6.3.2").
   const char* TensionClause() const;
+  // The serviceability stress limit under the characteristic combination [Pa]: a rod's
+  // f_y / gamma_M,ser (EN 1993-2 7.3(1)), a cable's f_const = f_const_ratio x f_uk (EN 1993-1-11
+  // 7.2(2)), which keeps its wires' creep and fatigue small and leaves room for the stress that
+  // bending at the sockets adds.
+  double ServiceStress(double gamma_m_ser, double f_const_ratio) const;
+  // The clause that limit follows ("EN 1993-2 7.3(1)", "EN 1993-1-11 7.2(2)").
+  const char* ServiceClause() const;
 };
 
 // The resolved materials; `yield_safety_factor` is design.yield_safety_factor.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,10 @@ struct Design {
   // the whole structure (SupportReactions, design/equilibrium.h).
   Eigen::Matrix3Xd reactions;
   AsBuilt as_built;  // what check re-derived, when it did
+  // The config the bridge was designed under where `tbridge check` reads it under other loads
+  // (design/design_loads.h: `config` holds the loads checked, this the loads designed for, and
+  // the deck plates sized for them); unset where they are `config`'s own.
+  std::optional<Config> designed_for;
 };
 
 // What the minimum-mass problem of a bridge config is made of: the drawn bridge, its deck and
@@ -117,6 +122,12 @@ Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
 // a start for the sizing, whose reference-taut rows mend it, not a bridge (its stability
 // verdict says so).
 Design SizedDesign(const Config& config, const std::vector<double>& areas, const Eigen::VectorXd& alpha);
+
+// `design` after the loss of `loss` of its prestress (design.prestress_loss): its reference
+// forces less that share of the self-stress part (PrestressForces; the forces carrying its
+// reference loads kept), each string's rest length and stiffness those that carry its new force
+// at its length. The geometry, areas and loads are the design's.
+Design WithPrestressLoss(const Design& design, double loss);
 
 // The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over
 // 1 (1e-9 allows for the rounding of a member sized exactly to its resistance), unstable, a

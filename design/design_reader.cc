@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/json_reader.h"
 #include "core/string_law.h"
+#include "design/design_loads.h"
 #include "design/design_report.h"
 #include "design/equilibrium.h"
 #include "statics/static_solve.h"
@@ -265,11 +266,26 @@ Design ReadDesign(const json& file) {
   d.config = ParseConfig(file.at("config"));
   if (d.config.structure) throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
   if (d.config.bridge.beta_auto) d.config.bridge.beta_deg = ChosenAngle(file);
-  DesignInputs in = PrepareDesign(d.config);
+  // The bridge as designed: its deck plates sized for the loads it was designed for, which the
+  // file records beside the config; the config's loads, where an engineer changed them, are the
+  // loads it is checked under.
+  const Config designed =
+      file.contains("designed_for") ? WithDesignLoads(d.config, file.at("designed_for")) : d.config;
+  if (!ChangedLoads(designed, d.config).empty()) {
+    if (KeepsPaperSwitches(d.config)) {
+      throw ConfigError(
+          "config.bridge.payload", NumberText(d.config.bridge.payload),
+          "the paper's one case puts the payload into the deck's own load (eq. 9): its design "
+          "is checked under the loads it was designed for; edit the config and run tbridge design");
+    }
+    Validate(designed);
+    d.designed_for = designed;
+  }
+  DesignInputs in = PrepareDesign(designed);
   d.topology = std::move(in.topology);
   RequireDeck(file, in.deck);
   d.deck = in.deck;
-  d.actions = std::move(in.actions);
+  d.actions = d.designed_for ? MakeActions(d.config, d.topology, d.deck) : std::move(in.actions);
   d.cases = MakeLoadCases(d.config, d.deck, d.notes);
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();

@@ -5,14 +5,15 @@
 #include <charconv>
 #include <cmath>
 #include <cstdarg>
+#include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <ostream>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "design/comfort_report.h"
+#include "design/design_loads.h"
 
 namespace tbridge {
 
@@ -233,6 +234,8 @@ std::string ClauseOf(const MemberSizing& m, const Config& config) {
   if (mode == "deflection") return "EN 1990 A2.4.1 (deflection), stiffness";
   if (mode == "buckling") return euler ? "Euler load (paper eq. 46)" : "EN 1993-1-1 6.3.1";
   if (mode == "yield") return bar ? "EN 1993-1-1 6.2.4" : StringMaterial(config).TensionClause();
+  if (mode == "serviceability")
+    return StringMaterial(config).ServiceClause() + std::string(", characteristic combination");
   if (mode == "dynamic") {
     if (!bar) return StringMaterial(config).TensionClause() + std::string(" at the run's peak");
     return euler ? "Euler load at the run's peak" : "EN 1993-1-1 6.2.4/6.3.1 at the run's peak";
@@ -520,6 +523,15 @@ std::string AsBuiltLine(const AsBuilt& a) {
                 a.force_change_n, a.force_member.empty() ? "" : " in ", a.force_member.c_str(), a.slack_strings);
 }
 
+// The loads a design read back is checked under, where they are not those it was designed for.
+std::string LoadsChangedLine(const Config& designed, const Config& config) {
+  std::string changed;
+  for (const std::string& c : ChangedLoads(designed, config))
+    changed += (changed.empty() ? "" : "; ") + c;
+  return "loads changed from those designed for: " + changed +
+         "; the bridge as designed (members, rest lengths, deck plates) checked under them";
+}
+
 json VerdictJson(const Design& d, const Verdict& v) {
   return {{"outcome", VerdictName(v.outcome)},
           {"pass", v.pass},
@@ -660,9 +672,12 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   field("comfort", ComfortJson(d));
   field("config", ToJson(d.config));
   field("deck", deck);
+  field("designed_for", DesignLoadsJson(d.designed_for ? *d.designed_for : d.config));
   field("deflection_max", DeflectionsJson(d));
   field("dynamic_check", DynamicsJson(d));
   field("equilibrium_residual_N", d.equilibrium_residual);
+  field("loads_changed",
+        d.designed_for ? ChangedLoads(*d.designed_for, d.config) : std::vector<std::string>{});
   field("mass", mass);
   field("mass_attribution", AttributionJson(d));
   field("materials", MaterialsJson(d.config));
@@ -752,6 +767,7 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   if (d.solver_form == kReadFromFile) {
     line(Format("design: read from its file, checked as written; equilibrium residual %.2e N", d.equilibrium_residual));
     if (d.as_built.re_derived) line(AsBuiltLine(d.as_built));
+    if (d.designed_for) line(LoadsChangedLine(*d.designed_for, d.config));
   } else {
     line(Format("solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
                 "self-stress states: %d",
@@ -809,11 +825,20 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
         d.statics.mirrored > 0 ? Format(", %d stations as mirror images of solved ones on this symmetric bridge",
                                         d.statics.mirrored)
                                : "";
-    line(Format("static check: %d nonlinear solves%s (%s); largest "
-                "deflection %.4g m (%s), limit span / %g = %.4g m; reactions balance the loads to %.1e",
-                d.statics.nonlinear_solves, mirrored.c_str(), stations.c_str(), d.statics.deflection_max_m,
-                d.statics.deflection_case.empty() ? "no serviceability case" : d.statics.deflection_case.c_str(),
-                d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
+    const std::string loss = d.statics.prestress_loss > 0
+                                 ? Format(
+                                       ", each case also after the loss of %g %% of the prestress "
+                                       "(design.prestress_loss)",
+                                       100 * d.statics.prestress_loss)
+                                 : "";
+    line(Format(
+        "static check: %d nonlinear solves%s (%s%s); largest "
+        "deflection %.4g m (%s), limit span / %g = %.4g m; reactions balance the loads to %.1e",
+        d.statics.nonlinear_solves, mirrored.c_str(), stations.c_str(), loss.c_str(),
+        d.statics.deflection_max_m,
+        d.statics.deflection_case.empty() ? "no serviceability case"
+                                          : d.statics.deflection_case.c_str(),
+        d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
   }
   if (d.resizing.iterations > 1) {
     line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg (%s); %s",
@@ -909,9 +934,10 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     line(Format("what the structure's mass pays for [kg] (the verified sizing's multipliers; stationarity residual "
                 "%.1e):",
                 a.stationarity_residual));
-    line(Format("  %-14s %12s %22s", "constraint", "mass", "premium over first"));
+    line(Format("  %-21s %12s %22s", "constraint", "mass", "premium over first"));
     for (int k = 0; k < kNumConstraintKinds; ++k) {
-      line(Format("  %-14s %12.3f %22.3f", kConstraintKinds[k], a.mass_by_kind_kg[k], a.premium_by_kind_kg[k]));
+      line(Format("  %-21s %12.3f %22.3f", kConstraintKinds[k], a.mass_by_kind_kg[k],
+                  a.premium_by_kind_kg[k]));
     }
   }
   return out;

@@ -71,4 +71,32 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
   return d;
 }
 
+Design WithPrestressLoss(const Design& design, double loss) {
+  Design d = design;
+  d.reference_forces -= loss * PrestressForces(design);
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  const MemberMaterial string_material = StringMaterial(d.config);
+  for (int j = 0; j < static_cast<int>(d.reference_forces.size()); ++j) {
+    const double force = d.reference_forces[j];
+    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    if (j >= nb) {
+      // The sizer at zero demand with the area as its floor: that area, and the rest length that
+      // carries `force` at the string's length.
+      const MemberSizing at = SizeString(m.length, 0.0, force, m.area, string_material);
+      m.rest_length = at.rest_length;
+      m.stiffness = at.stiffness;
+    }
+    m.reference_force = force;
+  }
+  if (d.alpha.size()) d.alpha *= 1.0 - loss;
+  std::vector<double> string_stiffness(static_cast<size_t>(s.num_strings()));
+  for (int k = 0; k < s.num_strings(); ++k)
+    string_stiffness[static_cast<size_t>(k)] = d.strings[k].stiffness;
+  d.stability = AssessStability(s, d.reference_forces, string_stiffness, d.config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, d.reference_forces, d.loads);  // the prestress leans on them
+  d.reactions.array() += 0.0;
+  return d;
+}
+
 }  // namespace tbridge

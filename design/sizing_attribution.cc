@@ -17,12 +17,15 @@ enum KindIndex {
   kMinimumKind,
   kDynamicsKind,
   kComfortKind,
-  kSupportsKind
+  kSupportsKind,
+  kServiceStressKind,
+  kPrestressLossKind
 };
 
 // The row's kind; a strength row's share that the dynamic runs add (`dynamic` of its member)
 // goes to "dynamics" (DynamicShare).
 int KindOf(const SizingRow& row) {
+  if (row.lost) return kPrestressLossKind;  // whatever its kind: what the loss costs
   switch (row.kind) {
     case SizingRow::kStrength:
       return kStrengthKind;
@@ -38,6 +41,8 @@ int KindOf(const SizingRow& row) {
     case SizingRow::kSupportHorizontal:
     case SizingRow::kSupportVertical:
       return kSupportsKind;
+    case SizingRow::kServiceStress:
+      return kServiceStressKind;
     case SizingRow::kTaut:
     case SizingRow::kReferenceTaut:
       break;

@@ -104,6 +104,8 @@ const char* SizingRowKindName(SizingRow::Kind kind) {
       return "deflection";
     case SizingRow::kReferenceTaut:
       return "reference_taut";
+    case SizingRow::kServiceStress:
+      return "serviceability";
     case SizingRow::kSupportHorizontal:
     case SizingRow::kSupportVertical:
       return "supports";
@@ -119,7 +121,9 @@ struct SizingProblem::Impl {
   SizingCorrections corrections;
   int nb = 0, ns = 0, nm = 0, states = 0, groups = 0;
   // E_bar: the bars' modulus (their buckling); E, sigma_w: the strings' modulus and design stress.
-  double E = 0, E_bar = 0, sigma_w = 0, deflection_limit_m = 0, force_scale = 1, mass_scale = 1;
+  // sigma_ser: the strings' serviceability stress limit (the characteristic combinations).
+  double E = 0, E_bar = 0, sigma_w = 0, sigma_ser = 0, deflection_limit_m = 0, force_scale = 1,
+         mass_scale = 1;
   std::vector<double> rho;  // per member [kg/m^3]
   BarRule rule;
   std::vector<double> length, min_area;
@@ -219,6 +223,11 @@ struct SizingProblem::Impl {
   };
   mutable State st;
 
+  // The share of the self-stress coefficients this problem's reference state carries: 1, or
+  // 1 - design.prestress_loss in the problem of the state after the loss (its rows are that
+  // state's, functions of the same variables).
+  double alpha_factor = 1.0;
+
   int num_variables() const { return groups + states; }
   std::vector<double> Areas(const Eigen::VectorXd& x) const {
     std::vector<double> a(nm);
@@ -226,7 +235,7 @@ struct SizingProblem::Impl {
     return a;
   }
   Eigen::VectorXd Reference(const Eigen::VectorXd& x) const {
-    return states ? Eigen::VectorXd(x_g + N * (force_scale * x.tail(states))) : x_g;
+    return states ? Eigen::VectorXd(x_g + N * (force_scale * alpha_factor * x.tail(states))) : x_g;
   }
   // The member forces of combination c for force changes dx (members x columns) and the
   // reference forces xr.
@@ -379,25 +388,33 @@ struct SizingProblem::Impl {
            (h * horizontal_capacity);
   }
 
+  // The rows of a demand against a resistance: a string's strength and serviceability stress,
+  // a bar's buckling and yield.
   static bool IsStrength(const SizingRow& row) {
-    return row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling || row.kind == SizingRow::kYield;
+    return row.kind == SizingRow::kStrength || row.kind == SizingRow::kBuckling ||
+           row.kind == SizingRow::kYield || row.kind == SizingRow::kServiceStress;
+  }
+  static bool IsStringStress(const SizingRow& row) {
+    return row.kind == SizingRow::kStrength || row.kind == SizingRow::kServiceStress;
   }
   // The resistance of row's member [N] and its derivative by the area [N/m^2] (strength
   // rows): a string's at `area`, a bar's of its capacity `cap` (unread for a string).
   Resistance ResistanceOf(const SizingRow& row, double area, const BarCapacity& cap) const {
     if (row.kind == SizingRow::kStrength) return {sigma_w * area, sigma_w};
+    if (row.kind == SizingRow::kServiceStress) return {sigma_ser * area, sigma_ser};
     return row.kind == SizingRow::kBuckling ? Resistance{cap.buckling, cap.d_buckling}
                                             : Resistance{cap.yield, cap.d_yield};
   }
   // At `area`.
   Resistance ResistanceAt(const SizingRow& row, double area) const {
-    return ResistanceOf(row, area,
-                        row.kind == SizingRow::kStrength ? BarCapacity{} : BarResistance(area, length[row.member], rule, E_bar));
+    return ResistanceOf(
+        row, area,
+        IsStringStress(row) ? BarCapacity{} : BarResistance(area, length[row.member], rule, E_bar));
   }
   // At the evaluated state.
   Resistance ResistanceOf(const SizingRow& row) const {
     const size_t j = static_cast<size_t>(row.member);
-    return ResistanceOf(row, st.a[j], row.kind == SizingRow::kStrength ? BarCapacity{} : st.bar_capacity[j]);
+    return ResistanceOf(row, st.a[j], IsStringStress(row) ? BarCapacity{} : st.bar_capacity[j]);
   }
 
   // Row r as the solvers see it. A strength row is posed as (R(A) - kappa F) / R_ref, R_ref its
@@ -422,6 +439,7 @@ struct SizingProblem::Impl {
       case SizingRow::kStrength:
       case SizingRow::kBuckling:
       case SizingRow::kYield:
+      case SizingRow::kServiceStress:
         return 1.0 - corrections.demand_factor[j] * st.forces[c][j] / ResistanceOf(row).value;
       case SizingRow::kTaut:
         return (st.forces[c][j] - corrections.taut_margin_n[j]) / force_scale;
@@ -523,6 +541,7 @@ struct SizingProblem::Impl {
       case SizingRow::kStrength:
       case SizingRow::kBuckling:
       case SizingRow::kYield:
+      case SizingRow::kServiceStress:
         // As posed: g = (R(A) - kappa F) / R_ref, dg = (R'(A) dA - kappa dF) / R_ref.
         return (ResistanceOf(row).derivative * d_area - corrections.demand_factor[j] * d_force) /
                reference_resistance[r];
@@ -899,7 +918,7 @@ struct SizingProblem::Impl {
     std::vector<int> touched;
     for (int v = v_first; v < v_last; ++v) {
       LinearResponse::Direction dp;
-      dp.forces = N.col(v - groups) * force_scale;
+      dp.forces = N.col(v - groups) * (force_scale * alpha_factor);
       dp.stiffness = Eigen::VectorXd(ns);
       for (int q = 0; q < ns; ++q) dp.stiffness[q] = dp.forces[nb + q] / length[nb + q];
       const Eigen::MatrixXd action = st.lin->StiffnessAction(st.u, dp);
@@ -956,9 +975,12 @@ struct SizingProblem::Impl {
   }
 };
 
-SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, const std::vector<char>* keep)
-    : impl_(std::make_unique<Impl>()) {
-  Impl& p = *impl_;
+// Builds `p`, the rows of the reference state carrying alpha_factor of the prestress; the rows
+// posed are those `keep` flags from `offset` on (all without `keep`). Returns the number of
+// rows of the whole problem of that state.
+size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections corrections,
+                            const std::vector<char>* keep, size_t offset, double alpha_factor) {
+  p.alpha_factor = alpha_factor;
   p.s = d.topology.structure;
   const Structure& s = p.s;
   p.nb = s.num_bars();
@@ -969,6 +991,7 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   p.E = strings.youngs_modulus;
   p.E_bar = bars.youngs_modulus;
   p.sigma_w = strings.DesignStress();
+  p.sigma_ser = StringServiceStress(config);
   for (int j = 0; j < p.nm; ++j) p.rho.push_back(j < p.nb ? bars.density : strings.density);
   p.rule = BarRuleOf(config);
   p.deflection_limit_m = config.bridge.span / config.loads.deflection_limit;
@@ -1078,6 +1101,11 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
     for (int j = p.nb; j < p.nm; ++j) {
       if (p.must_taut[j]) p.rows.push_back({SizingRow::kTaut, j, c});
     }
+    // Each string's stress under the characteristic combinations, the reference loads alone
+    // included (the permanent case: the prestress is there at its highest against the load).
+    if (!p.combos[c].ultimate) {
+      for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kServiceStress, j, c});
+    }
     // The deflections are those from the reference state: none in a combination of the
     // reference loads alone (the permanent serviceability case), nor at a support.
     const bool deflects = p.station_factor[c] != 0 || !p.loads.col(p.base_column[c]).isZero(0.0);
@@ -1099,11 +1127,16 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   for (int j = p.nb; j < p.nm; ++j) {
     if (p.states > 0 && !p.N.row(j).isZero(1e-12)) p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
   }
+  const size_t whole = p.rows.size();
+  if (alpha_factor != 1.0) {
+    for (SizingRow& row : p.rows) row.lost = true;
+    for (SizingCombination& combo : p.combos) combo.label += " after the prestress loss";
+  }
   if (keep) {
-    if (keep->size() != p.rows.size()) throw ModelError("SizingProblem: one flag per row expected");
+    if (keep->size() < offset + whole) throw ModelError("SizingProblem: one flag per row expected");
     std::vector<SizingRow> kept;
-    for (size_t r = 0; r < p.rows.size(); ++r) {
-      if ((*keep)[r]) kept.push_back(p.rows[r]);
+    for (size_t r = 0; r < whole; ++r) {
+      if ((*keep)[offset + r]) kept.push_back(p.rows[r]);
     }
     p.rows = std::move(kept);
   }
@@ -1117,9 +1150,52 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections, con
   }
   p.IndexFunctionals();
   p.IndexImages(d, keep == nullptr ? &first_row : nullptr);
+  return whole;
+}
+
+SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections,
+                             const std::vector<char>* keep)
+    : impl_(std::make_unique<Impl>()) {
+  // The state after the prestress loss has the rows of every combination again, at the reduced
+  // prestress; the comfort rows are the intact state's alone (the modes the comfort check reads).
+  SizingCorrections lost_corrections = corrections;
+  lost_corrections.comfort.clear();
+  size_t whole = Build(*impl_, d, std::move(corrections), keep, 0, 1.0);
+  const double loss = PrestressLossOf(d.config);
+  if (loss > 0 && impl_->states > 0) {
+    lost_ = std::make_unique<Impl>();
+    whole += Build(*lost_, d, std::move(lost_corrections), keep, whole, 1.0 - loss);
+  }
+  if (keep && keep->size() != whole) throw ModelError("SizingProblem: one flag per row expected");
+  rows_ = impl_->rows;
+  representatives_ = impl_->row_representative;
+  if (lost_) {
+    const int offset = static_cast<int>(impl_->rows.size());
+    rows_.insert(rows_.end(), lost_->rows.begin(), lost_->rows.end());
+    for (const int r : lost_->row_representative) representatives_.push_back(r + offset);
+  }
 }
 
 SizingProblem::~SizingProblem() = default;
+
+std::pair<const SizingProblem::Impl*, int> SizingProblem::Part(int r) const {
+  const int intact = static_cast<int>(impl_->rows.size());
+  return r < intact ? std::pair<const Impl*, int>{impl_.get(), r}
+                    : std::pair<const Impl*, int>{lost_.get(), r - intact};
+}
+
+const Eigen::MatrixXd& SizingProblem::JacobianAt(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+  if (!lost_) return impl_->JacobianAt(x);
+  if (jacobian_x_.size() != x.size() || jacobian_x_ != x) {
+    const Eigen::MatrixXd& a = impl_->JacobianAt(x);
+    const Eigen::MatrixXd& b = lost_->JacobianAt(x);
+    jacobian_.resize(a.rows() + b.rows(), a.cols());
+    jacobian_.topRows(a.rows()) = a;
+    jacobian_.bottomRows(b.rows()) = b;
+    jacobian_x_ = x;
+  }
+  return jacobian_;
+}
 
 int SizingProblem::SymmetricStates(const Design& d) {
   const Structure& s = d.topology.structure;
@@ -1132,7 +1208,7 @@ int SizingProblem::SymmetricStates(const Design& d) {
 }
 
 int SizingProblem::num_variables() const { return impl_->num_variables(); }
-int SizingProblem::num_constraints() const { return static_cast<int>(impl_->rows.size()); }
+int SizingProblem::num_constraints() const { return static_cast<int>(rows_.size()); }
 
 void SizingProblem::VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const {
   const Impl& p = *impl_;
@@ -1175,19 +1251,29 @@ void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x
 
 void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {
   impl_->Evaluate(x);
-  g = impl_->st.g;
+  g.head(impl_->st.g.size()) = impl_->st.g;
+  if (lost_) {
+    lost_->Evaluate(x);
+    g.tail(lost_->st.g.size()) = lost_->st.g;
+  }
 }
 
 void SizingProblem::Margins(const Eigen::VectorXd& x, Eigen::VectorXd& margin) const {
   impl_->Evaluate(x);
-  margin = impl_->st.margin;
+  margin.resize(num_constraints());
+  margin.head(impl_->st.margin.size()) = impl_->st.margin;
+  if (lost_) {
+    lost_->Evaluate(x);
+    margin.tail(lost_->st.margin.size()) = lost_->st.margin;
+  }
 }
 
 const NlpProblem::Pattern& SizingProblem::JacobianPattern() const {
   const Impl& p = *impl_;
-  std::call_once(p.jacobian_formed, [&p]() {
-    p.jacobian.reserve(p.rows.size() * static_cast<size_t>(p.num_variables()));
-    for (int r = 0; r < static_cast<int>(p.rows.size()); ++r) {
+  const int nr = num_constraints();
+  std::call_once(p.jacobian_formed, [&p, nr]() {
+    p.jacobian.reserve(static_cast<size_t>(nr) * static_cast<size_t>(p.num_variables()));
+    for (int r = 0; r < nr; ++r) {
       for (int v = 0; v < p.num_variables(); ++v) p.jacobian.emplace_back(r, v);
     }
   });
@@ -1195,7 +1281,7 @@ const NlpProblem::Pattern& SizingProblem::JacobianPattern() const {
 }
 
 void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const {
-  const Eigen::MatrixXd& jac = impl_->JacobianAt(x);
+  const Eigen::MatrixXd& jac = JacobianAt(x);
   // Row-major, as the pattern lists (r, v) pairs.
   for (Eigen::Index r = 0; r < jac.rows(); ++r) {
     for (Eigen::Index v = 0; v < jac.cols(); ++v) values[r * jac.cols() + v] = jac(r, v);
@@ -1203,7 +1289,7 @@ void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, d
 }
 
 bool SizingProblem::DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const {
-  jac = impl_->JacobianAt(x);
+  jac = JacobianAt(x);
   return true;
 }
 
@@ -1224,7 +1310,7 @@ const NlpProblem::Pattern& SizingProblem::HessianPattern() const {
 void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma,
                                   const double* lambda, double* values) const {
   const Impl& p = *impl_;
-  const Eigen::MatrixXd& jac = p.JacobianAt(x);
+  const Eigen::MatrixXd& jac = JacobianAt(x);
   const Eigen::VectorXd binding = -Eigen::Map<const Eigen::VectorXd>(lambda, jac.rows());
   Eigen::VectorXd grad(p.num_variables());
   ObjectiveGradient(x, grad);
@@ -1257,45 +1343,55 @@ Eigen::VectorXd SizingProblem::AlphaOf(const Eigen::VectorXd& reference_forces) 
 }
 
 std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::VectorXd& x) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
-  std::vector<MemberDemand> out(p.nm);
-  if (!p.st.lin) return out;
-  for (size_t r = 0; r < p.rows.size(); ++r) {
-    const SizingRow& row = p.rows[r];
-    if (!Impl::IsStrength(row)) continue;
-    const int j = row.member;
-    const double resistance = p.ResistanceOf(row).value;
-    const double demand = p.corrections.demand_factor[j] * p.st.forces[row.combination][j];
-    if (demand / resistance > out[j].utilisation || out[j].row < 0) {
-      out[j] = {demand / resistance, demand, resistance, static_cast<int>(r)};
+  std::vector<MemberDemand> out(static_cast<size_t>(impl_->nm));
+  int offset = 0;
+  for (const Impl* p : {impl_.get(), lost_.get()}) {
+    if (p == nullptr) continue;
+    p->Evaluate(x);
+    if (!p->st.lin) return std::vector<MemberDemand>(static_cast<size_t>(impl_->nm));
+    for (size_t r = 0; r < p->rows.size(); ++r) {
+      const SizingRow& row = p->rows[r];
+      if (!Impl::IsStrength(row)) continue;
+      const int j = row.member;
+      const double resistance = p->ResistanceOf(row).value;
+      const double demand = p->corrections.demand_factor[j] * p->st.forces[row.combination][j];
+      if (demand / resistance > out[j].utilisation || out[j].row < 0) {
+        out[j] = {demand / resistance, demand, resistance, offset + static_cast<int>(r)};
+      }
     }
+    offset += static_cast<int>(p->rows.size());
   }
   return out;
 }
 
 double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
   double largest = 0;
-  if (!p.st.lin) return largest;
-  for (size_t c = 0; c < p.combos.size(); ++c) {
-    if (p.combos[c].ultimate || !p.combo_read[c]) continue;  // a combination no row reads has no column
-    for (int v : p.deck_nodes) largest = std::max(largest, std::abs(p.Vertical(static_cast<int>(c), v, p.st.u)));
+  for (const Impl* p : {impl_.get(), lost_.get()}) {
+    if (p == nullptr) continue;
+    p->Evaluate(x);
+    if (!p->st.lin) continue;
+    for (size_t c = 0; c < p->combos.size(); ++c) {
+      if (p->combos[c].ultimate || !p->combo_read[c])
+        continue;  // a combination no row reads has no column
+      for (int v : p->deck_nodes)
+        largest = std::max(largest, std::abs(p->Vertical(static_cast<int>(c), v, p->st.u)));
+    }
   }
   return largest;
 }
 
 SizingProblem::Reactions SizingProblem::LargestReactions(const Eigen::VectorXd& x) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
   Reactions out;
-  if (!p.st.lin) return out;
-  for (const SizingRow& row : p.rows) {
-    if (!Impl::IsSupport(row)) continue;
-    const Eigen::Vector3d r = p.Reaction(row.combination, row.member);
-    out.horizontal = std::max(out.horizontal, std::hypot(r.x(), r.z()));
-    out.vertical = std::max(out.vertical, std::abs(r.y()));
+  for (const Impl* p : {impl_.get(), lost_.get()}) {
+    if (p == nullptr) continue;
+    p->Evaluate(x);
+    if (!p->st.lin) continue;
+    for (const SizingRow& row : p->rows) {
+      if (!Impl::IsSupport(row)) continue;
+      const Eigen::Vector3d r = p->Reaction(row.combination, row.member);
+      out.horizontal = std::max(out.horizontal, std::hypot(r.x(), r.z()));
+      out.vertical = std::max(out.vertical, std::abs(r.y()));
+    }
   }
   return out;
 }
@@ -1303,15 +1399,19 @@ SizingProblem::Reactions SizingProblem::LargestReactions(const Eigen::VectorXd& 
 double SizingProblem::mass_scale_kg() const { return impl_->mass_scale; }
 double SizingProblem::force_scale_n() const { return impl_->force_scale; }
 double SizingProblem::area_scale_m2(int group) const { return impl_->area_scale[group]; }
-double SizingProblem::row_scale(int r) const { return impl_->reference_resistance[r]; }
+double SizingProblem::row_scale(int r) const {
+  const auto [p, local] = Part(r);
+  return p->reference_resistance[static_cast<size_t>(local)];
+}
 
-const std::vector<SizingRow>& SizingProblem::rows() const { return impl_->rows; }
+const std::vector<SizingRow>& SizingProblem::rows() const { return rows_; }
 const std::vector<SizingCombination>& SizingProblem::combinations() const { return impl_->combos; }
 const std::vector<int>& SizingProblem::group_of() const { return impl_->group_of; }
 
 const std::string& SizingProblem::RowLabel(int r) const {
-  const Impl& p = *impl_;
-  const SizingRow& row = p.rows[static_cast<size_t>(r)];
+  const auto [part, local] = Part(r);
+  const Impl& p = *part;
+  const SizingRow& row = p.rows[static_cast<size_t>(local)];
   if (row.kind == SizingRow::kComfort)
     return p.corrections.comfort[static_cast<size_t>(row.member)].label;
   static const std::string kNone;
@@ -1323,12 +1423,12 @@ const std::vector<ComfortRow>& SizingProblem::comfort_rows() const {
 }
 
 double SizingProblem::ComfortOmega2(int r, const Eigen::VectorXd& x) const {
-  const Impl& p = *impl_;
-  p.Evaluate(x);
-  return p.ComfortQuotient(p.rows[static_cast<size_t>(r)].member).value();
+  const auto [part, local] = Part(r);
+  part->Evaluate(x);
+  return part->ComfortQuotient(part->rows[static_cast<size_t>(local)].member).value();
 }
 
-const std::vector<int>& SizingProblem::representatives() const { return impl_->row_representative; }
+const std::vector<int>& SizingProblem::representatives() const { return representatives_; }
 
 SizingCorrections SizingProblem::ImageCorrections(const SizingCorrections& c) const {
   const Impl& p = *impl_;

@@ -10,6 +10,8 @@
 //        for every combination c: T_cs >= tau_s for the strings that must stay taut,
 //        for every serviceability combination c:
 //          kappa_d |v_cn| <= span / deflection_limit at each deck node,
+//          kappa_j T_cs <= sigma_ser A_s for every string (the characteristic stress limit of a
+//          tension component, MemberMaterial::ServiceStress),
 //        T_s >= 0 in the reference state, A_j >= the member's minimum area,
 //        for each comfort row: omega_k^2(A, alpha) >= (or <=) its target (ComfortRow),
 //        for every ultimate combination c and abutment a, where supports.* gives a capacity:
@@ -30,6 +32,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "design/design.h"
@@ -95,6 +98,7 @@ struct SizingRow {
     kDeflectionDown,
     kDeflectionUp,
     kReferenceTaut,
+    kServiceStress,  // a string's stress in a characteristic combination, at most sigma_ser
     kSupportHorizontal,
     kSupportVertical,
     kComfort  // the last: kComfort + 1 kinds
@@ -104,6 +108,9 @@ struct SizingRow {
   // far end) for a support row, the SizingCorrections::comfort entry for a comfort row
   int member = -1;
   int combination = -1;
+  // A row of the state after the prestress loss (design.prestress_loss): the self-stress
+  // coefficients reduced by it, G's forces kept; `combination` is that state's.
+  bool lost = false;
 };
 const char* SizingRowKindName(SizingRow::Kind kind);
 
@@ -198,7 +205,7 @@ class SizingProblem final : public NlpProblem {
   // Row r's scale as posed: a strength row is (R(A) - kappa F) / row_scale(r), its member's
   // resistance at the problem's own area [N]; 1 for the other rows.
   double row_scale(int r) const;
-  const std::vector<SizingCombination>& combinations() const;
+  const std::vector<SizingCombination>& combinations() const;  // the intact state's
   // What row r is about, for the report: its combination's label, or a comfort row's.
   const std::string& RowLabel(int r) const;
   const std::vector<ComfortRow>& comfort_rows() const;  // SizingCorrections::comfort
@@ -220,7 +227,17 @@ class SizingProblem final : public NlpProblem {
 
  private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  static size_t Build(Impl& p, const Design& d, SizingCorrections corrections,
+                      const std::vector<char>* keep, size_t offset, double alpha_factor);
+  // Row r's part (the intact state's or the lost state's) and its index there.
+  std::pair<const Impl*, int> Part(int r) const;
+  const Eigen::MatrixXd& JacobianAt(const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  std::unique_ptr<Impl> impl_;   // the reference state as designed
+  std::unique_ptr<Impl> lost_;   // after the prestress loss, where there is one
+  std::vector<SizingRow> rows_;  // impl_'s, then lost_'s
+  std::vector<int> representatives_;
+  mutable Eigen::MatrixXd jacobian_;  // both parts' Jacobians stacked, at jacobian_x_
+  mutable Eigen::VectorXd jacobian_x_;
 };
 
 }  // namespace tbridge

@@ -80,6 +80,10 @@ struct StaticCheck {
   int stations = 0;               // deck stations of a travelling family, each solved linearly
   int nonlinear_solves = 0;       // cases and stations solved nonlinearly (each in `cases`)
   int mirrored = 0;  // stations in `cases` taken as the mirror image of their image's solve
+  // The share of the prestress the check was also run without (design.prestress_loss; 0: not
+  // run so): its cases follow the intact ones in `cases`, labelled "... after the prestress
+  // loss", and every finding is the larger of the two states'.
+  double prestress_loss = 0;
   bool all_converged = true;
   std::vector<AbutmentFinding> abutments;  // x = 0 first
   // Not run when not done; failed when a case found no equilibrium, a deflection exceeds its
@@ -136,10 +140,11 @@ struct DynamicCheck {
 
 // What drives the verified sizing's mass (design/sizing_attribution.h).
 // The kinds of constraint, in the order the outputs list them.
-inline constexpr const char* kConstraintKinds[] = {"strength",   "buckling",     "yield",
-                                                   "deflection", "taut_strings", "minimum_sizes",
-                                                   "dynamics",   "comfort",      "supports"};
-inline constexpr int kNumConstraintKinds = 9;
+inline constexpr const char* kConstraintKinds[] = {
+    "strength",      "buckling", "yield",   "deflection", "taut_strings",
+    "minimum_sizes", "dynamics", "comfort", "supports",   "serviceability_stress",
+    "prestress_loss"};
+inline constexpr int kNumConstraintKinds = 11;
 
 struct MemberBinding {
   std::string kind;         // one of kConstraintKinds: the constraint that costs its group most

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/two_lanes.h"
@@ -20,8 +21,8 @@ namespace {
 // What the check measures of a state, as utilisations: per member [bars; strings] what its
 // finding would be (an ultimate case: yield or buckling of a bar, yield of a string; a
 // serviceability case: 1 - T / (A sigma_w) of a string that must stay taut, over 1 where it is
-// slack), then the largest deck deflection over its limit (serviceability). -inf where the
-// case measures nothing.
+// slack, or T / (A sigma_ser), its serviceability stress, where that is larger), then the largest
+// deck deflection over its limit (serviceability). -inf where the case measures nothing.
 class Measures {
  public:
   explicit Measures(const Design& d)
@@ -29,6 +30,7 @@ class Measures {
         rule_(BarRuleOf(d.config)),
         E_(BarMaterial(d.config).youngs_modulus),
         sigma_w_(StringMaterial(d.config).DesignStress()),
+        sigma_ser_(StringServiceStress(d.config)),
         limit_m_(d.config.bridge.span / d.config.loads.deflection_limit) {}
 
   int size() const { return static_cast<int>(d_.bars.size() + d_.strings.size()) + 1; }
@@ -52,7 +54,10 @@ class Measures {
     }
     for (size_t k = 0; k < d_.strings.size(); ++k) {
       const double area = d_.strings[k].area;
-      if (area > 0 && MustStayTaut(d_, static_cast<int>(k))) out[nb + k] = 1.0 - forces[nb + k] / (area * sigma_w_);
+      if (!(area > 0)) continue;
+      out[nb + k] = forces[nb + k] / (area * sigma_ser_);
+      if (MustStayTaut(d_, static_cast<int>(k)))
+        out[nb + k] = std::max(out[nb + k], 1.0 - forces[nb + k] / (area * sigma_w_));
     }
     const Structure& s = d_.topology.structure;
     double deflection = 0;
@@ -63,7 +68,8 @@ class Measures {
  private:
   const Design& d_;
   BarRule rule_;
-  double E_, sigma_w_, limit_m_;  // the bars' modulus, the strings' design stress
+  // The bars' modulus, the strings' design and serviceability stresses.
+  double E_, sigma_w_, sigma_ser_, limit_m_;
 };
 
 // The linear pass over every station of every travelling family: the response about the
@@ -166,6 +172,7 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   const double E = BarMaterial(d.config).youngs_modulus;
   const MemberMaterial strings = StringMaterial(d.config);
   const double sigma_w = strings.DesignStress();
+  const double sigma_ser = StringServiceStress(d.config);
 
   StaticCheck out;
   out.done = true;
@@ -334,6 +341,13 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     }
     if (r.converged && lc.state == LimitState::kServiceability) {
       for (size_t k = 0; k < d.strings.size(); ++k) {
+        const MemberSizing& m = d.strings[k];
+        if (m.area > 0) {
+          RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_ser,
+                       r.label, "serviceability");
+        }
+      }
+      for (size_t k = 0; k < d.strings.size(); ++k) {
         const Member& e = s.strings[k];
         const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
         const MemberSizing& m = d.strings[k];
@@ -355,7 +369,43 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   return out;
 }
 
+// The suffix of a case's label in the static check's second state (AddPrestressLoss).
+constexpr std::string_view kAfterLoss = " after the prestress loss";
+
+void AddPrestressLoss(StaticCheck& intact, StaticCheck lost, double loss, const Design& d) {
+  const std::string kAfter(kAfterLoss);
+  intact.prestress_loss = loss;
+  for (size_t j = 0; j < intact.members.size(); ++j) {
+    MemberFinding& f = lost.members[j];
+    if (f.utilisation > intact.members[j].utilisation) {
+      f.governing_case += kAfter;
+      intact.members[j] = f;
+    }
+    intact.force_max[j] = std::max(intact.force_max[j], lost.force_max[j]);
+    intact.force_min[j] = std::min(intact.force_min[j], lost.force_min[j]);
+  }
+  if (lost.deflection_max_m > intact.deflection_max_m) {
+    intact.deflection_max_m = lost.deflection_max_m;
+    intact.deflection_case = lost.deflection_case + kAfter;
+  }
+  intact.nonlinear_solves += lost.nonlinear_solves;
+  intact.mirrored += lost.mirrored;
+  intact.all_converged = intact.all_converged && lost.all_converged;
+  for (CaseResponse& r : lost.cases) {
+    r.label += kAfter;
+    intact.cases.push_back(std::move(r));
+  }
+  intact.abutments = AbutmentFindings(d, intact.cases);
+}
+
 CaseAt CaseOfLabel(const Design& d, const std::string& label, const std::string& key) {
+  // A case of the static check's second state (AddPrestressLoss): the same case, after the loss.
+  if (PrestressLossOf(d.config) > 0 && label.size() > kAfterLoss.size() &&
+      label.ends_with(kAfterLoss)) {
+    CaseAt at = CaseOfLabel(d, label.substr(0, label.size() - kAfterLoss.size()), key);
+    at.lost = true;
+    return at;
+  }
   std::string allowed;
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
@@ -366,10 +416,13 @@ CaseAt CaseOfLabel(const Design& d, const std::string& label, const std::string&
     }
     allowed += (allowed.empty() ? "" : ", ") + lc.name + (stations > 0 ? " at node N (a station's first deck node)" : "");
   }
+  if (PrestressLossOf(d.config) > 0)
+    allowed += "; each also followed by \"" + std::string(kAfterLoss.substr(1)) + "\"";
   throw ConfigError(key, "'" + label + "'", "a case of the design: " + allowed);
 }
 
-Eigen::Matrix3Xd SolveCaseNodes(const Design& d, const CaseAt& at) {
+Eigen::Matrix3Xd SolveCaseNodes(const Design& design, const CaseAt& at) {
+  const Design d = at.lost ? WithPrestressLoss(design, PrestressLossOf(design.config)) : design;
   const StaticModel model = StaticModelOf(d);
   const StaticState start = ReferenceState(model, d);
   const StaticResult result = SolveStatic(model, start, d.loads, d.actions.Loads(d.cases.at(at.case_index), at.station));

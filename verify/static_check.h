@@ -36,6 +36,12 @@ namespace tbridge {
 // "static check".
 StaticCheck CheckStatics(const Design& design, ProgressReporter* progress = nullptr);
 
+// Adds to `intact` (the check of a design) what `lost` found (the check of the design after
+// the loss of `loss` of its prestress, WithPrestressLoss): its cases, labelled "... after the
+// prestress loss", after the intact ones; each member's finding, the deflection and the abutments'
+// reactions the larger of the two.
+void AddPrestressLoss(StaticCheck& intact, StaticCheck lost, double loss, const Design& design);
+
 // The case and deck station a label names, as the static check and the design file write it:
 // "NAME" for a case that does not travel (station -1), "NAME at node N" for a travelling case
 // at the station whose first deck node is N (1-based). Throws ConfigError naming `key`, the
@@ -43,6 +49,7 @@ StaticCheck CheckStatics(const Design& design, ProgressReporter* progress = null
 struct CaseAt {
   int case_index = -1;
   int station = -1;
+  bool lost = false;  // "... after the prestress loss": the case on the design after its loss
 };
 CaseAt CaseOfLabel(const Design& design, const std::string& label, const std::string& key);
 

@@ -92,7 +92,14 @@ auto Timed(double& seconds, F&& f) {
 // the paper's) runs every check.
 enum class Screen { kNone, kStaticFailure };
 void RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress, Screen screen) {
-  StaticCheck statics = Timed(time_s.static_check, [&] { return CheckStatics(d, progress); });
+  StaticCheck statics = Timed(time_s.static_check, [&] {
+    StaticCheck out = CheckStatics(d, progress);
+    // The design passes with its prestress reduced by the loss too (design.prestress_loss).
+    const double loss = PrestressLossOf(d.config);
+    if (loss > 0)
+      AddPrestressLoss(out, CheckStatics(WithPrestressLoss(d, loss), progress), loss, d);
+    return out;
+  });
   double static_utilisation =
       statics.deflection_limit_m > 0 ? statics.deflection_max_m / statics.deflection_limit_m : 0;
   for (const MemberFinding& m : statics.members)
@@ -199,7 +206,7 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
       const SizingRow& row = problem.rows()[dm.row];
       m.force = std::max(dm.demand, 0.0);
       Govern(m, std::max(dm.demand, 0.0), dm.resistance, SizingRowKindName(row.kind));
-      m.governing_case = problem.combinations()[row.combination].label;
+      m.governing_case = problem.RowLabel(dm.row);
     }
     // What sizes it: its floor (within the solver's tolerance), its own strength where that
     // is used up, else the stiffness it gives (the deflection and taut-string rows).

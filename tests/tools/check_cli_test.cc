@@ -172,13 +172,24 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     fs::remove(out);
   }
   {
-    // The config's payload changed: the deck sized for it is another.
+    // The config's payload changed on the paper's design: its one case puts the payload into
+    // the deck's own load (eq. 9), so it is checked under its own loads only.
     json edited = original;
     edited["config"]["bridge"]["payload"] = 2 * original["config"]["bridge"]["payload"].get<double>();
     WriteJson(dir / "payload.json", edited);
     const auto r = RunTbridge(dir, "check " + Quote((dir / "payload.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Contains("'deck.thickness'"));
+    CHECK_THAT(r.err, Catch::Contains("'config.bridge.payload'"));
+    CHECK_FALSE(fs::exists(out));
+  }
+  {
+    // A key that draws the bridge (its span) is another design: refused, naming what differs.
+    json edited = original;
+    edited["config"]["bridge"]["span"] = 2 * original["config"]["bridge"]["span"].get<double>();
+    WriteJson(dir / "span.json", edited);
+    const auto r = RunTbridge(
+        dir, "check " + Quote((dir / "span.json").string()) + " -o " + Quote(out.string()));
+    CHECK(r.code == 2);
     CHECK_FALSE(fs::exists(out));
   }
   {
@@ -206,6 +217,33 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("a design file of tbridge design"));
   }
+}
+
+TEST_CASE(
+    "check: the default design under a payload 20 % higher FAILS as designed and says which load "
+    "changed",
+    "[tools]") {
+  // The bridge as designed (members, rest lengths, the deck plates sized for the payload its file
+  // records under designed_for) checked under the edited payload: its members were sized to
+  // utilisation 0.9999 under the old one, so the new one fails them, exit 1, with the output
+  // written and the change named (tests/verify/check_new_loads_test.cc checks the numbers).
+  const fs::path dir = FreshDir("check_payload");
+  const fs::path design = DesignFile(dir, "default.json"), out = dir / "checked.json";
+  json edited = ReadJson(design);
+  const double payload = edited["config"]["bridge"]["payload"].get<double>();
+  edited["config"]["bridge"]["payload"] = 1.2 * payload;
+  WriteJson(dir / "payload.json", edited);
+  const auto r = RunTbridge(
+      dir, "check " + Quote((dir / "payload.json").string()) + " -o " + Quote(out.string()));
+  INFO(r.err);
+  CHECK(r.code == 1);
+  CHECK_THAT(r.out, Catch::Contains("FAIL") &&
+                        Catch::Contains("loads changed from those designed for: bridge.payload"));
+  REQUIRE(fs::exists(out));
+  const json checked = ReadJson(out);
+  CHECK(checked["designed_for"]["bridge.payload"].get<double>() == payload);
+  CHECK(checked["loads_changed"].size() == 1);
+  CHECK(checked["verdict"]["pass"] == false);
 }
 
 TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as built and FAILS", "[tools]") {

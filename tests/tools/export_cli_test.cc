@@ -172,8 +172,15 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
     // deck (dead load alone, favourable) is compared absolutely, to 1e-5 of a millimetre.
     CHECK(error <= std::max(1e-5 * deflection[label], 1e-8));
   }
-  // Every case and station tbridge solved nonlinearly was compared.
-  CHECK(compared == static_cast<int>(design["deflection_max"].size()));
+  // Every case and station tbridge solved nonlinearly on the bridge as designed was compared (the
+  // export is that bridge's; the static check's cases after the prestress loss are another
+  // state's, tests/verify/prestress_loss_test.cc).
+  int intact = 0;
+  for (const json& c : design["deflection_max"])
+    intact +=
+        c["case"].get<std::string>().find("after the prestress loss") == std::string::npos ? 1 : 0;
+  CHECK(intact * 2 == static_cast<int>(design["deflection_max"].size()));
+  CHECK(compared == intact);
   WARN("CalculiX against tbridge: deflection " << worst_deflection << ", reactions " << worst_reaction << " over "
                                                 << compared << " cases and stations");
 
