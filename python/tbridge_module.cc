@@ -338,15 +338,28 @@ PYBIND11_MODULE(tbridge, m) {
 
   m.def(
       "simulate",
-      [](const py::object& config) {
-        const Config c = ConfigOf(config);
+      [](const py::object& input) {
+        // A Design, a design file (its dict or path: config, nodes and members), or a config.
+        std::optional<Design> written;
+        if (py::isinstance<Design>(input)) {
+          written = input.cast<Design>();
+        } else {
+          const nlohmann::json j =
+              py::isinstance<py::dict>(input)
+                  ? JsonOf(input)
+                  : ReadJsonFile(py::str(py::module_::import("os").attr("fspath")(input))
+                                     .cast<std::string>());
+          if (j.is_object() && j.contains("members") && j.contains("config"))
+            written = ReadDesign(j);
+        }
+        const Config c = written ? written->config : ConfigOf(input);
         PythonHistory history;
         RunHooks hooks;
         hooks.history = {&history};
         ScenarioResult scenario;
         try {
           py::gil_scoped_release release;
-          scenario = RunSimulateScenario(c, hooks);
+          scenario = written ? RunDesignScenario(*written, hooks) : RunSimulateScenario(c, hooks);
         } catch (const Interrupted&) {
           throw py::error_already_set();
         }
@@ -361,7 +374,11 @@ PYBIND11_MODULE(tbridge, m) {
         return out;
       },
       py::arg("config"),
-      "the dynamic run of a config's \"dynamics\" section, as tbridge simulate; Ctrl-C stops it (KeyboardInterrupt)");
+      "the dynamic run of a \"dynamics\" section, as tbridge simulate: of a config (dict or path), "
+      "or of a design "
+      "(a Design, or a design file's dict or path, edited or not) with its config's section, run "
+      "on the bridge as "
+      "written or as built; Ctrl-C stops it (KeyboardInterrupt)");
   m.def(
       "case_nodes",
       [](const Design& design, const std::string& label) {

@@ -291,3 +291,45 @@ def test_case_nodes_give_the_design_file_deflections(design):
         assert abs(dy.max() - entry["deflection"]) <= 1e-9 * entry["deflection"], entry["case"]
     with pytest.raises(tbridge.ConfigError, match="'case' = 'sls_travelling at node 99'"):
         tbridge.case_nodes(design, "sls_travelling at node 99")
+
+
+def test_simulate_of_a_design_is_tbridge_simulate_of_its_file(tmp_path):
+    """A Design, its file's path and its file's dict run as `tbridge simulate DESIGN.json` does:
+    the same bridge from the file's 17 digits, so the same run, bit for bit; edited, as built."""
+    config = json.loads(open(DEFAULT).read())
+    config["bridge"]["n"] = 2
+    # A short run of the verified bridge standing under its loads: 2000 RK4 steps.
+    config["dynamics"] = {"duration": 0.2, "dt": 1e-4, "integrator": "rk4",
+                          "record": {"nodes": [3], "every": 100}, "frequency": {"enabled": False}}
+    (tmp_path / "config.json").write_text(json.dumps(config))
+    path = tmp_path / "design.json"
+    code, err = cli("design", str(tmp_path / "config.json"), "-q", "-o", str(path))
+    assert code == 0, err
+    code, err = cli("simulate", str(path), "-q", "-o", str(tmp_path / "run"))
+    assert code == 0, err
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    del summary["run"]["wall_s"]
+    file = json.loads(path.read_text())
+    for given in (tbridge.load_design(str(path)), str(path), file):
+        run = tbridge.simulate(given)
+        del run.summary["run"]["wall_s"]
+        assert run.summary == summary
+    # The heaviest string 20 % thinner (area, radius, mass and stiffness together): run as built,
+    # another bridge, as the command line runs the edited file.
+    nb = file["topology"]["bars"]
+    k = max(range(nb, len(file["members"])), key=lambda i: file["members"][i]["mass"])
+    m = file["members"][k]
+    mat = file["config"]["material"]
+    m["area"] *= 0.8
+    m["radius"] = math.sqrt(m["area"] / math.pi)
+    m["mass"] = mat["density"] * m["area"] * m["length"]
+    m["stiffness"] = mat["youngs_modulus"] * m["area"] / m["rest_length"]
+    (tmp_path / "edited.json").write_text(json.dumps(file))
+    code, err = cli("simulate", str(tmp_path / "edited.json"), "-q", "-o", str(tmp_path / "edited"))
+    assert code == 0, err
+    edited = json.loads((tmp_path / "edited" / "summary.json").read_text())
+    del edited["run"]["wall_s"]
+    run = tbridge.simulate(file)
+    del run.summary["run"]["wall_s"]
+    assert run.summary == edited
+    assert edited["max_string_stress"] != summary["max_string_stress"]
