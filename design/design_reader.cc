@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
@@ -129,6 +130,24 @@ void RequireDeck(const json& file, const Deck& deck) {
                           "); the members' reference forces carry the deck's weight, so an edit of the deck is "
                           "another design: edit the config (loads, deck_sag_limit) and run tbridge design");
   }
+}
+
+// Whether a bar's area was edited: a bar has no stiffness or rest length that would tell, but
+// its resistance in the file is what its governing check found at the area it was designed
+// with (yield A sigma_w, buckling chi A f_y / gamma_M1, a run's peak against the smaller of the
+// two); 1e-9 relative allows the file's digits and no real edit.
+bool BarAreaEdited(const json& j, const MemberSizing& m, const BarRule& rule,
+                   double youngs_modulus) {
+  const std::string mode =
+      j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
+  if (!j.contains("resistance") || !j.at("resistance").is_number()) return false;
+  const double written = j.at("resistance").get<double>();
+  const BarCapacity cap = BarResistance(m.area, m.length, rule, youngs_modulus);
+  const double now = mode == "yield"      ? cap.yield
+                     : mode == "buckling" ? cap.buckling
+                     : mode == "dynamic"  ? std::min(cap.yield, cap.buckling)
+                                          : std::numeric_limits<double>::quiet_NaN();
+  return written > 0 && std::isfinite(now) && std::abs(now - written) > 1e-9 * written;
 }
 
 const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
@@ -290,6 +309,7 @@ Design ReadDesign(const json& file) {
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();
   const MemberMaterial bar_material = BarMaterial(d.config), string_material = StringMaterial(d.config);
+  const BarRule rule = BarRuleOf(d.config);
 
   // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it
   // exactly); or, in a file check wrote with its reference state re-derived ("as_built"), the
@@ -382,10 +402,17 @@ Design ReadDesign(const json& file) {
       }
     }
     RequireSection(j, m, mat, bar, where);
+    if (bar && BarAreaEdited(j, m, rule, mat.youngs_modulus)) edited.push_back(m.name);
     m.force = m.reference_force;
     m.force_density = m.force / m.length;
     m.stress = m.area > 0 ? m.force / m.area : 0.0;
     m.governed_by = j.value("governed_by", "");
+    // Its governing finding as written (check recomputes it): written again, as WithAreas writes a
+    // design, its resistance still tells an edited bar (BarAreaEdited).
+    m.mode = j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
+    m.resistance = j.contains("resistance") && j.at("resistance").is_number()
+                       ? j.at("resistance").get<double>()
+                       : 0.0;
     masses[k] = m.mass;
     d.reference_forces[k] = m.reference_force;
     (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;

@@ -41,7 +41,8 @@ TEST_CASE("as built: a heavier bar moves the reference state as the design's tan
   areas[bar] *= 1.5;
   const Design e = WithAreas(d, areas);
   REQUIRE(e.as_built.re_derived);
-  CHECK(e.as_built.edited.empty());  // a bar has no rest length to disagree with: only its weight
+  // Named among the edits: its resistance as designed no longer follows from its area.
+  CHECK(e.as_built.edited == std::vector<std::string>{d.bars[bar].name});
   CHECK(e.bars[bar].mass == Approx(1.5 * d.bars[bar].mass).epsilon(1e-12));
 
   // The linear response of the design's reference state to the loads' change.

@@ -274,6 +274,11 @@ TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as bui
   CHECK_THAT(r.out, Catch::Contains("FAIL") && Catch::Contains("as built: reference state re-derived"));
   const json checked = ReadJson(out);
   CHECK(checked["as_built"]["re_derived"] == true);
+  // The bar is named among the edits, as an edited string is (told by its resistance in the file,
+  // which no longer follows from its area), and the only one.
+  CHECK(checked["as_built"]["edited"] == json::array({original["members"][bar]["name"]}));
+  CHECK_THAT(r.out,
+             Catch::Contains("edited: " + original["members"][bar]["name"].get<std::string>()));
   CHECK(checked["resizing"].is_null());  // check sizes nothing: no record that reads "not converged"
   CHECK(checked["members"][bar]["area"].get<double>() == area);
   // A column's resistance falls faster than its area (buckling: with I ~ A^2): the bar that
