@@ -66,6 +66,10 @@ struct DesignConfig {
   // The fraction of the prestress lost over the bridge's life (relaxation, creep, anchorage
   // set): the design passes with the self-stress reduced by it, the permanent part kept.
   double prestress_loss = 0.05;
+  // Each string's fabricated rest length may be off by up to this fraction of its length: the
+  // design passes with the prestress at its highest and its lowest so made
+  // (design/prestress_states.h).
+  double rest_length_tolerance = 0.0;
 };
 
 // The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each
@@ -149,11 +153,8 @@ struct Config {
 inline MemberMaterial StringMaterial(const Config& c) {
   return StringMaterial(c.material, c.design.yield_safety_factor);
 }
-inline MemberMaterial BarMaterial(const Config& c) { return BarMaterial(c.material, c.design.yield_safety_factor); }
-// The prestress loss the design passes with (design.prestress_loss); none with the paper's
-// switches, whose one case is the paper's.
-inline double PrestressLossOf(const Config& c) {
-  return c.loads.cases == std::vector<std::string>{"paper"} ? 0.0 : c.design.prestress_loss;
+inline MemberMaterial BarMaterial(const Config& c) {
+  return BarMaterial(c.material, c.design.yield_safety_factor);
 }
 // The strings' serviceability stress limit [Pa] under the characteristic combinations.
 inline double StringServiceStress(const Config& c) {

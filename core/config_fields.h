@@ -291,6 +291,21 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
           "of "
           "anchorage set. Not with the paper's one case"},
       d.prestress_loss, Range{0.0, 1.0, false, true});
+  v.Number(KeyInfo{"rest_length_tolerance", "–",
+                   "each string's fabricated rest length may be off by up to this fraction of its "
+                   "length: the "
+                   "verified sizing poses every row again with the prestress at its highest (every "
+                   "string the "
+                   "prestress tensions short by it) and at its lowest (long by it, after "
+                   "`prestress_loss`), the "
+                   "worst-sign sum over the strings (docs/verified_sizing.md), and the static "
+                   "check runs on the "
+                   "bridge with its rest lengths so changed, as built. 5e-4 is 1 mm on a 2 m "
+                   "string; set it from "
+                   "the fabricator's stated cut-length tolerance. 0 (the default): the rest "
+                   "lengths as designed. "
+                   "Not with the paper's one case"},
+           d.rest_length_tolerance, Range{0.0, 0.1, false, true});
 }
 
 template <class L, class V>

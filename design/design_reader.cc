@@ -466,6 +466,30 @@ Design ReadDesign(const json& file) {
   return d;
 }
 
+Design WithRestLengths(const Design& design, const std::vector<double>& shortenings) {
+  std::ostringstream text;
+  WriteDesignJson(design, text);
+  json file = json::parse(text.str());
+  json& members = file.at("members");
+  const size_t nb = design.bars.size();
+  if (shortenings.size() + nb != members.size()) {
+    throw ConfigError("shortenings", std::to_string(shortenings.size()) + " values",
+                      "one per string: " + std::to_string(members.size() - nb));
+  }
+  const double modulus = StringMaterial(design.config).youngs_modulus;
+  for (size_t k = 0; k < shortenings.size(); ++k) {
+    json& m = members[nb + k];
+    const double rest = m.at("rest_length").get<double>() - shortenings[k];
+    if (!(rest > 0) || !std::isfinite(rest)) {
+      throw ConfigError("members[" + std::to_string(nb + k) + "].rest_length", NumberText(rest),
+                        "a rest length > 0 [m]");
+    }
+    m["rest_length"] = rest;
+    m["stiffness"] = modulus * m.at("area").get<double>() / rest;
+  }
+  return ReadDesign(file);
+}
+
 Design WithAreas(const Design& design, const std::vector<double>& areas) {
   std::ostringstream text;
   WriteDesignJson(design, text);

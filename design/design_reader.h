@@ -29,4 +29,11 @@ Design ReadDesign(const nlohmann::json& file);
 // an area < 0 or not finite, or `areas` of the wrong size.
 Design WithAreas(const Design& design, const std::vector<double>& areas);
 
+// `design` with its strings' rest lengths shortened by `shortenings` [m] (one per string, in the
+// file's order; negative: longer), each string's stiffness E A / L0 with it, as an engineer edits
+// the design file; then read back by ReadDesign, which re-derives the reference state as built.
+// Throws ConfigError naming the key for a rest length that would not be positive, or
+// `shortenings` of the wrong size.
+Design WithRestLengths(const Design& design, const std::vector<double>& shortenings);
+
 }  // namespace tbridge

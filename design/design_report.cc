@@ -825,12 +825,14 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
         d.statics.mirrored > 0 ? Format(", %d stations as mirror images of solved ones on this symmetric bridge",
                                         d.statics.mirrored)
                                : "";
-    const std::string loss = d.statics.prestress_loss > 0
-                                 ? Format(
-                                       ", each case also after the loss of %g %% of the prestress "
-                                       "(design.prestress_loss)",
-                                       100 * d.statics.prestress_loss)
-                                 : "";
+    std::string loss;
+    for (const std::string& state : d.statics.prestress_states)
+      loss += (loss.empty() ? "" : "; ") + state;
+    if (!loss.empty()) {
+      loss = Format(
+          "; each case also %s (design.prestress_loss %g, design.rest_length_tolerance %g)",
+          loss.c_str(), d.config.design.prestress_loss, d.config.design.rest_length_tolerance);
+    }
     line(Format(
         "static check: %d nonlinear solves%s (%s%s); largest "
         "deflection %.4g m (%s), limit span / %g = %.4g m; reactions balance the loads to %.1e",

@@ -19,13 +19,15 @@ enum KindIndex {
   kComfortKind,
   kSupportsKind,
   kServiceStressKind,
-  kPrestressLossKind
+  kRobustnessKind
 };
 
 // The row's kind; a strength row's share that the dynamic runs add (`dynamic` of its member)
 // goes to "dynamics" (DynamicShare).
 int KindOf(const SizingRow& row) {
-  if (row.lost) return kPrestressLossKind;  // whatever its kind: what the loss costs
+  // Whatever its kind, a row of another state of the prestress: what the loss and the rest-length
+  // tolerance cost.
+  if (row.state != 0) return kRobustnessKind;
   switch (row.kind) {
     case SizingRow::kStrength:
       return kStrengthKind;

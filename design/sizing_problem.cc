@@ -220,22 +220,69 @@ struct SizingProblem::Impl {
     std::vector<std::array<Eigen::Vector3d, 2>> turned;
     // Per abutment: the change of the members' weight on it from G's [N] (weight_share).
     std::array<double, 2> weight_change{};
+    // The tolerance's change of the self-stress by the variables (states x variables), where the
+    // part has one (ToleranceShift).
+    Eigen::MatrixXd shift_jac;
   };
   mutable State st;
 
-  // The share of the self-stress coefficients this problem's reference state carries: 1, or
-  // 1 - design.prestress_loss in the problem of the state after the loss (its rows are that
-  // state's, functions of the same variables).
+  // The state of the prestress this part's rows are in (design/prestress_states.h): the share of
+  // the self-stress coefficients its reference state carries (1, or 1 - design.prestress_loss),
+  // and the rest-length tolerance's change of them: tolerance_sign (+1 short, -1 long, 0 none)
+  // times ToleranceShift at the point's areas and prestress as designed. Its rows are functions of
+  // the same variables.
   double alpha_factor = 1.0;
+  int tolerance_sign = 0;
+  std::vector<double> shortening;  // per string [m]: the pattern, held (ToleranceShortenings)
+  int state = 0;
 
   int num_variables() const { return groups + states; }
+
+  // The change of the self-stress coefficients [N] the strings' `shortening` makes at the areas
+  // `a` and the prestress as designed of x: N^T F N d = N^T delta, F each string's flexibility
+  // l / (E A + T) (its tangent: E A / L0), bars rigid (design/prestress_states.h). With `jac`,
+  // its derivatives by the variables (states x variables): dd = -(N^T F N)^-1 N^T dF N d.
+  Eigen::VectorXd ToleranceShift(const std::vector<double>& a, const Eigen::VectorXd& x,
+                                 Eigen::MatrixXd* jac) const {
+    const Eigen::VectorXd designed = x_g + N * (force_scale * x.tail(states));
+    Eigen::VectorXd f(ns), df_dt(ns);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(states);
+    for (int q = 0; q < ns; ++q) {
+      const int j = nb + q;
+      const double k = E * a[static_cast<size_t>(j)] + designed[j];
+      f[q] = length[j] / k;
+      df_dt[q] = -length[j] / (k * k);
+      rhs += N.row(j).transpose() * shortening[static_cast<size_t>(q)];
+    }
+    const Eigen::MatrixXd ns_rows = N.bottomRows(ns);
+    const Eigen::LDLT<Eigen::MatrixXd> g((ns_rows.transpose() * f.asDiagonal() * ns_rows).eval());
+    const Eigen::VectorXd d = g.solve(rhs);
+    if (jac != nullptr) {
+      // Per string, N_q^T (N_q d): what its flexibility's change does to N^T F N d.
+      const Eigen::VectorXd along = ns_rows * d;
+      Eigen::MatrixXd dg_d = Eigen::MatrixXd::Zero(states, num_variables());
+      for (int q = 0; q < ns; ++q) {
+        const int j = nb + q, v = group_of[static_cast<size_t>(j)];
+        const Eigen::VectorXd row = ns_rows.row(q).transpose() * (along[q] * df_dt[q]);
+        dg_d.col(v) += row * E * area_scale[static_cast<size_t>(v)];  // dk/dx_v = E area_scale
+        for (int m = 0; m < states; ++m) dg_d.col(groups + m) += row * N(j, m) * force_scale;
+      }
+      *jac = -g.solve(dg_d);
+    }
+    return d;
+  }
   std::vector<double> Areas(const Eigen::VectorXd& x) const {
     std::vector<double> a(nm);
     for (int j = 0; j < nm; ++j) a[j] = area_scale[group_of[j]] * x[group_of[j]];
     return a;
   }
-  Eigen::VectorXd Reference(const Eigen::VectorXd& x) const {
-    return states ? Eigen::VectorXd(x_g + N * (force_scale * alpha_factor * x.tail(states))) : x_g;
+  // The reference forces at x; with the tolerance, its change of the self-stress then in `shift`
+  // (and its derivatives in `shift_jac`, where asked).
+  Eigen::VectorXd Reference(const Eigen::VectorXd& x, Eigen::MatrixXd* shift_jac = nullptr) const {
+    if (!states) return x_g;
+    Eigen::VectorXd alpha = force_scale * alpha_factor * x.tail(states);
+    if (tolerance_sign != 0) alpha += tolerance_sign * ToleranceShift(Areas(x), x, shift_jac);
+    return x_g + N * alpha;
   }
   // The member forces of combination c for force changes dx (members x columns) and the
   // reference forces xr.
@@ -263,7 +310,7 @@ struct SizingProblem::Impl {
     // combinations), its resistance one.
     st.bar_capacity.resize(static_cast<size_t>(nb));
     for (int j = 0; j < nb; ++j) st.bar_capacity[static_cast<size_t>(j)] = BarResistance(st.a[j], length[j], rule, E_bar);
-    st.xr = Reference(x);
+    st.xr = Reference(x, &st.shift_jac);
     Eigen::VectorXd k(ns);
     for (int q = 0; q < ns; ++q) k[q] = (E * st.a[nb + q] + st.xr[nb + q]) / length[nb + q];
     st.g.resize(static_cast<Eigen::Index>(rows.size()));
@@ -831,6 +878,12 @@ struct SizingProblem::Impl {
     const int half = (nv + 1) / 2;
     InTwoLanes([&] { columns(half, nv); }, [&] { columns(0, half); });
     ComfortGradients();
+    if (tolerance_sign != 0 && states > 0) {
+      // The chain through the tolerance's change of the self-stress: the rows by the self-stress
+      // coefficients per newton (the state columns over their scale) times its derivatives.
+      const Eigen::MatrixXd by_alpha = st.jac.rightCols(states) / (force_scale * alpha_factor);
+      st.jac += tolerance_sign * (by_alpha * st.shift_jac);
+    }
     st.have_jac = true;
   }
 
@@ -979,8 +1032,10 @@ struct SizingProblem::Impl {
 // posed are those `keep` flags from `offset` on (all without `keep`). Returns the number of
 // rows of the whole problem of that state.
 size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections corrections,
-                            const std::vector<char>* keep, size_t offset, double alpha_factor) {
-  p.alpha_factor = alpha_factor;
+                            const std::vector<char>* keep, size_t offset,
+                            const PrestressStateSpec& state) {
+  p.alpha_factor = state.alpha_factor;
+  p.state = static_cast<int>(state.state);
   p.s = d.topology.structure;
   const Structure& s = p.s;
   p.nb = s.num_bars();
@@ -1128,10 +1183,8 @@ size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections correcti
     if (p.states > 0 && !p.N.row(j).isZero(1e-12)) p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
   }
   const size_t whole = p.rows.size();
-  if (alpha_factor != 1.0) {
-    for (SizingRow& row : p.rows) row.lost = true;
-    for (SizingCombination& combo : p.combos) combo.label += " after the prestress loss";
-  }
+  for (SizingRow& row : p.rows) row.state = p.state;
+  for (SizingCombination& combo : p.combos) combo.label += state.suffix;
   if (keep) {
     if (keep->size() < offset + whole) throw ModelError("SizingProblem: one flag per row expected");
     std::vector<SizingRow> kept;
@@ -1156,42 +1209,60 @@ size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections correcti
 SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections,
                              const std::vector<char>* keep)
     : impl_(std::make_unique<Impl>()) {
-  // The state after the prestress loss has the rows of every combination again, at the reduced
-  // prestress; the comfort rows are the intact state's alone (the modes the comfort check reads).
-  SizingCorrections lost_corrections = corrections;
-  lost_corrections.comfort.clear();
-  size_t whole = Build(*impl_, d, std::move(corrections), keep, 0, 1.0);
-  const double loss = PrestressLossOf(d.config);
-  if (loss > 0 && impl_->states > 0) {
-    lost_ = std::make_unique<Impl>();
-    whole += Build(*lost_, d, std::move(lost_corrections), keep, whole, 1.0 - loss);
+  // The other states of the prestress have the rows of every combination again; the comfort rows
+  // are the design's state's alone (the modes the comfort check reads).
+  SizingCorrections other_corrections = corrections;
+  other_corrections.comfort.clear();
+  const std::vector<PrestressStateSpec> states = PrestressStatesOf(d.config);
+  size_t whole = Build(*impl_, d, std::move(corrections), keep, 0, states.front());
+  if (impl_->states > 0) {
+    // The rest-length tolerance's pattern, the design's (design/prestress_states.h); its change
+    // of the self-stress follows the variables.
+    const std::vector<double> shortening = ToleranceShortenings(d);
+    for (size_t k = 1; k < states.size(); ++k) {
+      extra_.push_back(std::make_unique<Impl>());
+      whole += Build(*extra_.back(), d, other_corrections, keep, whole, states[k]);
+      extra_.back()->tolerance_sign = states[k].tolerance_sign;
+      extra_.back()->shortening = shortening;
+    }
   }
   if (keep && keep->size() != whole) throw ModelError("SizingProblem: one flag per row expected");
   rows_ = impl_->rows;
   representatives_ = impl_->row_representative;
-  if (lost_) {
-    const int offset = static_cast<int>(impl_->rows.size());
-    rows_.insert(rows_.end(), lost_->rows.begin(), lost_->rows.end());
-    for (const int r : lost_->row_representative) representatives_.push_back(r + offset);
+  for (const std::unique_ptr<Impl>& part : extra_) {
+    const int offset = static_cast<int>(rows_.size());
+    rows_.insert(rows_.end(), part->rows.begin(), part->rows.end());
+    for (const int r : part->row_representative) representatives_.push_back(r + offset);
   }
 }
 
 SizingProblem::~SizingProblem() = default;
 
+std::vector<const SizingProblem::Impl*> SizingProblem::Parts() const {
+  std::vector<const Impl*> out{impl_.get()};
+  for (const std::unique_ptr<Impl>& part : extra_) out.push_back(part.get());
+  return out;
+}
+
 std::pair<const SizingProblem::Impl*, int> SizingProblem::Part(int r) const {
-  const int intact = static_cast<int>(impl_->rows.size());
-  return r < intact ? std::pair<const Impl*, int>{impl_.get(), r}
-                    : std::pair<const Impl*, int>{lost_.get(), r - intact};
+  for (const Impl* p : Parts()) {
+    const int n = static_cast<int>(p->rows.size());
+    if (r < n) return {p, r};
+    r -= n;
+  }
+  throw std::out_of_range("SizingProblem: no row " + std::to_string(r));
 }
 
 const Eigen::MatrixXd& SizingProblem::JacobianAt(const Eigen::Ref<const Eigen::VectorXd>& x) const {
-  if (!lost_) return impl_->JacobianAt(x);
+  if (extra_.empty()) return impl_->JacobianAt(x);
   if (jacobian_x_.size() != x.size() || jacobian_x_ != x) {
-    const Eigen::MatrixXd& a = impl_->JacobianAt(x);
-    const Eigen::MatrixXd& b = lost_->JacobianAt(x);
-    jacobian_.resize(a.rows() + b.rows(), a.cols());
-    jacobian_.topRows(a.rows()) = a;
-    jacobian_.bottomRows(b.rows()) = b;
+    jacobian_.resize(num_constraints(), num_variables());
+    Eigen::Index row = 0;
+    for (const Impl* p : Parts()) {
+      const Eigen::MatrixXd& part = p->JacobianAt(x);
+      jacobian_.middleRows(row, part.rows()) = part;
+      row += part.rows();
+    }
     jacobian_x_ = x;
   }
   return jacobian_;
@@ -1250,21 +1321,21 @@ void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x
 }
 
 void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {
-  impl_->Evaluate(x);
-  g.head(impl_->st.g.size()) = impl_->st.g;
-  if (lost_) {
-    lost_->Evaluate(x);
-    g.tail(lost_->st.g.size()) = lost_->st.g;
+  Eigen::Index row = 0;
+  for (const Impl* p : Parts()) {
+    p->Evaluate(x);
+    g.segment(row, p->st.g.size()) = p->st.g;
+    row += p->st.g.size();
   }
 }
 
 void SizingProblem::Margins(const Eigen::VectorXd& x, Eigen::VectorXd& margin) const {
-  impl_->Evaluate(x);
   margin.resize(num_constraints());
-  margin.head(impl_->st.margin.size()) = impl_->st.margin;
-  if (lost_) {
-    lost_->Evaluate(x);
-    margin.tail(lost_->st.margin.size()) = lost_->st.margin;
+  Eigen::Index row = 0;
+  for (const Impl* p : Parts()) {
+    p->Evaluate(x);
+    margin.segment(row, p->st.margin.size()) = p->st.margin;
+    row += p->st.margin.size();
   }
 }
 
@@ -1345,8 +1416,7 @@ Eigen::VectorXd SizingProblem::AlphaOf(const Eigen::VectorXd& reference_forces) 
 std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::VectorXd& x) const {
   std::vector<MemberDemand> out(static_cast<size_t>(impl_->nm));
   int offset = 0;
-  for (const Impl* p : {impl_.get(), lost_.get()}) {
-    if (p == nullptr) continue;
+  for (const Impl* p : Parts()) {
     p->Evaluate(x);
     if (!p->st.lin) return std::vector<MemberDemand>(static_cast<size_t>(impl_->nm));
     for (size_t r = 0; r < p->rows.size(); ++r) {
@@ -1366,8 +1436,7 @@ std::vector<SizingProblem::MemberDemand> SizingProblem::Demands(const Eigen::Vec
 
 double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
   double largest = 0;
-  for (const Impl* p : {impl_.get(), lost_.get()}) {
-    if (p == nullptr) continue;
+  for (const Impl* p : Parts()) {
     p->Evaluate(x);
     if (!p->st.lin) continue;
     for (size_t c = 0; c < p->combos.size(); ++c) {
@@ -1382,8 +1451,7 @@ double SizingProblem::LargestDeflection(const Eigen::VectorXd& x) const {
 
 SizingProblem::Reactions SizingProblem::LargestReactions(const Eigen::VectorXd& x) const {
   Reactions out;
-  for (const Impl* p : {impl_.get(), lost_.get()}) {
-    if (p == nullptr) continue;
+  for (const Impl* p : Parts()) {
     p->Evaluate(x);
     if (!p->st.lin) continue;
     for (const SizingRow& row : p->rows) {

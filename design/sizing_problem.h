@@ -17,7 +17,9 @@
 //        for every ultimate combination c and abutment a, where supports.* gives a capacity:
 //          kappa_h |H_ca| <= H_cap, kappa_v |V_ca| <= V_cap (the reactions at the drawn
 //          directions: minus the member forces on the abutment's nodes and their loads),
-//   x_c = x_G + N alpha + dx_c(A, alpha),  dx_c the linear response to f_c - f_G.
+//   x_c = x_G + N alpha + dx_c(A, alpha),  dx_c the linear response to f_c - f_G;
+// every row but the comfort rows again in each other state of the prestress
+// (design/prestress_states.h: alpha -> (1 - loss) alpha -/+ the rest-length tolerance's change).
 //
 // kappa (per member), kappa_d and kappa_h, kappa_v correct the linear demand by what the nonlinear
 // static check and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut
@@ -37,6 +39,7 @@
 
 #include "design/design.h"
 #include "design/nlp.h"
+#include "design/prestress_states.h"
 
 namespace tbridge {
 
@@ -108,9 +111,9 @@ struct SizingRow {
   // far end) for a support row, the SizingCorrections::comfort entry for a comfort row
   int member = -1;
   int combination = -1;
-  // A row of the state after the prestress loss (design.prestress_loss): the self-stress
-  // coefficients reduced by it, G's forces kept; `combination` is that state's.
-  bool lost = false;
+  // The state of the prestress it is posed in (PrestressState, design/prestress_states.h: 0 as
+  // designed); `combination` is that state's.
+  int state = 0;
 };
 const char* SizingRowKindName(SizingRow::Kind kind);
 
@@ -228,15 +231,18 @@ class SizingProblem final : public NlpProblem {
  private:
   struct Impl;
   static size_t Build(Impl& p, const Design& d, SizingCorrections corrections,
-                      const std::vector<char>* keep, size_t offset, double alpha_factor);
-  // Row r's part (the intact state's or the lost state's) and its index there.
+                      const std::vector<char>* keep, size_t offset,
+                      const PrestressStateSpec& state);
+  std::vector<const Impl*> Parts() const;  // impl_, then extra_'s
+  // Row r's part and its index there.
   std::pair<const Impl*, int> Part(int r) const;
   const Eigen::MatrixXd& JacobianAt(const Eigen::Ref<const Eigen::VectorXd>& x) const;
-  std::unique_ptr<Impl> impl_;   // the reference state as designed
-  std::unique_ptr<Impl> lost_;   // after the prestress loss, where there is one
-  std::vector<SizingRow> rows_;  // impl_'s, then lost_'s
+  std::unique_ptr<Impl> impl_;  // the prestress as designed
+  // The other states of the prestress the design must pass in (PrestressStatesOf), in order.
+  std::vector<std::unique_ptr<Impl>> extra_;
+  std::vector<SizingRow> rows_;  // the parts' rows, in order
   std::vector<int> representatives_;
-  mutable Eigen::MatrixXd jacobian_;  // both parts' Jacobians stacked, at jacobian_x_
+  mutable Eigen::MatrixXd jacobian_;  // the parts' Jacobians stacked, at jacobian_x_
   mutable Eigen::VectorXd jacobian_x_;
 };
 

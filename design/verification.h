@@ -80,10 +80,11 @@ struct StaticCheck {
   int stations = 0;               // deck stations of a travelling family, each solved linearly
   int nonlinear_solves = 0;       // cases and stations solved nonlinearly (each in `cases`)
   int mirrored = 0;  // stations in `cases` taken as the mirror image of their image's solve
-  // The share of the prestress the check was also run without (design.prestress_loss; 0: not
-  // run so): its cases follow the intact ones in `cases`, labelled "... after the prestress
-  // loss", and every finding is the larger of the two states'.
-  double prestress_loss = 0;
+  // The other states of the prestress the check also ran in (design/prestress_states.h: after
+  // the loss, with the rest lengths off by their tolerance), by the suffix of their cases'
+  // labels ("after the prestress loss"); their cases follow the design's own in `cases`, and
+  // every finding is the largest over the states.
+  std::vector<std::string> prestress_states;
   bool all_converged = true;
   std::vector<AbutmentFinding> abutments;  // x = 0 first
   // Not run when not done; failed when a case found no equilibrium, a deflection exceeds its
@@ -143,7 +144,7 @@ struct DynamicCheck {
 inline constexpr const char* kConstraintKinds[] = {
     "strength",      "buckling", "yield",   "deflection", "taut_strings",
     "minimum_sizes", "dynamics", "comfort", "supports",   "serviceability_stress",
-    "prestress_loss"};
+    "robustness"};
 inline constexpr int kNumConstraintKinds = 11;
 
 struct MemberBinding {

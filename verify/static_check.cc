@@ -12,6 +12,7 @@
 #include "design/abutments.h"
 #include "design/case_envelope.h"
 #include "design/mirror.h"
+#include "design/prestress_states.h"
 #include "design/static_model.h"
 
 namespace tbridge {
@@ -369,42 +370,66 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   return out;
 }
 
-// The suffix of a case's label in the static check's second state (AddPrestressLoss).
-constexpr std::string_view kAfterLoss = " after the prestress loss";
+namespace {
 
-void AddPrestressLoss(StaticCheck& intact, StaticCheck lost, double loss, const Design& d) {
-  const std::string kAfter(kAfterLoss);
-  intact.prestress_loss = loss;
-  for (size_t j = 0; j < intact.members.size(); ++j) {
-    MemberFinding& f = lost.members[j];
-    if (f.utilisation > intact.members[j].utilisation) {
-      f.governing_case += kAfter;
-      intact.members[j] = f;
+// Adds to `out` (the check of a design as designed) what `other` found in another state of its
+// prestress, whose cases' labels take `suffix`.
+void AddState(StaticCheck& out, StaticCheck other, const std::string& suffix) {
+  out.prestress_states.push_back(suffix.substr(1));
+  for (size_t j = 0; j < out.members.size(); ++j) {
+    MemberFinding& f = other.members[j];
+    if (f.utilisation > out.members[j].utilisation) {
+      f.governing_case += suffix;
+      out.members[j] = f;
     }
-    intact.force_max[j] = std::max(intact.force_max[j], lost.force_max[j]);
-    intact.force_min[j] = std::min(intact.force_min[j], lost.force_min[j]);
+    out.force_max[j] = std::max(out.force_max[j], other.force_max[j]);
+    out.force_min[j] = std::min(out.force_min[j], other.force_min[j]);
   }
-  if (lost.deflection_max_m > intact.deflection_max_m) {
-    intact.deflection_max_m = lost.deflection_max_m;
-    intact.deflection_case = lost.deflection_case + kAfter;
+  if (other.deflection_max_m > out.deflection_max_m) {
+    out.deflection_max_m = other.deflection_max_m;
+    out.deflection_case = other.deflection_case + suffix;
   }
-  intact.nonlinear_solves += lost.nonlinear_solves;
-  intact.mirrored += lost.mirrored;
-  intact.all_converged = intact.all_converged && lost.all_converged;
-  for (CaseResponse& r : lost.cases) {
-    r.label += kAfter;
-    intact.cases.push_back(std::move(r));
+  out.nonlinear_solves += other.nonlinear_solves;
+  out.mirrored += other.mirrored;
+  out.all_converged = out.all_converged && other.all_converged;
+  for (CaseResponse& r : other.cases) {
+    r.label += suffix;
+    out.cases.push_back(std::move(r));
   }
-  intact.abutments = AbutmentFindings(d, intact.cases);
+}
+
+}  // namespace
+
+StaticCheck CheckStaticsInEveryState(const Design& d, ProgressReporter* progress) {
+  StaticCheck out = CheckStatics(d, progress);
+  const std::vector<PrestressStateSpec> states = PrestressStatesOf(d);
+  for (size_t k = 1; k < states.size(); ++k) {
+    try {
+      AddState(out, CheckStatics(DesignInState(d, states[k]), progress), states[k].suffix);
+    } catch (const ConfigError& e) {
+      // The bridge with its rest lengths so changed does not stand: the check fails, and says so.
+      out.prestress_states.push_back(states[k].suffix.substr(1));
+      CaseResponse r;
+      r.label = "reference" + states[k].suffix;
+      r.message = e.what();
+      out.all_converged = false;
+      out.cases.push_back(std::move(r));
+    }
+  }
+  out.abutments = AbutmentFindings(d, out.cases);
+  return out;
 }
 
 CaseAt CaseOfLabel(const Design& d, const std::string& label, const std::string& key) {
-  // A case of the static check's second state (AddPrestressLoss): the same case, after the loss.
-  if (PrestressLossOf(d.config) > 0 && label.size() > kAfterLoss.size() &&
-      label.ends_with(kAfterLoss)) {
-    CaseAt at = CaseOfLabel(d, label.substr(0, label.size() - kAfterLoss.size()), key);
-    at.lost = true;
-    return at;
+  // A case in another state of the prestress (CheckStaticsInEveryState): by its label's suffix.
+  const std::vector<PrestressStateSpec> states = PrestressStatesOf(d);
+  for (size_t k = 1; k < states.size(); ++k) {
+    const std::string& suffix = states[k].suffix;
+    if (label.size() > suffix.size() && label.ends_with(suffix)) {
+      CaseAt at = CaseOfLabel(d, label.substr(0, label.size() - suffix.size()), key);
+      at.state = static_cast<int>(k);
+      return at;
+    }
   }
   std::string allowed;
   for (size_t c = 0; c < d.cases.size(); ++c) {
@@ -416,13 +441,16 @@ CaseAt CaseOfLabel(const Design& d, const std::string& label, const std::string&
     }
     allowed += (allowed.empty() ? "" : ", ") + lc.name + (stations > 0 ? " at node N (a station's first deck node)" : "");
   }
-  if (PrestressLossOf(d.config) > 0)
-    allowed += "; each also followed by \"" + std::string(kAfterLoss.substr(1)) + "\"";
+  for (size_t k = 1; k < states.size(); ++k)
+    allowed += "; each also followed by \"" + states[k].suffix.substr(1) + "\"";
   throw ConfigError(key, "'" + label + "'", "a case of the design: " + allowed);
 }
 
 Eigen::Matrix3Xd SolveCaseNodes(const Design& design, const CaseAt& at) {
-  const Design d = at.lost ? WithPrestressLoss(design, PrestressLossOf(design.config)) : design;
+  const Design d =
+      at.state > 0
+          ? DesignInState(design, PrestressStatesOf(design).at(static_cast<size_t>(at.state)))
+          : design;
   const StaticModel model = StaticModelOf(d);
   const StaticState start = ReferenceState(model, d);
   const StaticResult result = SolveStatic(model, start, d.loads, d.actions.Loads(d.cases.at(at.case_index), at.station));

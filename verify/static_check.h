@@ -36,11 +36,13 @@ namespace tbridge {
 // "static check".
 StaticCheck CheckStatics(const Design& design, ProgressReporter* progress = nullptr);
 
-// Adds to `intact` (the check of a design) what `lost` found (the check of the design after
-// the loss of `loss` of its prestress, WithPrestressLoss): its cases, labelled "... after the
-// prestress loss", after the intact ones; each member's finding, the deflection and the abutments'
-// reactions the larger of the two.
-void AddPrestressLoss(StaticCheck& intact, StaticCheck lost, double loss, const Design& design);
+// The static check of `design` in each state of its prestress (PrestressStatesOf: as designed,
+// after the loss, with the rest lengths off by their tolerance; DesignInState): the other
+// states' cases, their labels with the state's suffix, after the design's own; each member's
+// finding, the deflection and the abutments' reactions the largest over the states. A state with
+// no reference state (its rest lengths changed, the bridge does not stand) fails the check with
+// a case that says so.
+StaticCheck CheckStaticsInEveryState(const Design& design, ProgressReporter* progress = nullptr);
 
 // The case and deck station a label names, as the static check and the design file write it:
 // "NAME" for a case that does not travel (station -1), "NAME at node N" for a travelling case
@@ -49,7 +51,7 @@ void AddPrestressLoss(StaticCheck& intact, StaticCheck lost, double loss, const 
 struct CaseAt {
   int case_index = -1;
   int station = -1;
-  bool lost = false;  // "... after the prestress loss": the case on the design after its loss
+  int state = 0;  // the state of the prestress (PrestressStatesOf's index), by the label's suffix
 };
 CaseAt CaseOfLabel(const Design& design, const std::string& label, const std::string& key);
 

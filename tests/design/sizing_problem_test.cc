@@ -58,6 +58,7 @@ void CheckJacobian(const Design& d) {
   for (size_t e = 0; e < values.size(); ++e) {
     jac(problem.JacobianPattern()[e].first, problem.JacobianPattern()[e].second) = values[e];
   }
+  REQUIRE(jac.allFinite());  // a stable point in every state of the prestress
   // Central differences at 1e-6 of each variable (areas in cm^2 and the prestress in units of
   // the largest member force are O(1)): truncation O(h^2) ~ 1e-12 times the curvature, rounding
   // ~ 1e-16 / 1e-6 = 1e-10 per unit of g; 1e-6 of each column's largest entry holds both with
@@ -108,6 +109,26 @@ TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[des
   SECTION("planar, n = 2, with abutment capacities") {
     const Design d = RunDesign(WithCapacities(SmallDesign().config));
     REQUIRE(CountKind(SizingProblem(d, {}), SizingRow::kSupportHorizontal) > 0);
+    CheckJacobian(d);
+  }
+  // The rows with the prestress at its highest and lowest follow the areas and the prestress
+  // through the tolerance's change of the self-stress (its flexibilities): 0.1 % makes that term
+  // large beside the others (a third of the deck chain's strain at sigma_w; 1 % would leave the
+  // chain slack at the lowest, an unstable point).
+  SECTION("planar, n = 2, a rest-length tolerance of 0.1 %") {
+    Config config = SmallDesign().config;
+    config.design.rest_length_tolerance = 1e-3;
+    config.design.prestress_loss = 0;
+    const Design d = RunDesign(config);
+    REQUIRE(SizingProblem(d, {}).num_constraints() ==
+            3 * SizingProblem(RunDesign([] {
+                                Config c = SmallDesign().config;
+                                c.design.rest_length_tolerance = 0;
+                                c.design.prestress_loss = 0;
+                                return c;
+                              }()),
+                              {})
+                    .num_constraints());
     CheckJacobian(d);
   }
   SECTION("3D, n = 1, with abutment capacities") {

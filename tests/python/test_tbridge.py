@@ -283,12 +283,17 @@ def test_case_nodes_give_the_design_file_deflections(design):
     # deck deflection from the drawn geometry is the file's, at its node (1e-9 of it: the same
     # Newton solve, whose last iterate the file's shortest exact doubles and the module's own
     # reading of the design round apart by 1e-10 of the deflection on the default bridge).
+    # A case with the rest lengths off by their tolerance deflects from that state's own reference
+    # state, as built (the permanent case's nodes in it), not from the drawn geometry.
     file = json.loads(design.to_json())
     deck = sorted({n - 1 for m in file["members"] if m["type"] == "deck_string" for n in m["nodes"]})
     for entry in file["deflection_max"]:
         nodes = tbridge.case_nodes(design, entry["case"])
-        dy = np.abs(nodes[deck, 1] - design.nodes[deck, 1])
-        assert abs(dy.max() - entry["deflection"]) <= 1e-9 * entry["deflection"], entry["case"]
+        suffix = next((s for s in (" with the rest lengths short", " with the rest lengths long",
+                                   " after the prestress loss, the rest lengths long") if entry["case"].endswith(s)), None)
+        reference = design.nodes if suffix is None else tbridge.case_nodes(design, "sls_permanent" + suffix)
+        dy = np.abs(nodes[deck, 1] - reference[deck, 1])
+        assert abs(dy.max() - entry["deflection"]) <= 1e-9 * max(entry["deflection"], 1e-3), entry["case"]
     with pytest.raises(tbridge.ConfigError, match="'case' = 'sls_travelling at node 99'"):
         tbridge.case_nodes(design, "sls_travelling at node 99")
 

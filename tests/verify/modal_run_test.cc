@@ -79,7 +79,12 @@ TEST_CASE("the modal walking-load run agrees with the nonlinear run on the verif
   // mm under Q_t). 1 % of each member's resistance and 1 % of the deck's peak: the dynamic
   // check's stated accuracy (its utilisations are read to that). Measured 1.4e-3 and 3.1e-4;
   // the bridge's nonlinearity over the load 0.006, under the check's 0.015.
-  const Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
+  // With the prestress as designed only: with the rest-length tolerance's rows the default is
+  // another bridge (632.9 kg against 589.7), whose nonlinearity over the load (0.022) sends its
+  // walking load to the nonlinear run, which this test is not about.
+  Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
+  config.design.prestress_loss = 0;
+  config.design.rest_length_tolerance = 0;
   const Design d = DesignAndVerify(config);
   const Pair p = RunBoth(d, config.loads.travelling_load_n);
   INFO("nonlinearity " << p.modal.nonlinearity << ", " << p.modal.modes << " modes to " << p.modal.highest_mode_hz

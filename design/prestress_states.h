@@ -1,0 +1,53 @@
+// The states of the prestress a design must pass in (docs/verified_sizing.md, "The prestress's
+// states"): as designed; at its highest, every string the prestress tensions fabricated short by
+// design.rest_length_tolerance of its length; at its lowest, after design.prestress_loss and with
+// those strings fabricated long by the tolerance. The verified sizing poses its rows in each
+// state, and the static check runs in each.
+//
+// The rule of the rest-length errors is the worst-sign sum over the strings: to first order a
+// rest-length error moves the forces only through the self-stresses (a statically determinate
+// part takes it as a displacement), N^T F N d_alpha = N^T delta (F the members' flexibilities
+// l / (E A), bars rigid, delta the shortenings), so every string shortened where the prestress
+// tensions it raises the prestress most and every one lengthened lowers it most: on a planar
+// bridge (one self-stress) each member's worst-sign sum exactly. The pattern is the design's
+// (the signs of its prestress), held within a sizing; the static check confirms it nonlinearly
+// on the bridge with its rest lengths so changed (as built).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "design/design.h"
+
+namespace tbridge {
+
+enum class PrestressState { kAsDesigned, kHighest, kLowest };
+
+struct PrestressStateSpec {
+  PrestressState state = PrestressState::kAsDesigned;
+  double alpha_factor = 1;  // the share of the self-stress kept: 1, or 1 - prestress_loss
+  int tolerance_sign = 0;   // +1: the strings short by the tolerance, -1: long, 0: as designed
+  std::string suffix;       // appended to a case's label in this state ("" as designed)
+};
+
+// The states `config` asks for: as designed first, then the highest where a tolerance is given,
+// the lowest where a tolerance or a loss is; only as designed with the paper's switches.
+std::vector<PrestressStateSpec> PrestressStatesOf(const Config& config);
+// The states a design is checked in: its config's, but without the tolerance where strings of
+// it were edited in its file and its state re-derived as built (AsBuilt::edited): its rest
+// lengths are then those built, or measured, and the tolerance would count their error twice.
+std::vector<PrestressStateSpec> PrestressStatesOf(const Design& design);
+
+// The design's rest-length changes of the highest state [m], per string (positive: shorter):
+// rest_length_tolerance x its length where the design's prestress tensions it (PrestressForces
+// above 1e-9 of the largest), else 0.
+std::vector<double> ToleranceShortenings(const Design& design);
+
+// `design` in state `spec`: its prestress reduced by the loss (WithPrestressLoss), then each
+// string's rest length changed by tolerance_sign x ToleranceShortenings (with its stiffness, the
+// reference state then re-derived as built, design/design_reader.h). Throws ConfigError where the
+// bridge so changed has no reference state.
+Design DesignInState(const Design& design, const PrestressStateSpec& spec);
+
+}  // namespace tbridge
