@@ -133,21 +133,24 @@ void RequireDeck(const json& file, const Deck& deck) {
 }
 
 // Whether a bar's area was edited: a bar has no stiffness or rest length that would tell, but
-// its resistance in the file is what its governing check found at the area it was designed
-// with (yield A sigma_w, buckling chi A f_y / gamma_M1, a run's peak against the smaller of the
-// two); 1e-9 relative allows the file's digits and no real edit.
-bool BarAreaEdited(const json& j, const MemberSizing& m, const BarRule& rule,
-                   double youngs_modulus) {
-  const std::string mode =
-      j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
-  if (!j.contains("resistance") || !j.at("resistance").is_number()) return false;
-  const double written = j.at("resistance").get<double>();
+// its resistance in the file (`m.resistance`, of its governing `m.mode`) is what its check found
+// at the area it was designed with (yield A sigma_w, buckling chi A f_y / gamma_M1, a run's peak
+// against the smaller of the two); 1e-9 relative allows the file's digits and no real edit.
+bool BarAreaEdited(const MemberSizing& m, const BarRule& rule, double youngs_modulus) {
   const BarCapacity cap = BarResistance(m.area, m.length, rule, youngs_modulus);
-  const double now = mode == "yield"      ? cap.yield
-                     : mode == "buckling" ? cap.buckling
-                     : mode == "dynamic"  ? std::min(cap.yield, cap.buckling)
-                                          : std::numeric_limits<double>::quiet_NaN();
-  return written > 0 && std::isfinite(now) && std::abs(now - written) > 1e-9 * written;
+  const double now = m.mode == "yield"      ? cap.yield
+                     : m.mode == "buckling" ? cap.buckling
+                     : m.mode == "dynamic"  ? std::min(cap.yield, cap.buckling)
+                                            : std::numeric_limits<double>::quiet_NaN();
+  return m.resistance > 0 && std::isfinite(now) &&
+         std::abs(now - m.resistance) > 1e-9 * m.resistance;
+}
+
+// The design file `tbridge design` writes for `design`, as JSON (to edit and read back).
+json FileOf(const Design& design) {
+  std::ostringstream text;
+  WriteDesignJson(design, text);
+  return json::parse(text.str());
 }
 
 const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
@@ -402,17 +405,17 @@ Design ReadDesign(const json& file) {
       }
     }
     RequireSection(j, m, mat, bar, where);
-    if (bar && BarAreaEdited(j, m, rule, mat.youngs_modulus)) edited.push_back(m.name);
-    m.force = m.reference_force;
-    m.force_density = m.force / m.length;
-    m.stress = m.area > 0 ? m.force / m.area : 0.0;
-    m.governed_by = j.value("governed_by", "");
     // Its governing finding as written (check recomputes it): written again, as WithAreas writes a
-    // design, its resistance still tells an edited bar (BarAreaEdited).
+    // design, its resistance still tells an edited bar.
     m.mode = j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
     m.resistance = j.contains("resistance") && j.at("resistance").is_number()
                        ? j.at("resistance").get<double>()
                        : 0.0;
+    if (bar && BarAreaEdited(m, rule, mat.youngs_modulus)) edited.push_back(m.name);
+    m.force = m.reference_force;
+    m.force_density = m.force / m.length;
+    m.stress = m.area > 0 ? m.force / m.area : 0.0;
+    m.governed_by = j.value("governed_by", "");
     masses[k] = m.mass;
     d.reference_forces[k] = m.reference_force;
     (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
@@ -467,9 +470,7 @@ Design ReadDesign(const json& file) {
 }
 
 Design WithRestLengths(const Design& design, const std::vector<double>& shortenings) {
-  std::ostringstream text;
-  WriteDesignJson(design, text);
-  json file = json::parse(text.str());
+  json file = FileOf(design);
   json& members = file.at("members");
   const size_t nb = design.bars.size();
   if (shortenings.size() + nb != members.size()) {
@@ -491,9 +492,7 @@ Design WithRestLengths(const Design& design, const std::vector<double>& shorteni
 }
 
 Design WithAreas(const Design& design, const std::vector<double>& areas) {
-  std::ostringstream text;
-  WriteDesignJson(design, text);
-  json file = json::parse(text.str());
+  json file = FileOf(design);
   json& members = file.at("members");
   if (areas.size() != members.size()) {
     throw ConfigError("areas", std::to_string(areas.size()) + " areas", "one per member: " + std::to_string(members.size()));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
 #include "design/design_reader.h"
 
 namespace tbridge {
@@ -54,6 +55,21 @@ Design DesignInState(const Design& design, const PrestressStateSpec& spec) {
   std::vector<double> shortenings = ToleranceShortenings(design);
   for (double& s : shortenings) s *= spec.tolerance_sign;
   return WithRestLengths(d, shortenings);
+}
+
+std::vector<DesignState> OtherStates(const Design& design) {
+  const std::vector<PrestressStateSpec> states = PrestressStatesOf(design);
+  std::vector<DesignState> out;
+  for (size_t k = 1; k < states.size(); ++k) {
+    DesignState state{states[k], std::nullopt, ""};
+    try {
+      state.design = DesignInState(design, states[k]);
+    } catch (const ConfigError& e) {
+      state.failure = e.what();
+    }
+    out.push_back(std::move(state));
+  }
+  return out;
 }
 
 }  // namespace tbridge

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,5 +50,15 @@ std::vector<double> ToleranceShortenings(const Design& design);
 // reference state then re-derived as built, design/design_reader.h). Throws ConfigError where the
 // bridge so changed has no reference state.
 Design DesignInState(const Design& design, const PrestressStateSpec& spec);
+
+// The design in each of its other states (PrestressStatesOf(design) after the first), made once
+// for the static and the dynamic checks: the state and its design, or, where the bridge so
+// changed does not stand, why (DesignInState's ConfigError).
+struct DesignState {
+  PrestressStateSpec spec;
+  std::optional<Design> design;
+  std::string failure;
+};
+std::vector<DesignState> OtherStates(const Design& design);
 
 }  // namespace tbridge

@@ -5,14 +5,12 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <string_view>
 
 #include "core/error.h"
 #include "core/two_lanes.h"
 #include "design/abutments.h"
 #include "design/case_envelope.h"
 #include "design/mirror.h"
-#include "design/prestress_states.h"
 #include "design/static_model.h"
 
 namespace tbridge {
@@ -400,21 +398,21 @@ void AddState(StaticCheck& out, StaticCheck other, const std::string& suffix) {
 
 }  // namespace
 
-StaticCheck CheckStaticsInEveryState(const Design& d, ProgressReporter* progress) {
+StaticCheck CheckStaticsInEveryState(const Design& d, const std::vector<DesignState>& others,
+                                     ProgressReporter* progress) {
   StaticCheck out = CheckStatics(d, progress);
-  const std::vector<PrestressStateSpec> states = PrestressStatesOf(d);
-  for (size_t k = 1; k < states.size(); ++k) {
-    try {
-      AddState(out, CheckStatics(DesignInState(d, states[k]), progress), states[k].suffix);
-    } catch (const ConfigError& e) {
-      // The bridge with its rest lengths so changed does not stand: the check fails, and says so.
-      out.prestress_states.push_back(states[k].suffix.substr(1));
-      CaseResponse r;
-      r.label = "reference" + states[k].suffix;
-      r.message = e.what();
-      out.all_converged = false;
-      out.cases.push_back(std::move(r));
+  for (const DesignState& other : others) {
+    if (other.design) {
+      AddState(out, CheckStatics(*other.design, progress), other.spec.suffix);
+      continue;
     }
+    // The bridge with its rest lengths so changed does not stand: the check fails, and says so.
+    out.prestress_states.push_back(other.spec.suffix.substr(1));
+    CaseResponse r;
+    r.label = "reference" + other.spec.suffix;
+    r.message = other.failure;
+    out.all_converged = false;
+    out.cases.push_back(std::move(r));
   }
   out.abutments = AbutmentFindings(d, out.cases);
   return out;

@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "design/design.h"
-#include "design/verification.h"
 #include "core/progress.h"
+#include "design/design.h"
+#include "design/prestress_states.h"
+#include "design/verification.h"
 #include "statics/static_solve.h"
 
 namespace tbridge {
@@ -42,7 +43,9 @@ StaticCheck CheckStatics(const Design& design, ProgressReporter* progress = null
 // finding, the deflection and the abutments' reactions the largest over the states. A state with
 // no reference state (its rest lengths changed, the bridge does not stand) fails the check with
 // a case that says so.
-StaticCheck CheckStaticsInEveryState(const Design& design, ProgressReporter* progress = nullptr);
+// `others`: the design's other states (OtherStates).
+StaticCheck CheckStaticsInEveryState(const Design& design, const std::vector<DesignState>& others,
+                                     ProgressReporter* progress = nullptr);
 
 // The case and deck station a label names, as the static check and the design file write it:
 // "NAME" for a case that does not travel (station -1), "NAME at node N" for a travelling case

@@ -93,25 +93,20 @@ auto Timed(double& seconds, F&& f) {
 // the paper's) runs every check.
 enum class Screen { kNone, kStaticFailure };
 
-// The dynamic check of `d` in each state of its prestress (PrestressStatesOf): the runs as
+// The dynamic check of `d` in each state of its prestress (`others`, OtherStates): the runs as
 // designed are the report; each member's finding is the largest over the states, the other
 // states' cases named with their suffix. A state whose bridge does not stand is the static
 // check's finding (CheckStaticsInEveryState), not run again here.
-DynamicCheck CheckDynamicsInEveryState(const Design& d, ProgressReporter* progress) {
+DynamicCheck CheckDynamicsInEveryState(const Design& d, const std::vector<DesignState>& others,
+                                       ProgressReporter* progress) {
   DynamicCheck out = CheckDynamics(d, std::nullopt, progress);
-  const std::vector<PrestressStateSpec> states = PrestressStatesOf(d);
-  for (size_t k = 1; k < states.size() && out.done; ++k) {
-    std::optional<Design> other;
-    try {
-      other = DesignInState(d, states[k]);
-    } catch (const ConfigError&) {
-      continue;
-    }
-    const DynamicCheck found = CheckDynamics(*other, std::nullopt, progress);
+  for (const DesignState& other : others) {
+    if (!out.done || !other.design) continue;
+    const DynamicCheck found = CheckDynamics(*other.design, std::nullopt, progress);
     for (size_t j = 0; j < out.members.size() && j < found.members.size(); ++j) {
       if (found.members[j].utilisation <= out.members[j].utilisation) continue;
       out.members[j] = found.members[j];
-      out.members[j].governing_case += states[k].suffix;
+      out.members[j].governing_case += other.spec.suffix;
     }
     for (const int s : found.slack_strings) {
       if (std::find(out.slack_strings.begin(), out.slack_strings.end(), s) ==
@@ -119,15 +114,18 @@ DynamicCheck CheckDynamicsInEveryState(const Design& d, ProgressReporter* progre
         out.slack_strings.push_back(s);
     }
     for (const DynamicRun& r : found.runs) {
-      if (!r.done) out.runs.push_back(r), out.runs.back().name += states[k].suffix;
+      if (!r.done) out.runs.push_back(r), out.runs.back().name += other.spec.suffix;
     }
   }
   return out;
 }
+
 void RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress, Screen screen) {
-  // In every state of the prestress: as designed, after the loss, the rest lengths off.
+  // In every state of the prestress: as designed, after the loss, the rest lengths off; each
+  // other state's bridge made once, for both checks.
+  const std::vector<DesignState> others = OtherStates(d);
   StaticCheck statics =
-      Timed(time_s.static_check, [&] { return CheckStaticsInEveryState(d, progress); });
+      Timed(time_s.static_check, [&] { return CheckStaticsInEveryState(d, others, progress); });
   double static_utilisation =
       statics.deflection_limit_m > 0 ? statics.deflection_max_m / statics.deflection_limit_m : 0;
   for (const MemberFinding& m : statics.members)
@@ -140,7 +138,8 @@ void RunChecks(Design& d, Resizing::Times& time_s, ProgressReporter* progress, S
         << " (utilisation " << static_utilisation << "), whatever the runs find";
     dynamics = DynamicCheckNotRun(d, why.str());
   } else {
-    dynamics = Timed(time_s.dynamic_check, [&] { return CheckDynamicsInEveryState(d, progress); });
+    dynamics =
+        Timed(time_s.dynamic_check, [&] { return CheckDynamicsInEveryState(d, others, progress); });
   }
   if (progress != nullptr) progress->Stage("comfort check");
   ComfortCheck comfort = Timed(time_s.comfort_check, [&] { return CheckComfort(d); });
