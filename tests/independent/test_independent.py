@@ -1,0 +1,226 @@
+"""The independent truss solver (truss.py) against closed forms and equilibrium.
+
+Run: /usr/bin/python3 -m pytest -q tests/independent
+Each tolerance is stated beside its assertion with its reason.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import truss as T
+
+# Round-off of a dense solve or eigen-solve of a few dozen unknowns in double precision (about
+# 1e-16 times the condition number), with room for the conditioning of these small models.
+ROUNDOFF = 1e-10
+
+
+def close(a, b, rel, what=""):
+    """max |a - b| <= rel max |b|: relative to the largest expected value, so that an expected zero
+    is matched to round-off of the others."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    err = np.abs(a - b).max() / np.abs(b).max()
+    assert err <= rel, "%s: relative error %.3g > %.3g (got %s, expected %s)" % (what, err, rel, a, b)
+
+
+# ------------------------------------------------------------------------------------------------
+# Closed forms
+# ------------------------------------------------------------------------------------------------
+
+def test_single_bar_has_axial_stiffness_EA_over_L_and_force_EA_delta_over_L():
+    # A bar in a general 3D direction: its stiffness is (E A / L) e e^T in each block, nothing
+    # across it; stretching it by delta gives N = E A delta / L, moving its end across gives none.
+    a, b = np.array([0.3, -1.2, 0.5]), np.array([2.1, 0.4, 3.0])
+    E, A = 2.1e11, 3.0e-4
+    t = T.Truss(np.array([a, b]), [T.Member(0, 1, A, E, 7850.0)], pinned=[0])
+    L = np.linalg.norm(b - a)
+    e = (b - a) / L
+    k = E * A / L
+    K = T.stiffness(t)
+    P = np.outer(e, e)
+    close(K, k * np.block([[P, -P], [-P, P]]), ROUNDOFF, "K")  # round-off only
+    delta = 1e-3
+    u = np.array([np.zeros(3), delta * e])
+    close(T.member_forces(t, u), [k * delta], ROUNDOFF, "axial force")  # round-off only
+    close(T.stresses(t, u), [k * delta / A], ROUNDOFF, "axial stress")
+    across = np.cross(e, [0.0, 0.0, 1.0])
+    u_across = np.array([np.zeros(3), delta * across / np.linalg.norm(across)])
+    # A perpendicular move does not stretch the bar to first order: zero to round-off of k delta.
+    assert abs(T.member_forces(t, u_across)[0]) <= ROUNDOFF * k * delta
+
+
+def test_statically_determinate_two_bar_truss_forces_by_hand():
+    # Supports at (0, 0) and (0, 3) m, the free node at (4, 0) m, P down on it. Bar 1 is horizontal
+    # (L = 4), bar 2 the 3-4-5 diagonal (L = 5). Node equilibrium by hand:
+    #   vertical: N2 (3/5) = P -> N2 = 5P/3 (tension); horizontal: N1 + N2 (4/5) = 0 -> N1 = -4P/3.
+    # Displacement by compatibility: u_x = N1 L1 / EA; (4/5) u_x - (3/5) u_y = N2 L2 / EA.
+    P, E, A = 1.0e4, 7.0e10, 2.0e-4
+    t = T.Truss([[0.0, 0.0], [0.0, 3.0], [4.0, 0.0]],
+                [T.Member(0, 2, A, E, 2700.0), T.Member(1, 2, A, E, 2700.0)],
+                pinned=[0, 1], loads={2: [0.0, -P]})
+    u = T.displacements(t)
+    N1, N2 = -4.0 * P / 3.0, 5.0 * P / 3.0
+    close(T.member_forces(t, u), [N1, N2], ROUNDOFF, "member forces")  # round-off only
+    ux = N1 * 4.0 / (E * A)
+    uy = (0.8 * ux - N2 * 5.0 / (E * A)) / 0.6
+    close(u[2], [ux, uy], ROUNDOFF, "free node displacement")  # round-off only
+    # Reactions by hand: each support holds its own bar, R = -N e with e the bar's unit vector
+    # from the support: (4P/3, 0) at (0, 0) and (-4P/3, P) at (0, 3), together balancing P.
+    R = T.reactions(t, u)
+    close(R[0], [-N1, 0.0], ROUNDOFF, "reaction at (0, 0)")  # round-off only
+    close(R[1], [-0.8 * N2, 0.6 * N2], ROUNDOFF, "reaction at (0, 3)")
+
+
+def test_symmetric_two_bar_frame_deflects_P_L_over_2_E_A_sin2():
+    # Supports at (+-b, 0), the apex at (0, -h) hanging below them, P down on it: each bar carries
+    # N = P / (2 sin t) in tension, sin t = h / L, and the apex drops P L / (2 E A sin^2 t), with no
+    # sideways move by symmetry.
+    b, h, P, E, A = 3.0, 2.0, 5.0e4, 2.0e11, 5.0e-4
+    t = T.Truss([[-b, 0.0], [b, 0.0], [0.0, -h]],
+                [T.Member(0, 2, A, E, 7850.0), T.Member(1, 2, A, E, 7850.0)],
+                pinned=[0, 1], loads={2: [0.0, -P]})
+    u = T.displacements(t)
+    L = math.hypot(b, h)
+    s = h / L
+    close(-u[2, 1], P * L / (2.0 * E * A * s * s), ROUNDOFF, "apex drop")  # round-off only
+    assert abs(u[2, 0]) <= ROUNDOFF * abs(u[2, 1])  # symmetry: zero to round-off
+    close(T.member_forces(t, u), [P / (2.0 * s)] * 2, ROUNDOFF, "bar forces")
+
+
+def test_three_dimensional_tripod_by_hand():
+    # Three bars from supports on a circle of radius r (z = 0) to an apex at height h, P down on the
+    # apex: each bar carries N = -P L / (3 h) and the apex drops P L^3 / (3 E A h^2).
+    r, h, P, E, A = 2.0, 3.0, 1.0e5, 2.0e11, 1.0e-3
+    angles = 0.1 + 2.0 * math.pi / 3.0 * np.arange(3)
+    base = [[r * math.cos(a), r * math.sin(a), 0.0] for a in angles]
+    t = T.Truss(base + [[0.0, 0.0, h]], [T.Member(k, 3, A, E, 7850.0) for k in range(3)],
+                pinned=[0, 1, 2], loads={3: [0.0, 0.0, -P]})
+    u = T.displacements(t)
+    L = math.hypot(r, h)
+    close(-u[3, 2], P * L ** 3 / (3.0 * E * A * h * h), ROUNDOFF, "apex drop")  # round-off only
+    assert np.all(np.abs(u[3, :2]) <= ROUNDOFF * abs(u[3, 2]))  # symmetry: no sideways move
+    close(T.member_forces(t, u), [-P * L / (3.0 * h)] * 3, ROUNDOFF, "bar forces")
+
+
+@pytest.mark.parametrize("model", sorted(T.MASS_MODELS))
+def test_spring_mass_frequency_is_sqrt_k_over_m_over_2_pi(model):
+    # A node mass m held by two massless perpendicular bars of axial stiffness k1 = E A1 / L1 (along
+    # x) and k2 = E A2 / L2 (along y): two independent spring-mass systems, f = sqrt(k / m) / 2 pi.
+    E, m = 2.0e11, 150.0
+    A1, L1, A2, L2 = 1.0e-4, 2.0, 3.0e-4, 1.5
+    t = T.Truss([[-L1, 0.0], [0.0, -L2], [0.0, 0.0]],
+                [T.Member(0, 2, A1, E, 0.0), T.Member(1, 2, A2, E, 0.0)],
+                pinned=[0, 1], node_masses={2: m})
+    expected = sorted(math.sqrt(E * A / L / m) / (2.0 * math.pi) for A, L in [(A1, L1), (A2, L2)])
+    close(T.frequencies(t, model), expected, ROUNDOFF, "spring-mass frequencies")  # round-off only
+
+
+def fixed_fixed_bar(n, length, E, A, rho):
+    """A bar of `length` along x, split into n equal elements, both ends pinned."""
+    nodes = np.c_[np.linspace(0.0, length, n + 1), np.zeros(n + 1)]
+    return T.Truss(nodes, [T.Member(k, k + 1, A, E, rho) for k in range(n)], pinned=[0, n])
+
+
+def first_axial_frequency(t, model):
+    """The lowest non-zero frequency [Hz]: the y translations of a straight chain of pins have no
+    stiffness (w^2 = 0 exactly) and are skipped."""
+    w2 = T.eigenvalues(t, model)
+    return math.sqrt(w2[w2 > 1e-6 * w2.max()][0]) / (2.0 * math.pi)
+
+
+def test_fixed_fixed_bar_frequency_converges_to_c_over_2L():
+    # The continuum: f1 = (1 / 2L) sqrt(E / rho). A chain of n bar elements of length h has the
+    # exact discrete first mode (a standing wave of wavenumber pi / n per element):
+    #   consistent: w^2 = (6 E / rho h^2) (1 - cos(pi/n)) / (2 + cos(pi/n)),
+    #   lumped:     w^2 = (2 E / rho h^2) (1 - cos(pi/n)),
+    # which differ from the continuum by +-pi^2 / (24 n^2) to leading order.
+    L, E, A, rho = 3.0, 7.0e10, 1.0e-4, 2700.0
+    exact = math.sqrt(E / rho) / (2.0 * L)
+    errors = []
+    for n in (2, 4, 8, 16, 32, 64):
+        t = fixed_fixed_bar(n, L, E, A, rho)
+        h, c = L / n, math.cos(math.pi / n)
+        discrete = {"consistent": 6.0 * E / (rho * h * h) * (1.0 - c) / (2.0 + c),
+                    "lumped": 2.0 * E / (rho * h * h) * (1.0 - c)}
+        for model, w2 in discrete.items():
+            # The discrete closed form holds to round-off (eigen-solve of an n-by-n chain).
+            close(first_axial_frequency(t, model), math.sqrt(w2) / (2.0 * math.pi), ROUNDOFF, model)
+        err = first_axial_frequency(t, "consistent") / exact - 1.0
+        lumped_err = first_axial_frequency(t, "lumped") / exact - 1.0
+        assert err > 0.0 > lumped_err  # consistent mass bounds from above, lumped from below
+        if n >= 8:
+            # Leading order pi^2 / (24 n^2): the next term is O(n^-4), below 1 % of it from n = 8.
+            close(err, math.pi ** 2 / (24.0 * n * n), 0.01, "consistent error, n = %d" % n)
+            close(-lumped_err, math.pi ** 2 / (24.0 * n * n), 0.01, "lumped error, n = %d" % n)
+        errors.append(err)
+    ratios = np.array(errors[1:]) / np.array(errors[:-1])
+    # Second-order convergence: halving h divides the error by 4 (to 3 % from n = 2 -> 4 on).
+    close(ratios, [0.25] * len(ratios), 0.03, "error ratios on halving h")
+    assert errors[-1] < 1.1e-4  # at n = 64 within pi^2 / (24 * 64^2) = 1.0e-4 (plus 10 %)
+
+
+def tripod():
+    """A 3D tripod: three bars from supports at z = 0 to a loaded apex that carries a node mass."""
+    return T.Truss([[2.0, 0.0, 0.0], [-1.0, 1.7, 0.0], [-1.0, -1.7, 0.0], [0.3, 0.2, 3.0]],
+                   [T.Member(k, 3, (1.0 + k) * 1e-3, 2e11, 7850.0) for k in range(3)],
+                   pinned=[0, 1, 2], loads={3: [1.0e4, -2.0e4, -1.0e5]}, node_masses={3: 40.0})
+
+
+@pytest.mark.parametrize("model", sorted(T.MASS_MODELS))
+def test_every_mass_model_moves_a_rigid_translation_with_the_whole_mass(model):
+    # u^T M u for a unit rigid translation is the total mass, in any direction (round-off only).
+    t = tripod()
+    M = T.mass_matrix(t, model)
+    bars = sum(7850.0 * (1.0 + k) * 1e-3 * np.linalg.norm(t.nodes[3] - t.nodes[k]) for k in range(3))
+    close(T.total_mass(t), 40.0 + bars, ROUNDOFF, "total mass: rho A L of each bar and the node mass")
+    for direction in ([1.0, 0.0, 0.0], [0.48, 0.6, 0.64]):
+        u = np.tile(direction, len(t.nodes))
+        close(u @ M @ u, T.total_mass(t), ROUNDOFF, "rigid translation, " + model)
+
+
+# ------------------------------------------------------------------------------------------------
+# Equilibrium and the stiffness matrix
+# ------------------------------------------------------------------------------------------------
+
+def equilibrium_cases():
+    return {"3D tripod": tripod()}
+
+
+def moments(points, forces):
+    """The moments about the origin of forces at points: (k,) in 2D, (k, 3) in 3D."""
+    if points.shape[1] == 2:
+        return points[:, 0] * forces[:, 1] - points[:, 1] * forces[:, 0]
+    return np.cross(points, forces)
+
+
+@pytest.mark.parametrize("name", sorted(equilibrium_cases()))
+def test_reactions_balance_the_loads(name):
+    t = equilibrium_cases()[name]
+    u = T.displacements(t)
+    R = T.reactions(t, u)
+    F = T.load_vector(t).reshape(t.nodes.shape)
+    scale = np.abs(F).sum()
+    free = [k for k in range(len(t.nodes)) if k not in t.pinned]
+    # The solve's residual at the free nodes: round-off, 1e-9 of the loads.
+    assert np.abs(R[free]).max() <= 1e-9 * scale
+    # Forces: the reactions at the supports and the loads sum to zero (1e-9 relative).
+    total = R[t.pinned].sum(axis=0) + F.sum(axis=0)
+    assert np.abs(total).max() <= 1e-9 * scale, total
+    # Moments about the origin likewise (1e-9 relative to the loads times the truss's size).
+    x = t.nodes
+    size = np.abs(x).max()
+    m = moments(x[t.pinned], R[t.pinned]).sum(axis=0) + moments(x, F).sum(axis=0)
+    assert np.abs(m).max() <= 1e-9 * scale * size, m
+
+
+@pytest.mark.parametrize("name", sorted(equilibrium_cases()))
+def test_stiffness_is_symmetric_and_positive_definite_on_the_free_dofs(name):
+    t = equilibrium_cases()[name]
+    K = T.stiffness(t)
+    assert np.array_equal(K, K.T)  # each member block is an outer product: symmetric exactly
+    f = T.free_dofs(t)
+    Kff = K[np.ix_(f, f)]
+    np.linalg.cholesky(Kff)  # raises unless positive definite
+    w = np.linalg.eigvalsh(Kff)
+    assert w.min() > 1e-8 * w.max()  # well away from singular (cond < 1e8)
