@@ -227,9 +227,9 @@ def mass_matrix(truss, model="consistent"):
 def eigenvalues(truss, model="consistent"):
     """The eigenvalues w^2 [rad^2/s^2] of K phi = w^2 M phi on the free dofs, ascending.
 
-    M_ff = L L^T (Cholesky; M_ff must be positive definite, which every node mass or member mass
-    on every free node makes it); then w^2 are the eigenvalues of the symmetric L^-1 K_ff L^-T.
-    For a diagonal M this is M^-1/2 K M^-1/2."""
+    M_ff = L L^T (Cholesky: M_ff must be positive definite, as it is when every free node carries
+    some mass, its own or a member's; numpy.linalg.LinAlgError otherwise); then w^2 are the
+    eigenvalues of the symmetric L^-1 K_ff L^-T. For a diagonal M this is M^-1/2 K M^-1/2."""
     f = free_dofs(truss)
     K = stiffness(truss)[np.ix_(f, f)]
     M = mass_matrix(truss, model)[np.ix_(f, f)]
