@@ -50,6 +50,21 @@ void CheckLoadsRules(const LoadsConfig& l) {
                       "\"paper\" stands alone: it is the paper's one unfactored case, which replaces the others");
   }
   if (c.empty()) throw ConfigError("loads.cases", "[]", "must list at least one case");
+  const bool temperature = std::find(c.begin(), c.end(), "temperature") != c.end();
+  if (temperature && !(l.temperature_delta_k > 0)) {
+    throw ConfigError("loads.temperature_delta_k", NumberText(l.temperature_delta_k),
+                      "must be > 0 with \"temperature\" in loads.cases: the change either way [K]");
+  }
+  if (!temperature && l.temperature_delta_k > 0) {
+    throw ConfigError("loads.temperature_delta_k", NumberText(l.temperature_delta_k),
+                      "needs \"temperature\" in loads.cases, or 0 (no temperature case)");
+  }
+  if (temperature && c.size() == 1) {
+    throw ConfigError(
+        "loads.cases", "[\"temperature\"]",
+        "the temperature accompanies the other cases: list it with one of \"permanent\", "
+        "\"payload\", \"travelling\", \"paper_travelling\", \"wind\"");
+  }
   if (l.gamma_g_inf > l.gamma_g_sup) {
     throw ConfigError("loads.gamma_g_inf", NumberText(l.gamma_g_inf),
                       "must not exceed loads.gamma_g_sup = " + NumberText(l.gamma_g_sup));
@@ -77,7 +92,8 @@ void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
 }
 
 void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
-  const auto wind = [](const std::string& c) { return c == "wind"; };
+  // The temperature only accompanies: it leaves no case of its own.
+  const auto wind = [](const std::string& c) { return c == "wind" || c == "temperature"; };
   if (b.planes == 1 && std::all_of(l.cases.begin(), l.cases.end(), wind)) {
     throw ConfigError("loads.cases", nlohmann::json(l.cases).dump(),
                       "leaves no load case to design for: a planar bridge (bridge.planes = 1) "

@@ -104,6 +104,10 @@ struct LoadsConfig {
   double gamma_q = 1.5;                    // payload and travelling load
   double gamma_w = 1.5;                    // wind
   double psi0_wind = 0.3;                  // wind accompanying traffic (EN 1990 A2, footbridges)
+  // The "temperature" case: Delta T_N [K] either way, accompanying at psi_0 with gamma_t.
+  double temperature_delta_k = 0.0;
+  double psi0_temperature = 0.6;
+  double gamma_t = 1.5;
   double deflection_limit = 500.0;         // serviceability: deflection <= span / this
   double deck_sag_limit = 300.0;           // serviceability: a deck beam's sag <= its length / this
   double station_margin = 1.0;             // the static check's nonlinear stations (config_fields.h)

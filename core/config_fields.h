@@ -38,7 +38,8 @@ inline const SectionInfo kLoadsSection{
     "loads", "actions and their combinations",
     "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the "
     "others); `gamma_g_inf` <= `gamma_g_sup`; a planar bridge (`bridge.planes` = 1) needs a case "
-    "other than `\"wind\"`."};
+    "other than `\"wind\"`; `\"temperature\"` needs `temperature_delta_k` > 0, another case to "
+    "accompany, and `temperature_delta_k` > 0 needs `\"temperature\"`."};
 
 inline const SectionInfo kComfortSection{
     "comfort", "footbridge comfort under pedestrians (Sétra 2006, HiVoSS 2008, EN 1990 A2.4.3.2)", ""};
@@ -63,6 +64,11 @@ inline const Range kYieldStressRange = Range::AtLeast(1e6).Below(
 inline const Range kModulusRange = Range::AtLeast(1e9).Below(
     {"softer than any structural material: was it given in GPa (steel: 210) or in MPa = N/mm^2 "
      "(steel: 210000)? The key is in Pa (steel: 2.1e+11)"});
+// 1e-3 /K is 50 times steel's: a larger value was given in 1e-6/K.
+inline const Range kThermalExpansionRange = Range::Closed(0.0, 1e-3).Above(
+    {"larger than any structural material's: was it given in 1e-6/K (steel: 12)? {v} x 1e-6/K is "
+     "{as} 1/K",
+     1e-6});
 // A partial factor of 0 would leave its action out of the ultimate cases: no design for it.
 inline const Range kPartialFactorRange = Range{0.0, 10.0, true, false}.Below(
     {"a partial factor of 0 leaves its action out of every ultimate combination"});
@@ -124,6 +130,9 @@ void DescribeMemberMaterial(M& m, V& v) {
                            "0.9 where the ends limit bending, else 1.0)",
                            false, nullptr, "`design.yield_safety_factor`"},
                    m.partial_factor, Range::Closed(0.5, 1000), Absent::kOmitted);
+  v.OptionalNumber(KeyInfo{"thermal_expansion", "1/K", "alpha_T of these members", false, nullptr,
+                           "`material.thermal_expansion`"},
+                   m.thermal_expansion, kThermalExpansionRange, Absent::kOmitted);
 }
 
 template <class M, class V>
@@ -157,6 +166,14 @@ void DescribeFields(M& m, V& v) requires std::is_same_v<std::remove_const_t<M>, 
   v.Number(KeyInfo{"youngs_modulus", "Pa",
                    "E: string rest length L0 = s/(1 + sigma/E), stiffness k_s = E·A/L0, Euler buckling of bars"},
            m.youngs_modulus, kModulusRange);
+  v.Number(
+      KeyInfo{
+          "thermal_expansion", "1/K",
+          "alpha_T, the members' strain per kelvin under the `\"temperature\"` case "
+          "(`loads.cases`): "
+          "steel 1.2e-5 (EN 1993-1-1 3.2.6), aluminium 2.4e-5 (EN 1999-1-1 3.2.5), a steel cable "
+          "1.2e-5 (EN 1993-1-11 Table B.1)"},
+      m.thermal_expansion, kThermalExpansionRange);
   v.Section("strings", m.strings);
   v.Section("bars", m.bars);
 }
@@ -310,18 +327,35 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
 
 template <class L, class V>
 void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, LoadsConfig> {
-  v.Choices(KeyInfo{"cases", "–",
-                    "the actions the design is checked and sized for. `\"permanent\"`: G = deck beams + members' "
-                    "self-weight (`design.self_weight`) + `superimposed_dead_n_per_m`. `\"payload\"`: "
-                    "`bridge.payload` over the full span, and the same load per metre over each half span. "
-                    "`\"travelling\"`: Q_t at each deck node in turn (the lever rule puts its extremes there). "
-                    "`\"paper_travelling\"`: the paper's eqs 50–51, the deck node load f at each inner deck node "
-                    "on top of the payload, statically and as the dynamic check's run (the paper's load, not a "
-                    "code's action: not among the defaults). `\"wind\"`: `wind_n_per_m` across the deck (3D bridge only; ignored, "
-                    "and said so, for a planar bridge). Each enters the ultimate combinations (gamma_G G + gamma_Q Q, "
-                    "and with favourable G) and the serviceability ones (G + Q). `\"paper\"`: the paper's one "
-                    "unfactored case, deck load plus payload at the drawn geometry"},
-            l.cases, {"paper", "permanent", "payload", "travelling", "paper_travelling", "wind"});
+  v.Choices(
+      KeyInfo{
+          "cases", "–",
+          "the actions the design is checked and sized for. `\"permanent\"`: G = deck beams + "
+          "members' "
+          "self-weight (`design.self_weight`) + `superimposed_dead_n_per_m`. `\"payload\"`: "
+          "`bridge.payload` over the full span, and the same load per metre over each half span. "
+          "`\"travelling\"`: Q_t at each deck node in turn (the lever rule puts its extremes "
+          "there). "
+          "`\"paper_travelling\"`: the paper's eqs 50–51, the deck node load f at each inner deck "
+          "node "
+          "on top of the payload, statically and as the dynamic check's run (the paper's load, not "
+          "a "
+          "code's action: not among the defaults). `\"wind\"`: `wind_n_per_m` across the deck (3D "
+          "bridge only; ignored, "
+          "and said so, for a planar bridge). Each enters the ultimate combinations (gamma_G G + "
+          "gamma_Q Q, "
+          "and with favourable G) and the serviceability ones (G + Q). `\"paper\"`: the paper's "
+          "one "
+          "unfactored case, deck load plus payload at the drawn geometry. `\"temperature\"`: a "
+          "uniform change of `temperature_delta_k` either way (EN 1991-1-5 6.1.3), accompanying "
+          "every "
+          "other case (wind too: EN 1990 A2 lets a footbridge take them apart, so on the safe "
+          "side): the prestress's states (`design.prestress_loss`, `design.rest_length_tolerance`) "
+          "are posed again warmer and colder, as the bridge's rest lengths and bar lengths then "
+          "are "
+          "(`material.thermal_expansion`)"},
+      l.cases,
+      {"paper", "permanent", "payload", "travelling", "paper_travelling", "wind", "temperature"});
   v.Number(KeyInfo{"superimposed_dead_n_per_m", "N/m", "surfacing and railings, part of G, spread over the deck"},
            l.superimposed_dead_n_per_m, Range::Closed(0.0, 1e8));
   v.Number(KeyInfo{"travelling_load_n", "N",
@@ -342,6 +376,25 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "over this time, then holds for as long again. 1 s is shorter than the 3 s gust behind EN "
                    "1991-1-4's peak velocity pressure, so the run shows the overshoot a sudden gust would cause"},
            l.wind_rise_s, Range{0.0, 100.0, true, false});
+  v.Number(KeyInfo{"temperature_delta_k", "K",
+                   "Delta T_N, the uniform temperature change from that at which the bridge's rest "
+                   "lengths are "
+                   "set, taken both ways with the `\"temperature\"` case: 25 K is EN 1991-1-5 "
+                   "6.1.3.3's range "
+                   "either way for a steel deck in a temperate climate (T_max 35 C, T_min -17 C, "
+                   "set at 10 C, "
+                   "rounded up); take it from the national annex's isotherms"},
+           l.temperature_delta_k, Range::Closed(0.0, 100.0));
+  v.Number(KeyInfo{"psi0_temperature", "–",
+                   "psi_0 of the temperature accompanying the other actions (EN 1990 A2 table "
+                   "A2.2: 0.6). The "
+                   "states carry gamma_t x psi_0 x Delta T_N in every combination, the "
+                   "serviceability ones too "
+                   "(on the safe side of psi_0 alone); set 1 to cover the combinations the "
+                   "temperature leads"},
+           l.psi0_temperature, Range::Closed(0.0, 1.0));
+  v.Number(KeyInfo{"gamma_t", "–", "gamma_Q on the temperature (EN 1990 A2 table A2.4(B): 1.5)"},
+           l.gamma_t, kPartialFactorRange);
   v.Number(KeyInfo{"gamma_g_sup", "–", "gamma_G,sup, unfavourable permanent action (EN 1990 A2, set B)"},
            l.gamma_g_sup, kPartialFactorRange);
   v.Number(KeyInfo{"gamma_g_inf", "–",

@@ -12,6 +12,7 @@ MemberMaterial Resolve(const Material& m, const BarMaterialConfig& own, double y
   out.yield_stress = own.yield_stress.value_or(m.yield_stress);
   out.youngs_modulus = own.youngs_modulus.value_or(m.youngs_modulus);
   out.partial_factor = own.partial_factor.value_or(yield_safety_factor);
+  out.thermal_expansion = own.thermal_expansion.value_or(m.thermal_expansion);
   return out;
 }
 

@@ -129,6 +129,10 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
 // at its length. The geometry, areas and loads are the design's.
 Design WithPrestressLoss(const Design& design, double loss);
 
+// The verdicts that follow from a design's reference state, set again after it changed: its
+// stability (at its reference forces and its strings' stiffnesses) and its support reactions.
+void AssessReferenceState(Design& design);
+
 // The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over
 // 1 (1e-9 allows for the rounding of a member sized exactly to its resistance), unstable, a
 // static case with no equilibrium, a deflection over its limit or a deck mode over its comfort

@@ -195,14 +195,17 @@ void WeighMembers(Design& d, std::vector<double>& masses) {
 // is the nonlinear static solve (statics/static_solve.h) from the file's geometry under the
 // reference loads. A string's weight follows its length (rho A s), so the solve is repeated
 // with the weight at the solved geometry until the loads change by less than 1e-12 of the
-// largest (two or three solves: a string's length moves by its strain, ~1e-4). Throws
+// largest (two or three solves: a string's length moves by its strain, ~1e-4). `bar_scale`
+// makes every bar that much longer (a temperature): the model's geometry, from which the solve
+// takes the bars' lengths, is scaled, while the supports stay where they are. Throws
 // ConfigError naming the edited members when the structure as built does not stand.
 void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::string> edited,
-                  const Eigen::Matrix3Xd& drawn) {
+                  const Eigen::Matrix3Xd& drawn, double bar_scale = 1.0) {
   Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();
   StaticModel model;
   model.structure = s;
+  model.structure.nodes *= bar_scale;
   for (const MemberSizing& m : d.strings) {
     model.string_stiffness.push_back(m.stiffness);
     model.string_rest_length.push_back(m.rest_length);
@@ -457,11 +460,7 @@ Design ReadDesign(const json& file) {
     }
     for (int k = 0; k < ns; ++k) d.as_built.slack_strings += d.strings[k].reference_force <= 0 ? 1 : 0;
   }
-  std::vector<double> string_stiffness(ns);
-  for (int k = 0; k < ns; ++k) string_stiffness[k] = d.strings[k].stiffness;
-  d.stability = AssessStability(s, d.reference_forces, string_stiffness, d.config.bridge.n <= 6);
-  d.reactions = SupportReactions(s, d.reference_forces, d.loads);
-  d.reactions.array() += 0.0;
+  AssessReferenceState(d);
   d.solver.solver = "none";
   d.solver.status = kReadFromFile;
   d.solver.success = true;
@@ -489,6 +488,26 @@ Design WithRestLengths(const Design& design, const std::vector<double>& shorteni
     m["stiffness"] = modulus * m.at("area").get<double>() / rest;
   }
   return ReadDesign(file);
+}
+
+Design WithTemperature(const Design& design, double delta_k) {
+  Design d = design;
+  const MemberMaterial string_material = StringMaterial(d.config),
+                       bar_material = BarMaterial(d.config);
+  for (MemberSizing& m : d.strings) {
+    m.rest_length *= 1.0 + string_material.thermal_expansion * delta_k;
+    m.stiffness = string_material.youngs_modulus * m.area / m.rest_length;
+  }
+  std::vector<double> masses(d.bars.size() + d.strings.size());
+  const Eigen::Matrix3Xd drawn = d.topology.structure.nodes;
+  try {
+    SolveAsBuilt(d, masses, {}, drawn, 1.0 + bar_material.thermal_expansion * delta_k);
+  } catch (const ConfigError& e) {
+    throw ConfigError("loads.temperature_delta_k", NumberText(delta_k) + " K",
+                      std::string("the bridge so warmed has no reference state: ") + e.what());
+  }
+  AssessReferenceState(d);
+  return d;
 }
 
 Design WithAreas(const Design& design, const std::vector<double>& areas) {

@@ -36,4 +36,10 @@ Design WithAreas(const Design& design, const std::vector<double>& areas);
 // `shortenings` of the wrong size.
 Design WithRestLengths(const Design& design, const std::vector<double>& shortenings);
 
+// `design` at a uniform temperature `delta_k` [K] from that at which it was built: each
+// string's rest length and each bar's length longer by its material's thermal_expansion x
+// delta_k, the supports where they are, and the reference state re-derived as built (as
+// WithRestLengths). Throws ConfigError naming loads.temperature_delta_k where it does not stand.
+Design WithTemperature(const Design& design, double delta_k);
+
 }  // namespace tbridge

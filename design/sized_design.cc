@@ -60,11 +60,7 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
   }
   const Eigen::VectorXd residual = EquilibriumResidual(eq, d.reference_forces, d.loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
-  std::vector<double> string_stiffness(ns);
-  for (int k = 0; k < ns; ++k) string_stiffness[k] = d.strings[k].stiffness;
-  d.stability = AssessStability(s, d.reference_forces, string_stiffness, config.bridge.n <= 6);
-  d.reactions = SupportReactions(s, d.reference_forces, d.loads);
-  d.reactions.array() += 0.0;  // -0 reads as 0 in the outputs
+  AssessReferenceState(d);
   d.mass.deck_beams = d.deck.beams_mass;
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
   d.mass.total = d.mass.structure + d.mass.deck_beams;
@@ -90,13 +86,18 @@ Design WithPrestressLoss(const Design& design, double loss) {
     m.reference_force = force;
   }
   if (d.alpha.size()) d.alpha *= 1.0 - loss;
+  AssessReferenceState(d);  // the prestress leans on the supports: their reactions change
+  return d;
+}
+
+void AssessReferenceState(Design& d) {
+  const Structure& s = d.topology.structure;
   std::vector<double> string_stiffness(static_cast<size_t>(s.num_strings()));
   for (int k = 0; k < s.num_strings(); ++k)
     string_stiffness[static_cast<size_t>(k)] = d.strings[k].stiffness;
   d.stability = AssessStability(s, d.reference_forces, string_stiffness, d.config.bridge.n <= 6);
-  d.reactions = SupportReactions(s, d.reference_forces, d.loads);  // the prestress leans on them
-  d.reactions.array() += 0.0;
-  return d;
+  d.reactions = SupportReactions(s, d.reference_forces, d.loads);
+  d.reactions.array() += 0.0;  // -0 reads as 0 in the outputs
 }
 
 }  // namespace tbridge

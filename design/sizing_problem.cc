@@ -220,30 +220,31 @@ struct SizingProblem::Impl {
     std::vector<std::array<Eigen::Vector3d, 2>> turned;
     // Per abutment: the change of the members' weight on it from G's [N] (weight_share).
     std::array<double, 2> weight_change{};
-    // The tolerance's change of the self-stress by the variables (states x variables), where the
-    // part has one (ToleranceShift).
+    // The state's change of the self-stress by the variables (states x variables), where the
+    // part has one (StateShift).
     Eigen::MatrixXd shift_jac;
   };
   mutable State st;
 
   // The state of the prestress this part's rows are in (design/prestress_states.h): the share of
   // the self-stress coefficients its reference state carries (1, or 1 - design.prestress_loss),
-  // and the rest-length tolerance's change of them: tolerance_sign (+1 short, -1 long, 0 none)
-  // times ToleranceShift at the point's areas and prestress as designed. Its rows are functions of
-  // the same variables.
+  // and the change of them the state's shortenings make (the rest-length tolerance, the
+  // temperature): StateShift at the point's areas and prestress as designed. Its rows are
+  // functions of the same variables.
   double alpha_factor = 1.0;
-  int tolerance_sign = 0;
-  std::vector<double> shortening;  // per string [m]: the pattern, held (ToleranceShortenings)
+  bool shifted = false;            // any shortening nonzero
+  std::vector<double> shortening;  // per member [m], [bars; strings]: held (StateShortenings)
   int state = 0;
 
   int num_variables() const { return groups + states; }
 
-  // The change of the self-stress coefficients [N] the strings' `shortening` makes at the areas
+  // The change of the self-stress coefficients [N] the members' `shortening` makes at the areas
   // `a` and the prestress as designed of x: N^T F N d = N^T delta, F each string's flexibility
-  // l / (E A + T) (its tangent: E A / L0), bars rigid (design/prestress_states.h). With `jac`,
-  // its derivatives by the variables (states x variables): dd = -(N^T F N)^-1 N^T dF N d.
-  Eigen::VectorXd ToleranceShift(const std::vector<double>& a, const Eigen::VectorXd& x,
-                                 Eigen::MatrixXd* jac) const {
+  // l / (E A + T) (its tangent: E A / L0), bars rigid, so a bar's shortening enters delta alone
+  // (design/prestress_states.h). With `jac`, its derivatives by the variables (states x
+  // variables): dd = -(N^T F N)^-1 N^T dF N d.
+  Eigen::VectorXd StateShift(const std::vector<double>& a, const Eigen::VectorXd& x,
+                             Eigen::MatrixXd* jac) const {
     const Eigen::VectorXd designed = x_g + N * (force_scale * x.tail(states));
     Eigen::VectorXd f(ns), df_dt(ns);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(states);
@@ -252,8 +253,8 @@ struct SizingProblem::Impl {
       const double k = E * a[static_cast<size_t>(j)] + designed[j];
       f[q] = length[j] / k;
       df_dt[q] = -length[j] / (k * k);
-      rhs += N.row(j).transpose() * shortening[static_cast<size_t>(q)];
     }
+    for (int j = 0; j < nm; ++j) rhs += N.row(j).transpose() * shortening[static_cast<size_t>(j)];
     const Eigen::MatrixXd ns_rows = N.bottomRows(ns);
     const Eigen::LDLT<Eigen::MatrixXd> g((ns_rows.transpose() * f.asDiagonal() * ns_rows).eval());
     const Eigen::VectorXd d = g.solve(rhs);
@@ -281,7 +282,7 @@ struct SizingProblem::Impl {
   Eigen::VectorXd Reference(const Eigen::VectorXd& x, Eigen::MatrixXd* shift_jac = nullptr) const {
     if (!states) return x_g;
     Eigen::VectorXd alpha = force_scale * alpha_factor * x.tail(states);
-    if (tolerance_sign != 0) alpha += tolerance_sign * ToleranceShift(Areas(x), x, shift_jac);
+    if (shifted) alpha += StateShift(Areas(x), x, shift_jac);
     return x_g + N * alpha;
   }
   // The member forces of combination c for force changes dx (members x columns) and the
@@ -878,11 +879,11 @@ struct SizingProblem::Impl {
     const int half = (nv + 1) / 2;
     InTwoLanes([&] { columns(half, nv); }, [&] { columns(0, half); });
     ComfortGradients();
-    if (tolerance_sign != 0 && states > 0) {
-      // The chain through the tolerance's change of the self-stress: the rows by the self-stress
+    if (shifted && states > 0) {
+      // The chain through the state's change of the self-stress: the rows by the self-stress
       // coefficients per newton (the state columns over their scale) times its derivatives.
       const Eigen::MatrixXd by_alpha = st.jac.rightCols(states) / (force_scale * alpha_factor);
-      st.jac += tolerance_sign * (by_alpha * st.shift_jac);
+      st.jac += by_alpha * st.shift_jac;
     }
     st.have_jac = true;
   }
@@ -1216,14 +1217,16 @@ SizingProblem::SizingProblem(const Design& d, SizingCorrections corrections,
   const std::vector<PrestressStateSpec> states = PrestressStatesOf(d.config);
   size_t whole = Build(*impl_, d, std::move(corrections), keep, 0, states.front());
   if (impl_->states > 0) {
-    // The rest-length tolerance's pattern, the design's (design/prestress_states.h); its change
-    // of the self-stress follows the variables.
-    const std::vector<double> shortening = ToleranceShortenings(d);
+    // Each state's shortenings (the rest-length tolerance's pattern, the design's, and the
+    // temperature's), held (design/prestress_states.h); their change of the self-stress follows
+    // the variables.
     for (size_t k = 1; k < states.size(); ++k) {
       extra_.push_back(std::make_unique<Impl>());
       whole += Build(*extra_.back(), d, other_corrections, keep, whole, states[k]);
-      extra_.back()->tolerance_sign = states[k].tolerance_sign;
-      extra_.back()->shortening = shortening;
+      Impl& part = *extra_.back();
+      part.shortening = StateShortenings(d, states[k]);
+      part.shifted = std::any_of(part.shortening.begin(), part.shortening.end(),
+                                 [](double v) { return v != 0; });
     }
   }
   if (keep && keep->size() != whole) throw ModelError("SizingProblem: one flag per row expected");

@@ -72,8 +72,8 @@ TEST_CASE("parse, echo, Validate and the README agree on every described key", "
   // Every optional key of the member kinds given (a cable for the strings, a tube for the bars),
   // so that each is echoed and probed.
   Material material;
-  material.strings = {{7850.0, 1.37e9, 1.6e11, 0.9}, 1.57e9, 0.9};
-  material.bars = {7850.0, 3.55e8, 2.1e11, 1.0};
+  material.strings = {{7850.0, 1.37e9, 1.6e11, 0.9, 1.2e-5}, 1.57e9, 0.9};
+  material.bars = {7850.0, 3.55e8, 2.1e11, 1.0, 2.4e-5};
   CheckDescribedSection(CoreSection(kMaterialSection, &Config::material, material), readme);
   CheckDescribedSection(CoreSection(kDesignSection, &Config::design, DesignConfig{}), readme);
   CheckDescribedSection(CoreSection(kLoadsSection, &Config::loads, LoadsConfig{}), readme);

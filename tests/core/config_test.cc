@@ -95,6 +95,25 @@ TEST_CASE("the resolved config parses back to itself") {
   }
 }
 
+TEST_CASE("the temperature case and its change are given together") {
+  json asked = GoodConfig();
+  asked["loads"] = {{"cases", {"permanent", "temperature"}}};
+  ExpectRejected(asked, "loads.temperature_delta_k", "0", "must be > 0 with \"temperature\"");
+  json given = GoodConfig();
+  given["loads"] = {{"temperature_delta_k", 25}};
+  ExpectRejected(given, "loads.temperature_delta_k", "25", "needs \"temperature\" in loads.cases");
+  json alone = GoodConfig();
+  alone["loads"] = {{"cases", {"temperature"}}, {"temperature_delta_k", 25}};
+  ExpectRejected(alone, "loads.cases", "[\"temperature\"]", "accompanies the other cases");
+  json unit = GoodConfig();
+  unit["material"]["thermal_expansion"] = 12;
+  ExpectRejected(unit, "material.thermal_expansion", "12", "1e-6/K");
+  json both = GoodConfig();
+  both["loads"] = {{"cases", {"permanent", "temperature"}}, {"temperature_delta_k", 25}};
+  const Config c = ParseConfig(both);
+  CHECK(c.loads.temperature_delta_k == 25);
+}
+
 TEST_CASE("unknown keys are rejected at every level") {
   json top = GoodConfig();
   top["brige"] = json::object();

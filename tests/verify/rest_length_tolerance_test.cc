@@ -14,6 +14,7 @@
 #include "design/design_report.h"
 #include "design/prestress_states.h"
 #include "design/sizing_problem.h"
+#include "verify/prestress_state_support.h"
 #include "verify/verified_design.h"
 
 namespace tbridge {
@@ -29,22 +30,8 @@ Config ToleranceOnly(double tolerance) {
   return config;
 }
 
-// The change of the prestress the strings' shortenings make, to first order, on a bridge of one
-// self-stress P: the compatibility of the deck chain, sum_s P_s f_s dt_s = sum_s P_s delta_s with
-// dt = c P, f_s = l_s / (E A_s + T_s) the string's flexibility; so c = sum P delta / sum P^2 f.
-Eigen::VectorXd FirstOrderChange(const Design& d, const std::vector<double>& shortenings) {
-  const Eigen::VectorXd p = PrestressForces(d);
-  const int nb = static_cast<int>(d.bars.size());
-  const double modulus = StringMaterial(d.config).youngs_modulus;
-  double num = 0, den = 0;
-  for (size_t k = 0; k < d.strings.size(); ++k) {
-    const MemberSizing& m = d.strings[k];
-    const double pk = p[nb + static_cast<Eigen::Index>(k)];
-    num += pk * shortenings[k];
-    den += pk * pk * m.length / (modulus * m.area + m.reference_force);
-  }
-  return (num / den) * p;
-}
+using test::CheckShiftedRows;
+using test::FirstOrderChange;
 
 TEST_CASE(
     "the rest-length tolerance raises the prestress as its closed form and the nonlinear solve say",
@@ -63,7 +50,9 @@ TEST_CASE(
     const bool tensioned = p[nb + static_cast<Eigen::Index>(k)] > 1e-9 * p.cwiseAbs().maxCoeff();
     CHECK(shortenings[k] == (tensioned ? 5e-4 * d.strings[k].length : 0.0));
   }
-  const Eigen::VectorXd change = FirstOrderChange(d, shortenings);
+  std::vector<double> all(d.bars.size(), 0.0);  // the bars' none
+  all.insert(all.end(), shortenings.begin(), shortenings.end());
+  const Eigen::VectorXd change = FirstOrderChange(d, all);
   REQUIRE(change.cwiseAbs().maxCoeff() > 0);
 
   // The nonlinear as-built solve of the bridge with those rest lengths (the check's state): the
@@ -80,20 +69,7 @@ TEST_CASE(
   // that change: the same code at two points, so equal to rounding (1e-10 of a row's scale).
   const SizingProblem with(d, {});
   const SizingProblem without(RunDesign(ToleranceOnly(0)), {});
-  const int n = without.num_constraints();
-  REQUIRE(with.num_constraints() == 3 * n);
-  const std::vector<double> areas = MemberAreas(d);
-  const Eigen::VectorXd x = with.VariablesOf(areas, with.AlphaOf(d.reference_forces));
-  const Eigen::VectorXd raised =
-      without.VariablesOf(areas, without.AlphaOf(d.reference_forces + change));
-  const Eigen::VectorXd lowered =
-      without.VariablesOf(areas, without.AlphaOf(d.reference_forces - change));
-  Eigen::VectorXd g(with.num_constraints()), g_raised(n), g_lowered(n);
-  with.Constraints(x, g);
-  without.Constraints(raised, g_raised);
-  without.Constraints(lowered, g_lowered);
-  CHECK((g.segment(n, n) - g_raised).cwiseAbs().maxCoeff() <= 1e-10);
-  CHECK((g.tail(n) - g_lowered).cwiseAbs().maxCoeff() <= 1e-10);
+  CheckShiftedRows(d, with, without, change);
 }
 
 TEST_CASE("a deck string shortened by the tolerance in the design file still passes check",
