@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "design/abutments.h"
 #include "design/static_model.h"
 #include "dynamics/simulation.h"
 
@@ -39,6 +40,8 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   m.tensegrity_class = st.TensegrityClass();
   m.deck_nodes = design.topology.deck_nodes;
   m.gravity = design.config.design.gravity;
+  for (const Abutment& a : AbutmentsOf(st, design.config.bridge.span))
+    m.reaction_groups.push_back(a.nodes);
 
   for (const MemberSizing& b : design.bars) m.bars.push_back({b.i, b.j, b.mass, b.length});
 

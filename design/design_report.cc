@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "design/abutments.h"
 #include "design/comfort_report.h"
 #include "design/design_loads.h"
 
@@ -486,17 +487,38 @@ double PeakRatio(const GroupAmplification& g) { return g.static_peak > 0 ? g.dyn
 
 json DynamicsJson(const Design& d) {
   json runs = json::array();
+  const std::array<Abutment, 2> ends = AbutmentsOf(d.topology.structure, d.config.bridge.span);
   for (const DynamicRun& r : d.dynamics.runs) {
+    json reactions = json::array();
+    for (size_t a = 0; a < ends.size() && r.done; ++a) {
+      reactions.push_back({{"x", ends[a].x_m},
+                           {"horizontal_max", r.peak_horizontal_reaction[a]},
+                           {"vertical_max", r.peak_vertical_reaction[a]}});
+    }
     json groups = json::array();
     for (const GroupAmplification& g : r.groups) {
       groups.push_back({{"group", g.group}, {"static_peak", g.static_peak}, {"dynamic_peak", g.dynamic_peak},
                         {"peak_ratio", PeakRatio(g)}, {"amplification", g.amplification}});
     }
-    runs.push_back({{"name", r.name}, {"load", r.load}, {"done", r.done}, {"note", r.note},
-                    {"integrator", r.integrator}, {"dt", r.dt}, {"steps", r.steps}, {"duration", r.duration},
-                    {"peak_deck_displacement", r.peak_deck_displacement}, {"amplification", groups}});
+    runs.push_back({{"name", r.name},
+                    {"load", r.load},
+                    {"done", r.done},
+                    {"note", r.note},
+                    {"integrator", r.integrator},
+                    {"dt", r.dt},
+                    {"steps", r.steps},
+                    {"duration", r.duration},
+                    {"peak_deck_displacement", r.peak_deck_displacement},
+                    {"amplification", groups},
+                    {"abutment_reactions", reactions}});
   }
-  return {{"done", d.dynamics.done}, {"ran", d.dynamics.ran()}, {"runs", runs}};
+  return {{"done", d.dynamics.done},
+          {"ran", d.dynamics.ran()},
+          {"abutment_reactions_include",
+           "each abutment's largest horizontal (in plan) and vertical reaction over the run [N], "
+           "characteristic "
+           "(the run is at service level): reported, not constrained"},
+          {"runs", runs}};
 }
 
 // "as_built": what check re-derived of an edited design, or null.
@@ -886,10 +908,15 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     for (const GroupAmplification& g : r.groups) {
       amp += Format("%s %s %.3g (%.3g)", amp.empty() ? "" : ",", g.group.c_str(), PeakRatio(g), g.amplification);
     }
-    line(Format("dynamic check, %s (%s): %s at dt = %.3g s, %ld steps; peak deck displacement %.4g m; per group, "
-                "peak force over its static peak (largest member's ratio):%s",
-                r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps, r.peak_deck_displacement,
-                amp.c_str()));
+    line(Format(
+        "dynamic check, %s (%s): %s at dt = %.3g s, %ld steps; peak deck displacement %.4g m; peak "
+        "reactions per abutment (characteristic) H %.4g / %.4g kN, V %.4g / %.4g kN; per group, "
+        "peak force "
+        "over its static peak (largest member's ratio):%s",
+        r.name.c_str(), r.load.c_str(), r.integrator.c_str(), r.dt, r.steps,
+        r.peak_deck_displacement, r.peak_horizontal_reaction[0] / 1000,
+        r.peak_horizontal_reaction[1] / 1000, r.peak_vertical_reaction[0] / 1000,
+        r.peak_vertical_reaction[1] / 1000, amp.c_str()));
   }
   for (const std::string& text : ComfortSummaryLines(d)) line(text);
   line(verdict.summary);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,9 @@ struct DynamicRun {
   long steps = 0;
   double duration = 0;     // [s]
   double peak_deck_displacement = 0;  // [m], from the run's start (static equilibrium)
+  // Per abutment (AbutmentsOf's order): its largest horizontal (in plan) and vertical reaction
+  // over the run [N], characteristic (the run is at service level). Reported, not constrained.
+  std::array<double, 2> peak_horizontal_reaction{}, peak_vertical_reaction{};
   std::vector<GroupAmplification> groups;
 };
 

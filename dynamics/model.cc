@@ -126,6 +126,38 @@ int MaxBarsAtANode(const DynamicModel& model) {
   return most;
 }
 
+std::vector<std::vector<ReactionEnd>> ReactionEnds(const DynamicModel& model) {
+  const int nb = static_cast<int>(model.bars.size());
+  std::vector<std::vector<ReactionEnd>> out;
+  for (const std::vector<int>& group : model.reaction_groups) {
+    std::vector<ReactionEnd> ends;
+    const auto at = [&group](int node) {
+      return std::find(group.begin(), group.end(), node) != group.end();
+    };
+    const auto add = [&](int member, int i, int j) {
+      if (at(i)) ends.push_back({member, +1.0});
+      if (at(j)) ends.push_back({member, -1.0});
+    };
+    for (int k = 0; k < nb; ++k) add(k, model.bars.i[k], model.bars.j[k]);
+    for (int k = 0; k < static_cast<int>(model.strings.size()); ++k)
+      add(nb + k, model.strings.i[k], model.strings.j[k]);
+    out.push_back(std::move(ends));
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector3d> ReactionGroupLoads(const DynamicModel& model) {
+  std::vector<Eigen::Vector3d> out;
+  for (const std::vector<int>& group : model.reaction_groups) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const int v : group) {
+      if (model.loads.size() != 0) sum += model.loads.col(v);
+    }
+    out.push_back(sum);
+  }
+  return out;
+}
+
 double MovingMass(const DynamicModel& model) {
   double total = model.node_mass.size() != 0 ? model.node_mass.sum() : 0.0;
   for (const DynamicBar& b : model.bars) total += b.mass;

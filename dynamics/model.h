@@ -122,6 +122,9 @@ struct DynamicModel {
   // omega is damped at alpha / (2 omega) of critical, so alpha = 2 xi omega gives one mode the
   // damping ratio xi exactly (the comfort check's time-history run). 0: none.
   double mass_damping_per_s = 0;
+  // Groups of pinned nodes (0-based) whose summed support reaction a run reports, each its
+  // largest over the run (a bridge's abutments); empty: none.
+  std::vector<std::vector<int>> reaction_groups;
 
   int num_nodes() const { return static_cast<int>(positions.cols()); }
   // Adds a string with its name and group.
@@ -186,6 +189,36 @@ void AddStructureWeight(DynamicModel& model);
 // The largest number of bars meeting at a node (0 without bars); end indices out of range
 // are skipped (CheckModel rejects them with a message).
 int MaxBarsAtANode(const DynamicModel& model);
+
+// A member's end at a node of a reaction group: the member ([bars; strings] index) and +1 at
+// its end i, -1 at its end j.
+struct ReactionEnd {
+  int member = 0;
+  double sign = 1;
+};
+// Per reaction group of `model`, the member ends at its nodes.
+std::vector<std::vector<ReactionEnd>> ReactionEnds(const DynamicModel& model);
+// Per reaction group, the constant loads on its nodes [N].
+std::vector<Eigen::Vector3d> ReactionGroupLoads(const DynamicModel& model);
+// A group's support reaction [N]: what balances the members' forces on its nodes and `loads`
+// on them. `position(node)` gives a node's position [m], `force(member)` a member's force
+// ([C_bars; T_strings]: compression of a bar, tension of a string [N]).
+template <class Position, class Force>
+Eigen::Vector3d GroupReaction(const DynamicModel& model, const std::vector<ReactionEnd>& ends,
+                              const Eigen::Vector3d& loads, Position position, Force force) {
+  const int nb = static_cast<int>(model.bars.size());
+  Eigen::Vector3d r = -loads;
+  for (const ReactionEnd& e : ends) {
+    const bool bar = e.member < nb;
+    const int i = bar ? model.bars.i[e.member] : model.strings.i[e.member - nb];
+    const int j = bar ? model.bars.j[e.member] : model.strings.j[e.member - nb];
+    const Eigen::Vector3d d = position(j) - position(i);
+    // A string pulls its end i toward j; a bar in compression pushes it away.
+    const double pull = bar ? -force(e.member) : force(e.member);
+    r -= e.sign * pull / d.norm() * d;
+  }
+  return r;
+}
 
 // Mass that moves: bars (with their string share) plus node point masses [kg]. For the
 // paper's n = 1 bridge with kOnBars this is 141.94 kg (SPEC.md §8).

@@ -81,6 +81,9 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     lambda_.setZero(static_cast<Eigen::Index>(model.bars.size()));
     summary_.peak_bar_compression.assign(model.bars.size(), 0.0);
     summary_.peak_bar_tension.assign(model.bars.size(), 0.0);
+    reaction_ends_ = ReactionEnds(model);
+    reaction_loads_ = ReactionGroupLoads(model);
+    summary_.peak_reactions.assign(reaction_ends_.size(), ReactionPeak{});
   }
   summary_.allowed_stress = model.allowed_stress;
   double kinetic = 0, elastic = 0;
@@ -267,8 +270,32 @@ void RunMonitor::Measure(double t, double load_time, const double* y, bool strin
       double& peak = force >= 0 ? summary_.peak_bar_compression[k] : summary_.peak_bar_tension[k];
       peak = std::max(peak, std::abs(force));
     }
+    if (!reaction_ends_.empty()) MeasureReactions(y);
   }
   kinetic = engine_.KineticEnergy(y);
+}
+
+void RunMonitor::MeasureReactions(const double* y) {
+  const int nb = static_cast<int>(model_.bars.size());
+  const bool damped = engine_.damped();
+  const auto position = [this, y](int node) {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int d = 0; d < dim_; ++d) p[d] = y[node * dim_ + d];
+    return p;
+  };
+  // A bar's compression lambda l; a string's tension as MeasureStrings takes it (its damper's
+  // share included), from the same geometry.
+  const auto force = [&](int member) {
+    if (member < nb) return lambda_(member) * model_.bars.length[static_cast<size_t>(member)];
+    const size_t k = static_cast<size_t>(member - nb);
+    if (len2_[k] < strings_.rest_sq[k]) return 0.0;
+    const double spring = StringTension(strings_.k[k], strings_.rest[k], len2_[k] * inv_len_[k]);
+    return damped ? std::max(spring + strings_.c[k] * (rate_[k] * inv_len_[k]), 0.0) : spring;
+  };
+  for (size_t g = 0; g < reaction_ends_.size(); ++g) {
+    summary_.peak_reactions[g].Take(
+        GroupReaction(model_, reaction_ends_[g], reaction_loads_[g], position, force));
+  }
 }
 
 void RunMonitor::Finish() {

@@ -113,6 +113,12 @@ class RunMonitor {
   int max_stress_string_ = -1;
   BarForceProbe probe_;
   Eigen::VectorXd lambda_;
+  // Per reaction group (model.reaction_groups), measured with the bar forces: the member ends
+  // at its nodes and the constant loads on them.
+  std::vector<std::vector<ReactionEnd>> reaction_ends_;
+  std::vector<Eigen::Vector3d> reaction_loads_;
+  // The groups' reactions at y, from lambda_ and geometry_, into summary_.peak_reactions.
+  void MeasureReactions(const double* y);
   double timed_work_ = 0, h0_ = 0;
   std::function<double()> omega_max_;
   SimulationSummary summary_;

@@ -2,7 +2,10 @@
 // bar force, slack events and the energy balance (filled by RunMonitor and the driver).
 #pragma once
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +20,16 @@ struct SlackEvents {
   std::vector<int> per_string;      // per model string
   int slack_at_start = 0, slack_at_end = 0;
   int ever_slack = 0;               // strings slack at the start or after some accepted step
+};
+
+// A reaction group's largest support reaction over a run [N]: horizontal, |(x, z)| (in plan),
+// and vertical, |y| (bearing or uplift), each at its own instant.
+struct ReactionPeak {
+  double horizontal = 0, vertical = 0;
+  void Take(const Eigen::Vector3d& r) {
+    horizontal = std::max(horizontal, std::hypot(r.x(), r.z()));
+    vertical = std::max(vertical, std::abs(r.y()));
+  }
 };
 
 struct EnergyBalance {
@@ -64,6 +77,10 @@ struct SimulationSummary {
   // Per model string, at the start and after the accepted steps: the largest tension [N] and
   // the smallest strain (s - L0) / L0 (negative: slack that deep).
   std::vector<double> peak_string_tension, min_string_strain;
+  // Per model.reaction_groups, where the run measures bar forces: its largest reaction at the
+  // start and after the accepted steps, from the members' forces on its nodes and the constant
+  // loads there (a timed load standing on a support node itself is not in it).
+  std::vector<ReactionPeak> peak_reactions;
   std::vector<PrestrainReport> prestrain;
   bool has_frequency = false;
   FrequencyEstimate frequency;     // deck measurement of SPEC.md §9

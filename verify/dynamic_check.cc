@@ -171,6 +171,7 @@ bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& sta
   summary.peak_bar_compression = r.peak_bar_compression;
   summary.peak_string_tension = r.peak_string_tension;
   summary.min_string_strain = r.min_string_strain;
+  summary.peak_reactions = r.peak_reactions;
   DynamicRun& record = run.record;
   record.done = true;
   record.dt = r.sample_dt_s;
@@ -274,6 +275,10 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
       done = Run(model, stable_dt, members, max_member_steps, run, summary, progress);
     }
     if (done) {
+      for (size_t a = 0; a < summary.peak_reactions.size() && a < 2; ++a) {
+        run.record.peak_horizontal_reaction[a] = summary.peak_reactions[a].horizontal;
+        run.record.peak_vertical_reaction[a] = summary.peak_reactions[a].vertical;
+      }
       const std::string label = "dynamic: " + run.record.name;
       solve_stations();
       const Eigen::VectorXd static_peak = StaticPeaks(d, model, statics, stations ? &*stations : nullptr);

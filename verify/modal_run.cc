@@ -68,6 +68,15 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
     f << state.bar_compression, state.string_tension;
     return f;
   };
+  const auto reactions = [&model](const StaticState& state) {
+    std::vector<Eigen::Vector3d> sums;
+    for (const std::vector<int>& group : model.reaction_groups) {
+      Eigen::Vector3d r = Eigen::Vector3d::Zero();
+      for (const int v : group) r += state.reactions.col(v);
+      sums.push_back(r);
+    }
+    return sums;
+  };
   // The standing loads, then each station from the last one's equilibrium (StaticSeries): its
   // load differs by one station's step. In two lanes (core/two_lanes.h): the standing loads
   // and the first half of the stations, and the second half from the reference state. On a
@@ -112,6 +121,7 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   standing = at_rest.state;
   out.standing_forces = forces(standing);
   out.standing_deck_y = deck_y(standing);
+  out.standing_reactions = reactions(standing);
   out.duration_s = duration_s;
   const double span = d.config.bridge.span;
   Eigen::Matrix3Xd loads = model.loads;
@@ -127,6 +137,7 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
     converged = converged && r.converged;
     out.forces.push_back(r.converged ? forces(r.state) : out.standing_forces);
     out.deck_y.push_back(r.converged ? deck_y(r.state) : out.standing_deck_y);
+    out.reactions.push_back(r.converged ? reactions(r.state) : out.standing_reactions);
     out.load_nodes.push_back(nodes);
     out.load_forces.push_back(std::move(alone));
     out.time_s.push_back(d.actions.station_x[k] / span * duration_s);
@@ -259,6 +270,18 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
   Eigen::VectorXd peak = Eigen::VectorXd::Constant(nm, -std::numeric_limits<double>::infinity());
   Eigen::VectorXd low = Eigen::VectorXd::Constant(nm, std::numeric_limits<double>::infinity());
   double deck_peak = 0;
+  // The support reactions: the stations' own (nonlinear, at their geometry: the deck chain's
+  // turn at the support carries a share of the load) by the load's share, as the forces, plus
+  // the dynamic excess's, linear in its member forces at the model's positions (its own turn is
+  // the excess's share of the deck's, ~1 % of the stations').
+  const std::vector<std::vector<ReactionEnd>> reaction_ends = ReactionEnds(model);
+  const size_t groups = static_cast<int>(stations.reactions.size()) == count
+                            ? std::min(reaction_ends.size(), stations.standing_reactions.size())
+                            : 0;
+  out.peak_reactions.assign(groups, ReactionPeak{});
+  const auto at_rest = [&model](int node) { return Eigen::Vector3d(model.positions.col(node)); };
+  const auto excess_of = [&excess_force](int member) { return excess_force[member]; };
+  const Eigen::Vector3d no_load = Eigen::Vector3d::Zero();
   Eigen::VectorXd start_y(n_deck);
   for (int n = 0; n < n_deck; ++n) start_y[n] = model.positions(1, model.deck_nodes[n]);
   const auto time_of = [&](int k) { return k < 0 ? 0.0 : k >= count ? stations.duration_s : stations.time_s[k]; };
@@ -280,6 +303,15 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
     deck += excess_deck;
     peak = peak.cwiseMax(force);
     low = low.cwiseMin(force);
+    for (size_t g = 0; g < groups; ++g) {
+      Eigen::Vector3d r = stations.standing_reactions[g];
+      if (before >= 0)
+        r += (1 - share_after) * (stations.reactions[before][g] - stations.standing_reactions[g]);
+      if (before + 1 < count)
+        r += share_after * (stations.reactions[before + 1][g] - stations.standing_reactions[g]);
+      out.peak_reactions[g].Take(
+          r + GroupReaction(model, reaction_ends[g], no_load, at_rest, excess_of));
+    }
     deck_peak = std::max(deck_peak, (deck - start_y).cwiseAbs().maxCoeff());
     ++out.samples;
   };

@@ -33,6 +33,7 @@
 
 #include "design/design.h"
 #include "dynamics/model.h"
+#include "dynamics/run_summary.h"
 #include "statics/static_solve.h"
 
 namespace tbridge {
@@ -44,6 +45,9 @@ struct StationResponses {
   Eigen::VectorXd standing_deck_y;                 // vertical position of each deck node [m]
   std::vector<Eigen::VectorXd> forces;             // per station [N]
   std::vector<Eigen::VectorXd> deck_y;             // per station [m]
+  // Per reaction group of the model (its abutments): the reaction standing and per station [N].
+  std::vector<Eigen::Vector3d> standing_reactions;
+  std::vector<std::vector<Eigen::Vector3d>> reactions;
   // Per station: the point load alone, at the nodes it loads (their forces, 3 x nodes [N]).
   std::vector<std::vector<int>> load_nodes;
   std::vector<Eigen::Matrix3Xd> load_forces;
@@ -82,6 +86,8 @@ struct ModalRunResult {
   double nonlinearity = 0;
   // As the nonlinear run reports them (dynamics/run_summary.h).
   std::vector<double> peak_bar_compression, peak_string_tension, min_string_strain;
+  // The stations' (nonlinear, at their own geometry) plus the excess's, at the model's positions.
+  std::vector<ReactionPeak> peak_reactions;
   double peak_deck_displacement_m = 0;  // largest vertical deck displacement from the start
 };
 

@@ -2,8 +2,11 @@
 // its stable step, the bar lengths stabilised, as the dynamic check ran it before): the second
 // algorithm is the model the modal run linearises.
 
-#include <catch2/catch.hpp>
+#include "verify/modal_run.h"
+
 #include <algorithm>
+#include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "bridge/design_model.h"
@@ -14,7 +17,6 @@
 #include "dynamics/simulation.h"
 #include "verify/dynamic_check.h"
 #include "verify/load_scenarios.h"
-#include "verify/modal_run.h"
 #include "verify/verified_design.h"
 
 namespace tbridge {
@@ -23,6 +25,8 @@ namespace {
 struct Pair {
   ModalRunResult modal;
   SimulationSummary rk4;
+  StaticState standing;                     // the static equilibrium both start from
+  std::vector<std::vector<int>> abutments;  // the model's reaction groups
 };
 
 // The walking load of `force_n` on `d` (deck inertia on, as the check builds its model), by
@@ -40,8 +44,9 @@ Pair RunBoth(const Design& d, double force_n) {
   Pair out;
   out.rk4 = Simulate(model, scene).summary;
   const StaticModel statics = StaticModelOf(d);
-  StaticState standing;
   bool converged = false;
+  StaticState& standing = out.standing;
+  out.abutments = model.reaction_groups;
   const StationResponses stations = MovingLoadStations(d, model, statics, force_n, scene.duration, standing, converged);
   REQUIRE(converged);
   ModalRunOptions modal = ModalRunOptionsOf(d);  // as the check runs it
@@ -68,6 +73,14 @@ double ForceError(const Design& d, const Pair& p) {
     worst = std::max(worst, error / (sigma_w * d.strings[q].area));
   }
   return worst;
+}
+
+// Per abutment, its reaction in the standing equilibrium (the static solve's), horizontal in
+// plan and vertical [N].
+std::array<double, 2> StandingReaction(const Pair& p, size_t abutment) {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  for (const int v : p.abutments.at(abutment)) r += p.standing.reactions.col(v);
+  return {std::hypot(r.x(), r.z()), std::abs(r.y())};
 }
 
 double DeckError(const Pair& p) {
@@ -110,6 +123,32 @@ TEST_CASE("under a small load the modal run is the linear response the nonlinear
   INFO("force error " << ForceError(d, p) << ", deck error " << DeckError(p));
   CHECK(DeckError(p) <= 1e-4);
   CHECK(ForceError(d, p) <= 1e-5);
+  // The runs' peak reactions: each abutment's vertical one is the standing equilibrium's (an
+  // independent static solve) plus at most the 100 N load, with 5 % of it for the run's
+  // dynamic overshoot; its horizontal one by the load's own thrust, under 2 % of the standing
+  // thrust (the prestress's, 10^5 N, against 100 N x span / 8 depth). Both runs agree to 1e-4
+  // of each peak, as the deck does.
+  REQUIRE(p.abutments.size() == 2);
+  REQUIRE(p.rk4.peak_reactions.size() == 2);
+  REQUIRE(p.modal.peak_reactions.size() == 2);
+  for (size_t a = 0; a < 2; ++a) {
+    const std::array<double, 2> standing = StandingReaction(p, a);
+    INFO("abutment " << a << ": standing H " << standing[0] << " N, V " << standing[1]
+                     << " N; RK4 H " << p.rk4.peak_reactions[a].horizontal << ", V "
+                     << p.rk4.peak_reactions[a].vertical << "; modal H "
+                     << p.modal.peak_reactions[a].horizontal << ", V "
+                     << p.modal.peak_reactions[a].vertical);
+    for (const ReactionPeak& peak : {p.rk4.peak_reactions[a], p.modal.peak_reactions[a]}) {
+      CHECK(peak.vertical >= standing[1] * (1 - 1e-9));
+      CHECK(peak.vertical <= standing[1] + 105.0);
+      CHECK(peak.horizontal >= standing[0] * (1 - 1e-9));
+      CHECK(peak.horizontal <= standing[0] * 1.02);
+    }
+    CHECK(std::abs(p.modal.peak_reactions[a].vertical - p.rk4.peak_reactions[a].vertical) <=
+          1e-4 * p.rk4.peak_reactions[a].vertical);
+    CHECK(std::abs(p.modal.peak_reactions[a].horizontal - p.rk4.peak_reactions[a].horizontal) <=
+          1e-4 * p.rk4.peak_reactions[a].horizontal);
+  }
 }
 
 TEST_CASE("where a string that must stay taut goes slack, or the bridge is not linear enough, the nonlinear run takes over",
