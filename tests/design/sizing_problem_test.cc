@@ -134,6 +134,16 @@ TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[des
   SECTION("3D, n = 1, with abutment capacities") {
     CheckJacobian(RunDesign(WithCapacities(ThreeD(1))));
   }
+  // Warmer and colder (the temperature's states): every member's stress-free length moves, the
+  // bars' on the compatibility's right-hand side; 40 K either way (60 K at the factors: 7.2e-4
+  // of strain, a quarter of the deck chain's at sigma_w) keeps the chain taut and the term large.
+  SECTION("planar, n = 2, the temperature either way") {
+    Config config = SmallDesign().config;
+    config.design.prestress_loss = 0;
+    config.loads.cases.push_back("temperature");
+    config.loads.temperature_delta_k = 40;
+    CheckJacobian(RunDesign(config));
+  }
 }
 
 TEST_CASE("the sizing problem's Hessian is the reciprocal diagonal, in Ipopt's sign", "[design]") {
