@@ -36,8 +36,10 @@ TEST_CASE("bridge.beta_deg auto chooses an angle no given angle beats", "[verify
   CHECK(s.chosen_deg == d.config.bridge.beta_deg);
   CHECK(s.chosen_deg >= 10.0);
   CHECK(s.chosen_deg <= 60.0);
-  // The scan (every 5 deg, 11 angles) and a golden section to 0.5 deg.
-  CHECK(s.trials.size() >= 11);
+  // The scan (every 5 deg from 60 deg down, to where the abutments' thrust rose past their
+  // capacity twice) and a golden section to 0.5 deg.
+  const bool stopped = s.note.find("not tried") != std::string::npos;
+  CHECK(s.trials.size() >= (stopped ? 5u : 11u));
   // The echo says "auto", as the config did; the design file's topology holds the angle.
   CHECK(ToJson(d.config)["bridge"]["beta_deg"] == "auto");
   // Independent of the search: designs with the angle given, at the range's ends, the middle and
@@ -51,6 +53,8 @@ TEST_CASE("bridge.beta_deg auto chooses an angle no given angle beats", "[verify
     INFO("beta = " << beta << " deg: " << other.mass.structure << " kg, "
                    << DesignVerdict(other).summary);
     if (DesignVerdict(other).pass) CHECK(other.mass.structure >= d.mass.structure * (1 - 5e-4));
+    // Below where the scan stopped, the angle fails as the rule foretold.
+    if (stopped && beta == 10.0) CHECK_FALSE(DesignVerdict(other).pass);
   }
   // The same design as the angle chosen given outright: the search's last step designs it so.
   Config at = Held();
