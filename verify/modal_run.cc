@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/two_lanes.h"
+#include "design/abutments.h"
 #include "design/mirror.h"
 #include "design/static_model.h"
 #include "dynamics/modal.h"
@@ -71,9 +72,8 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   const auto reactions = [&model](const StaticState& state) {
     std::vector<Eigen::Vector3d> sums;
     for (const std::vector<int>& group : model.reaction_groups) {
-      Eigen::Vector3d r = Eigen::Vector3d::Zero();
-      for (const int v : group) r += state.reactions.col(v);
-      sums.push_back(r);
+      const AbutmentReaction r = ReactionOf(Abutment{group, 0.0}, state.reactions);
+      sums.emplace_back(r.x, r.y, r.z);
     }
     return sums;
   };
