@@ -103,6 +103,26 @@ void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
   }
 }
 
+// The keys of `material` and `design` a structure to design reads (truss/); the others are
+// the bridge's, refused there rather than ignored.
+const std::vector<std::string> kStructureMaterialKeys{"density", "youngs_modulus"};
+const std::vector<std::string> kStructureDesignKeys{
+    "self_weight", "gravity", "buckling_safety_factor", "solver", "tolerance", "max_iterations"};
+
+void RequireKeysOf(const nlohmann::json& root, const char* section,
+                   const std::vector<std::string>& keys) {
+  if (!root.contains(section) || !root.at(section).is_object()) return;
+  for (const auto& [key, value] : root.at(section).items()) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+      std::string list;
+      for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
+      throw ConfigError(
+          std::string(section) + "." + key, Show(value),
+          "not read for a structure to design: " + std::string(section) + " takes " + list);
+    }
+  }
+}
+
 }  // namespace
 
 void ApplyPaperSwitches(Config& c) {
@@ -128,14 +148,27 @@ Config ParseConfig(const nlohmann::json& root) {
                         "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
                         "not both");
     }
+    c.structure = ParseStructureConfig(top.Section("structure"));
+    const bool designable = c.structure->Designable();
     for (const char* section : {"material", "design", "loads", "comfort", "supports"}) {
-      if (top.Has(section)) {
+      const bool beside_members =
+          designable && (std::string(section) == "material" || std::string(section) == "design");
+      if (top.Has(section) && !beside_members) {
         throw ConfigError(section, "(section)",
-                          "not allowed with \"structure\": a custom scene gives its masses, stiffnesses and rest "
-                          "lengths directly");
+                          designable
+                              ? "not allowed with \"structure\": a structure to design takes "
+                                "\"material\" and \"design\" beside it, its loads in "
+                                "structure.load_cases"
+                              : "not allowed with \"structure\": a custom scene gives its masses, "
+                                "stiffnesses and rest lengths directly");
       }
     }
-    c.structure = ParseStructureConfig(top.Section("structure"));
+    if (designable) {
+      RequireKeysOf(root, "material", kStructureMaterialKeys);
+      RequireKeysOf(root, "design", kStructureDesignKeys);
+      c.material = ParseSection<Material>(top.Section("material"), CheckMaterialRules);
+      c.design = ParseSection<DesignConfig>(top.Section("design"), CheckDesignRules);
+    }
   } else {
     if (!top.Has("bridge")) {
       throw ConfigError("bridge", "(missing)", "required section (or \"structure\" for a custom scene)");
@@ -167,6 +200,11 @@ nlohmann::json ToJson(const Config& c) {
   nlohmann::json j;
   if (c.structure) {
     j["structure"] = ToJson(*c.structure);
+    if (c.structure->Designable()) {  // only the keys a structure to design reads
+      const nlohmann::json material = EchoFields(c.material), design = EchoFields(c.design);
+      for (const std::string& k : kStructureMaterialKeys) j["material"][k] = material.at(k);
+      for (const std::string& k : kStructureDesignKeys) j["design"][k] = design.at(k);
+    }
     if (c.dynamics) j["dynamics"] = ToJson(*c.dynamics);
     return j;
   }
@@ -184,6 +222,12 @@ void Validate(const Config& c) {
   if (c.structure) {  // a custom scene: bridge, material and design are not used
     ValidateFields(*c.structure, kStructureSection.name);
     CheckStructureRules(*c.structure);
+    if (c.structure->Designable()) {
+      ValidateFields(c.material, kMaterialSection.name);
+      CheckMaterialRules(c.material);
+      ValidateFields(c.design, kDesignSection.name);
+      CheckDesignRules(c.design);
+    }
   } else {
     ValidateFields(c.bridge, kBridgeSection.name);
     CheckBridgeRules(c.bridge);

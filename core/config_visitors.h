@@ -8,6 +8,7 @@
 //   v.Integer(key, I, lo, hi)                     I = int or long, in [lo, hi]
 //   v.Bool(key, bool)
 //   v.Choice(key, std::string, allowed)           one of `allowed`
+//   v.Text(key, std::string)                      a non-empty name (a group's, a case's)
 //   v.Choices(key, std::vector<std::string>, allowed)  each one of `allowed`, none twice
 //   v.OptionalNumber(key, std::optional<double>, range, absent)
 //                                                 absent = off; Absent::kNull also reads and
@@ -92,6 +93,9 @@ struct ParseVisitor {
   void Choice(const KeyInfo& key, std::string& field, const std::vector<std::string>& allowed) {
     field = s.Choice(key.name, Fallback(key, field), allowed);
   }
+  void Text(const KeyInfo& key, std::string& field) {
+    field = s.Text(key.name, Fallback(key, field));
+  }
   void Choices(const KeyInfo& key, std::vector<std::string>& field, const std::vector<std::string>& allowed);
   void OptionalNumber(const KeyInfo& key, std::optional<double>& field, Range range,
                       Absent absent) {
@@ -162,6 +166,7 @@ struct EchoVisitor {
   void Choice(const KeyInfo& key, const std::string& field, const std::vector<std::string>&) {
     Put(key, field);
   }
+  void Text(const KeyInfo& key, const std::string& field) { Put(key, field); }
   void Choices(const KeyInfo& key, const std::vector<std::string>& field, const std::vector<std::string>&) {
     Put(key, field);
   }
@@ -245,6 +250,9 @@ struct ValidateVisitor {
                const std::vector<std::string>& allowed) const {
     CheckChoices(Path(key), field, allowed);
   }
+  void Text(const KeyInfo& key, const std::string& field) const {
+    if (field.empty()) throw ConfigError(Path(key), "\"\"", "must be a non-empty string");
+  }
   // Each of `list` one of `allowed`, and none twice (a repeated case would be checked twice).
   static void CheckChoices(const std::string& path, const std::vector<std::string>& list,
                            const std::vector<std::string>& allowed);
@@ -303,6 +311,9 @@ struct TableVisitor {
               const std::vector<std::string>& allowed);
   void Choices(const KeyInfo& key, const std::vector<std::string>& field,
                const std::vector<std::string>& allowed);
+  void Text(const KeyInfo& key, const std::string& field) {
+    Row(key, field.empty() ? "none" : "`\"" + field + "\"`", "a non-empty string");
+  }
   void OptionalNumber(const KeyInfo& key, const std::optional<double>& field, Range range,
                       Absent absent) {
     Row(key,

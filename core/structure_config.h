@@ -8,6 +8,7 @@
 #include <array>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace tbridge {
@@ -42,6 +43,49 @@ struct StructureLoad {
   std::array<double, 3> force_n{0, 0, 0};  // constant [N]
 };
 
+// A member of a structure to be designed (`tbridge design`): its group gives its kind, its
+// material limits and its area, which every member of the group shares.
+struct StructureMemberConfig {
+  std::array<int, 2> nodes{1, 2};  // 1-based end nodes
+  std::string group;               // the name of one of `groups`
+};
+
+// A family of members designed to one area: its kind says what it may carry.
+struct StructureGroupConfig {
+  std::string name;
+  // "string": tension only (a compression row keeps it taut); "bar": compression only, with
+  // Euler buckling unless `buckling` is "none"; "truss": either sign, elastic E A / L.
+  std::string kind = "truss";
+  double min_area_m2 = 0;                        // [m^2], > 0
+  std::optional<double> max_area_m2;             // [m^2]; none: unbounded
+  std::optional<double> allowed_tension_pa;      // [Pa]; strings and trusses
+  std::optional<double> allowed_compression_pa;  // [Pa]; bars and trusses
+  // "auto": Euler for bars, none for trusses; "euler": a solid round section's Euler load
+  // pi^2 E I / L^2 with I = A^2 / (4 pi), divided by design.buckling_safety_factor; "none".
+  std::string buckling = "auto";
+};
+
+// A load case of a designed structure: its node forces times `factor` (with the members'
+// self-weight, design.self_weight, in every case and times the same factor).
+struct StructureLoadCase {
+  std::string name;
+  double factor = 1.0;  // [-], > 0
+  std::vector<StructureLoad> loads;
+};
+
+// A displacement limit of a designed structure: |u_axis(node)| <= max_m in every case.
+struct StructureDisplacementLimit {
+  int node = 1;            // 1-based, a free node
+  std::string axis = "y";  // "x" | "y" | "z"
+  double max_m = 0;        // [m], > 0
+};
+
+struct StructureLimits {
+  std::vector<StructureDisplacementLimit> displacements;
+  // f_k >= the k-th entry [Hz], k = 1, 2, ...: the lowest natural frequencies, in order.
+  std::vector<double> min_frequencies_hz;
+};
+
 struct StructureConfig {
   int dim = 3;  // 2: motion in the x-y plane (every z must be 0); 3: full 3D
   std::vector<std::array<double, 3>> nodes;  // [m]; node k is entry k - 1
@@ -56,6 +100,15 @@ struct StructureConfig {
   // sigma_w [Pa] for the stress report; required when a string has an area.
   std::optional<double> allowed_stress_pa;
   double gravity_m_s2 = 9.81;  // g, acting in -y when dynamics.gravity_on_structure is set
+  // The designable form (`tbridge design`): members in groups, load cases and limits. A
+  // structure is either this or the scene of `bars` and `strings`, never both.
+  std::vector<StructureMemberConfig> members;
+  std::vector<StructureGroupConfig> groups;
+  std::vector<StructureLoadCase> load_cases;
+  StructureLimits limits;
+
+  // Whether this is the designable form (`members` given).
+  bool Designable() const { return !members.empty(); }
 
   // L0 of string `k`: rest_length_m, or rest_ratio x its length at the node positions.
   double RestLength(int k) const;

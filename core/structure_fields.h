@@ -12,15 +12,101 @@
 namespace tbridge {
 
 inline const SectionInfo kStructureSection{
-    "structure", "a custom scene (`tbridge simulate` and `modes`)",
+    "structure",
+    "a custom scene (`tbridge simulate` and `modes`), or a structure to design (`tbridge design`)",
     "with `dim` = 2 every node's z and every load's z is 0; `pinned`, `deck_nodes` and "
     "`node_masses[].node` name each node at most once, and deck nodes are not pinned; a bar or "
     "string joins two different nodes at different positions, and no two bars (or strings) join "
     "the same pair; each string gives exactly one of `rest_length_m` and `rest_ratio`, and its "
-    "rest length is > 0; `allowed_stress_pa` is required when a string has `area_m2`."};
+    "rest length is > 0; `allowed_stress_pa` is required when a string has `area_m2`. A structure "
+    "to design gives `members` instead of `bars` and `strings` (never both; `loads`, "
+    "`deck_nodes` and `allowed_stress_pa` belong to the scene), with `groups` and at least one of "
+    "`load_cases` (or frequency limits); beside it the config may give `material` (`density`, "
+    "`youngs_modulus`) and "
+    "`design` (`self_weight`, `gravity`, `buckling_safety_factor`, `solver`, `tolerance`, "
+    "`max_iterations`), no other section. Each member names a group; each group has members, a "
+    "name given once, `min_area_m2` <= `max_area_m2`, and, where there are load cases, the "
+    "allowed stresses its kind needs (strings tension, bars compression, trusses both); never one "
+    "its kind does not carry; a string takes no "
+    "buckling. Load case names are given once; a displacement limit is on a free node, along z "
+    "only with `dim` = 3, each node and axis once."};
 
 // Bounds the scene before any array is sized from it (hostile input, the fuzz target).
 inline constexpr int kMaxStructureNodes = 1 << 20;
+
+template <class S, class V>
+void DescribeFields(S& c, V& v) requires std::is_same_v<std::remove_const_t<S>, StructureLimits> {
+  v.List(KeyInfo{"displacements", "–",
+                 "displacement limits of a designed structure, in every load case"},
+         c.displacements, [&](auto& d, auto& e) {
+           e.Integer(KeyInfo{"node", "–", "a free node", true, "integer in [1, node count]"},
+                     d.node, 1, kMaxStructureNodes);
+           e.Choice(KeyInfo{"axis", "–", "the displacement's direction"}, d.axis, {"x", "y", "z"});
+           e.Number(KeyInfo{"max_m", "m", "the displacement's magnitude at most this", true},
+                    d.max_m, Range::Positive());
+         });
+  v.Numbers(KeyInfo{"min_frequencies_hz", "Hz",
+                    "the k-th lowest natural frequency at least the k-th entry (consistent mass "
+                    "of the members, `node_masses` lumped)"},
+            c.min_frequencies_hz, Range::NonNegative());
+}
+
+// The designable form's keys (`tbridge design` of a structure: truss/): members in groups, load
+// cases and limits. `nodes()` is the node count.
+template <class S, class V, class N>
+void DescribeDesignable(S& c, V& v, const N& nodes) {
+  constexpr const char* kNodeNumber = "integer in [1, node count]";
+  v.List(KeyInfo{"members", "–",
+                 "the members of a structure to design (`tbridge design`), instead of `bars` and "
+                 "`strings`; each member's area is its group's"},
+         c.members, [&](auto& m, auto& e) {
+           e.NodePair(KeyInfo{"nodes", "–", "end nodes", true,
+                              "`[i, j]`, node numbers in [1, node count]; i ≠ j at different "
+                              "positions, each pair once"},
+                      m.nodes, nodes());
+           e.Text(KeyInfo{"group", "–", "the `groups[].name` it belongs to", true}, m.group);
+         });
+  v.List(KeyInfo{"groups", "–", "families of members designed to one area each"}, c.groups,
+         [&](auto& g, auto& e) {
+           e.Text(KeyInfo{"name", "–", "the group's name, each once", true}, g.name);
+           e.Choice(KeyInfo{"kind", "–",
+                            "`\"string\"`: tension only (a row keeps it taut); `\"bar\"`: "
+                            "compression only; `\"truss\"`: either sign. All elastic, E·A / L"},
+                    g.kind, {"string", "bar", "truss"});
+           e.Number(KeyInfo{"min_area_m2", "m²", "the smallest area the design may give", true},
+                    g.min_area_m2, Range::Positive());
+           e.OptionalNumber(KeyInfo{"max_area_m2", "m²", "the largest area; none: unbounded"},
+                            g.max_area_m2, Range::Positive(), Absent::kOmitted);
+           e.OptionalNumber(KeyInfo{"allowed_tension_pa", "Pa",
+                                    "the allowed tensile stress; required for strings and trusses, "
+                                    "not given for bars"},
+                            g.allowed_tension_pa, Range::Positive(), Absent::kOmitted);
+           e.OptionalNumber(
+               KeyInfo{"allowed_compression_pa", "Pa",
+                       "the allowed compressive stress (a magnitude); required for bars "
+                       "and trusses, not given for strings"},
+               g.allowed_compression_pa, Range::Positive(), Absent::kOmitted);
+           e.Choice(KeyInfo{"buckling", "–",
+                            "`\"euler\"`: the compression is held to a solid round section's "
+                            "Euler load π²·E·I / L², I = A² / (4π), over "
+                            "`design.buckling_safety_factor`; `\"none\"`; `\"auto\"`: Euler for "
+                            "bars, none for trusses (strings take none)"},
+                    g.buckling, {"auto", "euler", "none"});
+         });
+  v.List(KeyInfo{"load_cases", "–",
+                 "the design's load cases; each member's weight (`design.self_weight`) is in "
+                 "every case, times its factor"},
+         c.load_cases, [&](auto& l, auto& e) {
+           e.Text(KeyInfo{"name", "–", "the case's name, each once", true}, l.name);
+           e.Number(KeyInfo{"factor", "–", "the factor on the case's loads and the self-weight"},
+                    l.factor, Range::Positive());
+           e.List(KeyInfo{"loads", "–", "node forces", true}, l.loads, [&](auto& f, auto& x) {
+             x.Integer(KeyInfo{"node", "–", "the node", true, kNodeNumber}, f.node, 1, nodes());
+             x.Vector3(KeyInfo{"force_n", "N", "the force [fx, fy, fz]", true}, f.force_n);
+           });
+         });
+  v.Section("limits", c.limits);
+}
 
 template <class S, class V>
 void DescribeFields(S& c, V& v) requires std::is_same_v<std::remove_const_t<S>, StructureConfig> {
@@ -102,6 +188,7 @@ void DescribeFields(S& c, V& v) requires std::is_same_v<std::remove_const_t<S>, 
       KeyInfo{"gravity_m_s2", "m/s²",
               "g of `dynamics.gravity_on_structure` (weight of bars and node masses along −y)"},
       c.gravity_m_s2, Range::Closed(0.0, 100.0));
+  DescribeDesignable(c, v, nodes);
 }
 
 // The rules across keys of kStructureSection; throws ConfigError naming the key path.

@@ -43,6 +43,12 @@ void RequireMassAtFreeNodes(const DynamicModel& m) {
 }  // namespace
 
 DynamicModel BuildStructureModel(const StructureConfig& c, const ModelOptions& options) {
+  if (c.Designable()) {
+    throw ConfigError(
+        "structure.members", "(a structure to design)",
+        "a scene for simulate and modes gives bars and strings with their masses and "
+        "stiffnesses; members in groups have neither until `tbridge design` sizes them");
+  }
   RejectBridgeOnlyOptions(options);
   const int n_n = static_cast<int>(c.nodes.size());
   DynamicModel m;

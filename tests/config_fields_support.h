@@ -78,6 +78,7 @@ struct CollectKeys {
   void Choice(const KeyInfo& key, const std::string&, const std::vector<std::string>&) {
     Add(key, "cplex", "");
   }
+  void Text(const KeyInfo& key, const std::string&) { Add(key, "", ""); }
   void Choices(const KeyInfo& key, const std::vector<std::string>&, const std::vector<std::string>&) {
     Add(key, {"cplex"}, "[0]");
   }
@@ -132,6 +133,7 @@ struct SetKey {
   }
   void Bool(const KeyInfo&, bool&) {}
   void Choice(const KeyInfo& key, std::string& f, const std::vector<std::string>&) { Put(key, f); }
+  void Text(const KeyInfo& key, std::string& f) { Put(key, f); }
   void Choices(const KeyInfo& key, std::vector<std::string>& f, const std::vector<std::string>&) { Put(key, f); }
   void OptionalNumber(const KeyInfo& key, std::optional<double>& f, Range, Absent) {
     if (prefix + key.name == target) f = value.get<double>();

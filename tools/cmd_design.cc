@@ -6,12 +6,14 @@
 #include <vector>
 
 #include "core/config.h"
-#include "design/design.h"
 #include "core/progress.h"
+#include "design/design.h"
 #include "design/design_report.h"
 #include "design/plausibility.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "truss/truss_design.h"
+#include "truss/truss_report.h"
 #include "verify/verified_design.h"
 
 namespace tbridge::cli {
@@ -26,14 +28,34 @@ const CommandSpec& DesignSpec() {
        {{"-q", "--quiet"}, "", "do not print the summary", false},
        ProgressOption(),
        StrictOption()},
-      "Reads CONFIG.json (keys in configs/README.md), finds the minimum-mass design and writes\n"
-      "it to OUT.json (fields in README.md). OUT.json is written only when the design\n"
-      "succeeds, and never partially; a failed run leaves it as it was. Implausible results\n"
-      "(members under 1 mm, a deck under 1 mm or over span / 10, ...) are warned about on\n"
-      "stderr. A design that is not statically stable (README.md, \"Reading a design\") is\n"
+      "Reads CONFIG.json (keys in configs/README.md), finds the minimum-mass design of its "
+      "bridge,\n"
+      "or of its structure's members in groups, and writes it to OUT.json (fields in README.md).\n"
+      "OUT.json is written only when the design succeeds, and never partially; a failed run\n"
+      "leaves it as it was. Implausible results (members under 1 mm, a deck under 1 mm or over\n"
+      "span / 10, ...) are warned about on stderr. A design that is not statically stable "
+      "(README.md, \"Reading a design\") is\n"
       "refused with exit 3. A design whose verdict is FAIL or INCOMPLETE (a check failed, or\n"
-      "was not run) is written and exits 1. Draw the design with tools/plot_sweep.py bridge OUT.json -o FIG.png."};
+      "was not run) is written and exits 1. Draw the design with tools/plot_sweep.py bridge "
+      "OUT.json -o FIG.png."};
   return spec;
+}
+
+// The design of a pin-jointed structure (truss/): sized, checked and written as a bridge's is.
+int RunStructureDesign(const Config& config, const ParsedArgs& parsed,
+                       const std::string& out_path) {
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& json = outputs.Stage(out_path);
+  ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
+  progress.Stage("sizing");
+  const TrussDesign design = DesignTruss(config);
+  progress.Stage("writing");
+  WriteTrussDesignJson(design, json);
+  progress.Finish();
+  outputs.Commit();
+  if (!parsed.Flag("-q")) std::cout << TrussDesignSummary(design) << "\nwrote " << out_path << "\n";
+  return design.check.pass ? kExitOk : kExitNotOk;
 }
 
 int RunDesignCommand(const std::vector<std::string>& args) {
@@ -45,6 +67,7 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   }
   const std::string out_path = parsed.Required("-o");
   const Config config = LoadConfig(parsed.positionals[0]);
+  if (config.structure) return RunStructureDesign(config, parsed, out_path);
   // Staged before the design, so an output that cannot be written fails at once; nothing
   // replaces OUT.json before Commit().
   OutputTransaction outputs;

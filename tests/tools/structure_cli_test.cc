@@ -91,7 +91,7 @@ TEST_CASE("design: a structure config is not a bridge") {
   const test::fs::path dir = test::FreshDir("structure_design");
   const test::CliResult r = Run(dir, "design", kDBar, dir / "d.json");
   CHECK(r.code == 2);
-  CHECK_THAT(r.err, Catch::Contains("'structure'") && Catch::Contains("\"bridge\""));
+  CHECK_THAT(r.err, Catch::Contains("'structure.members'") && Catch::Contains("\"bridge\""));
   CHECK(!test::fs::exists(dir / "d.json"));
 }
 

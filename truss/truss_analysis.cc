@@ -1,0 +1,182 @@
+#include "truss/truss_analysis.h"
+
+#include <Eigen/Eigenvalues>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace tbridge {
+
+namespace {
+
+// The free degree of freedom of `node` along `axis`, or -1.
+int DofOf(const TrussModel& m, int node, int axis) {
+  return m.dof[static_cast<size_t>(node * m.dim + axis)];
+}
+
+}  // namespace
+
+TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& group_areas)
+    : model_(model), group_areas_(group_areas), areas_(model.MemberAreas(group_areas)) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int e = 0; e < model_.num_members(); ++e) {
+    const TrussMember& m = model_.members[static_cast<size_t>(e)];
+    const double k = model_.youngs_modulus * areas_[e] / m.length;
+    const int ends[2] = {m.i, m.j};
+    for (int p = 0; p < 2; ++p) {
+      for (int q = 0; q < 2; ++q) {
+        const double sign = p == q ? 1.0 : -1.0;
+        for (int a = 0; a < model_.dim; ++a) {
+          for (int b = 0; b < model_.dim; ++b) {
+            const int r = DofOf(model_, ends[p], a), c = DofOf(model_, ends[q], b);
+            if (r >= 0 && c >= 0)
+              entries.emplace_back(r, c, sign * k * m.direction[a] * m.direction[b]);
+          }
+        }
+      }
+    }
+  }
+  stiffness_.resize(model_.num_free, model_.num_free);
+  stiffness_.setFromTriplets(entries.begin(), entries.end());
+  factor_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(stiffness_);
+  const Eigen::VectorXd pivots = factor_->vectorD();
+  const double largest = pivots.cwiseAbs().maxCoeff();
+  // A pivot this far below the largest is a mechanism, not a soft member: the areas' range of a
+  // sizing is a few decades, round-off 1e-16.
+  if (factor_->info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * largest)) {
+    throw ModelError("the structure is a mechanism: its stiffness matrix (" +
+                     std::to_string(model_.num_free) +
+                     " free degrees of freedom) is singular; pin it or add members");
+  }
+}
+
+double TrussAnalysis::Elongation(int e, const Eigen::VectorXd& u) const {
+  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+  double s = 0;
+  for (int a = 0; a < model_.dim; ++a) {
+    const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
+    s += m.direction[a] * ((fj >= 0 ? u[fj] : 0.0) - (fi >= 0 ? u[fi] : 0.0));
+  }
+  return s;
+}
+
+double TrussAnalysis::Force(int e, const Eigen::VectorXd& u) const {
+  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+  return model_.youngs_modulus * areas_[e] / m.length * Elongation(e, u);
+}
+
+TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
+  const TrussCase& lc = model_.cases[static_cast<size_t>(c)];
+  const int ng = model_.num_groups(), nm = model_.num_members();
+  std::vector<Eigen::VectorXd> weight(static_cast<size_t>(ng));
+  Eigen::VectorXd f = lc.loads;
+  for (int g = 0; g < ng; ++g) {
+    weight[static_cast<size_t>(g)] = lc.factor * model_.WeightPerArea(g);
+    f += group_areas_[g] * weight[static_cast<size_t>(g)];
+  }
+  TrussCaseResponse r;
+  r.u = factor_->solve(f);
+  r.forces.resize(nm);
+  for (int e = 0; e < nm; ++e) r.forces[e] = Force(e, r.u);
+  if (!sensitivities) return r;
+  // K du/dA_g = df/dA_g - (dK/dA_g) u, where (dK/dA_g) u gathers each member's E / L times its
+  // elongation along its direction.
+  r.du.resize(model_.num_free, ng);
+  for (int g = 0; g < ng; ++g) {
+    Eigen::VectorXd rhs = weight[static_cast<size_t>(g)];
+    for (const int e : model_.groups[static_cast<size_t>(g)].members) {
+      const TrussMember& m = model_.members[static_cast<size_t>(e)];
+      const double t = model_.youngs_modulus / m.length * Elongation(e, r.u);
+      for (int a = 0; a < model_.dim; ++a) {
+        const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
+        if (fi >= 0) rhs[fi] += t * m.direction[a];
+        if (fj >= 0) rhs[fj] -= t * m.direction[a];
+      }
+    }
+    r.du.col(g) = factor_->solve(rhs);
+  }
+  r.dforces.resize(nm, ng);
+  for (int e = 0; e < nm; ++e) {
+    const TrussMember& m = model_.members[static_cast<size_t>(e)];
+    const double k = model_.youngs_modulus * areas_[e] / m.length;
+    for (int g = 0; g < ng; ++g) r.dforces(e, g) = k * Elongation(e, r.du.col(g));
+    r.dforces(e, m.group) += model_.youngs_modulus / m.length * Elongation(e, r.u);
+  }
+  return r;
+}
+
+void TrussAnalysis::AddEnds(int e, const Eigen::Matrix3d& same, const Eigen::Matrix3d& across,
+                            Eigen::MatrixXd& out) const {
+  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+  const int ends[2] = {m.i, m.j};
+  for (int p = 0; p < 2; ++p) {
+    for (int q = 0; q < 2; ++q) {
+      const Eigen::Matrix3d& block = p == q ? same : across;
+      for (int a = 0; a < model_.dim; ++a) {
+        for (int b = 0; b < model_.dim; ++b) {
+          const int r = DofOf(model_, ends[p], a), c = DofOf(model_, ends[q], b);
+          if (r >= 0 && c >= 0) out(r, c) += block(a, b);
+        }
+      }
+    }
+  }
+}
+
+Eigen::MatrixXd TrussAnalysis::StiffnessPerArea(int g) const {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(model_.num_free, model_.num_free);
+  for (const int e : model_.groups[static_cast<size_t>(g)].members) {
+    const TrussMember& m = model_.members[static_cast<size_t>(e)];
+    const Eigen::Matrix3d dd =
+        model_.youngs_modulus / m.length * m.direction * m.direction.transpose();
+    AddEnds(e, dd, -dd, out);
+  }
+  return out;
+}
+
+Eigen::MatrixXd TrussAnalysis::MassPerArea(int g) const {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(model_.num_free, model_.num_free);
+  for (const int e : model_.groups[static_cast<size_t>(g)].members) {
+    const double per_area = model_.density * model_.members[static_cast<size_t>(e)].length;
+    AddEnds(e, per_area / 3 * Eigen::Matrix3d::Identity(),
+            per_area / 6 * Eigen::Matrix3d::Identity(), out);
+  }
+  return out;
+}
+
+Eigen::MatrixXd TrussAnalysis::Mass() const {
+  Eigen::MatrixXd out = model_.node_mass.asDiagonal();
+  for (int g = 0; g < model_.num_groups(); ++g) out += group_areas_[g] * MassPerArea(g);
+  return out;
+}
+
+TrussModes TrussAnalysis::Modes(int count, bool sensitivities) const {
+  if (model_.num_free > kTrussMaxModalDofs) {
+    throw ModelError("the frequency limits need the modes of " + std::to_string(model_.num_free) +
+                     " free degrees of freedom; the modal analysis takes at most " +
+                     std::to_string(kTrussMaxModalDofs));
+  }
+  const Eigen::MatrixXd k = Eigen::MatrixXd(stiffness_), mass = Mass();
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(k, mass);
+  if (solver.info() != Eigen::Success) {
+    throw ModelError(
+        "the modal analysis failed: the mass matrix is not positive definite (a free node "
+        "without mass: give it a member or a node mass)");
+  }
+  TrussModes out;
+  const int n = std::min(count, model_.num_free);
+  out.eigenvalues = solver.eigenvalues().head(n);
+  out.shapes = solver.eigenvectors().leftCols(n);
+  if (!sensitivities) return out;
+  out.deigenvalues.resize(n, model_.num_groups());
+  for (int g = 0; g < model_.num_groups(); ++g) {
+    const Eigen::MatrixXd dk = StiffnessPerArea(g), dm = MassPerArea(g);
+    for (int k2 = 0; k2 < n; ++k2) {
+      const Eigen::VectorXd phi = out.shapes.col(k2);
+      out.deigenvalues(k2, g) = phi.dot(dk * phi) - out.eigenvalues[k2] * phi.dot(dm * phi);
+    }
+  }
+  return out;
+}
+
+}  // namespace tbridge

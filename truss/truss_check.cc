@@ -1,0 +1,146 @@
+#include "truss/truss_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tbridge {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The frequencies reported where no limit asks for more.
+constexpr int kReportedModes = 6;
+
+const char* kAxes[] = {"x", "y", "z"};
+
+// Member e's utilisation and its mode of failure under force n (tension > 0) at area a.
+std::pair<double, std::string> MemberUtilisation(const TrussModel& m, int e, double n, double a) {
+  const TrussMember& member = m.members[static_cast<size_t>(e)];
+  const TrussGroup& g = m.groups[static_cast<size_t>(member.group)];
+  if (n >= 0) {
+    if (g.kind == TrussKind::kBar) return {1 + n / (g.allowed_compression * a), "tension in a bar"};
+    return {n / (g.allowed_tension * a), "tension"};
+  }
+  if (g.kind == TrussKind::kString) return {1 - n / (g.allowed_tension * a), "slack"};
+  std::pair<double, std::string> out{-n / (g.allowed_compression * a), "compression"};
+  if (g.euler) {
+    const double euler = kPi * m.youngs_modulus * a * a / (4 * member.length * member.length);
+    const double u = -n * m.buckling_factor / euler;
+    if (u > out.first) out = {u, "buckling"};
+  }
+  return out;
+}
+
+// The support reactions of case c: each pinned node's reaction balances the members' forces on
+// it, its own loads and its share of the members' weight.
+Eigen::Matrix3Xd Reactions(const TrussModel& m, int c, const Eigen::VectorXd& group_areas,
+                           const TrussCaseResponse& r) {
+  const TrussCase& lc = m.cases[static_cast<size_t>(c)];
+  Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, m.nodes.cols());
+  for (int e = 0; e < m.num_members(); ++e) {
+    const TrussMember& member = m.members[static_cast<size_t>(e)];
+    const double half_weight =
+        0.5 * lc.factor * m.density * m.gravity * member.length * group_areas[member.group];
+    const Eigen::Vector3d pull = r.forces[e] * member.direction;  // on node i, towards j
+    const Eigen::Vector3d down(0, -half_weight, 0);
+    if (m.fixed[static_cast<size_t>(member.i)]) out.col(member.i) -= pull + down;
+    if (m.fixed[static_cast<size_t>(member.j)]) out.col(member.j) -= -pull + down;
+  }
+  for (int k = 0; k < out.cols(); ++k) {
+    if (m.fixed[static_cast<size_t>(k)]) out.col(k) -= lc.node_loads.col(k);
+  }
+  return out;
+}
+
+// Every applied load of case c (its loads and the members' weight), summed.
+Eigen::Vector3d AppliedTotal(const TrussModel& m, int c, const Eigen::VectorXd& group_areas) {
+  const TrussCase& lc = m.cases[static_cast<size_t>(c)];
+  Eigen::Vector3d sum = lc.node_loads.rowwise().sum();
+  sum.y() -= lc.factor * m.gravity * m.Mass(group_areas);
+  return sum;
+}
+
+void CheckMembers(const TrussModel& m, const Eigen::VectorXd& group_areas, TrussCheck& out) {
+  const Eigen::VectorXd areas = m.MemberAreas(group_areas);
+  out.members.resize(static_cast<size_t>(m.num_members()));
+  for (int e = 0; e < m.num_members(); ++e) {
+    TrussMemberCheck& mc = out.members[static_cast<size_t>(e)];
+    mc.area = areas[e];
+    mc.utilisation = -std::numeric_limits<double>::infinity();
+    for (int c = 0; c < static_cast<int>(out.cases.size()); ++c) {
+      const double n = out.cases[static_cast<size_t>(c)].forces[e];
+      const auto [u, mode] = MemberUtilisation(m, e, n, areas[e]);
+      if (u > mc.utilisation) mc = {areas[e], n, u, mode, c};
+    }
+    if (out.cases.empty()) mc.utilisation = 0;
+  }
+}
+
+void CheckDisplacements(const TrussModel& m, TrussCheck& out) {
+  for (const TrussDisplacementLimit& d : m.displacement_limits) {
+    TrussLimitCheck lc{"node " + std::to_string(d.node + 1) + " " + kAxes[d.axis], 0, d.max, 0, 0};
+    for (int c = 0; c < static_cast<int>(out.cases.size()); ++c) {
+      const double u = std::abs(out.cases[static_cast<size_t>(c)].u[d.dof]);
+      if (u > lc.value) lc.value = u, lc.governing_case = c;
+    }
+    lc.utilisation = lc.value / d.max;
+    out.displacements.push_back(lc);
+  }
+}
+
+void CheckFrequencies(const TrussModel& m, const TrussAnalysis& analysis, TrussCheck& out) {
+  const int limits = static_cast<int>(m.min_frequencies_hz.size());
+  if (limits == 0 && m.num_free > kTrussMaxModalDofs) return;  // none asked, too many to report
+  const TrussModes modes = analysis.Modes(std::max(limits, kReportedModes), false);
+  out.frequencies_hz = modes.eigenvalues.cwiseMax(0.0).cwiseSqrt() / (2 * kPi);
+  for (int k = 0; k < limits; ++k) {
+    const double f = k < out.frequencies_hz.size() ? out.frequencies_hz[k] : 0.0;
+    const double min = m.min_frequencies_hz[static_cast<size_t>(k)];
+    out.frequencies.push_back(
+        {"mode " + std::to_string(k + 1), f, min,
+         f > 0 ? std::pow(min / f, 2) : std::numeric_limits<double>::infinity(), -1});
+  }
+}
+
+// The largest utilisation and what it is.
+void Verdict(const TrussModel& m, TrussCheck& out) {
+  out.utilisation_max = 0;
+  out.governing = "nothing";
+  const auto take = [&out](double u, const std::string& what) {
+    if (u > out.utilisation_max) out.utilisation_max = u, out.governing = what;
+  };
+  for (int e = 0; e < m.num_members(); ++e) {
+    const TrussMemberCheck& mc = out.members[static_cast<size_t>(e)];
+    if (out.cases.empty()) break;
+    take(mc.utilisation, "member " + m.MemberName(e) + " (" + mc.governed_by + ", case " +
+                             m.cases[static_cast<size_t>(mc.governing_case)].name + ")");
+  }
+  for (const TrussLimitCheck& d : out.displacements) {
+    take(d.utilisation, "displacement of " + d.what + " (case " +
+                            m.cases[static_cast<size_t>(std::max(d.governing_case, 0))].name + ")");
+  }
+  for (const TrussLimitCheck& f : out.frequencies) take(f.utilisation, "frequency of " + f.what);
+  out.pass = out.utilisation_max <= 1 + kTrussPassTolerance;
+}
+
+}  // namespace
+
+TrussCheck CheckTruss(const TrussModel& m, const Eigen::VectorXd& group_areas) {
+  TrussCheck out;
+  const TrussAnalysis analysis(m, group_areas);
+  for (int c = 0; c < static_cast<int>(m.cases.size()); ++c) {
+    out.cases.push_back(analysis.Solve(c, false));
+    out.reactions.push_back(Reactions(m, c, group_areas, out.cases.back()));
+    const Eigen::Vector3d residual =
+        out.reactions.back().rowwise().sum() + AppliedTotal(m, c, group_areas);
+    out.equilibrium_residual = std::max(out.equilibrium_residual, residual.norm());
+  }
+  CheckMembers(m, group_areas, out);
+  CheckDisplacements(m, out);
+  CheckFrequencies(m, analysis, out);
+  Verdict(m, out);
+  return out;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,50 @@
+// The check of a sized structure (truss/truss_model.h): every member's utilisation in every load
+// case, the displacement and frequency limits, the reactions and the verdict, from one linear
+// analysis at the areas given. It returns a report and changes nothing.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "truss/truss_analysis.h"
+#include "truss/truss_model.h"
+
+namespace tbridge {
+
+// A utilisation within this of 1 passes: the sizing's certificate holds its rows to 1e-6.
+inline constexpr double kTrussPassTolerance = 1e-6;
+
+struct TrussMemberCheck {
+  double area = 0;          // [m^2]
+  double force = 0;         // [N], tension > 0, in the governing case
+  double utilisation = 0;   // the largest over the cases and modes of failure
+  std::string governed_by;  // "tension", "compression", "buckling", "slack" (a string in
+                            // compression), "tension in a bar"
+  int governing_case = 0;
+};
+
+struct TrussLimitCheck {
+  std::string what;         // "node 3 y" or "mode 1"
+  double value = 0;         // the largest |u| [m] or the frequency [Hz]
+  double limit = 0;         // max_m or min_hz
+  double utilisation = 0;   // |u| / max, or (f_min / f)^2 (the row's own measure)
+  int governing_case = -1;  // -1 for a frequency
+};
+
+struct TrussCheck {
+  std::vector<TrussCaseResponse> cases;     // displacements and member forces, by case
+  std::vector<Eigen::Matrix3Xd> reactions;  // by case: per node, zero where free [N]
+  double equilibrium_residual = 0;          // |sum of reactions and loads| over cases [N]
+  Eigen::VectorXd frequencies_hz;           // the lowest (at least the limits', up to 6)
+  std::vector<TrussMemberCheck> members;
+  std::vector<TrussLimitCheck> displacements;
+  std::vector<TrussLimitCheck> frequencies;
+  double utilisation_max = 0;
+  std::string governing;  // what has utilisation_max: "member 3-4 (buckling, case heavy)"
+  bool pass = false;      // utilisation_max <= 1 + kTrussPassTolerance
+};
+
+TrussCheck CheckTruss(const TrussModel& model, const Eigen::VectorXd& group_areas);
+
+}  // namespace tbridge

@@ -1,0 +1,91 @@
+// The constant model of a pin-jointed structure to design (the `structure` section's designable
+// form, core/structure_config.h), resolved once from its config: nodes and their free degrees of
+// freedom, members with their groups, the groups' limits, the factored load cases and the
+// limits on displacements and frequencies. Every analysis and the sizing read it; nothing
+// writes into it.
+//
+// Each member is elastic, E A / L, in the linear (small displacement) theory that the classic
+// sizing problems assume; its kind says which sign of force it may carry.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/config.h"
+
+namespace tbridge {
+
+enum class TrussKind { kString, kBar, kTruss };
+
+// "string", "bar", "truss": the config's and the design file's word for a kind.
+const char* TrussKindName(TrussKind kind);
+
+struct TrussGroup {
+  std::string name;
+  TrussKind kind = TrussKind::kTruss;
+  double min_area = 0;  // [m^2]
+  double max_area = 0;  // [m^2]; +inf: unbounded
+  // The allowed stresses [Pa] (magnitudes); 0 where the kind carries no force of that sign.
+  double allowed_tension = 0;
+  double allowed_compression = 0;
+  bool euler = false;        // the compression also held to the Euler load (solid round)
+  std::vector<int> members;  // its members, by index
+  double length_sum = 0;     // [m]: the group's mass is density x area x this
+};
+
+struct TrussMember {
+  int i = 0, j = 0;  // 0-based end nodes
+  int group = 0;
+  double length = 0;          // [m]
+  Eigen::Vector3d direction;  // unit, from node i to node j
+};
+
+struct TrussCase {
+  std::string name;
+  double factor = 1;
+  Eigen::VectorXd loads;        // factored node forces on the free degrees of freedom [N]
+  Eigen::Matrix3Xd node_loads;  // factored node forces on every node, supports included [N]
+};
+
+struct TrussDisplacementLimit {
+  int node = 0;    // 0-based
+  int axis = 1;    // 0 x, 1 y, 2 z
+  int dof = 0;     // its free degree of freedom
+  double max = 0;  // [m]
+};
+
+struct TrussModel {
+  int dim = 2;              // 2: the x-y plane; 3
+  Eigen::Matrix3Xd nodes;   // [m]
+  std::vector<bool> fixed;  // per node: pinned
+  std::vector<int> dof;     // per node and axis (node * dim + axis): free index, or -1
+  int num_free = 0;
+  std::vector<TrussMember> members;
+  std::vector<TrussGroup> groups;
+  std::vector<TrussCase> cases;
+  std::vector<TrussDisplacementLimit> displacement_limits;
+  std::vector<double> min_frequencies_hz;
+  Eigen::VectorXd node_mass;   // per free degree of freedom [kg]: structure.node_masses
+  double youngs_modulus = 0;   // [Pa]
+  double density = 0;          // [kg/m^3]
+  double gravity = 0;          // [m/s^2]; 0 where design.self_weight is off
+  double buckling_factor = 1;  // design.buckling_safety_factor on the Euler load
+
+  int num_members() const { return static_cast<int>(members.size()); }
+  int num_groups() const { return static_cast<int>(groups.size()); }
+  // The members' mass [kg] at the groups' areas.
+  double Mass(const Eigen::VectorXd& group_areas) const;
+  // Each member's area from its group's.
+  Eigen::VectorXd MemberAreas(const Eigen::VectorXd& group_areas) const;
+  // The self-weight's load vector on the free degrees of freedom per unit area of group g
+  // (half of each member's weight at each end, along -y), unfactored: zero without gravity.
+  Eigen::VectorXd WeightPerArea(int g) const;
+  // "i-j" with 1-based node numbers.
+  std::string MemberName(int e) const;
+};
+
+// Throws ConfigError where the config is not a structure to design (structure.members).
+TrussModel BuildTrussModel(const Config& config);
+
+}  // namespace tbridge

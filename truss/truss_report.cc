@@ -1,0 +1,216 @@
+#include "truss/truss_report.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace tbridge {
+
+namespace {
+
+using nlohmann::json;
+
+std::string Format(const char* format, double v) {
+  char text[96];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+json Vector(const Eigen::Vector3d& v, int dim) {
+  json out = json::array();
+  for (int a = 0; a < dim; ++a) out.push_back(v[a]);
+  return out;
+}
+
+// Each node's displacement in case c, zero at a support.
+json Displacements(const TrussModel& m, const TrussCaseResponse& r) {
+  json out = json::array();
+  for (int k = 0; k < m.nodes.cols(); ++k) {
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    for (int a = 0; a < m.dim; ++a) {
+      const int f = m.dof[static_cast<size_t>(k * m.dim + a)];
+      if (f >= 0) u[a] = r.u[f];
+    }
+    out.push_back(Vector(u, m.dim));
+  }
+  return out;
+}
+
+json Members(const TrussDesign& d) {
+  const TrussModel& m = d.model;
+  json out = json::array();
+  for (int e = 0; e < m.num_members(); ++e) {
+    const TrussMember& member = m.members[static_cast<size_t>(e)];
+    const TrussMemberCheck& c = d.check.members[static_cast<size_t>(e)];
+    const TrussGroup& g = m.groups[static_cast<size_t>(member.group)];
+    json forces = json::array();
+    for (const TrussCaseResponse& r : d.check.cases) forces.push_back(r.forces[e]);
+    out.push_back(
+        {{"name", m.MemberName(e)},
+         {"nodes", {member.i + 1, member.j + 1}},
+         {"group", g.name},
+         {"kind", TrussKindName(g.kind)},
+         {"length", member.length},
+         {"area", c.area},
+         {"mass", m.density * c.area * member.length},
+         {"force", c.force},
+         {"forces_by_case", forces},
+         {"utilisation", c.utilisation},
+         {"governed_by", c.governed_by},
+         {"governing_case", d.check.cases.empty()
+                                ? json(nullptr)
+                                : json(m.cases[static_cast<size_t>(c.governing_case)].name)}});
+  }
+  return out;
+}
+
+json Cases(const TrussDesign& d) {
+  const TrussModel& m = d.model;
+  json out = json::array();
+  for (size_t c = 0; c < d.check.cases.size(); ++c) {
+    json reactions = json::array();
+    for (int k = 0; k < m.nodes.cols(); ++k) {
+      if (m.fixed[static_cast<size_t>(k)]) {
+        reactions.push_back({{"node", k + 1}, {"force_n", Vector(d.check.reactions[c].col(k), 3)}});
+      }
+    }
+    out.push_back({{"name", m.cases[c].name},
+                   {"factor", m.cases[c].factor},
+                   {"displacements", Displacements(m, d.check.cases[c])},
+                   {"reactions", reactions}});
+  }
+  return out;
+}
+
+json Limits(const TrussDesign& d) {
+  const TrussModel& m = d.model;
+  json displacements = json::array(), frequencies = json::array();
+  for (const TrussLimitCheck& l : d.check.displacements) {
+    displacements.push_back(
+        {{"what", l.what},
+         {"max_m", l.limit},
+         {"value_m", l.value},
+         {"utilisation", l.utilisation},
+         {"governing_case", l.governing_case < 0
+                                ? json(nullptr)
+                                : json(m.cases[static_cast<size_t>(l.governing_case)].name)}});
+  }
+  for (const TrussLimitCheck& l : d.check.frequencies) {
+    frequencies.push_back({{"what", l.what},
+                           {"min_hz", l.limit},
+                           {"value_hz", l.value},
+                           {"utilisation", l.utilisation}});
+  }
+  return {{"displacements", displacements}, {"frequencies", frequencies}};
+}
+
+json Solver(const TrussSizing& s) {
+  const KktCertificate& k = s.kkt;
+  return {{"name", s.outcome.solver},
+          {"status", s.outcome.status},
+          {"iterations", s.outcome.iterations},
+          {"start", s.start},
+          {"tries", s.tries},
+          {"kkt",
+           {{"stationarity", k.stationarity},
+            {"feasibility", k.feasibility},
+            {"complementarity", k.complementarity},
+            {"second_order", k.second_order},
+            {"second_order_by", k.second_order_by},
+            {"proved_local_optimum", k.proved_local_optimum},
+            {"failed", k.failed},
+            {"active_rows", k.active_rows},
+            {"active_bounds", k.active_bounds},
+            {"free_variables", k.free_variables},
+            {"null_space_dimension", k.null_space_dimension}}}};
+}
+
+}  // namespace
+
+void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
+  const TrussModel& m = d.model;
+  json nodes = json::array();
+  for (int k = 0; k < m.nodes.cols(); ++k) nodes.push_back(Vector(m.nodes.col(k), 3));
+  json groups = json::array();
+  for (int g = 0; g < m.num_groups(); ++g) {
+    const TrussGroup& group = m.groups[static_cast<size_t>(g)];
+    groups.push_back({{"name", group.name},
+                      {"kind", TrussKindName(group.kind)},
+                      {"area", d.sizing.group_areas[g]},
+                      {"members", group.members.size()},
+                      {"mass", m.density * d.sizing.group_areas[g] * group.length_sum}});
+  }
+  double added = 0;
+  for (const StructureNodeMass& nm : d.config.structure->node_masses) added += nm.mass_kg;
+  const double structure = m.Mass(d.sizing.group_areas);
+  const json out = {
+      {"kind", "structure"},
+      {"config", ToJson(d.config)},
+      {"nodes", nodes},
+      {"members", Members(d)},
+      {"groups", groups},
+      {"cases", Cases(d)},
+      {"limits", Limits(d)},
+      {"frequencies_hz", d.check.frequencies_hz.size()
+                             ? json(std::vector<double>(
+                                   d.check.frequencies_hz.data(),
+                                   d.check.frequencies_hz.data() + d.check.frequencies_hz.size()))
+                             : json::array()},
+      {"equilibrium_residual_N", d.check.equilibrium_residual},
+      {"mass", {{"structure", structure}, {"node_masses", added}, {"total", structure + added}}},
+      {"solver", Solver(d.sizing)},
+      {"analysis",
+       "linear: small displacements, each member elastic E A / L; consistent member mass"},
+      {"not_applicable",
+       {{"deck", "a structure has no deck"},
+        {"comfort", "no pedestrian comfort check: not a footbridge"},
+        {"dynamic_check", "no time-history runs: the limits are static and modal"},
+        {"prestress", "no self-stress: each member's rest length is its drawn length"}}},
+      {"verdict",
+       {{"pass", d.check.pass},
+        {"utilisation_max", d.check.utilisation_max},
+        {"governing", d.check.governing},
+        {"tolerance", kTrussPassTolerance}}}};
+  os << out.dump(2) << "\n";
+}
+
+std::string TrussDesignSummary(const TrussDesign& d) {
+  const TrussModel& m = d.model;
+  std::ostringstream os;
+  os << "structure to design: " << m.nodes.cols() << " nodes (" << m.num_free
+     << " free degrees of freedom), " << m.num_members() << " members in " << m.num_groups()
+     << " groups, " << m.cases.size() << " load cases, " << m.displacement_limits.size()
+     << " displacement and " << m.min_frequencies_hz.size() << " frequency limits\n";
+  const double mass = m.Mass(d.sizing.group_areas);
+  os << "mass of the members: " << Format("%.6g kg", mass)
+     << Format(" (%.6g lb)", mass / 0.45359237) << "\n";
+  os << "solver: " << d.sizing.outcome.solver << ", status " << d.sizing.outcome.status << " after "
+     << d.sizing.outcome.iterations << " iterations, from the start " << d.sizing.start << "\n";
+  const KktCertificate& k = d.sizing.kkt;
+  os << (k.proved_local_optimum
+             ? "optimality: first- and second-order conditions hold (stationarity " +
+                   Format("%.1e", k.stationarity) + ", feasibility " +
+                   Format("%.1e", k.feasibility) + ", second order by " + k.second_order_by + ")"
+             : "optimality: not proved: " + k.failed)
+     << "\n";
+  os << "groups (area [m^2], mass [kg]):\n";
+  for (int g = 0; g < m.num_groups(); ++g) {
+    const TrussGroup& group = m.groups[static_cast<size_t>(g)];
+    os << "  " << group.name << " (" << TrussKindName(group.kind) << ", " << group.members.size()
+       << " members): " << Format("%.6g", d.sizing.group_areas[g])
+       << Format(", %.6g", m.density * d.sizing.group_areas[g] * group.length_sum) << "\n";
+  }
+  for (const TrussLimitCheck& l : d.check.displacements) {
+    os << "displacement of " << l.what << ": " << Format("%.6g m", l.value) << " of "
+       << Format("%.6g m", l.limit) << Format(" (%.4f)", l.utilisation) << "\n";
+  }
+  for (const TrussLimitCheck& l : d.check.frequencies) {
+    os << "frequency of " << l.what << ": " << Format("%.6g Hz", l.value) << ", at least "
+       << Format("%.6g Hz", l.limit) << "\n";
+  }
+  os << (d.check.pass ? "PASS" : "FAIL") << ": utilisation_max "
+     << Format("%.6f", d.check.utilisation_max) << " (" << d.check.governing << ")\n";
+  return os.str();
+}
+
+}  // namespace tbridge

@@ -1,0 +1,459 @@
+#include "truss/truss_sizing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/error.h"
+#include "design/solvers.h"
+
+namespace tbridge {
+
+const char* TrussRowName(TrussRowKind kind) {
+  switch (kind) {
+    case TrussRowKind::kTension:
+      return "tension";
+    case TrussRowKind::kCompression:
+      return "compression";
+    case TrussRowKind::kBuckling:
+      return "buckling";
+    case TrussRowKind::kTaut:
+      return "taut";
+    case TrussRowKind::kNoTension:
+      return "no_tension";
+    case TrussRowKind::kDisplacement:
+      return "displacement";
+    case TrussRowKind::kFrequency:
+      return "frequency";
+  }
+  return "tension";
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// The certificate's tolerance on stationarity, feasibility and complementarity: the rows are
+// utilisations' complements, so 1e-6 is a millionth of a member's resistance.
+constexpr double kCertificateTolerance = 1e-6;
+// A row is active in the certificate within this of its bound (as the bridge's sizing takes it).
+constexpr double kActiveRow = 1e-4;
+
+// The member rows its kind poses in one case.
+void AddMemberRows(const TrussModel& m, int c, int e, std::vector<TrussRow>& rows) {
+  const TrussGroup& g = m.groups[static_cast<size_t>(m.members[static_cast<size_t>(e)].group)];
+  const auto add = [&](TrussRowKind k) { rows.push_back({k, c, e, 1, 0}); };
+  if (g.kind != TrussKind::kBar) add(TrussRowKind::kTension);
+  if (g.kind != TrussKind::kString) add(TrussRowKind::kCompression);
+  if (g.euler && g.kind != TrussKind::kString) add(TrussRowKind::kBuckling);
+  if (g.kind == TrussKind::kString) add(TrussRowKind::kTaut);
+  if (g.kind == TrussKind::kBar) add(TrussRowKind::kNoTension);
+}
+
+// A member row's value and its derivative in the group areas, from the member's force N and
+// dN/dA (a row of `dforces`), at its area A.
+double MemberRow(const TrussModel& m, const TrussRow& row, double force, double area,
+                 const Eigen::RowVectorXd& dforce, Eigen::RowVectorXd* grad) {
+  const TrussMember& e = m.members[static_cast<size_t>(row.index)];
+  const TrussGroup& g = m.groups[static_cast<size_t>(e.group)];
+  // Each row is s N / A^p (+ 1 where it is a utilisation's complement).
+  double s = 0, constant = 0;
+  int p = 1;
+  switch (row.kind) {
+    case TrussRowKind::kTension:
+      s = -1 / g.allowed_tension, constant = 1;
+      break;
+    case TrussRowKind::kCompression:
+      s = 1 / g.allowed_compression, constant = 1;
+      break;
+    case TrussRowKind::kBuckling:  // P_E / gamma = pi E A^2 / (4 L^2 gamma)
+      s = 4 * e.length * e.length * m.buckling_factor / (kPi * m.youngs_modulus), constant = 1,
+      p = 2;
+      break;
+    case TrussRowKind::kTaut:
+      s = 1 / g.allowed_tension;
+      break;
+    default:  // kNoTension
+      s = -1 / g.allowed_compression;
+      break;
+  }
+  const double ap = std::pow(area, p);
+  if (grad != nullptr) {
+    *grad = s * dforce / ap;
+    (*grad)[e.group] -= p * s * force / (ap * area);
+  }
+  return constant + s * force / ap;
+}
+
+// The modes the frequency rows read: each limit's and the following ones', where there are.
+int ModesAsked(const TrussModel& m) {
+  const int limits = static_cast<int>(m.min_frequencies_hz.size());
+  return limits == 0 ? 0 : std::min(limits + kTrussFollowingModes, m.num_free);
+}
+
+double OmegaSquared(double hz) { return std::pow(2 * kPi * hz, 2); }
+
+}  // namespace
+
+std::vector<TrussRow> TrussRows(const TrussModel& m) {
+  std::vector<TrussRow> rows;
+  for (int c = 0; c < static_cast<int>(m.cases.size()); ++c) {
+    for (int e = 0; e < m.num_members(); ++e) AddMemberRows(m, c, e, rows);
+    for (int d = 0; d < static_cast<int>(m.displacement_limits.size()); ++d) {
+      rows.push_back({TrussRowKind::kDisplacement, c, d, 1, 0});
+      rows.push_back({TrussRowKind::kDisplacement, c, d, -1, 0});
+    }
+  }
+  for (int k = 0; k < static_cast<int>(m.min_frequencies_hz.size()); ++k) {
+    for (int j = k; j <= k + kTrussFollowingModes && j < ModesAsked(m); ++j) {
+      rows.push_back({TrussRowKind::kFrequency, -1, k, 1, j});
+    }
+  }
+  return rows;
+}
+
+Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>& rows,
+                               const Eigen::VectorXd& group_areas, Eigen::MatrixXd* jacobian) {
+  const bool grad = jacobian != nullptr;
+  const TrussAnalysis analysis(m, group_areas);
+  std::vector<TrussCaseResponse> responses;
+  for (int c = 0; c < static_cast<int>(m.cases.size()); ++c)
+    responses.push_back(analysis.Solve(c, grad));
+  TrussModes modes;
+  if (ModesAsked(m) > 0) modes = analysis.Modes(ModesAsked(m), grad);
+  const int ng = m.num_groups();
+  Eigen::VectorXd g(static_cast<int>(rows.size()));
+  if (grad) jacobian->setZero(static_cast<int>(rows.size()), ng);
+  Eigen::RowVectorXd row_grad(ng);
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+    const TrussRow& row = rows[static_cast<size_t>(r)];
+    row_grad.setZero();
+    if (row.kind == TrussRowKind::kFrequency) {
+      const double target = OmegaSquared(m.min_frequencies_hz[static_cast<size_t>(row.index)]);
+      const bool exists = row.mode < modes.eigenvalues.size();
+      g[r] = exists ? modes.eigenvalues[row.mode] / target - 1
+                    : std::numeric_limits<double>::infinity();
+      if (grad && exists) row_grad = modes.deigenvalues.row(row.mode) / target;
+    } else if (row.kind == TrussRowKind::kDisplacement) {
+      const TrussCaseResponse& res = responses[static_cast<size_t>(row.load_case)];
+      const TrussDisplacementLimit& d = m.displacement_limits[static_cast<size_t>(row.index)];
+      g[r] = 1 - row.sign * res.u[d.dof] / d.max;
+      if (grad) row_grad = -row.sign * res.du.row(d.dof) / d.max;
+    } else {
+      const TrussCaseResponse& res = responses[static_cast<size_t>(row.load_case)];
+      const double area = group_areas[m.members[static_cast<size_t>(row.index)].group];
+      const Eigen::RowVectorXd dforce =
+          grad ? Eigen::RowVectorXd(res.dforces.row(row.index)) : row_grad;
+      g[r] = MemberRow(m, row, res.forces[row.index], area, dforce, grad ? &row_grad : nullptr);
+    }
+    if (grad) jacobian->row(r) = row_grad;
+  }
+  return g;
+}
+
+namespace {
+
+// The program in the variables x_g = A_g / ref_g (each starts near 1), the mass over the
+// start's: the solvers' tolerances then read alike on every structure.
+class TrussProblem : public NlpProblem {
+ public:
+  TrussProblem(const TrussModel& m, std::vector<TrussRow> rows, Eigen::VectorXd ref)
+      : m_(m), rows_(std::move(rows)), ref_(std::move(ref)), mass_ref_(m.Mass(ref_)) {
+    for (int r = 0; r < num_constraints(); ++r) {
+      for (int g = 0; g < num_variables(); ++g) pattern_.emplace_back(r, g);
+    }
+  }
+  int num_variables() const override { return m_.num_groups(); }
+  int num_constraints() const override { return static_cast<int>(rows_.size()); }
+  void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override {
+    lo.resize(num_variables());
+    hi.resize(num_variables());
+    for (int g = 0; g < num_variables(); ++g) {
+      lo[g] = m_.groups[static_cast<size_t>(g)].min_area / ref_[g];
+      hi[g] = m_.groups[static_cast<size_t>(g)].max_area / ref_[g];
+    }
+  }
+  void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override {
+    lo = Eigen::VectorXd::Zero(num_constraints());
+    hi = Eigen::VectorXd::Constant(num_constraints(), std::numeric_limits<double>::infinity());
+  }
+  double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const override {
+    return m_.Mass(x.cwiseProduct(ref_)) / mass_ref_;
+  }
+  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x,
+                         Eigen::Ref<Eigen::VectorXd> grad) const override {
+    (void)x;
+    for (int g = 0; g < num_variables(); ++g) {
+      grad[g] = m_.density * m_.groups[static_cast<size_t>(g)].length_sum * ref_[g] / mass_ref_;
+    }
+  }
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x,
+                   Eigen::Ref<Eigen::VectorXd> g) const override {
+    Evaluate(x);
+    g = g_;
+  }
+  const Pattern& JacobianPattern() const override { return pattern_; }
+  void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override {
+    Evaluate(x);
+    for (size_t k = 0; k < pattern_.size(); ++k)
+      values[k] = jac_(pattern_[k].first, pattern_[k].second);
+  }
+  bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                     Eigen::MatrixXd& jac) const override {
+    Evaluate(x);
+    jac = jac_;
+    return true;
+  }
+  const Pattern& HessianPattern() const override { return no_hessian_; }  // Ipopt: L-BFGS
+  void HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, double, const double*,
+                     double*) const override {}
+
+  Eigen::VectorXd Areas(const Eigen::VectorXd& x) const { return x.cwiseProduct(ref_); }
+  const Eigen::VectorXd& ref() const { return ref_; }
+
+ private:
+  // The rows and their Jacobian in x at x, kept for the next call at the same point.
+  void Evaluate(const Eigen::Ref<const Eigen::VectorXd>& x) const {
+    if (x_.size() == x.size() && x_ == x) return;
+    Eigen::MatrixXd jac_a;
+    g_ = TrussRowValues(m_, rows_, x.cwiseProduct(ref_), &jac_a);
+    jac_ = jac_a * ref_.asDiagonal();
+    x_ = x;
+  }
+
+  const TrussModel& m_;
+  std::vector<TrussRow> rows_;
+  Eigen::VectorXd ref_;
+  double mass_ref_;
+  Pattern pattern_, no_hessian_;
+  mutable Eigen::VectorXd x_, g_;
+  mutable Eigen::MatrixXd jac_;
+};
+
+Eigen::VectorXd Clamped(const TrussModel& m, double area) {
+  Eigen::VectorXd a(m.num_groups());
+  for (int g = 0; g < m.num_groups(); ++g) {
+    a[g] = std::clamp(area, m.groups[static_cast<size_t>(g)].min_area,
+                      m.groups[static_cast<size_t>(g)].max_area);
+  }
+  return a;
+}
+
+// One area for every group, raised until every row holds: a stress or displacement row's
+// utilisation falls as 1 / area without self-weight (so one scaling nearly does it), a
+// frequency's rises with the stiffness over the mass. A few dozen analyses at most.
+Eigen::VectorXd UniformStart(const TrussModel& m, const std::vector<TrussRow>& rows) {
+  double area = 0;
+  for (const TrussGroup& g : m.groups) area = std::max(area, g.min_area);
+  for (int k = 0; k < 60; ++k) {
+    const Eigen::VectorXd g = TrussRowValues(m, rows, Clamped(m, area), nullptr);
+    double worst = 0;  // the largest utilisation of a row with a bound of 1 - g
+    bool frequency_short = false;
+    for (int r = 0; r < g.size(); ++r) {
+      const TrussRowKind kind = rows[static_cast<size_t>(r)].kind;
+      if (kind == TrussRowKind::kFrequency) {
+        frequency_short = frequency_short || g[r] < 0;
+      } else if (kind != TrussRowKind::kTaut && kind != TrussRowKind::kNoTension) {
+        worst = std::max(worst, 1 - g[r]);
+      }
+    }
+    if (worst <= 1 && !frequency_short) break;
+    area *= std::max({worst * 1.01, frequency_short ? 1.5 : 1.0, 1.0});
+  }
+  return Clamped(m, area);
+}
+
+// The fully stressed design (each group's area scaled by its members' largest stress or buckling
+// utilisation, ten times), then scaled as one until every displacement limit holds: the
+// classic start of a stress-governed truss, in another basin than a uniform one where a
+// displacement limit meets stress limits of small members.
+Eigen::VectorXd FullyStressedStart(const TrussModel& m, const std::vector<TrussRow>& rows,
+                                   const Eigen::VectorXd& uniform) {
+  Eigen::VectorXd a = uniform;
+  for (int k = 0; k < 10; ++k) {
+    const Eigen::VectorXd g = TrussRowValues(m, rows, a, nullptr);
+    Eigen::VectorXd use = Eigen::VectorXd::Zero(m.num_groups());
+    for (int r = 0; r < g.size(); ++r) {
+      const TrussRow& row = rows[static_cast<size_t>(r)];
+      const bool strength = row.kind == TrussRowKind::kTension ||
+                            row.kind == TrussRowKind::kCompression ||
+                            row.kind == TrussRowKind::kBuckling;
+      if (strength) {
+        const int group = m.members[static_cast<size_t>(row.index)].group;
+        use[group] = std::max(use[group], 1 - g[r]);
+      }
+    }
+    for (int gi = 0; gi < m.num_groups(); ++gi) {
+      const TrussGroup& group = m.groups[static_cast<size_t>(gi)];
+      a[gi] = std::clamp(a[gi] * use[gi], group.min_area, group.max_area);
+    }
+  }
+  for (int k = 0; k < 20; ++k) {
+    const Eigen::VectorXd g = TrussRowValues(m, rows, a, nullptr);
+    double worst = 0;
+    for (int r = 0; r < g.size(); ++r) {
+      if (rows[static_cast<size_t>(r)].kind == TrussRowKind::kDisplacement)
+        worst = std::max(worst, 1 - g[r]);
+    }
+    if (worst <= 1) break;
+    for (int gi = 0; gi < m.num_groups(); ++gi)
+      a[gi] = std::min(a[gi] * worst * 1.01, m.groups[static_cast<size_t>(gi)].max_area);
+  }
+  return a;
+}
+
+std::string Format(const char* format, double v) {
+  char text[256];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+// The certificate of x on `problem`: every row within kActiveRow of its bound is active.
+KktCertificate Certify(const TrussProblem& problem, const Eigen::VectorXd& x) {
+  KktInput in;
+  const int n = problem.num_variables(), rows = problem.num_constraints();
+  in.x = x;
+  problem.VariableBounds(in.lo_x, in.hi_x);
+  in.grad_f.resize(n);
+  problem.ObjectiveGradient(x, in.grad_f);
+  Eigen::VectorXd g(rows);
+  problem.Constraints(x, g);
+  in.slack = g;
+  for (int r = 0; r < rows; ++r) {
+    if (g[r] <= kActiveRow) in.active.push_back(r);
+  }
+  const auto active_rows = [&problem, &in](const Eigen::VectorXd& y, Eigen::MatrixXd& out) {
+    Eigen::MatrixXd all;
+    problem.DenseJacobian(y, all);
+    out.resize(static_cast<int>(in.active.size()), all.cols());
+    for (size_t k = 0; k < in.active.size(); ++k)
+      out.row(static_cast<int>(k)) = all.row(in.active[k]);
+  };
+  active_rows(x, in.jac_active);
+  in.at = [&problem, &active_rows, n](const Eigen::VectorXd& y, Eigen::VectorXd& grad,
+                                      Eigen::MatrixXd& jac) {
+    grad.resize(n);
+    problem.ObjectiveGradient(y, grad);
+    active_rows(y, jac);
+  };
+  return CertifyLocalOptimum(in, kCertificateTolerance);
+}
+
+struct Attempt {
+  Eigen::VectorXd areas;
+  SolverOutcome outcome;
+  KktCertificate kkt;
+  double mass = 0;
+  std::string start;
+  bool feasible() const { return kkt.feasibility <= kCertificateTolerance; }
+};
+
+// Whether a is the better design to keep: feasible first, then proved, then lighter.
+bool Better(const Attempt& a, const Attempt& b) {
+  if (a.feasible() != b.feasible()) return a.feasible();
+  if (!a.feasible()) return a.kkt.feasibility < b.kkt.feasibility;
+  if (a.kkt.proved_local_optimum != b.kkt.proved_local_optimum) return a.kkt.proved_local_optimum;
+  return a.mass < b.mass;
+}
+
+Attempt Solve(const TrussModel& m, const std::vector<TrussRow>& rows, const Eigen::VectorXd& start,
+              const std::string& solver, const SolverOptions& options, const std::string& label) {
+  const TrussProblem problem(m, rows, start);
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(m.num_groups());
+  Attempt a;
+  a.start = label;
+  try {
+    a.outcome = SolveNlp(solver, problem, options, x);
+  } catch (const ModelError& e) {  // an iterate that made the structure a mechanism
+    a.outcome.solver = solver;
+    a.outcome.status = "MODEL_ERROR";
+    a.outcome.message = e.what();
+    x = Eigen::VectorXd::Ones(m.num_groups());
+  }
+  a.areas = problem.Areas(x);
+  a.mass = m.Mass(a.areas);
+  a.kkt = Certify(problem, x);
+  return a;
+}
+
+// Where a frequency limit binds at two modes that meet (equal to 1e-6), the note that says so:
+// the k-th eigenvalue has no derivative there, only directional ones, so a first-order test
+// with one gradient per row cannot certify such a point; "" elsewhere.
+std::string RepeatedModeNote(const TrussModel& m, const Eigen::VectorXd& areas) {
+  if (m.min_frequencies_hz.empty()) return "";
+  const TrussModes modes = TrussAnalysis(m, areas).Modes(ModesAsked(m), false);
+  for (int k = 0; k < static_cast<int>(m.min_frequencies_hz.size()); ++k) {
+    const double target = OmegaSquared(m.min_frequencies_hz[static_cast<size_t>(k)]);
+    for (int j = k; j + 1 < modes.eigenvalues.size(); ++j) {
+      const double a = modes.eigenvalues[j], b = modes.eigenvalues[j + 1];
+      if (std::abs(a / target - 1) < 1e-6 && std::abs(b / a - 1) < 1e-6) {
+        return Format("; modes %g and ", j + 1) + Format("%g meet at ", j + 2) +
+               Format("%.6g Hz, the limit of ", std::sqrt(a) / (2 * kPi)) +
+               Format(
+                   "f%g: the eigenvalue has no derivative there (only directional ones), so the "
+                   "first-order test does not apply",
+                   k + 1);
+      }
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tolerance,
+                      int max_iterations) {
+  const std::vector<TrussRow> rows = TrussRows(m);
+  SolverOptions options;
+  options.tolerance = tolerance;
+  options.max_iterations = max_iterations;
+  options.acceptable = false;
+  const Eigen::VectorXd uniform = UniformStart(m, rows);
+  // Stress rows alone make a program whose optimum one start finds; displacement and frequency
+  // rows make it non-convex (several local optima; a mode's order changes with the areas): more
+  // starts, the same rule.
+  std::vector<std::pair<std::string, Eigen::VectorXd>> starts{{"uniform", uniform}};
+  if (ModesAsked(m) > 0 || !m.displacement_limits.empty()) {
+    starts.emplace_back("uniform x 2", Clamped(m, 2 * uniform.maxCoeff()));
+    starts.emplace_back("uniform x 0.5", Clamped(m, 0.5 * uniform.maxCoeff()));
+  }
+  if (!m.displacement_limits.empty() && !m.cases.empty()) {
+    starts.emplace_back("fully stressed", FullyStressedStart(m, rows, uniform));
+  }
+  // "auto": the verified sizing's SQP, and Ipopt where the SQP's point is not proved optimal
+  // (from that point), or from every start of a non-convex program: the two reach different
+  // local optima there (the 10-bar displacement problem: the SQP 5076.67 lb from every start,
+  // Ipopt the published 5060.85 lb from two of four, each proved).
+  const bool ipopt = solver == "auto" && SolverBuiltIn("ipopt");
+  const bool non_convex = starts.size() > 1;
+  const std::string first = solver == "auto" ? "sqp" : solver;
+  TrussSizing out;
+  Attempt best;
+  bool any = false;
+  const auto record = [&out](const Attempt& a) {
+    out.tries.push_back(a.start + ": " + a.outcome.solver + " " + a.outcome.status +
+                        Format(", %.6g kg, ", a.mass) +
+                        (a.kkt.proved_local_optimum ? "proved" : "not proved: " + a.kkt.failed));
+  };
+  for (const auto& [label, start] : starts) {
+    Attempt a = Solve(m, rows, start, first, options, label);
+    record(a);
+    if (ipopt && (non_convex || !a.kkt.proved_local_optimum)) {
+      const bool from_sqp = !non_convex && a.feasible();
+      Attempt b = Solve(m, rows, from_sqp ? a.areas : start, "ipopt", options,
+                        label + (from_sqp ? ", then ipopt" : ", ipopt"));
+      record(b);
+      if (Better(b, a)) a = std::move(b);
+    }
+    if (!any || Better(a, best)) best = std::move(a);
+    any = true;
+  }
+  if (!best.kkt.proved_local_optimum) best.kkt.failed += RepeatedModeNote(m, best.areas);
+  out.group_areas = best.areas;
+  out.outcome = best.outcome;
+  out.kkt = best.kkt;
+  out.start = best.start;
+  return out;
+}
+
+}  // namespace tbridge

@@ -1,0 +1,84 @@
+// The minimum-mass sizing of a pin-jointed structure (truss/truss_model.h): one area per group,
+// every member's stresses and buckling in every load case, the displacement limits and the
+// lowest natural frequencies as rows of one nonlinear program, solved by the verified sizing's
+// solvers (design/solvers.h) and certified by the same KKT test (design/kkt_certificate.h).
+//
+//   min  sum_g rho A_g L_g   over  min_area_g <= A_g <= max_area_g,  subject to, in every case:
+//     tension      1 - N / (sigma_t A) >= 0      strings and trusses
+//     compression  1 + N / (sigma_c A) >= 0      bars and trusses
+//     buckling     1 + N / (P_E / gamma) >= 0     P_E = pi E A^2 / (4 L^2), solid round section
+//     taut         N / (sigma_t A) >= 0           strings: tension only
+//     no tension   -N / (sigma_c A) >= 0          bars: compression only
+//     displacement 1 -+ u / u_max >= 0            both signs
+//   and once: frequency  omega_j^2 / (2 pi f_k)^2 - 1 >= 0 for j = k .. k + kTrussFollowingModes.
+// Each row is a utilisation's complement (1 - utilisation), so every row reads the same way
+// and the certificate's tolerance is one on utilisation.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "design/kkt_certificate.h"
+#include "design/nlp.h"
+#include "truss/truss_analysis.h"
+#include "truss/truss_model.h"
+
+namespace tbridge {
+
+enum class TrussRowKind {
+  kTension,
+  kCompression,
+  kBuckling,
+  kTaut,
+  kNoTension,
+  kDisplacement,
+  kFrequency
+};
+
+// "tension", "compression", "buckling", "taut", "no_tension", "displacement", "frequency".
+const char* TrussRowName(TrussRowKind kind);
+
+// One row of the program: its kind, its case (-1 for a frequency), the member, the
+// displacement limit or the frequency limit it is about, for a displacement its sign (+1 or -1)
+// and for a frequency the mode it holds (0-based).
+struct TrussRow {
+  TrussRowKind kind = TrussRowKind::kTension;
+  int load_case = -1;
+  int index = 0;
+  int sign = 1;
+  int mode = 0;
+};
+
+// The modes each frequency limit holds beyond its own: the k-th lowest eigenvalue is the least
+// of the branches that cross there, not smooth where two meet (the 10-bar problem's optimum has
+// f3 = f4 = 20 Hz), while each branch is; with the next modes held to the same limit (redundant
+// for the sorted values) both branches of a pair that meets are rows, and the optimum there is
+// a KKT point.
+inline constexpr int kTrussFollowingModes = 2;
+
+// The rows a structure's model poses, in a fixed order.
+std::vector<TrussRow> TrussRows(const TrussModel& model);
+
+// Each row's utilisation (1 - its value) at the group areas, and, with `jacobian` non-null,
+// d(value)/dA_g (rows x groups). One analysis of every case and, where limits ask for them, of
+// the modes.
+Eigen::VectorXd TrussRowValues(const TrussModel& model, const std::vector<TrussRow>& rows,
+                               const Eigen::VectorXd& group_areas, Eigen::MatrixXd* jacobian);
+
+struct TrussSizing {
+  Eigen::VectorXd group_areas;  // [m^2]
+  SolverOutcome outcome;        // of the solve kept
+  KktCertificate kkt;
+  std::string start;               // which start the kept solve came from
+  std::vector<std::string> tries;  // every solve: start, solver, status, mass, proved or not
+};
+
+// The sizing of `model` with design.solver (`solver`: "auto" takes the SQP, then Ipopt where the
+// SQP's point is not proved optimal), `tolerance` and `max_iterations`. Frequency limits make the
+// program non-convex: it is then solved from several starts and the lightest proved feasible point
+// is kept. Throws ModelError where no start gives a feasible point.
+TrussSizing SizeTruss(const TrussModel& model, const std::string& solver, double tolerance,
+                      int max_iterations);
+
+}  // namespace tbridge
