@@ -31,6 +31,8 @@
 #include "dynamics/modal.h"
 #include "export/export.h"
 #include "sweep/sweep.h"
+#include "truss/truss_design.h"
+#include "truss/truss_report.h"
 #include "verify/static_check.h"
 #include "verify/verified_design.h"
 
@@ -296,14 +298,77 @@ PYBIND11_MODULE(tbridge, m) {
       .def_readonly("shapes", &Modes::shapes)
       .def_readonly("all_modes", &Modes::all_modes);
 
+  py::class_<TrussDesign>(
+      m, "StructureDesign",
+      "A sized pin-jointed structure (a structure section's members in groups), as tbridge "
+      "design writes it. Arrays are owned copies; members in the config's order.")
+      .def_property_readonly("group_names",
+                             [](const TrussDesign& d) {
+                               std::vector<std::string> out;
+                               for (const TrussGroup& g : d.model.groups) out.push_back(g.name);
+                               return out;
+                             })
+      .def_property_readonly(
+          "group_areas", [](const TrussDesign& d) { return Eigen::VectorXd(d.sizing.group_areas); },
+          "one area per group [m^2]")
+      .def_property_readonly(
+          "areas",
+          [](const TrussDesign& d) {
+            return Eigen::VectorXd(d.model.MemberAreas(d.sizing.group_areas));
+          },
+          "each member's area [m^2]")
+      .def_property_readonly(
+          "forces",
+          [](const TrussDesign& d) {
+            std::vector<double> out;
+            for (const TrussMemberCheck& c : d.check.members) out.push_back(c.force);
+            return out;
+          },
+          "each member's force in its governing case, tension > 0 [N]")
+      .def_property_readonly("utilisation",
+                             [](const TrussDesign& d) {
+                               std::vector<double> out;
+                               for (const TrussMemberCheck& c : d.check.members)
+                                 out.push_back(c.utilisation);
+                               return out;
+                             })
+      .def_property_readonly(
+          "frequencies_hz",
+          [](const TrussDesign& d) { return Eigen::VectorXd(d.check.frequencies_hz); })
+      .def_property_readonly(
+          "structure_mass", [](const TrussDesign& d) { return d.model.Mass(d.sizing.group_areas); },
+          "[kg]")
+      .def_property_readonly("proved_local_optimum",
+                             [](const TrussDesign& d) { return d.sizing.kkt.proved_local_optimum; })
+      .def_property_readonly(
+          "verdict",
+          [](const TrussDesign& d) { return std::string(d.check.pass ? "PASS" : "FAIL"); },
+          "PASS or FAIL")
+      .def(
+          "to_json",
+          [](const TrussDesign& d) {
+            std::ostringstream os;
+            WriteTrussDesignJson(d, os);
+            return os.str();
+          },
+          "the design file tbridge design writes, as text")
+      .def(
+          "summary", [](const TrussDesign& d) { return TrussDesignSummary(d); },
+          "the summary tbridge design prints");
+
   m.def(
       "design",
-      [](const py::object& config) {
+      [](const py::object& config) -> py::object {
         const Config c = ConfigOf(config);
-        return Interruptibly([&c](ProgressReporter* progress) { return DesignAndVerify(c, progress); });
+        if (c.structure)
+          return py::cast(Interruptibly([&c](ProgressReporter*) { return DesignTruss(c); }));
+        return py::cast(Interruptibly(
+            [&c](ProgressReporter* progress) { return DesignAndVerify(c, progress); }));
       },
       py::arg("config"),
-      "the verified design of a config (a dict, or the path of its JSON file), as tbridge design; Ctrl-C stops it "
+      "the verified design of a config (a dict, or the path of its JSON file), as tbridge design: "
+      "a Design of a "
+      "bridge, a StructureDesign of a structure's members in groups; Ctrl-C stops a bridge's "
       "(KeyboardInterrupt)");
   m.def(
       "load_design", [](const std::string& path) { return ReadDesign(ReadJsonFile(path)); }, py::arg("path"),

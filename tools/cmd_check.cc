@@ -3,6 +3,7 @@
 // the dynamic runs; the plausibility warnings as `design` gives them.
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "design/plausibility.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "truss/truss_design.h"
+#include "truss/truss_report.h"
 #include "verify/verified_design.h"
 
 namespace tbridge::cli {
@@ -27,7 +30,8 @@ const CommandSpec& CheckSpec() {
        ProgressOption(),
        StrictOption(),
        {{"-q", "--quiet"}, "", "do not print the summary", false}},
-      "Reads DESIGN.json, a design written by tbridge design, and checks it as written: every\n"
+      "Reads DESIGN.json, a design written by tbridge design, and checks it as written (a\n"
+      "structure's: each member at the area its file gives, by the linear analysis): every\n"
       "load case solved as a nonlinear static problem (deflections, reactions, member forces,\n"
       "slack strings) and the dynamic runs (README.md, \"Safe by design\"). Nothing is resized.\n"
       "Each member's utilisation is its largest over the ultimate static cases and the runs.\n"
@@ -41,6 +45,19 @@ const CommandSpec& CheckSpec() {
   return spec;
 }
 
+// The check of a structure's design file (truss/): each member at the area the file gives.
+int RunStructureCheck(const nlohmann::json& file, const ParsedArgs& parsed,
+                      const std::string& out_path) {
+  const TrussDesign design = CheckTrussDesignFile(file);
+  OutputTransaction outputs;
+  outputs.ProtectInput(parsed.positionals[0]);
+  std::ostream& json = outputs.Stage(out_path);
+  WriteTrussDesignJson(design, json);
+  outputs.Commit();
+  if (!parsed.Flag("-q")) std::cout << TrussDesignSummary(design) << "\nwrote " << out_path << "\n";
+  return design.check.pass ? kExitOk : kExitNotOk;
+}
+
 int RunCheckCommand(const std::vector<std::string>& args) {
   const CommandSpec& spec = CheckSpec();
   const ParsedArgs parsed = ParseArgs(args, spec);
@@ -49,7 +66,10 @@ int RunCheckCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string out_path = parsed.Required("-o");
-  Design design = ReadDesign(ReadJsonFile(parsed.positionals[0]));
+  const nlohmann::json file = ReadJsonFile(parsed.positionals[0]);
+  if (file.is_object() && file.value("kind", "") == "structure")
+    return RunStructureCheck(file, parsed, out_path);
+  Design design = ReadDesign(file);
   OutputTransaction outputs;
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);

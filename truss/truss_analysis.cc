@@ -17,8 +17,8 @@ int DofOf(const TrussModel& m, int node, int axis) {
 
 }  // namespace
 
-TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& group_areas)
-    : model_(model), group_areas_(group_areas), areas_(model.MemberAreas(group_areas)) {
+TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& member_areas)
+    : model_(model), areas_(member_areas) {
   std::vector<Eigen::Triplet<double>> entries;
   for (int e = 0; e < model_.num_members(); ++e) {
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
@@ -69,12 +69,8 @@ double TrussAnalysis::Force(int e, const Eigen::VectorXd& u) const {
 TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
   const TrussCase& lc = model_.cases[static_cast<size_t>(c)];
   const int ng = model_.num_groups(), nm = model_.num_members();
-  std::vector<Eigen::VectorXd> weight(static_cast<size_t>(ng));
   Eigen::VectorXd f = lc.loads;
-  for (int g = 0; g < ng; ++g) {
-    weight[static_cast<size_t>(g)] = lc.factor * model_.WeightPerArea(g);
-    f += group_areas_[g] * weight[static_cast<size_t>(g)];
-  }
+  for (int e = 0; e < nm; ++e) model_.AddWeight(e, lc.factor * areas_[e], f);
   TrussCaseResponse r;
   r.u = factor_->solve(f);
   r.forces.resize(nm);
@@ -84,7 +80,7 @@ TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
   // elongation along its direction.
   r.du.resize(model_.num_free, ng);
   for (int g = 0; g < ng; ++g) {
-    Eigen::VectorXd rhs = weight[static_cast<size_t>(g)];
+    Eigen::VectorXd rhs = lc.factor * model_.WeightPerArea(g);
     for (const int e : model_.groups[static_cast<size_t>(g)].members) {
       const TrussMember& m = model_.members[static_cast<size_t>(e)];
       const double t = model_.youngs_modulus / m.length * Elongation(e, r.u);
@@ -146,7 +142,10 @@ Eigen::MatrixXd TrussAnalysis::MassPerArea(int g) const {
 
 Eigen::MatrixXd TrussAnalysis::Mass() const {
   Eigen::MatrixXd out = model_.node_mass.asDiagonal();
-  for (int g = 0; g < model_.num_groups(); ++g) out += group_areas_[g] * MassPerArea(g);
+  for (int e = 0; e < model_.num_members(); ++e) {
+    const double mass = model_.density * model_.members[static_cast<size_t>(e)].length * areas_[e];
+    AddEnds(e, mass / 3 * Eigen::Matrix3d::Identity(), mass / 6 * Eigen::Matrix3d::Identity(), out);
+  }
   return out;
 }
 

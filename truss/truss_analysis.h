@@ -40,9 +40,10 @@ inline constexpr int kTrussMaxModalDofs = 4000;
 
 class TrussAnalysis {
  public:
-  // Assembles and factorises K at `group_areas`. Throws ModelError naming the structure's
+  // Assembles and factorises K at each member's area (`member_areas`: its group's in a sizing,
+  // its own in the check of an edited design). Throws ModelError naming the structure's
   // mechanism where K is singular (a node held by no member in some direction).
-  TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& group_areas);
+  TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& member_areas);
 
   // Case `c`'s response; with `sensitivities`, its derivatives in the group areas.
   TrussCaseResponse Solve(int c, bool sensitivities) const;
@@ -65,7 +66,6 @@ class TrussAnalysis {
   Eigen::MatrixXd Mass() const;
 
   const TrussModel& model_;
-  Eigen::VectorXd group_areas_;
   Eigen::VectorXd areas_;  // per member
   Eigen::SparseMatrix<double> stiffness_;
   std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;

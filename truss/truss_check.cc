@@ -34,14 +34,13 @@ std::pair<double, std::string> MemberUtilisation(const TrussModel& m, int e, dou
 
 // The support reactions of case c: each pinned node's reaction balances the members' forces on
 // it, its own loads and its share of the members' weight.
-Eigen::Matrix3Xd Reactions(const TrussModel& m, int c, const Eigen::VectorXd& group_areas,
+Eigen::Matrix3Xd Reactions(const TrussModel& m, int c, const Eigen::VectorXd& areas,
                            const TrussCaseResponse& r) {
   const TrussCase& lc = m.cases[static_cast<size_t>(c)];
   Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, m.nodes.cols());
   for (int e = 0; e < m.num_members(); ++e) {
     const TrussMember& member = m.members[static_cast<size_t>(e)];
-    const double half_weight =
-        0.5 * lc.factor * m.density * m.gravity * member.length * group_areas[member.group];
+    const double half_weight = 0.5 * lc.factor * m.density * m.gravity * member.length * areas[e];
     const Eigen::Vector3d pull = r.forces[e] * member.direction;  // on node i, towards j
     const Eigen::Vector3d down(0, -half_weight, 0);
     if (m.fixed[static_cast<size_t>(member.i)]) out.col(member.i) -= pull + down;
@@ -54,15 +53,14 @@ Eigen::Matrix3Xd Reactions(const TrussModel& m, int c, const Eigen::VectorXd& gr
 }
 
 // Every applied load of case c (its loads and the members' weight), summed.
-Eigen::Vector3d AppliedTotal(const TrussModel& m, int c, const Eigen::VectorXd& group_areas) {
+Eigen::Vector3d AppliedTotal(const TrussModel& m, int c, const Eigen::VectorXd& areas) {
   const TrussCase& lc = m.cases[static_cast<size_t>(c)];
   Eigen::Vector3d sum = lc.node_loads.rowwise().sum();
-  sum.y() -= lc.factor * m.gravity * m.Mass(group_areas);
+  sum.y() -= lc.factor * m.gravity * m.MassOfMembers(areas);
   return sum;
 }
 
-void CheckMembers(const TrussModel& m, const Eigen::VectorXd& group_areas, TrussCheck& out) {
-  const Eigen::VectorXd areas = m.MemberAreas(group_areas);
+void CheckMembers(const TrussModel& m, const Eigen::VectorXd& areas, TrussCheck& out) {
   out.members.resize(static_cast<size_t>(m.num_members()));
   for (int e = 0; e < m.num_members(); ++e) {
     TrussMemberCheck& mc = out.members[static_cast<size_t>(e)];
@@ -126,17 +124,23 @@ void Verdict(const TrussModel& m, TrussCheck& out) {
 
 }  // namespace
 
-TrussCheck CheckTruss(const TrussModel& m, const Eigen::VectorXd& group_areas) {
+Eigen::VectorXd TrussCheck::Areas() const {
+  Eigen::VectorXd a(static_cast<int>(members.size()));
+  for (size_t e = 0; e < members.size(); ++e) a[static_cast<int>(e)] = members[e].area;
+  return a;
+}
+
+TrussCheck CheckTruss(const TrussModel& m, const Eigen::VectorXd& areas) {
   TrussCheck out;
-  const TrussAnalysis analysis(m, group_areas);
+  const TrussAnalysis analysis(m, areas);
   for (int c = 0; c < static_cast<int>(m.cases.size()); ++c) {
     out.cases.push_back(analysis.Solve(c, false));
-    out.reactions.push_back(Reactions(m, c, group_areas, out.cases.back()));
+    out.reactions.push_back(Reactions(m, c, areas, out.cases.back()));
     const Eigen::Vector3d residual =
-        out.reactions.back().rowwise().sum() + AppliedTotal(m, c, group_areas);
+        out.reactions.back().rowwise().sum() + AppliedTotal(m, c, areas);
     out.equilibrium_residual = std::max(out.equilibrium_residual, residual.norm());
   }
-  CheckMembers(m, group_areas, out);
+  CheckMembers(m, areas, out);
   CheckDisplacements(m, out);
   CheckFrequencies(m, analysis, out);
   Verdict(m, out);

@@ -43,8 +43,12 @@ struct TrussCheck {
   double utilisation_max = 0;
   std::string governing;  // what has utilisation_max: "member 3-4 (buckling, case heavy)"
   bool pass = false;      // utilisation_max <= 1 + kTrussPassTolerance
+
+  // Each member's area as checked [m^2].
+  Eigen::VectorXd Areas() const;
 };
 
-TrussCheck CheckTruss(const TrussModel& model, const Eigen::VectorXd& group_areas);
+// `member_areas`: each member's area [m^2] (its group's, or its own in an edited design file).
+TrussCheck CheckTruss(const TrussModel& model, const Eigen::VectorXd& member_areas);
 
 }  // namespace tbridge

@@ -135,17 +135,26 @@ Eigen::VectorXd TrussModel::MemberAreas(const Eigen::VectorXd& group_areas) cons
   return a;
 }
 
+double TrussModel::MassOfMembers(const Eigen::VectorXd& member_areas) const {
+  double mass = 0;
+  for (int e = 0; e < num_members(); ++e)
+    mass += density * member_areas[e] * members[static_cast<size_t>(e)].length;
+  return mass;
+}
+
+void TrussModel::AddWeight(int e, double area, Eigen::VectorXd& f) const {
+  if (gravity == 0) return;
+  const TrussMember& m = members[static_cast<size_t>(e)];
+  const double half = 0.5 * density * gravity * m.length * area;
+  for (const int node : {m.i, m.j}) {
+    const int k = dof[static_cast<size_t>(node * dim + 1)];
+    if (k >= 0) f[k] -= half;
+  }
+}
+
 Eigen::VectorXd TrussModel::WeightPerArea(int g) const {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(num_free);
-  if (gravity == 0) return w;
-  for (const int e : groups[static_cast<size_t>(g)].members) {
-    const TrussMember& m = members[static_cast<size_t>(e)];
-    const double half = 0.5 * density * gravity * m.length;
-    for (const int node : {m.i, m.j}) {
-      const int f = dof[static_cast<size_t>(node * dim + 1)];
-      if (f >= 0) w[f] -= half;
-    }
-  }
+  for (const int e : groups[static_cast<size_t>(g)].members) AddWeight(e, 1.0, w);
   return w;
 }
 

@@ -78,8 +78,12 @@ struct TrussModel {
   double Mass(const Eigen::VectorXd& group_areas) const;
   // Each member's area from its group's.
   Eigen::VectorXd MemberAreas(const Eigen::VectorXd& group_areas) const;
-  // The self-weight's load vector on the free degrees of freedom per unit area of group g
-  // (half of each member's weight at each end, along -y), unfactored: zero without gravity.
+  // The members' mass [kg] at each member's own area.
+  double MassOfMembers(const Eigen::VectorXd& member_areas) const;
+  // Adds `area` times member e's weight per unit area to the load vector `f` on the free degrees
+  // of freedom: half of its weight at each end, along -y; nothing without gravity.
+  void AddWeight(int e, double area, Eigen::VectorXd& f) const;
+  // The self-weight's load vector per unit area of group g, unfactored.
   Eigen::VectorXd WeightPerArea(int g) const;
   // "i-j" with 1-based node numbers.
   std::string MemberName(int e) const;

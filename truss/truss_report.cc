@@ -142,7 +142,9 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
   }
   double added = 0;
   for (const StructureNodeMass& nm : d.config.structure->node_masses) added += nm.mass_kg;
-  const double structure = m.Mass(d.sizing.group_areas);
+  const double structure = m.MassOfMembers(d.check.Areas());
+  json edited = json::array();
+  for (const int e : d.edited) edited.push_back(m.MemberName(e));
   const json out = {
       {"kind", "structure"},
       {"config", ToJson(d.config)},
@@ -159,6 +161,7 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
       {"equilibrium_residual_N", d.check.equilibrium_residual},
       {"mass", {{"structure", structure}, {"node_masses", added}, {"total", structure + added}}},
       {"solver", Solver(d.sizing)},
+      {"edited_members", edited},
       {"analysis",
        "linear: small displacements, each member elastic E A / L; consistent member mass"},
       {"not_applicable",
@@ -181,7 +184,7 @@ std::string TrussDesignSummary(const TrussDesign& d) {
      << " free degrees of freedom), " << m.num_members() << " members in " << m.num_groups()
      << " groups, " << m.cases.size() << " load cases, " << m.displacement_limits.size()
      << " displacement and " << m.min_frequencies_hz.size() << " frequency limits\n";
-  const double mass = m.Mass(d.sizing.group_areas);
+  const double mass = m.MassOfMembers(d.check.Areas());
   os << "mass of the members: " << Format("%.6g kg", mass)
      << Format(" (%.6g lb)", mass / 0.45359237) << "\n";
   os << "solver: " << d.sizing.outcome.solver << ", status " << d.sizing.outcome.status << " after "
@@ -207,6 +210,11 @@ std::string TrussDesignSummary(const TrussDesign& d) {
   for (const TrussLimitCheck& l : d.check.frequencies) {
     os << "frequency of " << l.what << ": " << Format("%.6g Hz", l.value) << ", at least "
        << Format("%.6g Hz", l.limit) << "\n";
+  }
+  if (!d.edited.empty()) {
+    os << "edited (an area not its group's, checked as written):";
+    for (const int e : d.edited) os << " " << m.MemberName(e);
+    os << "\n";
   }
   os << (d.check.pass ? "PASS" : "FAIL") << ": utilisation_max "
      << Format("%.6f", d.check.utilisation_max) << " (" << d.check.governing << ")\n";

@@ -115,7 +115,7 @@ std::vector<TrussRow> TrussRows(const TrussModel& m) {
 Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>& rows,
                                const Eigen::VectorXd& group_areas, Eigen::MatrixXd* jacobian) {
   const bool grad = jacobian != nullptr;
-  const TrussAnalysis analysis(m, group_areas);
+  const TrussAnalysis analysis(m, m.MemberAreas(group_areas));
   std::vector<TrussCaseResponse> responses;
   for (int c = 0; c < static_cast<int>(m.cases.size()); ++c)
     responses.push_back(analysis.Solve(c, grad));
@@ -381,7 +381,7 @@ Attempt Solve(const TrussModel& m, const std::vector<TrussRow>& rows, const Eige
 // with one gradient per row cannot certify such a point; "" elsewhere.
 std::string RepeatedModeNote(const TrussModel& m, const Eigen::VectorXd& areas) {
   if (m.min_frequencies_hz.empty()) return "";
-  const TrussModes modes = TrussAnalysis(m, areas).Modes(ModesAsked(m), false);
+  const TrussModes modes = TrussAnalysis(m, m.MemberAreas(areas)).Modes(ModesAsked(m), false);
   for (int k = 0; k < static_cast<int>(m.min_frequencies_hz.size()); ++k) {
     const double target = OmegaSquared(m.min_frequencies_hz[static_cast<size_t>(k)]);
     for (int j = k; j + 1 < modes.eigenvalues.size(); ++j) {

@@ -338,3 +338,20 @@ def test_simulate_of_a_design_is_tbridge_simulate_of_its_file(tmp_path):
     del run.summary["run"]["wall_s"]
     assert run.summary == edited
     assert edited["max_string_stress"] != summary["max_string_stress"]
+
+
+def test_a_structure_is_designed_as_tbridge_design_designs_it(tmp_path):
+    # The 10-bar stress problem: the module's design file is the command line's, byte for byte
+    # (the same library), and its properties read that file's numbers.
+    config = os.path.join(SOURCE, "configs", "truss_10bar_stress.json")
+    d = tbridge.design(config)
+    assert isinstance(d, tbridge.StructureDesign)
+    path = tmp_path / "d.json"
+    code, err = cli("design", config, "-q", "-o", str(path))
+    assert code == 0, err
+    assert d.to_json() == path.read_text()
+    written = json.loads(path.read_text())
+    assert list(d.areas) == [m["area"] for m in written["members"]]
+    assert d.structure_mass == written["mass"]["structure"]
+    assert d.verdict == "PASS" and d.proved_local_optimum
+    assert d.group_names == [g["name"] for g in written["groups"]]

@@ -74,5 +74,45 @@ TEST_CASE("design: a structure that is a mechanism fails, named, and writes noth
   CHECK(test::ReadText(dir / "out.json") == "old");
 }
 
+TEST_CASE("check: a structure's design file checked as written, an edited area named", "[truss]") {
+  const test::fs::path dir = test::FreshDir("structure_check");
+  const auto path = [&dir](const char* name) { return test::Quote((dir / name).string()); };
+  REQUIRE(
+      test::RunTbridge(dir, "design " + test::Quote(kStress) + " -q -o " + path("d.json")).code ==
+      0);
+  // Unedited: the same verdict and the same numbers, nothing listed as edited.
+  test::CliResult r = test::RunTbridge(dir, "check " + path("d.json") + " -q -o " + path("c.json"));
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json designed = nlohmann::json::parse(test::ReadText(dir / "d.json"));
+  const nlohmann::json checked = nlohmann::json::parse(test::ReadText(dir / "c.json"));
+  CHECK(checked["members"] == designed["members"]);
+  CHECK(checked["solver"] == designed["solver"]);
+  CHECK(checked["edited_members"].empty());
+  // Member 1 (5-3) at half its area: the truss is indeterminate, so its force falls a little
+  // and its stress nearly doubles: it fails, named, and the file says it was edited.
+  nlohmann::json edited = designed;
+  edited["members"][0]["area"] = designed["members"][0]["area"].get<double>() / 2;
+  std::ofstream(dir / "e.json") << edited.dump();
+  r = test::RunTbridge(dir, "check " + path("e.json") + " -o " + path("ce.json"));
+  CHECK(r.code == 1);
+  CHECK_THAT(r.out, Catch::Contains("edited") && Catch::Contains("5-3") && Catch::Contains("FAIL"));
+  const nlohmann::json failed = nlohmann::json::parse(test::ReadText(dir / "ce.json"));
+  CHECK(failed["edited_members"] == nlohmann::json::array({"5-3"}));
+  CHECK(failed["members"][0]["utilisation"].get<double>() > 1.5);
+  CHECK(failed["verdict"]["pass"] == false);
+  // The loads are still carried: the supports' vertical reactions sum to the two loads.
+  double vertical = 0;
+  for (const auto& s : failed["cases"][0]["reactions"]) vertical += s["force_n"][1].get<double>();
+  CHECK(vertical == Approx(2 * 444822.16152605).epsilon(1e-10));
+  // A bad area is named.
+  edited["members"][3]["area"] = -1;
+  std::ofstream(dir / "bad.json") << edited.dump();
+  r = test::RunTbridge(dir, "check " + path("bad.json") + " -o " + path("cb.json"));
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Contains("members[3].area"));
+  CHECK(!test::fs::exists(dir / "cb.json"));
+}
+
 }  // namespace
 }  // namespace tbridge
