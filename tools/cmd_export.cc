@@ -2,14 +2,17 @@
 // a written design as an input file of an FE program (export/calculix.h, export/opensees.h).
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/json_reader.h"
 #include "design/design_reader.h"
 #include "export/export.h"
+#include "export/truss_calculix.h"
 #include "tools/commands.h"
 #include "tools/output.h"
+#include "truss/truss_design.h"
 
 namespace tbridge::cli {
 
@@ -48,7 +51,24 @@ int RunExportCommand(const std::vector<std::string>& args) {
   options.modes = ParseWholeNumber(parsed, "-m", "--modes", options.modes, 1);
   if (parsed.Value("-m") && format != "calculix") throw UsageError("--modes: only the calculix format computes modes");
   const std::string out_path = parsed.Required("-o");
-  const Design design = ReadDesign(ReadJsonFile(parsed.positionals[0]));
+  const nlohmann::json file = ReadJsonFile(parsed.positionals[0]);
+  if (file.is_object() && file.value("kind", "") == "structure") {
+    // A structure's design (truss/): its members elastic, no prestress; CalculiX only so far.
+    if (format != "calculix") {
+      throw OptionError("--format", "'" + format + "'",
+                        "a structure's design exports as calculix only");
+    }
+    if (options.rigid_bars)
+      throw UsageError("--rigid-bars: a structure's members are elastic, E A / L");
+    const TrussDesign design = CheckTrussDesignFile(file);
+    OutputTransaction outputs;
+    outputs.ProtectInput(parsed.positionals[0]);
+    WriteTrussCalculix(design, options.modes, outputs.Stage(out_path));
+    outputs.Commit();
+    std::cout << "wrote " << out_path << " (" << format << ")\n";
+    return kExitOk;
+  }
+  const Design design = ReadDesign(file);
   OutputTransaction outputs;
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& out = outputs.Stage(out_path);

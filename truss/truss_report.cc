@@ -170,7 +170,8 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
         {"dynamic_check", "no time-history runs: the limits are static and modal"},
         {"prestress", "no self-stress: each member's rest length is its drawn length"}}},
       {"verdict",
-       {{"pass", d.check.pass},
+       {{"outcome", d.check.pass ? "PASS" : "FAIL"},
+        {"pass", d.check.pass},
         {"utilisation_max", d.check.utilisation_max},
         {"governing", d.check.governing},
         {"tolerance", kTrussPassTolerance}}}};

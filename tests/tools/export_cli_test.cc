@@ -324,4 +324,45 @@ TEST_CASE("export: a bad format or option is refused with exit 2 and nothing wri
   CHECK(tbridge::test::Snapshot(dir / "out") == before);
 }
 
+// A structure's design (truss/) run by CalculiX: its deck's linear static steps give the design
+// file's displacements, and its frequency step the file's lowest frequency (the 10-bar truss's
+// 8 free motions allow ARPACK one mode).
+TEST_CASE("export: a structure's design agrees with CalculiX", "[truss]") {
+  for (const char* name : {"truss_10bar_displacement", "truss_10bar_frequency"}) {
+    INFO(name);
+    const fs::path dir = FreshDir(std::string("export_truss_") + name);
+    const fs::path design =
+        DesignOf(dir, std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json");
+    REQUIRE(RunTbridge(dir, "export " + Quote(design.string()) + " --format calculix -o " +
+                                Quote((dir / "truss.inp").string()))
+                .code == 0);
+    const std::string ccx = "cd " + Quote(dir.string()) + " && ccx truss > ccx.log 2>&1";
+    INFO("ccx's log: " << ReadText(dir / "ccx.log"));
+    REQUIRE(std::system(ccx.c_str()) == 0);
+    std::map<int, CcxStep> steps;
+    std::vector<double> omega;
+    ReadDat(ReadText(dir / "truss.dat"), steps, omega);
+    const json d = json::parse(ReadText(design));
+    for (size_t c = 0; c < d["cases"].size(); ++c) {
+      const CcxStep& step = steps.at(static_cast<int>(c) + 1);
+      const json& u = d["cases"][c]["displacements"];
+      double largest = 0, worst = 0;
+      for (size_t k = 0; k < u.size(); ++k) {
+        for (int a = 0; a < 2; ++a) {
+          largest = std::max(largest, std::abs(u[k][a].get<double>()));
+          worst = std::max(worst,
+                           std::abs(u[k][a].get<double>() - step.u.at(static_cast<int>(k) + 1)[a]));
+        }
+      }
+      // The .dat prints 6 significant digits (e.g. -5.07999E-02): 1e-5 of the largest.
+      CHECK(worst <= 1e-5 * largest);
+    }
+    // The frequencies (consistent member mass on both sides): the .dat's 7 digits.
+    REQUIRE(!omega.empty());
+    for (size_t k = 0; k < omega.size(); ++k) {
+      CHECK(omega[k] / (2 * M_PI) == Approx(d["frequencies_hz"][k].get<double>()).epsilon(1e-6));
+    }
+  }
+}
+
 }  // namespace
