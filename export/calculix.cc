@@ -8,15 +8,15 @@
 
 namespace tbridge {
 
-namespace {
-
-std::string Num(double v) {
+std::string CalculixNumber(double v) {
   char text[32];
-  // Always with a decimal point (CalculiX reads a number without one as an integer field), in
-  // at most 20 characters (its field width): 14 digits.
   std::snprintf(text, sizeof text, "%.13e", v + 0.0);
   return text;
 }
+
+namespace {
+
+std::string Num(double v) { return CalculixNumber(v); }
 
 // One element (1-based `id`) in its own set, so that it carries its own table.
 void Spring(std::ostream& os, int id, int i, int j, const std::vector<std::pair<double, double>>& table) {

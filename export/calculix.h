@@ -18,6 +18,7 @@
 #pragma once
 
 #include <ostream>
+#include <string>
 
 #include "export/fe_model.h"
 
@@ -33,5 +34,9 @@ struct CalculixOptions {
 };
 
 void WriteCalculix(const FeModel& model, const CalculixOptions& options, std::ostream& os);
+
+// A number as a CalculiX field: always with a decimal point (CalculiX reads a number without one
+// as an integer field), in at most 20 characters (its field width): 14 digits.
+std::string CalculixNumber(double v);
 
 }  // namespace tbridge

@@ -4,16 +4,13 @@
 #include <cstdio>
 #include <string>
 
+#include "export/calculix.h"
+
 namespace tbridge {
 
 namespace {
 
-std::string Num(double v) {
-  char text[32];
-  // With a decimal point (CalculiX reads a number without one as an integer), in 20 characters.
-  std::snprintf(text, sizeof text, "%.13e", v + 0.0);
-  return text;
-}
+std::string Num(double v) { return CalculixNumber(v); }
 
 // Case c's node loads on the free degrees of freedom: its factored loads and the members'
 // factored weight at their areas.

@@ -178,4 +178,13 @@ TrussModes TrussAnalysis::Modes(int count, bool sensitivities) const {
   return out;
 }
 
+Eigen::VectorXd TrussAnalysis::ModeCoupling(const TrussModes& modes, int a, int b) const {
+  Eigen::VectorXd out(model_.num_groups());
+  const Eigen::VectorXd pa = modes.shapes.col(a), pb = modes.shapes.col(b);
+  for (int g = 0; g < model_.num_groups(); ++g) {
+    out[g] = pa.dot(StiffnessPerArea(g) * pb) - modes.eigenvalues[a] * pa.dot(MassPerArea(g) * pb);
+  }
+  return out;
+}
+
 }  // namespace tbridge

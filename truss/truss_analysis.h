@@ -50,6 +50,11 @@ class TrussAnalysis {
   // The `count` lowest modes; with `sensitivities`, the eigenvalues' derivatives. Throws
   // ModelError beyond kTrussMaxModalDofs free degrees of freedom.
   TrussModes Modes(int count, bool sensitivities) const;
+  // Per group g, phi_a^T (dK/dA_g - omega_a^2 dM/dA_g) phi_b: for a == b the eigenvalue's
+  // derivative, for a pair of modes that meet the off-diagonal entry of the derivative of the
+  // pair's 2 x 2 eigenvalue problem (a repeated eigenvalue's directional derivatives are the
+  // eigenvalues of that matrix).
+  Eigen::VectorXd ModeCoupling(const TrussModes& modes, int a, int b) const;
   // Member e's axial force from the displacements u: (E A / L) d . (u_j - u_i).
   double Force(int e, const Eigen::VectorXd& u) const;
 

@@ -309,7 +309,18 @@ std::string Format(const char* format, double v) {
 }
 
 // The certificate of x on `problem`: every row within kActiveRow of its bound is active.
-KktCertificate Certify(const TrussProblem& problem, const Eigen::VectorXd& x) {
+// The active rows' Jacobian at y.
+void ActiveRows(const TrussProblem& problem, const std::vector<int>& active,
+                const Eigen::VectorXd& y, Eigen::MatrixXd& out) {
+  Eigen::MatrixXd all;
+  problem.DenseJacobian(y, all);
+  out.resize(static_cast<int>(active.size()), all.cols());
+  for (size_t k = 0; k < active.size(); ++k) out.row(static_cast<int>(k)) = all.row(active[k]);
+}
+
+// The certificate's input at x on `problem`, without the second-order hook: every row within
+// kActiveRow of its bound is active.
+KktInput CertificateInput(const TrussProblem& problem, const Eigen::VectorXd& x) {
   KktInput in;
   const int n = problem.num_variables(), rows = problem.num_constraints();
   in.x = x;
@@ -322,19 +333,20 @@ KktCertificate Certify(const TrussProblem& problem, const Eigen::VectorXd& x) {
   for (int r = 0; r < rows; ++r) {
     if (g[r] <= kActiveRow) in.active.push_back(r);
   }
-  const auto active_rows = [&problem, &in](const Eigen::VectorXd& y, Eigen::MatrixXd& out) {
-    Eigen::MatrixXd all;
-    problem.DenseJacobian(y, all);
-    out.resize(static_cast<int>(in.active.size()), all.cols());
-    for (size_t k = 0; k < in.active.size(); ++k)
-      out.row(static_cast<int>(k)) = all.row(in.active[k]);
-  };
-  active_rows(x, in.jac_active);
-  in.at = [&problem, &active_rows, n](const Eigen::VectorXd& y, Eigen::VectorXd& grad,
-                                      Eigen::MatrixXd& jac) {
+  ActiveRows(problem, in.active, x, in.jac_active);
+  return in;
+}
+
+// The certificate of x on `problem` (design/kkt_certificate.h).
+KktCertificate Certify(const TrussProblem& problem, const Eigen::VectorXd& x) {
+  KktInput in = CertificateInput(problem, x);
+  const int n = problem.num_variables();
+  const std::vector<int> active = in.active;
+  in.at = [&problem, &active, n](const Eigen::VectorXd& y, Eigen::VectorXd& grad,
+                                 Eigen::MatrixXd& jac) {
     grad.resize(n);
     problem.ObjectiveGradient(y, grad);
-    active_rows(y, jac);
+    ActiveRows(problem, active, y, jac);
   };
   return CertifyLocalOptimum(in, kCertificateTolerance);
 }
@@ -376,27 +388,93 @@ Attempt Solve(const TrussModel& m, const std::vector<TrussRow>& rows, const Eige
   return a;
 }
 
-// Where a frequency limit binds at two modes that meet (equal to 1e-6), the note that says so:
-// the k-th eigenvalue has no derivative there, only directional ones, so a first-order test
-// with one gradient per row cannot certify such a point; "" elsewhere.
-std::string RepeatedModeNote(const TrussModel& m, const Eigen::VectorXd& areas) {
-  if (m.min_frequencies_hz.empty()) return "";
-  const TrussModes modes = TrussAnalysis(m, m.MemberAreas(areas)).Modes(ModesAsked(m), false);
+// Two modes a < b that meet (equal to 1e-6) at frequency limit k's bound.
+struct MeetingModes {
+  int limit = 0, a = 0, b = 0;
+};
+
+std::vector<MeetingModes> MeetingModesOf(const TrussModel& m, const TrussModes& modes) {
+  std::vector<MeetingModes> out;
   for (int k = 0; k < static_cast<int>(m.min_frequencies_hz.size()); ++k) {
     const double target = OmegaSquared(m.min_frequencies_hz[static_cast<size_t>(k)]);
     for (int j = k; j + 1 < modes.eigenvalues.size(); ++j) {
       const double a = modes.eigenvalues[j], b = modes.eigenvalues[j + 1];
-      if (std::abs(a / target - 1) < 1e-6 && std::abs(b / a - 1) < 1e-6) {
-        return Format("; modes %g and ", j + 1) + Format("%g meet at ", j + 2) +
-               Format("%.6g Hz, the limit of ", std::sqrt(a) / (2 * kPi)) +
-               Format(
-                   "f%g: the eigenvalue has no derivative there (only directional ones), so the "
-                   "first-order test does not apply",
-                   k + 1);
-      }
+      if (std::abs(a / target - 1) < 1e-6 && std::abs(b / a - 1) < 1e-6)
+        out.push_back({k, j, j + 1});
     }
   }
-  return "";
+  return out;
+}
+
+// The position in `active` of the frequency row of limit k and mode j.
+int ActivePosition(const std::vector<TrussRow>& rows, const std::vector<int>& active, int k,
+                   int j) {
+  for (size_t p = 0; p < active.size(); ++p) {
+    const TrussRow& r = rows[static_cast<size_t>(active[p])];
+    if (r.kind == TrussRowKind::kFrequency && r.index == k && r.mode == j)
+      return static_cast<int>(p);
+  }
+  return -1;
+}
+
+// Where a frequency limit binds at two modes that meet, the k-th eigenvalue has no derivative,
+// only directional ones: the eigenvalues of the pair's 2 x 2 matrix D_ab = phi_a^T (dK - omega^2
+// dM) phi_b. The first-order condition there (Overton 1992) asks multipliers [[a, c], [c, b]]
+// positive semidefinite on D's entries: the rows of both modes carry a and b, the off-diagonal
+// entry 2 D_ab (either sign) carries c. Certified so; the second-order test does not apply.
+// Returns the certificate and, in `note`, what it says; `note` stays "" where no modes meet.
+KktCertificate CertifyMeetingModes(const TrussModel& m, const std::vector<TrussRow>& rows,
+                                   const Eigen::VectorXd& areas, std::string& note) {
+  note.clear();
+  KktCertificate c;
+  if (m.min_frequencies_hz.empty()) return c;
+  const TrussAnalysis analysis(m, m.MemberAreas(areas));
+  const TrussModes modes = analysis.Modes(ModesAsked(m), true);
+  const std::vector<MeetingModes> pairs = MeetingModesOf(m, modes);
+  if (pairs.empty()) return c;
+  const TrussProblem problem(m, rows, areas);  // x = 1
+  KktInput in = CertificateInput(problem, Eigen::VectorXd::Ones(m.num_groups()));
+  for (const MeetingModes& p : pairs) {
+    const double target = OmegaSquared(m.min_frequencies_hz[static_cast<size_t>(p.limit)]);
+    const Eigen::VectorXd cross =
+        2 * analysis.ModeCoupling(modes, p.a, p.b).cwiseProduct(areas) / target;
+    for (const double sign : {1.0, -1.0}) {
+      in.slack.conservativeResize(in.slack.size() + 1);
+      in.slack[in.slack.size() - 1] = 0;
+      in.active.push_back(static_cast<int>(in.slack.size()) - 1);
+      in.jac_active.conservativeResize(in.jac_active.rows() + 1, Eigen::NoChange);
+      in.jac_active.row(in.jac_active.rows() - 1) = sign * cross.transpose();
+    }
+  }
+  c = CertifyLocalOptimum(in, kCertificateTolerance);
+  bool semidefinite = true;
+  const int first_extra = static_cast<int>(in.active.size()) - 2 * static_cast<int>(pairs.size());
+  for (size_t q = 0; q < pairs.size(); ++q) {
+    const int pa = ActivePosition(rows, in.active, pairs[q].limit, pairs[q].a);
+    const int pb = ActivePosition(rows, in.active, pairs[q].limit, pairs[q].b);
+    const double la = pa < 0 ? 0.0 : c.multipliers[pa], lb = pb < 0 ? 0.0 : c.multipliers[pb];
+    const int plus = first_extra + 2 * static_cast<int>(q);
+    const double lc = c.multipliers[plus] - c.multipliers[plus + 1];
+    // Round-off of the multipliers' least squares: 1e-9 of the larger diagonal's square.
+    semidefinite = semidefinite && la * lb - lc * lc >= -1e-9 * std::pow(std::max(la, lb), 2);
+    note += Format("modes %g and ", pairs[q].a + 1) + Format("%g meet at ", pairs[q].b + 1) +
+            Format("f%g", pairs[q].limit + 1) +
+            Format(" = %.6g Hz", std::sqrt(modes.eigenvalues[pairs[q].a]) / (2 * kPi)) +
+            Format(" (multipliers a = %.3g, ", la) + Format("b = %.3g, ", lb) +
+            Format("c = %.3g); ", lc);
+  }
+  const bool first_order = c.stationarity <= kCertificateTolerance &&
+                           c.feasibility <= kCertificateTolerance &&
+                           c.complementarity <= kCertificateTolerance;
+  note += first_order && semidefinite
+              ? "the first-order conditions of a double eigenvalue hold (the pair's multipliers "
+                "positive "
+                "semidefinite, Overton 1992); the second-order test does not apply there"
+              : "the first-order conditions of a double eigenvalue fail: " +
+                    (semidefinite
+                         ? c.failed
+                         : std::string("the pair's multipliers are not positive semidefinite"));
+  return c;
 }
 
 }  // namespace
@@ -448,7 +526,15 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
     if (!any || Better(a, best)) best = std::move(a);
     any = true;
   }
-  if (!best.kkt.proved_local_optimum) best.kkt.failed += RepeatedModeNote(m, best.areas);
+  if (!best.kkt.proved_local_optimum) {
+    std::string note;
+    const KktCertificate meeting = CertifyMeetingModes(m, rows, best.areas, note);
+    if (!note.empty()) {  // the certificate where modes meet replaces the smooth one's
+      best.kkt = meeting;
+      best.kkt.proved_local_optimum = false;
+      best.kkt.failed = note;
+    }
+  }
   out.group_areas = best.areas;
   out.outcome = best.outcome;
   out.kkt = best.kkt;
