@@ -36,6 +36,9 @@ constexpr double kPi = 3.14159265358979323846;
 // The certificate's tolerance on stationarity, feasibility and complementarity: the rows are
 // utilisations' complements, so 1e-6 is a millionth of a member's resistance.
 constexpr double kCertificateTolerance = 1e-6;
+// Ipopt's iterations from each start of a non-convex program (it converges in 50 on the 10-bar
+// displacement problem).
+constexpr int kSecondOpinionIterations = 500;
 // A row is active in the certificate within this of its bound (as the bridge's sizing takes it).
 constexpr double kActiveRow = 1e-4;
 
@@ -518,7 +521,13 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
     record(a);
     if (ipopt && (non_convex || !a.kkt.proved_local_optimum)) {
       const bool from_sqp = !non_convex && a.feasible();
-      Attempt b = Solve(m, rows, from_sqp ? a.areas : start, "ipopt", options,
+      // A start's second opinion need not run to the solver's limit: where Ipopt has not
+      // converged in kSecondOpinionIterations (the 10-bar frequency problem's meeting modes:
+      // 3000 iterations, 10 s), the SQP's point stands.
+      SolverOptions second = options;
+      if (non_convex)
+        second.max_iterations = std::min(options.max_iterations, kSecondOpinionIterations);
+      Attempt b = Solve(m, rows, from_sqp ? a.areas : start, "ipopt", second,
                         label + (from_sqp ? ", then ipopt" : ", ipopt"));
       record(b);
       if (Better(b, a)) a = std::move(b);
