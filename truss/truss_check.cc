@@ -101,25 +101,48 @@ void CheckFrequencies(const TrussModel& m, const TrussAnalysis& analysis, TrussC
   }
 }
 
-// The largest utilisation and what it is.
+// The keys that move a member's row: its group's largest area where it is there, else its area
+// (which a converged sizing would have raised, or an edited file lowered).
+std::string MemberLever(const TrussModel& m, int e, double area) {
+  const int g = m.members[static_cast<size_t>(e)].group;
+  const std::string group = "structure.groups[" + std::to_string(g) + "]";
+  if (area >= m.groups[static_cast<size_t>(g)].max_area * (1 - 1e-9)) {
+    return group + ".max_area_m2 (the group is at its largest area), or that member's loads";
+  }
+  return "the area of " + group + " (\"" + m.groups[static_cast<size_t>(g)].name +
+         "\"): larger, by a sizing that converges (design.max_iterations, design.solver) or in the "
+         "file";
+}
+
+// The largest utilisation, what it is and the keys that move it.
 void Verdict(const TrussModel& m, TrussCheck& out) {
   out.utilisation_max = 0;
   out.governing = "nothing";
-  const auto take = [&out](double u, const std::string& what) {
-    if (u > out.utilisation_max) out.utilisation_max = u, out.governing = what;
+  const auto take = [&out](double u, const std::string& what, const std::string& lever) {
+    if (u > out.utilisation_max) out.utilisation_max = u, out.governing = what, out.lever = lever;
   };
-  for (int e = 0; e < m.num_members(); ++e) {
+  for (int e = 0; e < m.num_members() && !out.cases.empty(); ++e) {
     const TrussMemberCheck& mc = out.members[static_cast<size_t>(e)];
-    if (out.cases.empty()) break;
-    take(mc.utilisation, "member " + m.MemberName(e) + " (" + mc.governed_by + ", case " +
-                             m.cases[static_cast<size_t>(mc.governing_case)].name + ")");
+    take(mc.utilisation,
+         "member " + m.MemberName(e) + " (" + mc.governed_by + ", case " +
+             m.cases[static_cast<size_t>(mc.governing_case)].name + ")",
+         MemberLever(m, e, mc.area));
   }
-  for (const TrussLimitCheck& d : out.displacements) {
-    take(d.utilisation, "displacement of " + d.what + " (case " +
-                            m.cases[static_cast<size_t>(std::max(d.governing_case, 0))].name + ")");
+  for (size_t k = 0; k < out.displacements.size(); ++k) {
+    const TrussLimitCheck& d = out.displacements[k];
+    take(d.utilisation,
+         "displacement of " + d.what + " (case " +
+             m.cases[static_cast<size_t>(std::max(d.governing_case, 0))].name + ")",
+         "structure.limits.displacements[" + std::to_string(k) +
+             "].max_m, or the groups' max_area_m2");
   }
-  for (const TrussLimitCheck& f : out.frequencies) take(f.utilisation, "frequency of " + f.what);
+  for (size_t k = 0; k < out.frequencies.size(); ++k) {
+    take(out.frequencies[k].utilisation, "frequency of " + out.frequencies[k].what,
+         "structure.limits.min_frequencies_hz[" + std::to_string(k) +
+             "], structure.node_masses, or the groups' max_area_m2");
+  }
   out.pass = out.utilisation_max <= 1 + kTrussPassTolerance;
+  if (out.pass) out.lever.clear();
 }
 
 }  // namespace

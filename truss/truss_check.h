@@ -42,6 +42,7 @@ struct TrussCheck {
   std::vector<TrussLimitCheck> frequencies;
   double utilisation_max = 0;
   std::string governing;  // what has utilisation_max: "member 3-4 (buckling, case heavy)"
+  std::string lever;      // where it fails: the keys that move the governing row
   bool pass = false;      // utilisation_max <= 1 + kTrussPassTolerance
 
   // Each member's area as checked [m^2].

@@ -174,6 +174,7 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
         {"pass", d.check.pass},
         {"utilisation_max", d.check.utilisation_max},
         {"governing", d.check.governing},
+        {"lever", d.check.lever},
         {"tolerance", kTrussPassTolerance}}}};
   os << out.dump(2) << "\n";
 }
@@ -219,6 +220,7 @@ std::string TrussDesignSummary(const TrussDesign& d) {
   }
   os << (d.check.pass ? "PASS" : "FAIL") << ": utilisation_max "
      << Format("%.6f", d.check.utilisation_max) << " (" << d.check.governing << ")\n";
+  if (!d.check.pass) os << "what moves it: " << d.check.lever << "\n";
   return os.str();
 }
 

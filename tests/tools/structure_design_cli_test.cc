@@ -101,6 +101,9 @@ TEST_CASE("check: a structure's design file checked as written, an edited area n
   CHECK(failed["edited_members"] == nlohmann::json::array({"5-3"}));
   CHECK(failed["members"][0]["utilisation"].get<double>() > 1.5);
   CHECK(failed["verdict"]["pass"] == false);
+  // The lever: member 1's group, which the sizing would have raised (it has no largest area).
+  CHECK_THAT(failed["verdict"]["lever"].get<std::string>(), Catch::Contains("structure.groups[0]"));
+  CHECK_THAT(r.out, Catch::Contains("what moves it: the area of structure.groups[0]"));
   // The loads are still carried: the supports' vertical reactions sum to the two loads.
   double vertical = 0;
   for (const auto& s : failed["cases"][0]["reactions"]) vertical += s["force_n"][1].get<double>();
