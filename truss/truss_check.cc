@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace tbridge {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 // The frequencies reported where no limit asks for more.
 constexpr int kReportedModes = 6;
 
@@ -25,8 +26,7 @@ std::pair<double, std::string> MemberUtilisation(const TrussModel& m, int e, dou
   if (g.kind == TrussKind::kString) return {1 - n / (g.allowed_tension * a), "slack"};
   std::pair<double, std::string> out{-n / (g.allowed_compression * a), "compression"};
   if (g.euler) {
-    const double euler = kPi * m.youngs_modulus * a * a / (4 * member.length * member.length);
-    const double u = -n * m.buckling_factor / euler;
+    const double u = -n * m.buckling_factor / m.EulerLoad(e, a);
     if (u > out.first) out = {u, "buckling"};
   }
   return out;

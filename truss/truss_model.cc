@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/error.h"
 
@@ -156,6 +157,11 @@ Eigen::VectorXd TrussModel::WeightPerArea(int g) const {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(num_free);
   for (const int e : groups[static_cast<size_t>(g)].members) AddWeight(e, 1.0, w);
   return w;
+}
+
+double TrussModel::EulerLoad(int e, double area) const {
+  const double length = members[static_cast<size_t>(e)].length;
+  return std::numbers::pi * youngs_modulus * area * area / (4 * length * length);
 }
 
 std::string TrussModel::MemberName(int e) const {

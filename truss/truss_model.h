@@ -85,6 +85,8 @@ struct TrussModel {
   void AddWeight(int e, double area, Eigen::VectorXd& f) const;
   // The self-weight's load vector per unit area of group g, unfactored.
   Eigen::VectorXd WeightPerArea(int g) const;
+  // Member e's Euler load at `area` [N]: pi^2 E I / L^2 of a solid round section, I = A^2 / (4 pi).
+  double EulerLoad(int e, double area) const;
   // "i-j" with 1-based node numbers.
   std::string MemberName(int e) const;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 
 #include "core/error.h"
 #include "design/solvers.h"
@@ -32,7 +33,7 @@ const char* TrussRowName(TrussRowKind kind) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 // The certificate's tolerance on stationarity, feasibility and complementarity: the rows are
 // utilisations' complements, so 1e-6 is a millionth of a member's resistance.
 constexpr double kCertificateTolerance = 1e-6;
@@ -69,9 +70,8 @@ double MemberRow(const TrussModel& m, const TrussRow& row, double force, double 
     case TrussRowKind::kCompression:
       s = 1 / g.allowed_compression, constant = 1;
       break;
-    case TrussRowKind::kBuckling:  // P_E / gamma = pi E A^2 / (4 L^2 gamma)
-      s = 4 * e.length * e.length * m.buckling_factor / (kPi * m.youngs_modulus), constant = 1,
-      p = 2;
+    case TrussRowKind::kBuckling:  // the Euler load is P_E(1) A^2 (TrussModel::EulerLoad)
+      s = m.buckling_factor / m.EulerLoad(row.index, 1.0), constant = 1, p = 2;
       break;
     case TrussRowKind::kTaut:
       s = 1 / g.allowed_tension;

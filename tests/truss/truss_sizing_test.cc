@@ -65,6 +65,10 @@ TEST_CASE("truss sizing: every row's derivative agrees with central differences"
     c.design.self_weight = true;
     const TrussModel weighed = BuildTrussModel(c);
     CHECK(JacobianError(weighed, Spread(weighed, 2e-3)) < 1e-6);
+    // And with every member's Euler buckling row (TrussModel::EulerLoad, quadratic in the area).
+    for (StructureGroupConfig& g : c.structure->groups) g.buckling = "euler";
+    const TrussModel buckling = BuildTrussModel(c);
+    CHECK(JacobianError(buckling, Spread(buckling, 2e-3)) < 1e-6);
   }
 }
 
