@@ -104,6 +104,7 @@ void RejectDesignKeysWithoutMembers(const StructureConfig& c) {
   if (!c.groups.empty()) refuse("groups");
   if (!c.load_cases.empty()) refuse("load_cases");
   if (!c.limits.displacements.empty() || !c.limits.min_frequencies_hz.empty()) refuse("limits");
+  if (c.prestress != "none") refuse("prestress");
 }
 
 void CheckGroups(const StructureConfig& c) {

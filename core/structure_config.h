@@ -106,6 +106,9 @@ struct StructureConfig {
   std::vector<StructureGroupConfig> groups;
   std::vector<StructureLoadCase> load_cases;
   StructureLimits limits;
+  // "none": each member's rest length is its drawn length; "variable": the amplitudes of the
+  // structure's self-stress states are variables of the sizing beside the areas.
+  std::string prestress = "none";
 
   // Whether this is the designable form (`members` given).
   bool Designable() const { return !members.empty(); }

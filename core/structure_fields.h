@@ -106,6 +106,13 @@ void DescribeDesignable(S& c, V& v, const N& nodes) {
            });
          });
   v.Section("limits", c.limits);
+  v.Choice(KeyInfo{"prestress", "–",
+                   "`\"none\"`: each member's rest length is its drawn length; `\"variable\"`: "
+                   "the amplitudes of the structure's self-stress states (member forces that "
+                   "balance at every node without load, no support taking any) are sized with "
+                   "the areas, their geometric stiffness N0 / L in every analysis; the design "
+                   "file gives each member's `prestress_n` and `rest_length_m`"},
+           c.prestress, {"none", "variable"});
 }
 
 template <class S, class V>

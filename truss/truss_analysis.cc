@@ -17,12 +17,15 @@ int DofOf(const TrussModel& m, int node, int axis) {
 
 }  // namespace
 
-TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& member_areas)
-    : model_(model), areas_(member_areas) {
+TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& member_areas,
+                             const Eigen::VectorXd& prestress)
+    : model_(model),
+      areas_(member_areas),
+      prestress_(prestress.size() ? prestress : Eigen::VectorXd::Zero(model.num_members())) {
   std::vector<Eigen::Triplet<double>> entries;
   for (int e = 0; e < model_.num_members(); ++e) {
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    const double k = model_.youngs_modulus * areas_[e] / m.length;
+    const Eigen::Matrix3d block = Block(e, areas_[e], prestress_[e]);
     const int ends[2] = {m.i, m.j};
     for (int p = 0; p < 2; ++p) {
       for (int q = 0; q < 2; ++q) {
@@ -30,8 +33,7 @@ TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& mem
         for (int a = 0; a < model_.dim; ++a) {
           for (int b = 0; b < model_.dim; ++b) {
             const int r = DofOf(model_, ends[p], a), c = DofOf(model_, ends[q], b);
-            if (r >= 0 && c >= 0)
-              entries.emplace_back(r, c, sign * k * m.direction[a] * m.direction[b]);
+            if (r >= 0 && c >= 0) entries.emplace_back(r, c, sign * block(a, b));
           }
         }
       }
@@ -43,27 +45,71 @@ TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& mem
   const Eigen::VectorXd pivots = factor_->vectorD();
   const double largest = pivots.cwiseAbs().maxCoeff();
   // A pivot this far below the largest is a mechanism, not a soft member: the areas' range of a
-  // sizing is a few decades, round-off 1e-16.
+  // sizing is a few decades, round-off 1e-16 (a prestress's geometric stiffness, N0 / L against
+  // E A / L, is a strain: 1e-5 and more).
   if (factor_->info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * largest)) {
-    throw ModelError("the structure is a mechanism: its stiffness matrix (" +
-                     std::to_string(model_.num_free) +
-                     " free degrees of freedom) is singular; pin it or add members");
+    throw ModelError(
+        "the structure is a mechanism: its stiffness matrix (" + std::to_string(model_.num_free) +
+        " free degrees of freedom) is " +
+        (pivots.minCoeff() < -1e-12 * largest ? "not positive definite" : "singular") +
+        "; pin it or add members" +
+        (model_.num_prestress() > 0 ? ", or prestress it (its strings in tension)" : ""));
   }
 }
 
-double TrussAnalysis::Elongation(int e, const Eigen::VectorXd& u) const {
+Eigen::Matrix3d TrussAnalysis::Block(int e, double area, double n0) const {
   const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  double s = 0;
+  const Eigen::Matrix3d dd = m.direction * m.direction.transpose();
+  return model_.youngs_modulus * area / m.length * dd +
+         n0 / m.length * (Eigen::Matrix3d::Identity() - dd);
+}
+
+Eigen::Vector3d TrussAnalysis::Relative(int e, const Eigen::VectorXd& u) const {
+  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
   for (int a = 0; a < model_.dim; ++a) {
     const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
-    s += m.direction[a] * ((fj >= 0 ? u[fj] : 0.0) - (fi >= 0 ? u[fi] : 0.0));
+    w[a] = (fj >= 0 ? u[fj] : 0.0) - (fi >= 0 ? u[fi] : 0.0);
   }
-  return s;
+  return w;
+}
+
+double TrussAnalysis::Elongation(int e, const Eigen::VectorXd& u) const {
+  return model_.members[static_cast<size_t>(e)].direction.dot(Relative(e, u));
+}
+
+Eigen::Vector3d TrussAnalysis::Pull(int e, const Eigen::VectorXd& u) const {
+  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+  return Force(e, u) * m.direction + Block(e, 0.0, prestress_[e]) * Relative(e, u);
 }
 
 double TrussAnalysis::Force(int e, const Eigen::VectorXd& u) const {
   const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  return model_.youngs_modulus * areas_[e] / m.length * Elongation(e, u);
+  return prestress_[e] + model_.youngs_modulus * areas_[e] / m.length * Elongation(e, u);
+}
+
+Eigen::VectorXd TrussAnalysis::StiffnessTimes(int v, const Eigen::VectorXd& u) const {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(model_.num_free);
+  const int ng = model_.num_groups();
+  const auto add = [&](int e, double area, double n0) {
+    const TrussMember& m = model_.members[static_cast<size_t>(e)];
+    // On node i: +pull, on node j: -pull.
+    const Eigen::Vector3d pull = Block(e, area, n0) * Relative(e, u);
+    for (int a = 0; a < model_.dim; ++a) {
+      const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
+      if (fi >= 0) out[fi] -= pull[a];
+      if (fj >= 0) out[fj] += pull[a];
+    }
+  };
+  if (v < ng) {
+    for (const int e : model_.groups[static_cast<size_t>(v)].members) add(e, 1.0, 0.0);
+  } else {
+    for (int e = 0; e < model_.num_members(); ++e) {
+      const double n0 = model_.self_stress(e, v - ng);
+      if (n0 != 0) add(e, 0.0, n0);
+    }
+  }
+  return out;
 }
 
 TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
@@ -76,28 +122,23 @@ TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
   r.forces.resize(nm);
   for (int e = 0; e < nm; ++e) r.forces[e] = Force(e, r.u);
   if (!sensitivities) return r;
-  // K du/dA_g = df/dA_g - (dK/dA_g) u, where (dK/dA_g) u gathers each member's E / L times its
-  // elongation along its direction.
-  r.du.resize(model_.num_free, ng);
-  for (int g = 0; g < ng; ++g) {
-    Eigen::VectorXd rhs = lc.factor * model_.WeightPerArea(g);
-    for (const int e : model_.groups[static_cast<size_t>(g)].members) {
-      const TrussMember& m = model_.members[static_cast<size_t>(e)];
-      const double t = model_.youngs_modulus / m.length * Elongation(e, r.u);
-      for (int a = 0; a < model_.dim; ++a) {
-        const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
-        if (fi >= 0) rhs[fi] += t * m.direction[a];
-        if (fj >= 0) rhs[fj] -= t * m.direction[a];
-      }
-    }
-    r.du.col(g) = factor_->solve(rhs);
+  // K du/dv = df/dv - (dK/dv) u: the self-weight moves with a group's area, the stiffness with
+  // it and with each self-stress amplitude (its geometric stiffness).
+  const int nv = model_.num_variables();
+  r.du.resize(model_.num_free, nv);
+  for (int v = 0; v < nv; ++v) {
+    Eigen::VectorXd rhs = -StiffnessTimes(v, r.u);
+    if (v < ng) rhs += lc.factor * model_.WeightPerArea(v);
+    r.du.col(v) = factor_->solve(rhs);
   }
-  r.dforces.resize(nm, ng);
+  r.dforces.resize(nm, nv);
   for (int e = 0; e < nm; ++e) {
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
     const double k = model_.youngs_modulus * areas_[e] / m.length;
-    for (int g = 0; g < ng; ++g) r.dforces(e, g) = k * Elongation(e, r.du.col(g));
+    for (int v = 0; v < nv; ++v) r.dforces(e, v) = k * Elongation(e, r.du.col(v));
     r.dforces(e, m.group) += model_.youngs_modulus / m.length * Elongation(e, r.u);
+    for (int q = 0; q < model_.num_prestress(); ++q)
+      r.dforces(e, ng + q) += model_.self_stress(e, q);
   }
   return r;
 }
@@ -119,20 +160,25 @@ void TrussAnalysis::AddEnds(int e, const Eigen::Matrix3d& same, const Eigen::Mat
   }
 }
 
-Eigen::MatrixXd TrussAnalysis::StiffnessPerArea(int g) const {
+Eigen::MatrixXd TrussAnalysis::StiffnessPerVariable(int v) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(model_.num_free, model_.num_free);
-  for (const int e : model_.groups[static_cast<size_t>(g)].members) {
-    const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    const Eigen::Matrix3d dd =
-        model_.youngs_modulus / m.length * m.direction * m.direction.transpose();
-    AddEnds(e, dd, -dd, out);
+  const int ng = model_.num_groups();
+  const auto add = [&](int e, double area, double n0) {
+    const Eigen::Matrix3d block = Block(e, area, n0);
+    AddEnds(e, block, -block, out);
+  };
+  if (v < ng) {
+    for (const int e : model_.groups[static_cast<size_t>(v)].members) add(e, 1.0, 0.0);
+  } else {
+    for (int e = 0; e < model_.num_members(); ++e) add(e, 0.0, model_.self_stress(e, v - ng));
   }
   return out;
 }
 
-Eigen::MatrixXd TrussAnalysis::MassPerArea(int g) const {
+Eigen::MatrixXd TrussAnalysis::MassPerVariable(int v) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(model_.num_free, model_.num_free);
-  for (const int e : model_.groups[static_cast<size_t>(g)].members) {
+  if (v >= model_.num_groups()) return out;  // a prestress moves no mass
+  for (const int e : model_.groups[static_cast<size_t>(v)].members) {
     const double per_area = model_.density * model_.members[static_cast<size_t>(e)].length;
     AddEnds(e, per_area / 3 * Eigen::Matrix3d::Identity(),
             per_area / 6 * Eigen::Matrix3d::Identity(), out);
@@ -167,9 +213,9 @@ TrussModes TrussAnalysis::Modes(int count, bool sensitivities) const {
   out.eigenvalues = solver.eigenvalues().head(n);
   out.shapes = solver.eigenvectors().leftCols(n);
   if (!sensitivities) return out;
-  out.deigenvalues.resize(n, model_.num_groups());
-  for (int g = 0; g < model_.num_groups(); ++g) {
-    const Eigen::MatrixXd dk = StiffnessPerArea(g), dm = MassPerArea(g);
+  out.deigenvalues.resize(n, model_.num_variables());
+  for (int g = 0; g < model_.num_variables(); ++g) {
+    const Eigen::MatrixXd dk = StiffnessPerVariable(g), dm = MassPerVariable(g);
     for (int k2 = 0; k2 < n; ++k2) {
       const Eigen::VectorXd phi = out.shapes.col(k2);
       out.deigenvalues(k2, g) = phi.dot(dk * phi) - out.eigenvalues[k2] * phi.dot(dm * phi);
@@ -179,10 +225,11 @@ TrussModes TrussAnalysis::Modes(int count, bool sensitivities) const {
 }
 
 Eigen::VectorXd TrussAnalysis::ModeCoupling(const TrussModes& modes, int a, int b) const {
-  Eigen::VectorXd out(model_.num_groups());
+  Eigen::VectorXd out(model_.num_variables());
   const Eigen::VectorXd pa = modes.shapes.col(a), pb = modes.shapes.col(b);
-  for (int g = 0; g < model_.num_groups(); ++g) {
-    out[g] = pa.dot(StiffnessPerArea(g) * pb) - modes.eigenvalues[a] * pa.dot(MassPerArea(g) * pb);
+  for (int g = 0; g < model_.num_variables(); ++g) {
+    out[g] = pa.dot(StiffnessPerVariable(g) * pb) -
+             modes.eigenvalues[a] * pa.dot(MassPerVariable(g) * pb);
   }
   return out;
 }

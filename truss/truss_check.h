@@ -33,6 +33,7 @@ struct TrussLimitCheck {
 };
 
 struct TrussCheck {
+  Eigen::VectorXd prestress;                // per member [N], as checked: a self-stress, or 0
   std::vector<TrussCaseResponse> cases;     // displacements and member forces, by case
   std::vector<Eigen::Matrix3Xd> reactions;  // by case: per node, zero where free [N]
   double equilibrium_residual = 0;          // |sum of reactions and loads| over cases [N]
@@ -49,7 +50,9 @@ struct TrussCheck {
   Eigen::VectorXd Areas() const;
 };
 
-// `member_areas`: each member's area [m^2] (its group's, or its own in an edited design file).
-TrussCheck CheckTruss(const TrussModel& model, const Eigen::VectorXd& member_areas);
+// `member_areas`: each member's area [m^2] (its group's, or its own in an edited design file);
+// `prestress`: each member's prestress force [N], a self-stress (empty: none).
+TrussCheck CheckTruss(const TrussModel& model, const Eigen::VectorXd& member_areas,
+                      const Eigen::VectorXd& prestress = Eigen::VectorXd());
 
 }  // namespace tbridge

@@ -1,5 +1,6 @@
 #include "truss/truss_design.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -20,7 +21,7 @@ TrussDesign DesignTruss(const Config& config) {
   TrussDesign d{config, BuildTrussModel(config), {}, {}, {}};
   d.sizing = SizeTruss(d.model, config.design.solver, config.design.tolerance,
                        config.design.max_iterations);
-  d.check = CheckTruss(d.model, d.model.MemberAreas(d.sizing.group_areas));
+  d.check = CheckTruss(d.model, d.model.MemberAreas(d.sizing.group_areas), d.sizing.prestress);
   return d;
 }
 
@@ -66,6 +67,39 @@ TrussSizing SizingOf(const nlohmann::json& file, const TrussModel& m) {
   return s;
 }
 
+// Each member's prestress as the file gives it (members[].prestress_n), held to be a self-stress:
+// an edit that leaves a node unbalanced is refused, naming the node (the linear analysis about
+// the prestressed state needs it in equilibrium).
+Eigen::VectorXd PrestressOf(const nlohmann::json& members, const TrussModel& m) {
+  Eigen::VectorXd n0 = Eigen::VectorXd::Zero(m.num_members());
+  for (int e = 0; e < m.num_members(); ++e) {
+    const nlohmann::json& member = members.at(static_cast<size_t>(e));
+    const std::string path = "members[" + std::to_string(e) + "].prestress_n";
+    if (m.num_prestress() > 0) {
+      n0[e] = NumberAt(member, "prestress_n", path);
+    } else if (member.is_object() && member.contains("prestress_n") &&
+               !(member.at("prestress_n").is_number() && member.at("prestress_n") == 0)) {
+      throw ConfigError(path, Show(member.at("prestress_n")),
+                        "0: config.structure.prestress is \"none\" (set it to \"variable\" "
+                        "and re-design to prestress the structure)");
+    }
+  }
+  const Eigen::VectorXd unbalanced = m.Equilibrium() * n0;
+  int worst = 0;
+  // Round-off of the forces written with 17 digits: 1e-9 of the largest.
+  if (unbalanced.size() > 0 &&
+      unbalanced.cwiseAbs().maxCoeff(&worst) > 1e-9 * std::max(1.0, n0.cwiseAbs().maxCoeff())) {
+    const int node = worst / m.dim;
+    throw ConfigError("members[].prestress_n", "(as edited)",
+                      "a self-stress: the members' prestress leaves " +
+                          std::to_string(unbalanced[worst]) + " N unbalanced at node " +
+                          std::to_string(node + 1) +
+                          "; change the prestress of the members at a node together so that it "
+                          "stays in equilibrium, or re-design");
+  }
+  return n0;
+}
+
 }  // namespace
 
 TrussDesign CheckTrussDesignFile(const nlohmann::json& file) {
@@ -84,6 +118,7 @@ TrussDesign CheckTrussDesignFile(const nlohmann::json& file) {
             std::to_string(d.model.num_members()) + ")");
   }
   d.sizing = SizingOf(file, d.model);
+  d.sizing.prestress = PrestressOf(members, d.model);
   Eigen::VectorXd areas(d.model.num_members());
   for (int e = 0; e < d.model.num_members(); ++e) {
     const std::string path = "members[" + std::to_string(e) + "].area";
@@ -94,7 +129,7 @@ TrussDesign CheckTrussDesignFile(const nlohmann::json& file) {
     const double group = d.sizing.group_areas[d.model.members[static_cast<size_t>(e)].group];
     if (areas[e] != group) d.edited.push_back(e);
   }
-  d.check = CheckTruss(d.model, areas);
+  d.check = CheckTruss(d.model, areas, d.sizing.prestress);
   return d;
 }
 

@@ -1,5 +1,7 @@
 #include "truss/truss_model.h"
 
+#include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -58,6 +60,32 @@ void NumberDofs(const StructureConfig& s, TrussModel& m) {
       m.dof[static_cast<size_t>(k * m.dim + a)] = m.num_free++;
     }
   }
+}
+
+// An orthonormal basis of the self-stress states: the null space of the equilibrium matrix.
+Eigen::MatrixXd SelfStressStates(const TrussModel& m) {
+  if (m.num_members() > kTrussMaxSelfStressMembers) {
+    throw ConfigError("structure.prestress", "\"variable\"",
+                      "\"none\" for a structure of " + std::to_string(m.num_members()) +
+                          " members: the self-stress states are found for at most " +
+                          std::to_string(kTrussMaxSelfStressMembers));
+  }
+  const Eigen::MatrixXd e = m.Equilibrium();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(e, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  // A singular value this far below the largest is round-off of a zero one (the equilibrium
+  // matrix's entries are direction cosines, of order 1).
+  const double tiny = 1e-10 * std::max(1.0, sv.size() ? sv[0] : 0.0) * std::sqrt(e.rows());
+  int rank = 0;
+  while (rank < sv.size() && sv[rank] > tiny) ++rank;
+  const Eigen::MatrixXd states = svd.matrixV().rightCols(m.num_members() - rank);
+  if (states.cols() == 0) {
+    throw ConfigError("structure.prestress", "\"variable\"",
+                      "\"none\": the structure has no self-stress state (no member forces are "
+                      "in equilibrium among themselves without load or support; add members that "
+                      "close a prestressable circuit)");
+  }
+  return states;
 }
 
 }  // namespace
@@ -120,7 +148,26 @@ TrussModel BuildTrussModel(const Config& config) {
     m.displacement_limits.push_back(limit);
   }
   m.min_frequencies_hz = s.limits.min_frequencies_hz;
+  if (s.prestress == "variable") m.self_stress = SelfStressStates(m);
   return m;
+}
+
+Eigen::VectorXd TrussModel::Prestress(const Eigen::VectorXd& variables) const {
+  if (num_prestress() == 0) return Eigen::VectorXd::Zero(num_members());
+  return self_stress * variables.tail(num_prestress());
+}
+
+Eigen::MatrixXd TrussModel::Equilibrium() const {
+  Eigen::MatrixXd e = Eigen::MatrixXd::Zero(dim * nodes.cols(), num_members());
+  for (int k = 0; k < num_members(); ++k) {
+    const TrussMember& m = members[static_cast<size_t>(k)];
+    for (int a = 0; a < dim; ++a) {
+      // A tension pulls node i towards j, and j towards i.
+      e(m.i * dim + a, k) += m.direction[a];
+      e(m.j * dim + a, k) -= m.direction[a];
+    }
+  }
+  return e;
 }
 
 double TrussModel::Mass(const Eigen::VectorXd& group_areas) const {

@@ -5,7 +5,10 @@
 // writes into it.
 //
 // Each member is elastic, E A / L, in the linear (small displacement) theory that the classic
-// sizing problems assume; its kind says which sign of force it may carry.
+// sizing problems assume; its kind says which sign of force it may carry. Where the prestress is
+// variable, the member forces of the self-stress states (in equilibrium with no load) are
+// variables beside the areas, and each analysis holds their geometric stiffness: a tensegrity
+// is stiff against its infinitesimal mechanisms only through them.
 #pragma once
 
 #include <Eigen/Core>
@@ -17,6 +20,10 @@
 namespace tbridge {
 
 enum class TrussKind { kString, kBar, kTruss };
+
+// The most members whose self-stress states are found (a dense SVD of the equilibrium matrix,
+// O(members^3): 3000 take a few seconds here).
+inline constexpr int kTrussMaxSelfStressMembers = 3000;
 
 // "string", "bar", "truss": the config's and the design file's word for a kind.
 const char* TrussKindName(TrussKind kind);
@@ -71,12 +78,25 @@ struct TrussModel {
   double density = 0;          // [kg/m^3]
   double gravity = 0;          // [m/s^2]; 0 where design.self_weight is off
   double buckling_factor = 1;  // design.buckling_safety_factor on the Euler load
+  // Where structure.prestress is "variable": an orthonormal basis (members x states) of the
+  // member forces in equilibrium with no load at every node, the supports' included (E t = 0):
+  // the strings carry the prestress, no support does; no columns otherwise. The sizing's variables
+  // are the group areas [m^2], then the amplitudes [N] of these states.
+  Eigen::MatrixXd self_stress;
 
   int num_members() const { return static_cast<int>(members.size()); }
   int num_groups() const { return static_cast<int>(groups.size()); }
-  // The members' mass [kg] at the groups' areas.
+  int num_prestress() const { return static_cast<int>(self_stress.cols()); }
+  int num_variables() const { return num_groups() + num_prestress(); }
+  // Each member's prestress force [N] at the sizing's variables: zero without prestress.
+  Eigen::VectorXd Prestress(const Eigen::VectorXd& variables) const;
+  // The equilibrium matrix E (dim x nodes rows, node by node, x members): E t is the net force
+  // on each node, supports included, of member forces t (tension > 0) [N].
+  Eigen::MatrixXd Equilibrium() const;
+  // The members' mass [kg] at the groups' areas (the first num_groups() entries of a sizing's
+  // variables).
   double Mass(const Eigen::VectorXd& group_areas) const;
-  // Each member's area from its group's.
+  // Each member's area from its group's (the same).
   Eigen::VectorXd MemberAreas(const Eigen::VectorXd& group_areas) const;
   // The members' mass [kg] at each member's own area.
   double MassOfMembers(const Eigen::VectorXd& member_areas) const;

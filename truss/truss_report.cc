@@ -1,5 +1,6 @@
 #include "truss/truss_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -36,6 +37,12 @@ json Displacements(const TrussModel& m, const TrussCaseResponse& r) {
   return out;
 }
 
+// The length member e is made to so that it carries prestress n0 at area a when fitted at its
+// drawn length: L / (1 + n0 / (E A)).
+double RestLength(const TrussModel& m, int e, double a, double n0) {
+  return m.members[static_cast<size_t>(e)].length / (1 + n0 / (m.youngs_modulus * a));
+}
+
 json Members(const TrussDesign& d) {
   const TrussModel& m = d.model;
   json out = json::array();
@@ -53,6 +60,8 @@ json Members(const TrussDesign& d) {
          {"length", member.length},
          {"area", c.area},
          {"mass", m.density * c.area * member.length},
+         {"prestress_n", d.check.prestress[e]},
+         {"rest_length_m", RestLength(m, e, c.area, d.check.prestress[e])},
          {"force", c.force},
          {"forces_by_case", forces},
          {"utilisation", c.utilisation},
@@ -125,6 +134,23 @@ json Solver(const TrussSizing& s) {
             {"null_space_dimension", k.null_space_dimension}}}};
 }
 
+std::string Analysis(const TrussModel& m) {
+  return m.num_prestress() > 0
+             ? "linear about the prestressed state: small displacements, each member elastic E A "
+               "/ L plus its prestress's geometric stiffness N0 / L across it; consistent member "
+               "mass"
+             : "linear: small displacements, each member elastic E A / L; consistent member mass";
+}
+
+json NotApplicable(const TrussModel& m) {
+  json out = {{"deck", "a structure has no deck"},
+              {"comfort", "no pedestrian comfort check: not a footbridge"},
+              {"dynamic_check", "no time-history runs: the limits are static and modal"}};
+  if (m.num_prestress() == 0)
+    out["prestress"] = "no self-stress: each member's rest length is its drawn length";
+  return out;
+}
+
 }  // namespace
 
 void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
@@ -162,13 +188,8 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
       {"mass", {{"structure", structure}, {"node_masses", added}, {"total", structure + added}}},
       {"solver", Solver(d.sizing)},
       {"edited_members", edited},
-      {"analysis",
-       "linear: small displacements, each member elastic E A / L; consistent member mass"},
-      {"not_applicable",
-       {{"deck", "a structure has no deck"},
-        {"comfort", "no pedestrian comfort check: not a footbridge"},
-        {"dynamic_check", "no time-history runs: the limits are static and modal"},
-        {"prestress", "no self-stress: each member's rest length is its drawn length"}}},
+      {"analysis", Analysis(m)},
+      {"not_applicable", NotApplicable(m)},
       {"verdict",
        {{"outcome", d.check.pass ? "PASS" : "FAIL"},
         {"pass", d.check.pass},
@@ -178,6 +199,30 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
         {"tolerance", kTrussPassTolerance}}}};
   os << out.dump(2) << "\n";
 }
+
+namespace {
+
+// The prestress by kind: the range of each kind's prestress force.
+std::string PrestressLine(const TrussDesign& d) {
+  const TrussModel& m = d.model;
+  std::ostringstream os;
+  os << "prestress (a self-stress, " << m.num_prestress() << " states) [kN]:";
+  for (const TrussKind kind : {TrussKind::kString, TrussKind::kBar, TrussKind::kTruss}) {
+    double lo = 0, hi = 0;
+    bool any = false;
+    for (int e = 0; e < m.num_members(); ++e) {
+      if (m.groups[static_cast<size_t>(m.members[static_cast<size_t>(e)].group)].kind != kind)
+        continue;
+      const double n = d.check.prestress[e] / 1e3;
+      lo = any ? std::min(lo, n) : n, hi = any ? std::max(hi, n) : n, any = true;
+    }
+    if (any)
+      os << " " << TrussKindName(kind) << "s " << Format("%.4g", lo) << Format(" to %.4g", hi);
+  }
+  return os.str() + "\n";
+}
+
+}  // namespace
 
 std::string TrussDesignSummary(const TrussDesign& d) {
   const TrussModel& m = d.model;
@@ -205,6 +250,7 @@ std::string TrussDesignSummary(const TrussDesign& d) {
        << " members): " << Format("%.6g", d.sizing.group_areas[g])
        << Format(", %.6g", m.density * d.sizing.group_areas[g] * group.length_sum) << "\n";
   }
+  if (m.num_prestress() > 0) os << PrestressLine(d);
   for (const TrussLimitCheck& l : d.check.displacements) {
     os << "displacement of " << l.what << ": " << Format("%.6g m", l.value) << " of "
        << Format("%.6g m", l.limit) << Format(" (%.4f)", l.utilisation) << "\n";

@@ -116,18 +116,18 @@ std::vector<TrussRow> TrussRows(const TrussModel& m) {
 }
 
 Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>& rows,
-                               const Eigen::VectorXd& group_areas, Eigen::MatrixXd* jacobian) {
+                               const Eigen::VectorXd& variables, Eigen::MatrixXd* jacobian) {
   const bool grad = jacobian != nullptr;
-  const TrussAnalysis analysis(m, m.MemberAreas(group_areas));
+  const TrussAnalysis analysis(m, m.MemberAreas(variables), m.Prestress(variables));
   std::vector<TrussCaseResponse> responses;
   for (int c = 0; c < static_cast<int>(m.cases.size()); ++c)
     responses.push_back(analysis.Solve(c, grad));
   TrussModes modes;
   if (ModesAsked(m) > 0) modes = analysis.Modes(ModesAsked(m), grad);
-  const int ng = m.num_groups();
+  const int nv = m.num_variables();
   Eigen::VectorXd g(static_cast<int>(rows.size()));
-  if (grad) jacobian->setZero(static_cast<int>(rows.size()), ng);
-  Eigen::RowVectorXd row_grad(ng);
+  if (grad) jacobian->setZero(static_cast<int>(rows.size()), nv);
+  Eigen::RowVectorXd row_grad(nv);
   for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
     const TrussRow& row = rows[static_cast<size_t>(r)];
     row_grad.setZero();
@@ -144,7 +144,7 @@ Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>&
       if (grad) row_grad = -row.sign * res.du.row(d.dof) / d.max;
     } else {
       const TrussCaseResponse& res = responses[static_cast<size_t>(row.load_case)];
-      const double area = group_areas[m.members[static_cast<size_t>(row.index)].group];
+      const double area = variables[m.members[static_cast<size_t>(row.index)].group];
       const Eigen::RowVectorXd dforce =
           grad ? Eigen::RowVectorXd(res.dforces.row(row.index)) : row_grad;
       g[r] = MemberRow(m, row, res.forces[row.index], area, dforce, grad ? &row_grad : nullptr);
@@ -156,22 +156,33 @@ Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>&
 
 namespace {
 
-// The program in the variables x_g = A_g / ref_g (each starts near 1), the mass over the
-// start's: the solvers' tolerances then read alike on every structure.
+// The largest magnitude of the entries of v, or 1 where all are 0.
+double Largest(const Eigen::VectorXd& v) {
+  const double big = v.size() ? v.cwiseAbs().maxCoeff() : 0.0;
+  return big > 0 ? big : 1.0;
+}
+
+// The program in the variables x_v = v / ref_v, the mass over the start's: each area over the
+// start's, every self-stress amplitude over the start's largest (an amplitude may start at 0 or
+// below). The solvers' tolerances then read alike on every structure.
 class TrussProblem : public NlpProblem {
  public:
-  TrussProblem(const TrussModel& m, std::vector<TrussRow> rows, Eigen::VectorXd ref)
-      : m_(m), rows_(std::move(rows)), ref_(std::move(ref)), mass_ref_(m.Mass(ref_)) {
+  TrussProblem(const TrussModel& m, std::vector<TrussRow> rows, const Eigen::VectorXd& start)
+      : m_(m), rows_(std::move(rows)), ref_(start), mass_ref_(m.Mass(start)) {
+    const int np = m_.num_prestress();
+    if (np > 0) ref_.tail(np).setConstant(Largest(start.tail(np)));
+    start_ = start.cwiseQuotient(ref_);
     for (int r = 0; r < num_constraints(); ++r) {
       for (int g = 0; g < num_variables(); ++g) pattern_.emplace_back(r, g);
     }
   }
-  int num_variables() const override { return m_.num_groups(); }
+  int num_variables() const override { return m_.num_variables(); }
   int num_constraints() const override { return static_cast<int>(rows_.size()); }
   void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override {
-    lo.resize(num_variables());
-    hi.resize(num_variables());
-    for (int g = 0; g < num_variables(); ++g) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    lo = Eigen::VectorXd::Constant(num_variables(), -kInf);
+    hi = Eigen::VectorXd::Constant(num_variables(), kInf);
+    for (int g = 0; g < m_.num_groups(); ++g) {
       lo[g] = m_.groups[static_cast<size_t>(g)].min_area / ref_[g];
       hi[g] = m_.groups[static_cast<size_t>(g)].max_area / ref_[g];
     }
@@ -186,7 +197,8 @@ class TrussProblem : public NlpProblem {
   void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x,
                          Eigen::Ref<Eigen::VectorXd> grad) const override {
     (void)x;
-    for (int g = 0; g < num_variables(); ++g) {
+    grad.setZero();  // a prestress weighs nothing
+    for (int g = 0; g < m_.num_groups(); ++g) {
       grad[g] = m_.density * m_.groups[static_cast<size_t>(g)].length_sum * ref_[g] / mass_ref_;
     }
   }
@@ -211,8 +223,10 @@ class TrussProblem : public NlpProblem {
   void HessianValues(const Eigen::Ref<const Eigen::VectorXd>&, double, const double*,
                      double*) const override {}
 
-  Eigen::VectorXd Areas(const Eigen::VectorXd& x) const { return x.cwiseProduct(ref_); }
-  const Eigen::VectorXd& ref() const { return ref_; }
+  // The sizing's variables (TrussModel::num_variables) at x.
+  Eigen::VectorXd Variables(const Eigen::VectorXd& x) const { return x.cwiseProduct(ref_); }
+  // The start in x.
+  const Eigen::VectorXd& Start() const { return start_; }
 
  private:
   // The rows and their Jacobian in x at x, kept for the next call at the same point.
@@ -226,7 +240,7 @@ class TrussProblem : public NlpProblem {
 
   const TrussModel& m_;
   std::vector<TrussRow> rows_;
-  Eigen::VectorXd ref_;
+  Eigen::VectorXd ref_, start_;
   double mass_ref_;
   Pattern pattern_, no_hessian_;
   mutable Eigen::VectorXd x_, g_;
@@ -242,28 +256,91 @@ Eigen::VectorXd Clamped(const TrussModel& m, double area) {
   return a;
 }
 
+// The sizing's variables: the group areas, then the self-stress amplitudes.
+Eigen::VectorXd Variables(const Eigen::VectorXd& areas, const Eigen::VectorXd& amplitudes) {
+  Eigen::VectorXd v(areas.size() + amplitudes.size());
+  v << areas, amplitudes;
+  return v;
+}
+
+// The self-stress amplitudes nearest to strings in tension and bars in compression (the
+// least-squares projection of those signs on the orthonormal states), scaled to a largest
+// member force of 1 N; empty without prestress.
+Eigen::VectorXd PrestressDirection(const TrussModel& m) {
+  Eigen::VectorXd signs = Eigen::VectorXd::Zero(m.num_members());
+  for (int e = 0; e < m.num_members(); ++e) {
+    const TrussKind kind =
+        m.groups[static_cast<size_t>(m.members[static_cast<size_t>(e)].group)].kind;
+    signs[e] = kind == TrussKind::kString ? 1.0 : kind == TrussKind::kBar ? -1.0 : 0.0;
+  }
+  const Eigen::VectorXd amplitudes = m.self_stress.transpose() * signs;
+  return amplitudes / Largest(m.self_stress * amplitudes);
+}
+
+// The rows' worst at a start: the largest utilisation of a strength or displacement row, and
+// whether a frequency row or a sign row (taut, no tension) fails.
+struct StartShortfall {
+  double strength = 0, displacement = 0;
+  bool frequency = false, sign = false;
+};
+
+StartShortfall ShortfallOf(const std::vector<TrussRow>& rows, const Eigen::VectorXd& g) {
+  StartShortfall s;
+  for (int r = 0; r < g.size(); ++r) {
+    switch (rows[static_cast<size_t>(r)].kind) {
+      case TrussRowKind::kFrequency:
+        s.frequency = s.frequency || g[r] < 0;
+        break;
+      case TrussRowKind::kTaut:
+      case TrussRowKind::kNoTension:
+        s.sign = s.sign || g[r] < 0;
+        break;
+      case TrussRowKind::kDisplacement:
+        s.displacement = std::max(s.displacement, 1 - g[r]);
+        break;
+      default:
+        s.strength = std::max(s.strength, 1 - g[r]);
+    }
+  }
+  return s;
+}
+
 // One area for every group, raised until every row holds: a stress or displacement row's
 // utilisation falls as 1 / area without self-weight (so one scaling nearly does it), a
-// frequency's rises with the stiffness over the mass. A few dozen analyses at most.
+// frequency's rises with the stiffness over the mass. A prestress, where it is variable, starts
+// at the largest load and is raised where a string goes slack or a mechanism's displacement
+// is too large (its stiffness is the prestress's). A few dozen analyses at most.
 Eigen::VectorXd UniformStart(const TrussModel& m, const std::vector<TrussRow>& rows) {
   double area = 0;
   for (const TrussGroup& g : m.groups) area = std::max(area, g.min_area);
+  const Eigen::VectorXd direction = PrestressDirection(m);
+  double level = 1;  // [N]
+  for (const TrussCase& c : m.cases) level = std::max(level, Largest(c.loads));
   for (int k = 0; k < 60; ++k) {
-    const Eigen::VectorXd g = TrussRowValues(m, rows, Clamped(m, area), nullptr);
-    double worst = 0;  // the largest utilisation of a row with a bound of 1 - g
-    bool frequency_short = false;
-    for (int r = 0; r < g.size(); ++r) {
-      const TrussRowKind kind = rows[static_cast<size_t>(r)].kind;
-      if (kind == TrussRowKind::kFrequency) {
-        frequency_short = frequency_short || g[r] < 0;
-      } else if (kind != TrussRowKind::kTaut && kind != TrussRowKind::kNoTension) {
-        worst = std::max(worst, 1 - g[r]);
-      }
+    Eigen::VectorXd g;
+    try {
+      g = TrussRowValues(m, rows, Variables(Clamped(m, area), level * direction), nullptr);
+    } catch (const ModelError&) {
+      if (m.num_prestress() == 0) throw;
+      level *= 2;  // a mechanism the prestress does not yet stiffen enough
+      continue;
     }
-    if (worst <= 1 && !frequency_short) break;
-    area *= std::max({worst * 1.01, frequency_short ? 1.5 : 1.0, 1.0});
+    const StartShortfall s = ShortfallOf(rows, g);
+    const double worst = std::max(s.strength, s.displacement);
+    if (worst <= 1 && !s.frequency && !s.sign) break;
+    area *= std::max({worst * 1.01, s.frequency ? 1.5 : 1.0, 1.0});
+    if (m.num_prestress() > 0) {
+      level *= std::max({s.sign ? 2.0 : 1.0, s.displacement > 1 ? s.displacement * 1.01 : 1.0});
+    }
   }
-  return Clamped(m, area);
+  return Variables(Clamped(m, area), level * direction);
+}
+
+// `start` with its group areas replaced by `areas`.
+Eigen::VectorXd WithAreas(const Eigen::VectorXd& start, const Eigen::VectorXd& areas) {
+  Eigen::VectorXd v = start;
+  v.head(areas.size()) = areas;
+  return v;
 }
 
 // The fully stressed design (each group's area scaled by its members' largest stress or buckling
@@ -292,12 +369,7 @@ Eigen::VectorXd FullyStressedStart(const TrussModel& m, const std::vector<TrussR
     }
   }
   for (int k = 0; k < 20; ++k) {
-    const Eigen::VectorXd g = TrussRowValues(m, rows, a, nullptr);
-    double worst = 0;
-    for (int r = 0; r < g.size(); ++r) {
-      if (rows[static_cast<size_t>(r)].kind == TrussRowKind::kDisplacement)
-        worst = std::max(worst, 1 - g[r]);
-    }
+    const double worst = ShortfallOf(rows, TrussRowValues(m, rows, a, nullptr)).displacement;
     if (worst <= 1) break;
     for (int gi = 0; gi < m.num_groups(); ++gi)
       a[gi] = std::min(a[gi] * worst * 1.01, m.groups[static_cast<size_t>(gi)].max_area);
@@ -355,7 +427,7 @@ KktCertificate Certify(const TrussProblem& problem, const Eigen::VectorXd& x) {
 }
 
 struct Attempt {
-  Eigen::VectorXd areas;
+  Eigen::VectorXd variables;  // the group areas, then the self-stress amplitudes
   SolverOutcome outcome;
   KktCertificate kkt;
   double mass = 0;
@@ -374,7 +446,7 @@ bool Better(const Attempt& a, const Attempt& b) {
 Attempt Solve(const TrussModel& m, const std::vector<TrussRow>& rows, const Eigen::VectorXd& start,
               const std::string& solver, const SolverOptions& options, const std::string& label) {
   const TrussProblem problem(m, rows, start);
-  Eigen::VectorXd x = Eigen::VectorXd::Ones(m.num_groups());
+  Eigen::VectorXd x = problem.Start();
   Attempt a;
   a.start = label;
   try {
@@ -383,10 +455,10 @@ Attempt Solve(const TrussModel& m, const std::vector<TrussRow>& rows, const Eige
     a.outcome.solver = solver;
     a.outcome.status = "MODEL_ERROR";
     a.outcome.message = e.what();
-    x = Eigen::VectorXd::Ones(m.num_groups());
+    x = problem.Start();
   }
-  a.areas = problem.Areas(x);
-  a.mass = m.Mass(a.areas);
+  a.variables = problem.Variables(x);
+  a.mass = m.Mass(a.variables);
   a.kkt = Certify(problem, x);
   return a;
 }
@@ -427,20 +499,22 @@ int ActivePosition(const std::vector<TrussRow>& rows, const std::vector<int>& ac
 // entry 2 D_ab (either sign) carries c. Certified so; the second-order test does not apply.
 // Returns the certificate and, in `note`, what it says; `note` stays "" where no modes meet.
 KktCertificate CertifyMeetingModes(const TrussModel& m, const std::vector<TrussRow>& rows,
-                                   const Eigen::VectorXd& areas, std::string& note) {
+                                   const Eigen::VectorXd& variables, std::string& note) {
   note.clear();
   KktCertificate c;
   if (m.min_frequencies_hz.empty()) return c;
-  const TrussAnalysis analysis(m, m.MemberAreas(areas));
+  const TrussAnalysis analysis(m, m.MemberAreas(variables), m.Prestress(variables));
   const TrussModes modes = analysis.Modes(ModesAsked(m), true);
   const std::vector<MeetingModes> pairs = MeetingModesOf(m, modes);
   if (pairs.empty()) return c;
-  const TrussProblem problem(m, rows, areas);  // x = 1
-  KktInput in = CertificateInput(problem, Eigen::VectorXd::Ones(m.num_groups()));
+  const TrussProblem problem(m, rows, variables);
+  KktInput in = CertificateInput(problem, problem.Start());
+  const Eigen::VectorXd scale =
+      problem.Variables(Eigen::VectorXd::Ones(variables.size()));  // dv/dx
   for (const MeetingModes& p : pairs) {
     const double target = OmegaSquared(m.min_frequencies_hz[static_cast<size_t>(p.limit)]);
     const Eigen::VectorXd cross =
-        2 * analysis.ModeCoupling(modes, p.a, p.b).cwiseProduct(areas) / target;
+        2 * analysis.ModeCoupling(modes, p.a, p.b).cwiseProduct(scale) / target;
     for (const double sign : {1.0, -1.0}) {
       in.slack.conservativeResize(in.slack.size() + 1);
       in.slack[in.slack.size() - 1] = 0;
@@ -491,12 +565,14 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
   options.acceptable = false;
   const Eigen::VectorXd uniform = UniformStart(m, rows);
   // Stress rows alone make a program whose optimum one start finds; displacement and frequency
-  // rows make it non-convex (several local optima; a mode's order changes with the areas): more
+  // rows make it non-convex (several local optima; a mode's order changes with the areas), and
+  // so does a prestress (the forces move with the areas through its geometric stiffness): more
   // starts, the same rule.
   std::vector<std::pair<std::string, Eigen::VectorXd>> starts{{"uniform", uniform}};
-  if (ModesAsked(m) > 0 || !m.displacement_limits.empty()) {
-    starts.emplace_back("uniform x 2", Clamped(m, 2 * uniform.maxCoeff()));
-    starts.emplace_back("uniform x 0.5", Clamped(m, 0.5 * uniform.maxCoeff()));
+  if (ModesAsked(m) > 0 || !m.displacement_limits.empty() || m.num_prestress() > 0) {
+    const double area = uniform.head(m.num_groups()).maxCoeff();
+    starts.emplace_back("uniform x 2", WithAreas(uniform, Clamped(m, 2 * area)));
+    starts.emplace_back("uniform x 0.5", WithAreas(uniform, Clamped(m, 0.5 * area)));
   }
   if (!m.displacement_limits.empty() && !m.cases.empty()) {
     starts.emplace_back("fully stressed", FullyStressedStart(m, rows, uniform));
@@ -527,7 +603,7 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
       SolverOptions second = options;
       if (non_convex)
         second.max_iterations = std::min(options.max_iterations, kSecondOpinionIterations);
-      Attempt b = Solve(m, rows, from_sqp ? a.areas : start, "ipopt", second,
+      Attempt b = Solve(m, rows, from_sqp ? a.variables : start, "ipopt", second,
                         label + (from_sqp ? ", then ipopt" : ", ipopt"));
       record(b);
       if (Better(b, a)) a = std::move(b);
@@ -537,14 +613,15 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
   }
   if (!best.kkt.proved_local_optimum) {
     std::string note;
-    const KktCertificate meeting = CertifyMeetingModes(m, rows, best.areas, note);
+    const KktCertificate meeting = CertifyMeetingModes(m, rows, best.variables, note);
     if (!note.empty()) {  // the certificate where modes meet replaces the smooth one's
       best.kkt = meeting;
       best.kkt.proved_local_optimum = false;
       best.kkt.failed = note;
     }
   }
-  out.group_areas = best.areas;
+  out.group_areas = best.variables.head(m.num_groups());
+  out.prestress = m.Prestress(best.variables);
   out.outcome = best.outcome;
   out.kkt = best.kkt;
   out.start = best.start;

@@ -3,7 +3,8 @@
 // lowest natural frequencies as rows of one nonlinear program, solved by the verified sizing's
 // solvers (design/solvers.h) and certified by the same KKT test (design/kkt_certificate.h).
 //
-//   min  sum_g rho A_g L_g   over  min_area_g <= A_g <= max_area_g,  subject to, in every case:
+//   min  sum_g rho A_g L_g   over  min_area_g <= A_g <= max_area_g (and, where the prestress is
+//        variable, the amplitudes of the self-stress states, free), subject to, in every case:
 //     tension      1 - N / (sigma_t A) >= 0      strings and trusses
 //     compression  1 + N / (sigma_c A) >= 0      bars and trusses
 //     buckling     1 + N / (P_E / gamma) >= 0     P_E = pi E A^2 / (4 L^2), solid round section
@@ -60,14 +61,16 @@ inline constexpr int kTrussFollowingModes = 2;
 // The rows a structure's model poses, in a fixed order.
 std::vector<TrussRow> TrussRows(const TrussModel& model);
 
-// Each row's utilisation (1 - its value) at the group areas, and, with `jacobian` non-null,
-// d(value)/dA_g (rows x groups). One analysis of every case and, where limits ask for them, of
-// the modes.
+// Each row's value (1 - its utilisation) at the sizing's `variables` (TrussModel::num_variables:
+// the group areas, then the self-stress amplitudes), and, with `jacobian` non-null, its
+// derivatives in them (rows x variables). One analysis of every case and, where limits ask for
+// them, of the modes.
 Eigen::VectorXd TrussRowValues(const TrussModel& model, const std::vector<TrussRow>& rows,
-                               const Eigen::VectorXd& group_areas, Eigen::MatrixXd* jacobian);
+                               const Eigen::VectorXd& variables, Eigen::MatrixXd* jacobian);
 
 struct TrussSizing {
   Eigen::VectorXd group_areas;  // [m^2]
+  Eigen::VectorXd prestress;    // per member [N]: a self-stress; zero without prestress
   SolverOutcome outcome;        // of the solve kept
   KktCertificate kkt;
   std::string start;               // which start the kept solve came from

@@ -116,6 +116,8 @@ TEST_CASE("structure to design: bad input names the key", "[config]") {
   json unloaded = Without("/structure/load_cases");
   unloaded["structure"]["limits"].erase("min_frequencies_hz");
   ExpectRejected(unloaded, "structure.load_cases", "(missing)", "at least one load case");
+  ExpectRejected(With("/structure/prestress", "fixed"), "structure.prestress", "fixed",
+                 "\"none\", \"variable\"");
 }
 
 TEST_CASE("structure to design: kept apart from the scene and the bridge", "[config]") {
@@ -134,6 +136,10 @@ TEST_CASE("structure to design: kept apart from the scene and the bridge", "[con
   json scene = GoodTruss();
   scene["structure"].erase("members");
   ExpectRejected(scene, "structure.groups", "(given without members)", "needs structure.members");
+  json prestressed_scene = json::parse(R"({"structure": {"dim": 2, "nodes": [[0, 0, 0], [1, 0, 0]],
+      "pinned": [1], "bars": [{"nodes": [1, 2], "mass_kg": 1}], "prestress": "variable"}})");
+  ExpectRejected(prestressed_scene, "structure.prestress", "(given without members)",
+                 "needs structure.members");
 }
 
 }  // namespace

@@ -106,6 +106,48 @@ def test_three_dimensional_tripod_by_hand():
     close(T.member_forces(t, u), [-P * L / (3.0 * h)] * 3, ROUNDOFF, "bar forces")
 
 
+def test_taut_string_carries_a_transverse_load_by_its_prestress_P_L_over_4_N0():
+    # Two collinear strings of prestress N0 between supports 2a apart, P across at the middle
+    # node: the axial stiffness does not act across, the geometric one does, 2 N0 / a, so the node
+    # moves P a / (2 N0) (the taut string's first-order sag), and the strings' forces stay N0 to
+    # first order. Without prestress the node is a mechanism.
+    a, N0, P, E, A = 2.0, 5.0e3, 10.0, 2.0e11, 1.0e-5
+    def string(N):
+        return T.Truss([[-a, 0.0, 0.0], [a, 0.0, 0.0], [0.0, 0.0, 0.0]],
+                       [T.Member(0, 2, A, E, 7850.0, N), T.Member(2, 1, A, E, 7850.0, N)],
+                       pinned=[0, 1], loads={2: [0.0, -P, 0.0]})
+    u = T.displacements(string(N0))
+    close(u[2], [0.0, -P * a / (2.0 * N0), 0.0], ROUNDOFF, "the middle node")  # round-off only
+    close(T.member_forces(string(N0), u), [N0, N0], ROUNDOFF, "the string forces")
+    # The reactions balance the load with the prestress turned through the sag: each support
+    # holds N0 along the string plus P / 2 upwards (round-off only).
+    close(T.reactions(string(N0), u)[:2], [[-N0, P / 2, 0.0], [N0, P / 2, 0.0]], ROUNDOFF, "reactions")
+    with pytest.raises(np.linalg.LinAlgError):
+        T.displacements(string(0.0))
+
+
+def test_triangular_prism_has_one_self_stress_at_its_twist():
+    # Three bars and nine strings, the top triangle turned 210 deg against the base around the
+    # axis, each bar from a base node to the top node 210 deg on, each vertical string to the top
+    # node 330 deg on: the prism of tensegrity's textbooks (Skelton & de Oliveira 2009, ch. 2) has
+    # exactly one self-stress, bars in compression, strings in tension; turned 180 deg it has none.
+    def prism(twist_deg):
+        nodes = [[math.cos(t), math.sin(t), 0.0] for t in np.radians([0, 120, 240])]
+        nodes += [[math.cos(t), math.sin(t), 1.0] for t in np.radians(np.array([0, 120, 240]) + twist_deg)]
+        ends = [(0, 3), (1, 4), (2, 5), (0, 1), (1, 2), (2, 0), (3, 4), (4, 5), (5, 3), (0, 4), (1, 5), (2, 3)]
+        return T.Truss(nodes, [T.Member(i, j, 1e-4, 2e11, 7850.0) for i, j in ends], pinned=[0, 1, 2])
+    states = T.self_stress_states(prism(210.0))
+    assert states.shape == (12, 1)
+    t = states[:, 0] / -states[0, 0]  # bar 1 at -1
+    assert np.all(t[:3] < 0) and np.all(t[3:] > 0)
+    # The closed form for this prism (three-fold symmetric): the three bars alike, the six
+    # horizontal strings alike and the three verticals alike (round-off only).
+    close(t[:3], [-1.0] * 3, ROUNDOFF, "bars")
+    close(t[3:9], [t[3]] * 6, ROUNDOFF, "horizontal strings")
+    close(t[9:], [t[9]] * 3, ROUNDOFF, "verticals")
+    assert T.self_stress_states(prism(180.0)).shape[1] == 0
+
+
 @pytest.mark.parametrize("model", sorted(T.MASS_MODELS))
 def test_spring_mass_frequency_is_sqrt_k_over_m_over_2_pi(model):
     # A node mass m held by two massless perpendicular bars of axial stiffness k1 = E A1 / L1 (along

@@ -10,6 +10,7 @@ Run: TBRIDGE_BINARY=build/tbridge /usr/bin/python3 -m pytest -q tests/independen
 """
 
 import json
+import math
 import os
 import pathlib
 import subprocess
@@ -147,3 +148,88 @@ def test_frequency_problem_is_feasible_and_within_one_percent_of_530_8_kg(freque
     assert mass <= 1.01 * 530.8
     assert mass >= tb.FREQ_OPTIMUM_MASS * (1 - 1e-5)
     assert d["verdict"]["pass"]
+
+
+# ------------------------------------------------------------------------------------------------
+# The MOTES prism, sized with its prestress (configs/motes_prism_design.json)
+# ------------------------------------------------------------------------------------------------
+
+# The prism of MOTES's example (configs/motes_prism.json): base radius 1 m, height 1 m, three bars
+# and nine strings; here y is up and the top triangle is turned to the twist where the prism has
+# its self-stress (test_independent.py holds that twist to have exactly one).
+PRISM_TWIST_DEG = 210.0
+PRISM_ENDS = [(1, 4), (2, 5), (3, 6), (1, 2), (2, 3), (3, 1), (4, 5), (5, 6), (6, 4), (1, 5), (2, 6), (3, 4)]
+PRISM_LOAD = 1000.0          # N down at each top node (the issue's 1 kN)
+PRISM_DISPLACEMENT = 0.005   # m, each top node in x, y and z (the config's serviceability limit)
+PRISM_STEEL = (2.1e11, 7850.0, 2.35e8)  # E [Pa], density [kg/m^3], allowed stress [Pa]
+PRISM_GAMMA = 1.1            # the config's buckling_safety_factor on the Euler load
+
+
+def prism_nodes():
+    """The prism's nodes, 1-6 (base 1-3 at y = 0, top 4-6 at y = 1), built from its definition."""
+    def at(deg, y):
+        t = math.radians(deg)
+        return [math.cos(t), y, -math.sin(t)]
+    return np.array([at(120.0 * k, 0.0) for k in range(3)] +
+                    [at(120.0 * k + PRISM_TWIST_DEG, 1.0) for k in range(3)])
+
+
+@pytest.fixture(scope="module")
+def prism(tmp_path_factory):
+    return design("motes_prism_design", tmp_path_factory)
+
+
+def test_prism_passes_and_its_forces_equal_the_independent_solvers(prism):
+    config, d = prism
+    s = config["structure"]
+    # The config poses this prism: its nodes to round-off of the trigonometry, its members, its
+    # supports, loads, limits and steel exactly.
+    assert np.allclose(s["nodes"], prism_nodes(), rtol=0, atol=1e-15)
+    assert [tuple(m["nodes"]) for m in s["members"]] == PRISM_ENDS
+    assert sorted(s["pinned"]) == [1, 2, 3] and s["prestress"] == "variable"
+    (case,) = s["load_cases"]
+    assert {l["node"]: l["force_n"] for l in case["loads"]} == {k: [0.0, -PRISM_LOAD, 0.0] for k in (4, 5, 6)}
+    assert case["factor"] == 1.0
+    assert {(l["node"], l["axis"]): l["max_m"] for l in s["limits"]["displacements"]} == \
+        {(k, a): PRISM_DISPLACEMENT for k in (4, 5, 6) for a in "xyz"}
+    E, density, allowed = PRISM_STEEL
+    assert (config["material"]["youngs_modulus"], config["material"]["density"]) == (E, density)
+    assert config["design"]["buckling_safety_factor"] == PRISM_GAMMA
+    assert config["design"]["self_weight"] is False
+    for g in s["groups"]:
+        assert g.get("allowed_tension_pa", allowed) == allowed
+        assert g.get("allowed_compression_pa", allowed) == allowed
+
+    areas = np.array([m["area"] for m in d["members"]])
+    prestress = np.array([m["prestress_n"] for m in d["members"]])
+    members = [T.Member(i - 1, j - 1, a, E, density, n0) for (i, j), a, n0 in zip(PRISM_ENDS, areas, prestress)]
+    truss = T.Truss(prism_nodes(), members, pinned=[0, 1, 2], loads={k: [0.0, -PRISM_LOAD, 0.0] for k in (3, 4, 5)})
+    # The product's prestress is the prism's one self-stress, found here from the equilibrium
+    # matrix's SVD: parallel to it to round-off of 12 forces of 17 digits (1e-9 of the largest).
+    (state,) = T.self_stress_states(truss).T
+    along = prestress @ state * state
+    assert np.abs(prestress - along).max() <= 1e-9 * np.abs(prestress).max()
+    assert np.all(prestress[:3] < 0) and np.all(prestress[3:] > 0)
+
+    u = T.displacements(truss)
+    forces = T.member_forces(truss, u)
+    product = np.array([m["forces_by_case"][0] for m in d["members"]])
+    # The issue's 1e-6: the member forces of two solvers agree to a millionth of the largest.
+    assert np.abs(product - forces).max() <= 1e-6 * np.abs(forces).max()
+    # The reactions balance the three loads (round-off of the solve).
+    assert np.abs(T.reactions(truss, u)[:3].sum(axis=0) - [0.0, 3 * PRISM_LOAD, 0.0]).max() <= 1e-6 * PRISM_LOAD
+
+    # Every check by the independent numbers, each to the sizing's feasibility tolerance: the
+    # strings taut and within their stress, the bars compressed within their stress and their
+    # Euler load over gamma (a solid round section, I = A^2 / (4 pi)), the top nodes within 5 mm.
+    lengths = np.array([T.length(truss, m) for m in truss.members])
+    bars, strings = slice(0, 3), slice(3, 12)
+    assert np.all(forces[strings] >= -FEASIBILITY * np.abs(forces).max())
+    assert np.all(forces[strings] / areas[strings] <= allowed * (1 + FEASIBILITY))
+    assert np.all(-forces[bars] / areas[bars] <= allowed * (1 + FEASIBILITY))
+    euler = math.pi * E * areas[bars] ** 2 / (4.0 * lengths[bars] ** 2)
+    assert np.all(-forces[bars] <= euler / PRISM_GAMMA * (1 + FEASIBILITY))
+    assert np.abs(u[3:]).max() <= PRISM_DISPLACEMENT * (1 + FEASIBILITY)
+    # The mass is the independent solver's (round-off of the sum).
+    assert d["mass"]["structure"] == pytest.approx(T.mass(truss), rel=1e-12)
+    assert d["verdict"]["pass"] and d["solver"]["kkt"]["proved_local_optimum"]

@@ -4,7 +4,9 @@ Everything is in SI units: metres, newtons, pascals, kilograms, seconds; frequen
 A truss lives in 2 or 3 dimensions (the width of the node coordinates). Each member is a straight
 bar between two nodes that carries only axial force; the nodes are frictionless pins. Pinned nodes
 have all their degrees of freedom fixed; every other node is free. The analysis is linear: small
-displacements about the given geometry, no prestress, no geometric stiffness.
+displacements about the given geometry. A member may carry a prestress N0 (a force in equilibrium
+at the given geometry without load): it adds N0 to the member's force and the geometric stiffness
+(N0 / L) (I - e e^T) across it, which is all that stiffens a tensegrity's infinitesimal mechanism.
 
 The degrees of freedom are numbered node by node: node k owns dofs k*d ... k*d + d - 1, where d is
 the dimension. Only NumPy is used; the eigenproblem is reduced to a symmetric standard one by
@@ -18,12 +20,14 @@ import numpy as np
 
 @dataclass(frozen=True)
 class Member:
-    """A bar from node i to node j (0-based): area [m^2], Young's modulus E [Pa], density [kg/m^3]."""
+    """A bar from node i to node j (0-based): area [m^2], Young's modulus E [Pa], density [kg/m^3],
+    prestress [N] (tension positive; the members' prestresses must balance at every free node)."""
     i: int
     j: int
     area: float
     E: float
     density: float
+    prestress: float = 0.0
 
 
 @dataclass
@@ -106,9 +110,13 @@ def compatibility_row(truss, m):
 
 def member_stiffness(truss, m):
     """The (2d, 2d) global stiffness matrix of member m [N/m]: (E A / L) b b^T, with b its
-    compatibility row."""
+    compatibility row, plus its prestress's geometric stiffness (N0 / L) [[Q, -Q], [-Q, Q]],
+    Q = I - e e^T: a prestressed member resists a transverse offset of its ends."""
     b = compatibility_row(truss, m)
-    return m.E * m.area / length(truss, m) * np.outer(b, b)
+    e = unit_vector(truss, m)
+    Q = np.eye(truss.dim) - np.outer(e, e)
+    geometric = m.prestress / length(truss, m) * np.block([[Q, -Q], [-Q, Q]])
+    return m.E * m.area / length(truss, m) * np.outer(b, b) + geometric
 
 
 def stiffness(truss):
@@ -145,9 +153,9 @@ def displacements(truss):
 
 def member_forces(truss, u):
     """The axial force of every member [N], tension positive, from the (n, d) displacements u [m]:
-    N = (E A / L) * elongation."""
+    N = N0 + (E A / L) * elongation."""
     u = np.asarray(u, dtype=float).reshape(-1)
-    return np.array([m.E * m.area / length(truss, m) * compatibility_row(truss, m) @ u[member_dofs(truss, m)]
+    return np.array([m.prestress + m.E * m.area / length(truss, m) * compatibility_row(truss, m) @ u[member_dofs(truss, m)]
                      for m in truss.members])
 
 
@@ -157,11 +165,33 @@ def stresses(truss, u):
 
 
 def reactions(truss, u):
-    """The support reactions [N] as an (n, d) array: K u - F at every node. At a pinned node this
-    is the force its support applies to the truss; at a free node it is the residual of the
-    solve, zero to round-off."""
+    """The support reactions [N] as an (n, d) array: K u - F - E N0 at every node, E N0 the pull
+    of the members' prestresses (equilibrium_matrix). At a pinned node this is the force its
+    support applies to the truss; at a free node it is the residual of the solve, zero to
+    round-off."""
     u = np.asarray(u, dtype=float).reshape(-1)
-    return (stiffness(truss) @ u - load_vector(truss)).reshape(truss.nodes.shape)
+    pull = equilibrium_matrix(truss) @ np.array([m.prestress for m in truss.members])
+    return (stiffness(truss) @ u - load_vector(truss) - pull).reshape(truss.nodes.shape)
+
+
+def equilibrium_matrix(truss):
+    """The (n d, members) equilibrium matrix: column k holds the forces member k exerts on its end
+    nodes per newton of tension (-b^T, b its compatibility row: a tension pulls each end towards
+    the other), at every node, pinned ones included."""
+    A = np.zeros((truss.n_dofs, len(truss.members)))
+    for k, m in enumerate(truss.members):
+        A[member_dofs(truss, m), k] = -compatibility_row(truss, m)
+    return A
+
+
+def self_stress_states(truss, tol=1e-10):
+    """An orthonormal basis (members, s) of the member forces in equilibrium at every node without
+    load or support: the null space of the equilibrium matrix, from its SVD (singular values below
+    tol times the largest count as zero)."""
+    A = equilibrium_matrix(truss)
+    _, sv, vt = np.linalg.svd(A)
+    rank = int(np.sum(sv > tol * sv[0]))
+    return vt[rank:].T
 
 
 def member_masses(truss):

@@ -7,12 +7,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "core/config.h"
 #include "core/error.h"
 #include "truss/truss_check.h"
 #include "truss/truss_design.h"
+#include "truss/truss_report.h"
 
 namespace tbridge {
 namespace {
@@ -21,25 +23,30 @@ Config Shipped(const std::string& name) {
   return LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json");
 }
 
-// The largest difference between the analytic Jacobian and central differences, relative to the
-// row's largest analytic entry (at least 1e-3: a row insensitive to every area reads as 0).
-double JacobianError(const TrussModel& m, const Eigen::VectorXd& areas) {
+// The largest difference between the analytic Jacobian and central differences, at the sizing's
+// variables v (the group areas, then any self-stress amplitudes), with a central step of `step`
+// times each variable. Both are read per relative change of the variable (dg/dv times |v|, as
+// the sizing scales them), relative to the row's largest entry (at least 1e-3: a row insensitive
+// to every variable reads as 0).
+double JacobianError(const TrussModel& m, const Eigen::VectorXd& areas, double step = 1e-5) {
   const std::vector<TrussRow> rows = TrussRows(m);
   Eigen::MatrixXd jac;
   TrussRowValues(m, rows, areas, &jac);
   double worst = 0;
-  for (int g = 0; g < m.num_groups(); ++g) {
-    // A step of 1e-5 of the area: the rows' third derivatives are of order 1 / A^3, so the
-    // central difference's error is about 1e-10 relative, round-off 1e-16 / 1e-5.
-    const double h = 1e-5 * areas[g];
+  for (int g = 0; g < m.num_variables(); ++g) {
+    // A step of 1e-5 of the variable: the rows' third derivatives are of order 1 / A^3 (and
+    // 1 / s^3 in an amplitude s), so the central difference's error is about 1e-10 relative,
+    // round-off 1e-16 / 1e-5 times the stiffness matrix's condition.
+    const double h = step * std::abs(areas[g]);
     Eigen::VectorXd up = areas, down = areas;
     up[g] += h;
     down[g] -= h;
     const Eigen::VectorXd fd =
         (TrussRowValues(m, rows, up, nullptr) - TrussRowValues(m, rows, down, nullptr)) / (2 * h);
     for (int r = 0; r < jac.rows(); ++r) {
-      const double scale = std::max(jac.row(r).cwiseAbs().maxCoeff(), 1e-3);
-      worst = std::max(worst, std::abs(fd[r] - jac(r, g)) / scale);
+      const double scale =
+          std::max((jac.row(r).transpose().cwiseProduct(areas)).cwiseAbs().maxCoeff(), 1e-3);
+      worst = std::max(worst, std::abs(fd[r] - jac(r, g)) * std::abs(areas[g]) / scale);
     }
   }
   return worst;
@@ -72,6 +79,28 @@ TEST_CASE("truss sizing: every row's derivative agrees with central differences"
   }
 }
 
+TEST_CASE("truss sizing: a prestress's rows and their derivatives in its amplitude", "[truss]") {
+  // The prism's one self-stress amplitude moves every force and, through its geometric
+  // stiffness, every displacement and frequency: its column of the Jacobian against central
+  // differences, with the stress, taut, buckling and displacement rows of the shipped config and
+  // a frequency limit added. The stiffness matrix's condition is about 1e7 here (the mechanism
+  // held by its geometric stiffness, N0 / L, against the members' E A / L), so a displacement
+  // row's round-off is about 1e-9: a step of 1e-3 keeps it at 1e-6 of the derivative and the
+  // truncation at about 1e-6 too (measured: 1e-5 reads round-off of 1e-4); tolerance 1e-5.
+  Config c = Shipped("motes_prism_design");
+  c.structure->limits.min_frequencies_hz = {5.0};
+  const TrussModel m = BuildTrussModel(c);
+  REQUIRE(m.num_prestress() == 1);
+  Eigen::VectorXd v(m.num_variables());
+  // Areas about the design's, the amplitude that puts 50 kN in a bar.
+  v << Spread(m, 2e-4), 5e4 / m.self_stress.col(0).head(3).cwiseAbs().maxCoeff();
+  if (m.self_stress(0, 0) > 0) v[m.num_groups()] = -v[m.num_groups()];  // bars in compression
+  CHECK(JacobianError(m, v, 1e-3) < 1e-5);
+  // Without the prestress the prism is a mechanism on its pinned base: the analysis says so.
+  v[m.num_groups()] = 0;
+  CHECK_THROWS_AS(TrussRowValues(m, TrussRows(m), v, nullptr), ModelError);
+}
+
 TEST_CASE("truss analysis: a statically determinate two-bar truss by hand", "[truss]") {
   // Supports at (0, 0) and (0, 3) m, the free node at (4, 0) m, P down on it. Node equilibrium:
   // N2 (3/5) = P, N1 + N2 (4/5) = 0, so N2 = 5P/3 and N1 = -4P/3 whatever the areas.
@@ -96,6 +125,46 @@ TEST_CASE("truss analysis: a statically determinate two-bar truss by hand", "[tr
   const TrussDesign d = DesignTruss(ParseConfig(j));
   CHECK(d.sizing.group_areas[0] == Approx(std::max(4 * p / 3 / 1e8, 1e-4)).epsilon(1e-6));
   CHECK(d.sizing.kkt.proved_local_optimum);
+  // It has no self-stress: a variable prestress is refused, naming the key.
+  nlohmann::json prestressed = j;
+  prestressed["structure"]["prestress"] = "variable";
+  try {
+    BuildTrussModel(ParseConfig(prestressed));
+    FAIL("a determinate truss took a variable prestress");
+  } catch (const ConfigError& e) {
+    CHECK_THAT(e.what(),
+               Catch::Contains("structure.prestress") && Catch::Contains("no self-stress state"));
+  }
+}
+
+TEST_CASE("truss check: a design file's prestress is held to be a self-stress", "[truss]") {
+  const TrussDesign d = DesignTruss(Shipped("motes_prism_design"));
+  std::ostringstream os;
+  WriteTrussDesignJson(d, os);
+  nlohmann::json file = nlohmann::json::parse(os.str());
+  // Read back as written, the same check: the prestress and the forces to round-off of 17 digits.
+  const TrussDesign again = CheckTrussDesignFile(file);
+  CHECK(again.check.pass);
+  CHECK((again.check.prestress - d.check.prestress).cwiseAbs().maxCoeff() <=
+        1e-12 * d.check.prestress.cwiseAbs().maxCoeff());
+  // One string's prestress edited alone leaves its nodes unbalanced: refused, naming the key and
+  // a node.
+  file["members"][9]["prestress_n"] = file["members"][9]["prestress_n"].get<double>() * 1.01;
+  try {
+    CheckTrussDesignFile(file);
+    FAIL("an unbalanced prestress was checked");
+  } catch (const ConfigError& e) {
+    CHECK_THAT(e.what(),
+               Catch::Contains("members[].prestress_n") && Catch::Contains("unbalanced at node"));
+  }
+  // Every member's prestress scaled alike stays a self-stress: checked, and the lower prestress
+  // loosens the mechanism past its displacement limit (the design's governing row).
+  file = nlohmann::json::parse(os.str());
+  for (nlohmann::json& member : file["members"])
+    member["prestress_n"] = member["prestress_n"].get<double>() * 0.5;
+  const TrussDesign loosened = CheckTrussDesignFile(file);
+  CHECK_FALSE(loosened.check.pass);
+  CHECK_THAT(loosened.check.governing, Catch::Contains("displacement"));
 }
 
 }  // namespace
