@@ -105,6 +105,7 @@ void RejectDesignKeysWithoutMembers(const StructureConfig& c) {
   if (!c.load_cases.empty()) refuse("load_cases");
   if (!c.limits.displacements.empty() || !c.limits.min_frequencies_hz.empty()) refuse("limits");
   if (c.prestress != "none") refuse("prestress");
+  if (c.analysis != "linear") refuse("analysis");
 }
 
 void CheckGroups(const StructureConfig& c) {

@@ -109,6 +109,10 @@ struct StructureConfig {
   // "none": each member's rest length is its drawn length; "variable": the amplitudes of the
   // structure's self-stress states are variables of the sizing beside the areas.
   std::string prestress = "none";
+  // "linear": each case's statics small-displacement about the drawn state; "nonlinear":
+  // geometrically nonlinear (large displacements, the members' forces along their turned
+  // directions).
+  std::string analysis = "linear";
 
   // Whether this is the designable form (`members` given).
   bool Designable() const { return !members.empty(); }

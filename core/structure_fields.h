@@ -113,6 +113,13 @@ void DescribeDesignable(S& c, V& v, const N& nodes) {
                    "the areas, their geometric stiffness N0 / L in every analysis; the design "
                    "file gives each member's `prestress_n` and `rest_length_m`"},
            c.prestress, {"none", "variable"});
+  v.Choice(KeyInfo{"analysis", "–",
+                   "each load case's statics in the sizing and the check: `\"linear\"`, small "
+                   "displacements about the drawn (prestressed) state, as the classic sizing "
+                   "problems assume; `\"nonlinear\"`, geometrically nonlinear (each member's "
+                   "force N0 + E·A·(l − L) / L along its turned direction, Newton in load steps), "
+                   "with its own derivatives. The modes are the drawn state's either way"},
+           c.analysis, {"linear", "nonlinear"});
 }
 
 template <class S, class V>

@@ -22,16 +22,20 @@ Eigen::VectorXd CaseLoads(const TrussDesign& d, int c, const Eigen::VectorXd& ar
   return f;
 }
 
+// Each member a spring whose force is N0 + k e at elongation e (k = E A / L, N0 its prestress),
+// in either sign, as tbridge's members are; in a geometrically nonlinear step CalculiX turns it
+// with its chord, as tbridge's nonlinear statics does.
 void Members(const TrussDesign& d, const Eigen::VectorXd& areas, std::ostream& os) {
   const TrussModel& m = d.model;
   for (int e = 0; e < m.num_members(); ++e) {
     const TrussMember& member = m.members[static_cast<size_t>(e)];
     const double k = m.youngs_modulus * areas[e] / member.length, half = 0.5 * member.length;
+    const double n0 = d.check.prestress[e];
     os << "*ELEMENT, TYPE=SPRINGA, ELSET=E" << e + 1 << "\n"
        << e + 1 << ", " << member.i + 1 << ", " << member.j + 1 << "\n*SPRING, ELSET=E" << e + 1
        << ", NONLINEAR\n"
-       << Num(-k * half) << ", " << Num(-half) << "\n"
-       << Num(k * half) << ", " << Num(half) << "\n";
+       << Num(n0 - k * half) << ", " << Num(-half) << "\n"
+       << Num(n0 + k * half) << ", " << Num(half) << "\n";
   }
 }
 
@@ -96,10 +100,18 @@ void WriteTrussCalculix(const TrussDesign& d, int modes, std::ostream& os) {
   Masses(d, areas, os);
   os << "*BOUNDARY\nSUPPORTS, 1, 3\n";
   if (m.dim == 2) os << "NALL, 3, 3\n";  // a planar structure moves in its own plane
+  // A prestressed structure's stiffness is partly its prestress's, which CalculiX's linear step
+  // leaves out (an infinitesimal mechanism is then singular): its steps are geometrically
+  // nonlinear, as are a nonlinear design's. Equilibrium to 1e-9 of the average force (defaults
+  // 5e-3 and 1e-2).
+  const bool nlgeom = m.analysis == TrussAnalysisKind::kNonlinear || m.num_prestress() > 0;
+  if (nlgeom) os << "*CONTROLS, PARAMETERS=FIELD\n1e-9, 1e-9, , , 1e-9\n";
+  const std::string step =
+      nlgeom ? "*STEP, NLGEOM, INC=1000\n*STATIC\n1., 1., 1e-6, 1.\n" : "*STEP\n*STATIC\n";
   for (int c = 0; c < static_cast<int>(m.cases.size()); ++c) {
     const Eigen::VectorXd f = CaseLoads(d, c, areas);
-    os << "**\n** tbridge step: " << m.cases[static_cast<size_t>(c)].name
-       << "\n*STEP\n*STATIC\n*CLOAD, OP=NEW\n";
+    os << "**\n** tbridge step: " << m.cases[static_cast<size_t>(c)].name << "\n"
+       << step << "*CLOAD, OP=NEW\n";
     for (int v = 0; v < nn; ++v) {
       for (int a = 0; a < m.dim; ++a) {
         const int k = m.dof[static_cast<size_t>(v * m.dim + a)];
@@ -113,14 +125,17 @@ void WriteTrussCalculix(const TrussDesign& d, int modes, std::ostream& os) {
     // under the 10-bar truss's loads its first rises 0.085 %.
     int free_node = 0;
     while (m.fixed[static_cast<size_t>(free_node)]) ++free_node;
-    os << "**\n** tbridge step: unloaded\n*STEP\n*STATIC\n*CLOAD, OP=NEW\n"
+    os << "**\n** tbridge step: unloaded\n"
+       << step << "*CLOAD, OP=NEW\n"
        << free_node + 1 << ", 1, 0.\n*END STEP\n";
   }
   if (modes > 0) {
-    // ARPACK's basis is four times the modes asked and must stay below the free motions: the
-    // 10-bar truss's 8 return zeros for 2 modes, 7.000 Hz for 1.
-    os << "**\n** tbridge step: frequency\n*STEP\n*FREQUENCY\n"
-       << std::max(1, std::min(modes, (m.num_free - 1) / 4)) << "\n*END STEP\n";
+    // ARPACK's basis is four times the modes asked and must stay below the free motions by more
+    // than one: the 10-bar truss's 8 and the prism's 9 return zeros for 2 modes, their first
+    // frequency for 1.
+    os << "**\n** tbridge step: frequency\n*STEP" << (nlgeom ? ", PERTURBATION" : "")
+       << "\n*FREQUENCY\n"
+       << std::max(1, std::min(modes, (m.num_free - 2) / 4)) << "\n*END STEP\n";
   }
 }
 

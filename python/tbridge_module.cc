@@ -325,6 +325,9 @@ PYBIND11_MODULE(tbridge, m) {
             return out;
           },
           "each member's force in its governing case, tension > 0 [N]")
+      .def_property_readonly(
+          "prestress", [](const TrussDesign& d) { return Eigen::VectorXd(d.check.prestress); },
+          "each member's prestress, a self-stress, tension > 0 [N] (zero without)")
       .def_property_readonly("utilisation",
                              [](const TrussDesign& d) {
                                std::vector<double> out;

@@ -17,70 +17,99 @@ int DofOf(const TrussModel& m, int node, int axis) {
 
 }  // namespace
 
-TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& member_areas,
-                             const Eigen::VectorXd& prestress)
-    : model_(model),
-      areas_(member_areas),
-      prestress_(prestress.size() ? prestress : Eigen::VectorXd::Zero(model.num_members())) {
+Eigen::Matrix3d MemberBlock(const Eigen::Vector3d& d, double l, double k, double n) {
+  const Eigen::Matrix3d dd = d * d.transpose();
+  return k * dd + n / l * (Eigen::Matrix3d::Identity() - dd);
+}
+
+Eigen::SparseMatrix<double> AssembleStiffness(const TrussModel& model,
+                                              const std::vector<Eigen::Matrix3d>& blocks) {
   std::vector<Eigen::Triplet<double>> entries;
-  for (int e = 0; e < model_.num_members(); ++e) {
-    const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    const Eigen::Matrix3d block = Block(e, areas_[e], prestress_[e]);
+  for (int e = 0; e < model.num_members(); ++e) {
+    const TrussMember& m = model.members[static_cast<size_t>(e)];
     const int ends[2] = {m.i, m.j};
     for (int p = 0; p < 2; ++p) {
       for (int q = 0; q < 2; ++q) {
         const double sign = p == q ? 1.0 : -1.0;
-        for (int a = 0; a < model_.dim; ++a) {
-          for (int b = 0; b < model_.dim; ++b) {
-            const int r = DofOf(model_, ends[p], a), c = DofOf(model_, ends[q], b);
-            if (r >= 0 && c >= 0) entries.emplace_back(r, c, sign * block(a, b));
+        for (int a = 0; a < model.dim; ++a) {
+          for (int b = 0; b < model.dim; ++b) {
+            const int r = DofOf(model, ends[p], a), c = DofOf(model, ends[q], b);
+            if (r >= 0 && c >= 0)
+              entries.emplace_back(r, c, sign * blocks[static_cast<size_t>(e)](a, b));
           }
         }
       }
     }
   }
-  stiffness_.resize(model_.num_free, model_.num_free);
-  stiffness_.setFromTriplets(entries.begin(), entries.end());
-  factor_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(stiffness_);
-  const Eigen::VectorXd pivots = factor_->vectorD();
-  const double largest = pivots.cwiseAbs().maxCoeff();
+  Eigen::SparseMatrix<double> k(model.num_free, model.num_free);
+  k.setFromTriplets(entries.begin(), entries.end());
+  return k;
+}
+
+std::unique_ptr<TrussFactor> FactoriseStiffness(const TrussModel& model,
+                                                const Eigen::SparseMatrix<double>& stiffness) {
+  auto factor = std::make_unique<TrussFactor>(stiffness);
+  const Eigen::VectorXd pivots = factor->vectorD();
+  const double largest = pivots.size() ? pivots.cwiseAbs().maxCoeff() : 0.0;
   // A pivot this far below the largest is a mechanism, not a soft member: the areas' range of a
   // sizing is a few decades, round-off 1e-16 (a prestress's geometric stiffness, N0 / L against
   // E A / L, is a strain: 1e-5 and more).
-  if (factor_->info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * largest)) {
+  if (factor->info() != Eigen::Success || !(pivots.minCoeff() > 1e-12 * largest)) {
     throw ModelError(
-        "the structure is a mechanism: its stiffness matrix (" + std::to_string(model_.num_free) +
+        "the structure is a mechanism: its stiffness matrix (" + std::to_string(model.num_free) +
         " free degrees of freedom) is " +
         (pivots.minCoeff() < -1e-12 * largest ? "not positive definite" : "singular") +
         "; pin it or add members" +
-        (model_.num_prestress() > 0 ? ", or prestress it (its strings in tension)" : ""));
+        (model.num_prestress() > 0 ? ", or prestress it (its strings in tension)" : ""));
   }
+  return factor;
 }
 
-Eigen::Matrix3d TrussAnalysis::Block(int e, double area, double n0) const {
-  const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  const Eigen::Matrix3d dd = m.direction * m.direction.transpose();
-  return model_.youngs_modulus * area / m.length * dd +
-         n0 / m.length * (Eigen::Matrix3d::Identity() - dd);
-}
-
-Eigen::Vector3d TrussAnalysis::Relative(int e, const Eigen::VectorXd& u) const {
-  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+Eigen::Vector3d RelativeDisplacement(const TrussModel& model, int e, const Eigen::VectorXd& u) {
+  const TrussMember& m = model.members[static_cast<size_t>(e)];
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
-  for (int a = 0; a < model_.dim; ++a) {
-    const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
+  for (int a = 0; a < model.dim; ++a) {
+    const int fi = DofOf(model, m.i, a), fj = DofOf(model, m.j, a);
     w[a] = (fj >= 0 ? u[fj] : 0.0) - (fi >= 0 ? u[fi] : 0.0);
   }
   return w;
 }
 
+void ScatterPull(const TrussModel& model, int e, const Eigen::Vector3d& pull,
+                 Eigen::VectorXd& out) {
+  const TrussMember& m = model.members[static_cast<size_t>(e)];
+  for (int a = 0; a < model.dim; ++a) {
+    const int fi = DofOf(model, m.i, a), fj = DofOf(model, m.j, a);
+    if (fi >= 0) out[fi] += pull[a];
+    if (fj >= 0) out[fj] -= pull[a];
+  }
+}
+
+TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& member_areas,
+                             const Eigen::VectorXd& prestress)
+    : model_(model),
+      areas_(member_areas),
+      prestress_(prestress.size() ? prestress : Eigen::VectorXd::Zero(model.num_members())) {
+  std::vector<Eigen::Matrix3d> blocks;
+  for (int e = 0; e < model_.num_members(); ++e)
+    blocks.push_back(Block(e, areas_[e], prestress_[e]));
+  stiffness_ = AssembleStiffness(model_, blocks);
+  factor_ = FactoriseStiffness(model_, stiffness_);
+}
+
+Eigen::Matrix3d TrussAnalysis::Block(int e, double area, double n0) const {
+  const TrussMember& m = model_.members[static_cast<size_t>(e)];
+  return MemberBlock(m.direction, m.length, model_.youngs_modulus * area / m.length, n0);
+}
+
 double TrussAnalysis::Elongation(int e, const Eigen::VectorXd& u) const {
-  return model_.members[static_cast<size_t>(e)].direction.dot(Relative(e, u));
+  return model_.members[static_cast<size_t>(e)].direction.dot(RelativeDisplacement(model_, e, u));
 }
 
 Eigen::Vector3d TrussAnalysis::Pull(int e, const Eigen::VectorXd& u) const {
   const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  return Force(e, u) * m.direction + Block(e, 0.0, prestress_[e]) * Relative(e, u);
+  return Force(e, u) * m.direction +
+         Block(e, 0.0, prestress_[e]) * RelativeDisplacement(model_, e, u);
 }
 
 double TrussAnalysis::Force(int e, const Eigen::VectorXd& u) const {
@@ -92,14 +121,8 @@ Eigen::VectorXd TrussAnalysis::StiffnessTimes(int v, const Eigen::VectorXd& u) c
   Eigen::VectorXd out = Eigen::VectorXd::Zero(model_.num_free);
   const int ng = model_.num_groups();
   const auto add = [&](int e, double area, double n0) {
-    const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    // On node i: +pull, on node j: -pull.
-    const Eigen::Vector3d pull = Block(e, area, n0) * Relative(e, u);
-    for (int a = 0; a < model_.dim; ++a) {
-      const int fi = DofOf(model_, m.i, a), fj = DofOf(model_, m.j, a);
-      if (fi >= 0) out[fi] -= pull[a];
-      if (fj >= 0) out[fj] += pull[a];
-    }
+    // (K u) at node i is -Block (u_j - u_i), at node j +Block (u_j - u_i).
+    ScatterPull(model_, e, -Block(e, area, n0) * RelativeDisplacement(model_, e, u), out);
   };
   if (v < ng) {
     for (const int e : model_.groups[static_cast<size_t>(v)].members) add(e, 1.0, 0.0);

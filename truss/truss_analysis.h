@@ -20,6 +20,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <vector>
 
 #include "truss/truss_model.h"
 
@@ -39,6 +40,23 @@ struct TrussModes {
   Eigen::MatrixXd shapes;        // num_free x count, M-orthonormal
   Eigen::MatrixXd deigenvalues;  // count x variables: d(omega^2) / d(variable) (when asked)
 };
+
+using TrussFactor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+
+// A member's tangent block along unit direction d at length l with axial stiffness k and force
+// n: k d d^T + (n / l)(I - d d^T); +block in its end blocks (i, i) and (j, j), -block across.
+Eigen::Matrix3d MemberBlock(const Eigen::Vector3d& d, double l, double k, double n);
+// The stiffness matrix on the free degrees of freedom from each member's block.
+Eigen::SparseMatrix<double> AssembleStiffness(const TrussModel& model,
+                                              const std::vector<Eigen::Matrix3d>& blocks);
+// Its LDL^T factor. Throws ModelError naming the mechanism where it is singular or not positive
+// definite.
+std::unique_ptr<TrussFactor> FactoriseStiffness(const TrussModel& model,
+                                                const Eigen::SparseMatrix<double>& stiffness);
+// u_j - u_i of member e, zero along a support's axes.
+Eigen::Vector3d RelativeDisplacement(const TrussModel& model, int e, const Eigen::VectorXd& u);
+// Adds `pull` to member e's node i and -pull to its node j, on their free degrees of freedom.
+void ScatterPull(const TrussModel& model, int e, const Eigen::Vector3d& pull, Eigen::VectorXd& out);
 
 // The most free degrees of freedom the modal analysis takes (a dense generalised eigenproblem,
 // O(n^3): 4000 take about a minute here).
@@ -74,8 +92,6 @@ class TrussAnalysis {
  private:
   // The elongation of member e under u, d . (u_j - u_i) [m].
   double Elongation(int e, const Eigen::VectorXd& u) const;
-  // u_j - u_i of member e, zero along a support's axes.
-  Eigen::Vector3d Relative(int e, const Eigen::VectorXd& u) const;
   // Adds `same` into member e's blocks (i, i) and (j, j) of `out` (free dofs, dense) and
   // `across` into (i, j) and (j, i).
   void AddEnds(int e, const Eigen::Matrix3d& same, const Eigen::Matrix3d& across,
@@ -94,7 +110,7 @@ class TrussAnalysis {
   Eigen::VectorXd areas_;      // per member
   Eigen::VectorXd prestress_;  // per member [N]
   Eigen::SparseMatrix<double> stiffness_;
-  std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;
+  std::unique_ptr<TrussFactor> factor_;
 };
 
 }  // namespace tbridge

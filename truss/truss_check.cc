@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "truss/truss_nonlinear.h"
+
 namespace tbridge {
 
 namespace {
@@ -34,14 +36,17 @@ std::pair<double, std::string> MemberUtilisation(const TrussModel& m, int e, dou
 
 // The support reactions of case c: each pinned node's reaction balances the members' forces on
 // it, its own loads and its share of the members' weight.
+// `pull(e, u)`: the force member e exerts on its node i (TrussAnalysis::Pull, or the nonlinear
+// one).
+template <class Pull>
 Eigen::Matrix3Xd Reactions(const TrussModel& m, int c, const Eigen::VectorXd& areas,
-                           const TrussAnalysis& analysis, const TrussCaseResponse& r) {
+                           const Pull& pull_of, const TrussCaseResponse& r) {
   const TrussCase& lc = m.cases[static_cast<size_t>(c)];
   Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, m.nodes.cols());
   for (int e = 0; e < m.num_members(); ++e) {
     const TrussMember& member = m.members[static_cast<size_t>(e)];
     const double half_weight = 0.5 * lc.factor * m.density * m.gravity * member.length * areas[e];
-    const Eigen::Vector3d pull = analysis.Pull(e, r.u);  // on node i
+    const Eigen::Vector3d pull = pull_of(e, r.u);  // on node i
     const Eigen::Vector3d down(0, -half_weight, 0);
     if (m.fixed[static_cast<size_t>(member.i)]) out.col(member.i) -= pull + down;
     if (m.fixed[static_cast<size_t>(member.j)]) out.col(member.j) -= -pull + down;
@@ -158,9 +163,13 @@ TrussCheck CheckTruss(const TrussModel& m, const Eigen::VectorXd& areas,
   TrussCheck out;
   out.prestress = prestress.size() ? prestress : Eigen::VectorXd::Zero(m.num_members());
   const TrussAnalysis analysis(m, areas, out.prestress);
+  const TrussNonlinearStatics nonlinear(m, areas, out.prestress);
+  out.cases = SolveTrussCases(m, analysis, areas, out.prestress, false);
+  const auto pull = [&](int e, const Eigen::VectorXd& u) {
+    return m.analysis == TrussAnalysisKind::kNonlinear ? nonlinear.Pull(e, u) : analysis.Pull(e, u);
+  };
   for (int c = 0; c < static_cast<int>(m.cases.size()); ++c) {
-    out.cases.push_back(analysis.Solve(c, false));
-    out.reactions.push_back(Reactions(m, c, areas, analysis, out.cases.back()));
+    out.reactions.push_back(Reactions(m, c, areas, pull, out.cases[static_cast<size_t>(c)]));
     const Eigen::Vector3d residual =
         out.reactions.back().rowwise().sum() + AppliedTotal(m, c, areas);
     out.equilibrium_residual = std::max(out.equilibrium_residual, residual.norm());

@@ -149,6 +149,8 @@ TrussModel BuildTrussModel(const Config& config) {
   }
   m.min_frequencies_hz = s.limits.min_frequencies_hz;
   if (s.prestress == "variable") m.self_stress = SelfStressStates(m);
+  m.analysis =
+      s.analysis == "nonlinear" ? TrussAnalysisKind::kNonlinear : TrussAnalysisKind::kLinear;
   return m;
 }
 

@@ -21,6 +21,10 @@ namespace tbridge {
 
 enum class TrussKind { kString, kBar, kTruss };
 
+// structure.analysis: the statics of every case linear about the drawn (prestressed) state, or
+// geometrically nonlinear (truss/truss_nonlinear.h). The modes are the drawn state's either way.
+enum class TrussAnalysisKind { kLinear, kNonlinear };
+
 // The most members whose self-stress states are found (a dense SVD of the equilibrium matrix,
 // O(members^3): 3000 take a few seconds here).
 inline constexpr int kTrussMaxSelfStressMembers = 3000;
@@ -78,6 +82,7 @@ struct TrussModel {
   double density = 0;          // [kg/m^3]
   double gravity = 0;          // [m/s^2]; 0 where design.self_weight is off
   double buckling_factor = 1;  // design.buckling_safety_factor on the Euler load
+  TrussAnalysisKind analysis = TrussAnalysisKind::kLinear;
   // Where structure.prestress is "variable": an orthonormal basis (members x states) of the
   // member forces in equilibrium with no load at every node, the supports' included (E t = 0):
   // the strings carry the prestress, no support does; no columns otherwise. The sizing's variables

@@ -135,11 +135,15 @@ json Solver(const TrussSizing& s) {
 }
 
 std::string Analysis(const TrussModel& m) {
-  return m.num_prestress() > 0
-             ? "linear about the prestressed state: small displacements, each member elastic E A "
-               "/ L plus its prestress's geometric stiffness N0 / L across it; consistent member "
-               "mass"
-             : "linear: small displacements, each member elastic E A / L; consistent member mass";
+  const std::string statics =
+      m.analysis == TrussAnalysisKind::kNonlinear
+          ? "geometrically nonlinear statics: each member's force N0 + E A (l - L) / L along its "
+            "turned direction, Newton to equilibrium in the deformed shape"
+          : "linear statics: small displacements, each member elastic E A / L";
+  const std::string geometric =
+      m.num_prestress() > 0 ? " about the prestressed state, with its geometric stiffness N0 / L"
+                            : "";
+  return statics + geometric + "; modes of the drawn state, consistent member mass";
 }
 
 json NotApplicable(const TrussModel& m) {

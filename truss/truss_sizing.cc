@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "design/solvers.h"
+#include "truss/truss_nonlinear.h"
 
 namespace tbridge {
 
@@ -118,10 +119,10 @@ std::vector<TrussRow> TrussRows(const TrussModel& m) {
 Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>& rows,
                                const Eigen::VectorXd& variables, Eigen::MatrixXd* jacobian) {
   const bool grad = jacobian != nullptr;
-  const TrussAnalysis analysis(m, m.MemberAreas(variables), m.Prestress(variables));
-  std::vector<TrussCaseResponse> responses;
-  for (int c = 0; c < static_cast<int>(m.cases.size()); ++c)
-    responses.push_back(analysis.Solve(c, grad));
+  const Eigen::VectorXd areas = m.MemberAreas(variables), prestress = m.Prestress(variables);
+  const TrussAnalysis analysis(m, areas, prestress);
+  const std::vector<TrussCaseResponse> responses =
+      SolveTrussCases(m, analysis, areas, prestress, grad);
   TrussModes modes;
   if (ModesAsked(m) > 0) modes = analysis.Modes(ModesAsked(m), grad);
   const int nv = m.num_variables();

@@ -327,12 +327,27 @@ TEST_CASE("export: a bad format or option is refused with exit 2 and nothing wri
 // A structure's design (truss/) run by CalculiX: its deck's linear static steps give the design
 // file's displacements, and its frequency step the file's lowest frequency (the 10-bar truss's
 // 8 free motions allow ARPACK one mode).
+// The config of a shipped structure, written into `dir` with structure.analysis `analysis`.
+fs::path ShippedStructure(const fs::path& dir, const std::string& name, const char* analysis) {
+  json config =
+      json::parse(ReadText(std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json"));
+  config["structure"]["analysis"] = analysis;
+  const fs::path path = dir / (name + ".json");
+  std::ofstream(path) << config.dump(2);
+  return path;
+}
+
 TEST_CASE("export: a structure's design agrees with CalculiX", "[truss]") {
-  for (const char* name : {"truss_10bar_displacement", "truss_10bar_frequency"}) {
-    INFO(name);
+  // The 10-bar designs (linear, CalculiX's linear steps) and the prism designed with its
+  // prestress by the nonlinear statics (CalculiX's geometrically nonlinear steps from the
+  // prestressed state, its frequencies a perturbation about it).
+  const std::pair<const char*, const char*> designs[] = {{"truss_10bar_displacement", "linear"},
+                                                         {"truss_10bar_frequency", "linear"},
+                                                         {"motes_prism_design", "nonlinear"}};
+  for (const auto& [name, analysis] : designs) {
+    INFO(name << ", " << analysis);
     const fs::path dir = FreshDir(std::string("export_truss_") + name);
-    const fs::path design =
-        DesignOf(dir, std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json");
+    const fs::path design = DesignOf(dir, ShippedStructure(dir, name, analysis).string());
     REQUIRE(RunTbridge(dir, "export " + Quote(design.string()) + " --format calculix -o " +
                                 Quote((dir / "truss.inp").string()))
                 .code == 0);
@@ -343,12 +358,13 @@ TEST_CASE("export: a structure's design agrees with CalculiX", "[truss]") {
     std::vector<double> omega;
     ReadDat(ReadText(dir / "truss.dat"), steps, omega);
     const json d = json::parse(ReadText(design));
+    const int dim = d["config"]["structure"]["dim"].get<int>();
     for (size_t c = 0; c < d["cases"].size(); ++c) {
       const CcxStep& step = steps.at(static_cast<int>(c) + 1);
       const json& u = d["cases"][c]["displacements"];
       double largest = 0, worst = 0;
       for (size_t k = 0; k < u.size(); ++k) {
-        for (int a = 0; a < 2; ++a) {
+        for (int a = 0; a < dim; ++a) {
           largest = std::max(largest, std::abs(u[k][a].get<double>()));
           worst = std::max(worst,
                            std::abs(u[k][a].get<double>() - step.u.at(static_cast<int>(k) + 1)[a]));
@@ -357,7 +373,8 @@ TEST_CASE("export: a structure's design agrees with CalculiX", "[truss]") {
       // The .dat prints 6 significant digits (e.g. -5.07999E-02): 1e-5 of the largest.
       CHECK(worst <= 1e-5 * largest);
     }
-    // The frequencies (consistent member mass on both sides): the .dat's 7 digits.
+    // The frequencies (consistent member mass on both sides, the prestress's stiffness in
+    // both): the .dat's 7 digits.
     REQUIRE(!omega.empty());
     for (size_t k = 0; k < omega.size(); ++k) {
       CHECK(omega[k] / (2 * M_PI) == Approx(d["frequencies_hz"][k].get<double>()).epsilon(1e-6));
