@@ -64,6 +64,17 @@ TrussSizing SizingOf(const nlohmann::json& file, const TrussModel& m) {
   s.kkt.active_bounds = k.value("active_bounds", 0);
   s.kkt.free_variables = k.value("free_variables", 0);
   s.kkt.null_space_dimension = k.value("null_space_dimension", 0);
+  if (file.contains("mass_attribution") && file.at("mass_attribution").is_object()) {
+    const nlohmann::json& a = file.at("mass_attribution");
+    if (a.contains("by_constraint_kg") && a.at("by_constraint_kg").is_object()) {
+      for (auto it = a.at("by_constraint_kg").begin(); it != a.at("by_constraint_kg").end(); ++it)
+        s.attribution.by_constraint_kg.emplace_back(it.key(),
+                                                    it->is_number() ? it->get<double>() : 0.0);
+    }
+    s.attribution.structure_kg = a.value("structure_kg", 0.0);
+    s.attribution.stationarity_residual = a.value("stationarity_residual", 0.0);
+    s.attribution.active_rows = a.value("active_rows", 0);
+  }
   return s;
 }
 

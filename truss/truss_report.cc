@@ -1,6 +1,7 @@
 #include "truss/truss_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -134,6 +135,15 @@ json Solver(const TrussSizing& s) {
             {"null_space_dimension", k.null_space_dimension}}}};
 }
 
+json Attribution(const TrussMassAttribution& a) {
+  json by = json::object();
+  for (const auto& [kind, kg] : a.by_constraint_kg) by[kind] = kg;
+  return {{"by_constraint_kg", by},
+          {"structure_kg", a.structure_kg},
+          {"stationarity_residual", a.stationarity_residual},
+          {"active_rows", a.active_rows}};
+}
+
 std::string Analysis(const TrussModel& m) {
   const std::string statics =
       m.analysis == TrussAnalysisKind::kNonlinear
@@ -191,6 +201,7 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
       {"equilibrium_residual_N", d.check.equilibrium_residual},
       {"mass", {{"structure", structure}, {"node_masses", added}, {"total", structure + added}}},
       {"solver", Solver(d.sizing)},
+      {"mass_attribution", Attribution(d.sizing.attribution)},
       {"edited_members", edited},
       {"analysis", Analysis(m)},
       {"not_applicable", NotApplicable(m)},
@@ -247,6 +258,12 @@ std::string TrussDesignSummary(const TrussDesign& d) {
                    Format("%.1e", k.feasibility) + ", second order by " + k.second_order_by + ")"
              : "optimality: not proved: " + k.failed)
      << "\n";
+  os << "mass by what governs [kg]:";
+  for (const auto& [kind, kg] : d.sizing.attribution.by_constraint_kg) {
+    if (std::abs(kg) >= 5e-4 * d.sizing.attribution.structure_kg)
+      os << " " << kind << Format(" %.4g", kg);
+  }
+  os << "\n";
   os << "groups (area [m^2], mass [kg]):\n";
   for (int g = 0; g < m.num_groups(); ++g) {
     const TrussGroup& group = m.groups[static_cast<size_t>(g)];

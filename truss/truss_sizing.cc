@@ -555,6 +555,57 @@ KktCertificate CertifyMeetingModes(const TrussModel& m, const std::vector<TrussR
   return c;
 }
 
+// The kind a row's or a bound's mass is booked to (TrussMassAttribution).
+const char* AttributionKind(TrussRowKind kind) {
+  switch (kind) {
+    case TrussRowKind::kTension:
+    case TrussRowKind::kCompression:
+      return "strength";
+    case TrussRowKind::kBuckling:
+      return "buckling";
+    case TrussRowKind::kTaut:
+      return "taut_strings";
+    case TrussRowKind::kNoTension:
+      return "bars_in_compression";
+    case TrussRowKind::kDisplacement:
+      return "displacement";
+    case TrussRowKind::kFrequency:
+      return "frequency";
+  }
+  return "strength";
+}
+
+TrussMassAttribution AttributeMass(const TrussModel& m, const std::vector<TrussRow>& rows,
+                                   const Eigen::VectorXd& variables) {
+  const TrussProblem problem(m, rows, variables);  // x = 1 on the areas
+  const Eigen::VectorXd x = problem.Start();
+  const KktInput in = CertificateInput(problem, x);
+  const KktCertificate c = CertifyLocalOptimum(in, kCertificateTolerance);  // first order only
+  TrussMassAttribution out;
+  out.structure_kg = m.Mass(variables);
+  out.stationarity_residual = c.stationarity;
+  out.active_rows = c.active_rows;
+  const char* kinds[] = {"strength",     "buckling",  "taut_strings",  "bars_in_compression",
+                         "displacement", "frequency", "minimum_sizes", "maximum_sizes"};
+  for (const char* k : kinds) out.by_constraint_kg.emplace_back(k, 0.0);
+  const auto book = [&out](const std::string& kind, double share) {
+    for (auto& [name, kg] : out.by_constraint_kg) {
+      if (name == kind) kg += share;
+    }
+  };
+  // f(x) = mass / mass(variables) is 1 here: each term times the mass is its kilograms.
+  for (size_t p = 0; p < in.active.size(); ++p) {
+    const double share = c.multipliers[static_cast<int>(p)] *
+                         in.jac_active.row(static_cast<int>(p)).dot(x) * out.structure_kg;
+    book(AttributionKind(rows[static_cast<size_t>(in.active[p])].kind), share);
+  }
+  for (int v = 0; v < x.size(); ++v) {
+    const double mu = c.bound_multipliers[v];
+    if (mu != 0) book(mu > 0 ? "minimum_sizes" : "maximum_sizes", mu * x[v] * out.structure_kg);
+  }
+  return out;
+}
+
 }  // namespace
 
 TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tolerance,
@@ -626,6 +677,7 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
   out.outcome = best.outcome;
   out.kkt = best.kkt;
   out.start = best.start;
+  out.attribution = AttributeMass(m, rows, best.variables);
   return out;
 }
 

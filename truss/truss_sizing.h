@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "design/kkt_certificate.h"
@@ -68,6 +69,20 @@ std::vector<TrussRow> TrussRows(const TrussModel& model);
 Eigen::VectorXd TrussRowValues(const TrussModel& model, const std::vector<TrussRow>& rows,
                                const Eigen::VectorXd& variables, Eigen::MatrixXd* jacobian);
 
+// What the members' mass pays for, by the sizing's Lagrange multipliers at its point (as the
+// bridge's mass_attribution: design/sizing_attribution.h). The mass is linear in the areas,
+// zero at zero and free of the prestress, so mass = grad(mass) . v = sum_r lambda_r grad g_r . v
+// + mu . v: each active row's term (its kind's share) and each bound's, adding up to the mass
+// up to the stationarity residual. Kinds: "strength" (tension, compression), "buckling",
+// "taut_strings", "bars_in_compression", "displacement", "frequency", "minimum_sizes",
+// "maximum_sizes" (signed: a largest area that binds holds mass elsewhere).
+struct TrussMassAttribution {
+  std::vector<std::pair<std::string, double>> by_constraint_kg;
+  double structure_kg = 0;
+  double stationarity_residual = 0;  // of the multipliers' equation, relative
+  int active_rows = 0;
+};
+
 struct TrussSizing {
   Eigen::VectorXd group_areas;  // [m^2]
   Eigen::VectorXd prestress;    // per member [N]: a self-stress; zero without prestress
@@ -75,6 +90,7 @@ struct TrussSizing {
   KktCertificate kkt;
   std::string start;               // which start the kept solve came from
   std::vector<std::string> tries;  // every solve: start, solver, status, mass, proved or not
+  TrussMassAttribution attribution;
 };
 
 // The sizing of `model` with design.solver (`solver`: "auto" takes the SQP, then Ipopt where the

@@ -108,6 +108,27 @@ TEST_CASE("truss sizing: a prestress's rows and their derivatives in its amplitu
   CHECK_THROWS_AS(TrussRowValues(m, TrussRows(m), v, nullptr), ModelError);
 }
 
+TEST_CASE("truss sizing: the mass attribution adds up to the mass", "[truss]") {
+  // At a proved optimum (stationarity <= 1e-6 of the mass gradient) the multipliers' terms add
+  // up to the mass to about that: 1e-5 of it leaves room for the terms' sum over a few dozen
+  // rows. The displacement problem is displacement-governed, the prism's prestress too.
+  for (const char* name :
+       {"truss_10bar_stress", "truss_10bar_displacement", "motes_prism_design"}) {
+    INFO(name);
+    const TrussDesign d = DesignTruss(Shipped(name));
+    REQUIRE(d.sizing.kkt.proved_local_optimum);
+    const TrussMassAttribution& a = d.sizing.attribution;
+    double sum = 0, displacement = 0;
+    for (const auto& [kind, kg] : a.by_constraint_kg) {
+      sum += kg;
+      if (kind == "displacement") displacement = kg;
+    }
+    CHECK(a.structure_kg == Approx(d.model.Mass(d.sizing.group_areas)).epsilon(1e-12));
+    CHECK(sum == Approx(a.structure_kg).epsilon(1e-5));
+    if (std::string(name) != "truss_10bar_stress") CHECK(displacement > 0.5 * a.structure_kg);
+  }
+}
+
 TEST_CASE("truss analysis: a statically determinate two-bar truss by hand", "[truss]") {
   // Supports at (0, 0) and (0, 3) m, the free node at (4, 0) m, P down on it. Node equilibrium:
   // N2 (3/5) = P, N1 + N2 (4/5) = 0, so N2 = 5P/3 and N1 = -4P/3 whatever the areas.
