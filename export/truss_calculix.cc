@@ -12,16 +12,6 @@ namespace {
 
 std::string Num(double v) { return CalculixNumber(v); }
 
-// Case c's node loads on the free degrees of freedom: its factored loads and the members'
-// factored weight at their areas.
-Eigen::VectorXd CaseLoads(const TrussDesign& d, int c, const Eigen::VectorXd& areas) {
-  const TrussModel& m = d.model;
-  Eigen::VectorXd f = m.cases[static_cast<size_t>(c)].loads;
-  for (int e = 0; e < m.num_members(); ++e)
-    m.AddWeight(e, m.cases[static_cast<size_t>(c)].factor * areas[e], f);
-  return f;
-}
-
 // Each member a spring whose force is N0 + k e at elongation e (k = E A / L, N0 its prestress),
 // in either sign, as tbridge's members are; in a geometrically nonlinear step CalculiX turns it
 // with its chord, as tbridge's nonlinear statics does.
@@ -109,7 +99,7 @@ void WriteTrussCalculix(const TrussDesign& d, int modes, std::ostream& os) {
   const std::string step =
       nlgeom ? "*STEP, NLGEOM, INC=1000\n*STATIC\n1., 1., 1e-6, 1.\n" : "*STEP\n*STATIC\n";
   for (int c = 0; c < static_cast<int>(m.cases.size()); ++c) {
-    const Eigen::VectorXd f = CaseLoads(d, c, areas);
+    const Eigen::VectorXd f = m.CaseLoads(c, areas);
     os << "**\n** tbridge step: " << m.cases[static_cast<size_t>(c)].name << "\n"
        << step << "*CLOAD, OP=NEW\n";
     for (int v = 0; v < nn; ++v) {

@@ -10,6 +10,7 @@
 #include "design/design_reader.h"
 #include "export/export.h"
 #include "export/truss_calculix.h"
+#include "export/truss_opensees.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 #include "truss/truss_design.h"
@@ -53,17 +54,17 @@ int RunExportCommand(const std::vector<std::string>& args) {
   const std::string out_path = parsed.Required("-o");
   const nlohmann::json file = ReadJsonFile(parsed.positionals[0]);
   if (file.is_object() && file.value("kind", "") == "structure") {
-    // A structure's design (truss/): its members elastic, no prestress; CalculiX only so far.
-    if (format != "calculix") {
-      throw OptionError("--format", "'" + format + "'",
-                        "a structure's design exports as calculix only");
-    }
+    // A structure's design (truss/): its members elastic, E A / L.
     if (options.rigid_bars)
       throw UsageError("--rigid-bars: a structure's members are elastic, E A / L");
     const TrussDesign design = CheckTrussDesignFile(file);
     OutputTransaction outputs;
     outputs.ProtectInput(parsed.positionals[0]);
-    WriteTrussCalculix(design, options.modes, outputs.Stage(out_path));
+    if (format == "calculix") {
+      WriteTrussCalculix(design, options.modes, outputs.Stage(out_path));
+    } else {
+      WriteTrussOpenSees(design, outputs.Stage(out_path));
+    }
     outputs.Commit();
     std::cout << "wrote " << out_path << " (" << format << ")\n";
     return kExitOk;

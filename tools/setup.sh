@@ -21,6 +21,7 @@ packages=(
   python3-pytest       # the Python module's tests
   pybind11-dev         # builds the Python module
   calculix-ccx         # CalculiX, the FE program the export is tested against
+  tcl                  # tclsh: runs the exported OpenSees scripts against a stand-in in the tests
   time                 # GNU time: peak memory of whole-process benchmarks
 )
 

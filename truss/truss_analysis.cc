@@ -138,10 +138,8 @@ Eigen::VectorXd TrussAnalysis::StiffnessTimes(int v, const Eigen::VectorXd& u) c
 TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
   const TrussCase& lc = model_.cases[static_cast<size_t>(c)];
   const int ng = model_.num_groups(), nm = model_.num_members();
-  Eigen::VectorXd f = lc.loads;
-  for (int e = 0; e < nm; ++e) model_.AddWeight(e, lc.factor * areas_[e], f);
   TrussCaseResponse r;
-  r.u = factor_->solve(f);
+  r.u = factor_->solve(model_.CaseLoads(c, areas_));
   r.forces.resize(nm);
   for (int e = 0; e < nm; ++e) r.forces[e] = Force(e, r.u);
   if (!sensitivities) return r;

@@ -202,6 +202,13 @@ void TrussModel::AddWeight(int e, double area, Eigen::VectorXd& f) const {
   }
 }
 
+Eigen::VectorXd TrussModel::CaseLoads(int c, const Eigen::VectorXd& member_areas) const {
+  const TrussCase& lc = cases[static_cast<size_t>(c)];
+  Eigen::VectorXd f = lc.loads;
+  for (int e = 0; e < num_members(); ++e) AddWeight(e, lc.factor * member_areas[e], f);
+  return f;
+}
+
 Eigen::VectorXd TrussModel::WeightPerArea(int g) const {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(num_free);
   for (const int e : groups[static_cast<size_t>(g)].members) AddWeight(e, 1.0, w);

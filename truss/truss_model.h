@@ -108,6 +108,9 @@ struct TrussModel {
   // Adds `area` times member e's weight per unit area to the load vector `f` on the free degrees
   // of freedom: half of its weight at each end, along -y; nothing without gravity.
   void AddWeight(int e, double area, Eigen::VectorXd& f) const;
+  // Case c's load vector on the free degrees of freedom: its factored loads and the members'
+  // factored weight at `member_areas`.
+  Eigen::VectorXd CaseLoads(int c, const Eigen::VectorXd& member_areas) const;
   // The self-weight's load vector per unit area of group g, unfactored.
   Eigen::VectorXd WeightPerArea(int g) const;
   // Member e's Euler load at `area` [N]: pi^2 E I / L^2 of a solid round section, I = A^2 / (4 pi).

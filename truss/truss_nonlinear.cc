@@ -98,8 +98,7 @@ bool TrussNonlinearStatics::Newton(const Eigen::VectorXd& f, Eigen::VectorXd& u)
 
 TrussCaseResponse TrussNonlinearStatics::Solve(int c, bool sensitivities) const {
   const TrussCase& lc = model_.cases[static_cast<size_t>(c)];
-  Eigen::VectorXd f = lc.loads;
-  for (int e = 0; e < model_.num_members(); ++e) model_.AddWeight(e, lc.factor * areas_[e], f);
+  const Eigen::VectorXd f = model_.CaseLoads(c, areas_);
   TrussCaseResponse r;
   r.u = Eigen::VectorXd::Zero(model_.num_free);
   double reached = 0, step = 1;

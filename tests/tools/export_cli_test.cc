@@ -218,6 +218,111 @@ TEST_CASE("export: CalculiX agrees with tbridge on the 3D bridge of two planes",
 
 namespace {
 
+// Each `analyze` of an OpenSees script run by tests/tools/opensees_standin.tcl under tclsh: the
+// node and element counts, the loads (node, fx, fy, fz), the recorders (file, response) and the
+// algorithm.
+struct StandinRun {
+  int nodes = 0, elements = 0;
+  std::vector<double> loads;
+  std::vector<std::string> recorders;
+  std::string algorithm;
+};
+
+std::vector<StandinRun> RunStandin(const fs::path& dir, const fs::path& script) {
+  const std::string command =
+      "cd " + Quote(dir.string()) + " && tclsh " +
+      Quote(std::string(TBRIDGE_SOURCE_DIR) + "/tests/tools/opensees_standin.tcl") + " " +
+      Quote(script.string()) + " > standin.out 2> standin.err";
+  INFO("stand-in's stderr: " << ReadText(dir / "standin.err"));
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::vector<StandinRun> out;
+  std::istringstream in(ReadText(dir / "standin.out"));
+  std::string line;
+  while (std::getline(in, line)) {
+    // analysis N E {loads} {recorders} ALGORITHM
+    const size_t a = line.find('{'), b = line.find('}'), c = line.find('{', b),
+                 d = line.find('}', c);
+    REQUIRE(line.rfind("analysis ", 0) == 0);
+    REQUIRE(d != std::string::npos);
+    StandinRun r;
+    std::istringstream(line.substr(9, a - 9)) >> r.nodes >> r.elements;
+    std::istringstream loads(line.substr(a + 1, b - a - 1)),
+        recorders(line.substr(c + 1, d - c - 1));
+    for (double x = 0; loads >> x;) r.loads.push_back(x);
+    for (std::string w; recorders >> w;) r.recorders.push_back(w);
+    std::istringstream(line.substr(d + 1)) >> r.algorithm;
+    out.push_back(r);
+  }
+  return out;
+}
+
+TEST_CASE("export: the OpenSees scripts run as they stand, each case with its loads and recorders",
+          "[tools]") {
+  // OpenSees is not in Debian: a stand-in runs the script under tclsh, checking each command's
+  // arguments as OpenSees's parser does, and reports what each analysis was given.
+  SECTION("a structure: every case, its factored loads exactly, linear where the design is") {
+    const std::pair<const char*, const char*> designs[] = {{"truss_10bar_displacement", "Linear"},
+                                                           {"motes_prism_design", "Newton"}};
+    for (const auto& [name, algorithm] : designs) {
+      INFO(name);
+      const fs::path dir = FreshDir(std::string("export_opensees_") + name);
+      const fs::path design =
+          DesignOf(dir, std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json");
+      const fs::path script = dir / "structure.tcl";
+      REQUIRE(RunTbridge(dir, "export " + Quote(design.string()) + " --format opensees -o " +
+                                  Quote(script.string()))
+                  .code == 0);
+      const std::vector<StandinRun> runs = RunStandin(dir, script);
+      const json d = json::parse(ReadText(design));
+      const json& cases = d["config"]["structure"]["load_cases"];
+      REQUIRE(runs.size() == cases.size());
+      for (size_t c = 0; c < cases.size(); ++c) {
+        const StandinRun& r = runs[c];
+        CHECK(r.nodes == static_cast<int>(d["nodes"].size()));
+        CHECK(r.elements == static_cast<int>(d["members"].size()));
+        CHECK(r.algorithm == algorithm);
+        // The config's loads times the case's factor (no self-weight in these configs), to the
+        // 17 digits the script prints.
+        std::vector<double> expected;
+        for (const json& l : cases[c]["loads"]) {
+          expected.push_back(l["node"].get<double>());
+          for (int a = 0; a < 3; ++a)
+            expected.push_back(cases[c]["factor"].get<double>() * l["force_n"][a].get<double>());
+        }
+        REQUIRE(r.loads.size() == expected.size());
+        for (size_t k = 0; k < expected.size(); ++k)
+          CHECK(r.loads[k] == Approx(expected[k]).epsilon(1e-15));
+        const std::string tag = "case_" + std::to_string(c + 1);
+        CHECK(r.recorders == std::vector<std::string>{tag + ".disp.out", "disp",
+                                                      tag + ".reactions.out", "reaction"});
+      }
+    }
+  }
+  SECTION("a bridge: the reference state and every case, each from the drawn state") {
+    const fs::path dir = FreshDir("export_opensees_runs");
+    const fs::path design = DesignOf(dir);
+    const fs::path script = dir / "bridge.tcl";
+    REQUIRE(RunTbridge(dir, "export " + Quote(design.string()) + " --format opensees -o " +
+                                Quote(script.string()))
+                .code == 0);
+    const std::vector<StandinRun> runs = RunStandin(dir, script);
+    const std::string text = ReadText(script);
+    size_t cases = 0;
+    for (size_t at = text.find("\nproc case_"); at != std::string::npos;
+         at = text.find("\nproc case_", at + 1))
+      ++cases;
+    REQUIRE(cases > 0);
+    REQUIRE(runs.size() == cases + 1);
+    for (size_t k = 0; k < runs.size(); ++k) {
+      CHECK(runs[k].algorithm == "Newton");
+      CHECK(!runs[k].loads.empty());
+      const std::string tag = k == 0 ? "reference" : "case_" + std::to_string(k);
+      CHECK(runs[k].recorders == std::vector<std::string>{tag + ".disp.out", "disp",
+                                                          tag + ".reactions.out", "reaction"});
+    }
+  }
+}
+
 TEST_CASE("export: the OpenSees script read back is the design, member by member", "[tools]") {
   const fs::path dir = FreshDir("export_opensees");
   const fs::path design_file = DesignOf(dir);
