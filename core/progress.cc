@@ -56,8 +56,34 @@ ProgressReporter::~ProgressReporter() { Finish(); }
 
 bool ProgressReporter::Wanted(bool forced) { return forced || ::isatty(STDERR_FILENO) == 1; }
 
+namespace {
+
+// The work in progress (SetWorkSubject, the last Stage): process-wide, as the one reader is
+// main's handler of an out-of-memory.
+std::mutex work_mutex;
+std::string work_subject, work_stage;
+
+void SetWorkStage(const std::string& stage) {
+  std::lock_guard<std::mutex> lock(work_mutex);
+  work_stage = stage;
+}
+
+}  // namespace
+
+void SetWorkSubject(const std::string& subject) {
+  std::lock_guard<std::mutex> lock(work_mutex);
+  work_subject = subject;
+}
+
+std::string WorkInProgress() {
+  std::lock_guard<std::mutex> lock(work_mutex);
+  if (work_stage.empty()) return work_subject;
+  return work_subject.empty() ? work_stage : work_stage + ", of " + work_subject;
+}
+
 void ProgressReporter::Stage(const std::string& name) {
   if (cancel_) cancel_();
+  SetWorkStage(prefix_ + name);
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   stage_ = prefix_ + name;

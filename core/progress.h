@@ -94,6 +94,14 @@ class ProgressReporter {
   std::string prefix_;
 };
 
+// What the process is working on, for the one message that cannot ask the work itself (out of
+// memory): the subject a command names (SetWorkSubject: "the design of the bridge at n = 10")
+// and the stage any reporter last began, enabled or not, with its prefix ("sizing 3 (of at most
+// 15): static check"). WorkInProgress() joins them: "static check, sizing 3 ..., of the design
+// of the bridge at n = 10"; "" where neither is known. Either may be called from any thread.
+void SetWorkSubject(const std::string& subject);
+std::string WorkInProgress();
+
 // "h:mm:ss" of a non-negative number of seconds (negative counts as 0).
 std::string ClockText(double seconds);
 

@@ -67,6 +67,9 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   }
   const std::string out_path = parsed.Required("-o");
   const Config config = LoadConfig(parsed.positionals[0]);
+  SetWorkSubject(config.structure
+                     ? std::string("the design of the structure")
+                     : "the design of the bridge at n = " + std::to_string(config.bridge.n));
   if (config.structure) return RunStructureDesign(config, parsed, out_path);
   // Staged before the design, so an output that cannot be written fails at once; nothing
   // replaces OUT.json before Commit().

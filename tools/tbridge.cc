@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/progress.h"
 #include "design/solvers.h"
 #include "tbridge_version.h"  // generated at build time (tools/version.cmake)
 #include "tools/commands.h"
@@ -151,8 +152,13 @@ int main(int argc, char** argv) {
   } catch (const tbridge::ModelError& e) {
     return Fail(e.what(), kExitNoDesign);
   } catch (const std::bad_alloc&) {
-    // The limits checked before a run (dynamics.limits) keep configs from getting here.
-    return Fail("out of memory", kExitOther);
+    // The limits checked before a run (dynamics.limits) keep configs from getting here; a
+    // design's size is not estimated beforehand, so this names where the memory ran out.
+    const std::string where = tbridge::WorkInProgress();
+    return Fail("out of memory" + (where.empty() ? std::string() : " in " + where) +
+                    ": a bridge's sizing and checks grow about fourfold per level of bridge.n; a "
+                    "smaller bridge.n, or a machine with more memory",
+                kExitOther);
   } catch (const std::exception& e) {
     return Fail(e.what(), kExitOther);
   } catch (...) {
