@@ -134,8 +134,9 @@ TEST_CASE("SQP: a row that no point meets is reported, not chased", "[sqp]") {
   CHECK(out.iterations < 1000);  // a third of the limit; measured 207 (the floor approached)
 }
 
-TEST_CASE("SQP: the verified sizing problem solved as SLSQP solves it, or lighter", "[sqp]") {
-  if (!SolverBuiltIn("nlopt")) return;  // the second algorithm is NLopt's
+TEST_CASE("SQP: the verified sizing problem solved as SLSQP solves it, or lighter",
+          "[sqp][nlopt]") {
+  REQUIRE(SolverBuiltIn("nlopt"));      // the second algorithm is NLopt's (tagged [nlopt])
   Config config;                        // the engineering defaults at n = 3: every case and station
   config.bridge.n = 3;
   const Design d = RunDesign(config);
