@@ -355,3 +355,14 @@ def test_a_structure_is_designed_as_tbridge_design_designs_it(tmp_path):
     assert d.structure_mass == written["mass"]["structure"]
     assert d.verdict == "PASS" and d.proved_local_optimum
     assert d.group_names == [g["name"] for g in written["groups"]]
+    assert list(d.prestress) == [0.0] * len(written["members"])  # no prestress asked
+
+
+def test_a_prestressed_structure_gives_its_prestress():
+    # The prism designed with its prestress: the module's forces are the file's, its prestress a
+    # self-stress with the bars in compression and the strings in tension.
+    d = tbridge.design(os.path.join(SOURCE, "configs", "motes_prism_design.json"))
+    written = json.loads(d.to_json())
+    assert list(d.prestress) == [m["prestress_n"] for m in written["members"]]
+    assert all(n < 0 for n in d.prestress[:3]) and all(n > 0 for n in d.prestress[3:])
+    assert d.verdict == "PASS" and d.proved_local_optimum
