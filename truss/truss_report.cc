@@ -221,7 +221,8 @@ namespace {
 std::string PrestressLine(const TrussDesign& d) {
   const TrussModel& m = d.model;
   std::ostringstream os;
-  os << "prestress (a self-stress, " << m.num_prestress() << " states) [kN]:";
+  os << "prestress (a self-stress, " << m.num_prestress()
+     << (m.num_prestress() == 1 ? " state" : " states") << ") [kN]:";
   for (const TrussKind kind : {TrussKind::kString, TrussKind::kBar, TrussKind::kTruss}) {
     double lo = 0, hi = 0;
     bool any = false;
