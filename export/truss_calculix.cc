@@ -94,7 +94,7 @@ void WriteTrussCalculix(const TrussDesign& d, int modes, std::ostream& os) {
   // leaves out (an infinitesimal mechanism is then singular): its steps are geometrically
   // nonlinear, as are a nonlinear design's. Equilibrium to 1e-9 of the average force (defaults
   // 5e-3 and 1e-2).
-  const bool nlgeom = m.analysis == TrussAnalysisKind::kNonlinear || m.num_prestress() > 0;
+  const bool nlgeom = !m.LinearAndUnstressed();
   if (nlgeom) os << "*CONTROLS, PARAMETERS=FIELD\n1e-9, 1e-9, , , 1e-9\n";
   const std::string step =
       nlgeom ? "*STEP, NLGEOM, INC=1000\n*STATIC\n1., 1., 1e-6, 1.\n" : "*STEP\n*STATIC\n";

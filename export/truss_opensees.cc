@@ -50,7 +50,7 @@ void Members(const TrussDesign& d, bool corotational, std::ostream& os) {
 void WriteTrussOpenSees(const TrussDesign& d, std::ostream& os) {
   const TrussModel& m = d.model;
   const Eigen::VectorXd areas = d.check.Areas();
-  const bool linear = m.analysis == TrussAnalysisKind::kLinear && m.num_prestress() == 0;
+  const bool linear = m.LinearAndUnstressed();
   os << "# tbridge export of a structure: " << m.nodes.cols() << " nodes, " << m.num_members()
      << " members; SI units (m, N, kg, s); " << (linear ? "linear" : "geometrically nonlinear")
      << " statics\n";

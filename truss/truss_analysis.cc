@@ -75,6 +75,13 @@ Eigen::Vector3d RelativeDisplacement(const TrussModel& model, int e, const Eigen
   return w;
 }
 
+void AddForcePartials(const TrussModel& model, int e, double stretch, Eigen::MatrixXd& dforces) {
+  const TrussMember& m = model.members[static_cast<size_t>(e)];
+  dforces(e, m.group) += model.youngs_modulus / m.length * stretch;
+  for (int q = 0; q < model.num_prestress(); ++q)
+    dforces(e, model.num_groups() + q) += model.self_stress(e, q);
+}
+
 void ScatterPull(const TrussModel& model, int e, const Eigen::Vector3d& pull,
                  Eigen::VectorXd& out) {
   const TrussMember& m = model.members[static_cast<size_t>(e)];
@@ -157,9 +164,7 @@ TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
     const double k = model_.youngs_modulus * areas_[e] / m.length;
     for (int v = 0; v < nv; ++v) r.dforces(e, v) = k * Elongation(e, r.du.col(v));
-    r.dforces(e, m.group) += model_.youngs_modulus / m.length * Elongation(e, r.u);
-    for (int q = 0; q < model_.num_prestress(); ++q)
-      r.dforces(e, ng + q) += model_.self_stress(e, q);
+    AddForcePartials(model_, e, Elongation(e, r.u), r.dforces);
   }
   return r;
 }

@@ -55,6 +55,10 @@ std::unique_ptr<TrussFactor> FactoriseStiffness(const TrussModel& model,
                                                 const Eigen::SparseMatrix<double>& stiffness);
 // u_j - u_i of member e, zero along a support's axes.
 Eigen::Vector3d RelativeDisplacement(const TrussModel& model, int e, const Eigen::VectorXd& u);
+// Adds to row e of `dforces` (members x variables) member e's force derivatives at fixed
+// displacements: E (l - L) / L for its group's area (`stretch` = l - L), and its share of each
+// self-stress state for that state's amplitude.
+void AddForcePartials(const TrussModel& model, int e, double stretch, Eigen::MatrixXd& dforces);
 // Adds `pull` to member e's node i and -pull to its node j, on their free degrees of freedom.
 void ScatterPull(const TrussModel& model, int e, const Eigen::Vector3d& pull, Eigen::VectorXd& out);
 

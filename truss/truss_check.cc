@@ -164,7 +164,7 @@ TrussCheck CheckTruss(const TrussModel& m, const Eigen::VectorXd& areas,
   out.prestress = prestress.size() ? prestress : Eigen::VectorXd::Zero(m.num_members());
   const TrussAnalysis analysis(m, areas, out.prestress);
   const TrussNonlinearStatics nonlinear(m, areas, out.prestress);
-  out.cases = SolveTrussCases(m, analysis, areas, out.prestress, false);
+  out.cases = SolveTrussCases(m, &analysis, areas, out.prestress, false);
   const auto pull = [&](int e, const Eigen::VectorXd& u) {
     return m.analysis == TrussAnalysisKind::kNonlinear ? nonlinear.Pull(e, u) : analysis.Pull(e, u);
   };

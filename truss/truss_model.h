@@ -93,6 +93,12 @@ struct TrussModel {
   int num_groups() const { return static_cast<int>(groups.size()); }
   int num_prestress() const { return static_cast<int>(self_stress.cols()); }
   int num_variables() const { return num_groups() + num_prestress(); }
+  // Linear statics without prestress: an FE program reproduces it by a linear step; otherwise
+  // its stiffness is partly the prestress's, or its statics nonlinear, and it needs
+  // geometrically nonlinear steps (the CalculiX and OpenSees exports).
+  bool LinearAndUnstressed() const {
+    return analysis == TrussAnalysisKind::kLinear && num_prestress() == 0;
+  }
   // Each member's prestress force [N] at the sizing's variables: zero without prestress.
   Eigen::VectorXd Prestress(const Eigen::VectorXd& variables) const;
   // The equilibrium matrix E (dim x nodes rows, node by node, x members): E t is the net force

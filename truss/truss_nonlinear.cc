@@ -160,13 +160,11 @@ void TrussNonlinearStatics::Sensitivities(int c, TrussCaseResponse& r) const {
     for (int v = 0; v < nv; ++v)
       r.dforces(e, v) =
           k * d[static_cast<size_t>(e)].dot(RelativeDisplacement(model_, e, r.du.col(v)));
-    r.dforces(e, m.group) += model_.youngs_modulus / m.length * stretch[e];
-    for (int q = 0; q < model_.num_prestress(); ++q)
-      r.dforces(e, ng + q) += model_.self_stress(e, q);
+    AddForcePartials(model_, e, stretch[e], r.dforces);
   }
 }
 
-std::vector<TrussCaseResponse> SolveTrussCases(const TrussModel& model, const TrussAnalysis& linear,
+std::vector<TrussCaseResponse> SolveTrussCases(const TrussModel& model, const TrussAnalysis* linear,
                                                const Eigen::VectorXd& member_areas,
                                                const Eigen::VectorXd& prestress,
                                                bool sensitivities) {
@@ -176,7 +174,7 @@ std::vector<TrussCaseResponse> SolveTrussCases(const TrussModel& model, const Tr
     const TrussNonlinearStatics statics(model, member_areas, prestress);
     for (int c = 0; c < cases; ++c) out.push_back(statics.Solve(c, sensitivities));
   } else {
-    for (int c = 0; c < cases; ++c) out.push_back(linear.Solve(c, sensitivities));
+    for (int c = 0; c < cases; ++c) out.push_back(linear->Solve(c, sensitivities));
   }
   return out;
 }

@@ -53,8 +53,8 @@ class TrussNonlinearStatics {
 
 // Every case's response by the model's analysis: `linear`'s (about the prestressed state; it
 // also gives the modes) or, for structure.analysis "nonlinear", the nonlinear one at the same
-// member areas and prestress.
-std::vector<TrussCaseResponse> SolveTrussCases(const TrussModel& model, const TrussAnalysis& linear,
+// member areas and prestress (`linear` may then be null).
+std::vector<TrussCaseResponse> SolveTrussCases(const TrussModel& model, const TrussAnalysis* linear,
                                                const Eigen::VectorXd& member_areas,
                                                const Eigen::VectorXd& prestress,
                                                bool sensitivities);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/error.h"
 #include "design/solvers.h"
@@ -120,11 +121,15 @@ Eigen::VectorXd TrussRowValues(const TrussModel& m, const std::vector<TrussRow>&
                                const Eigen::VectorXd& variables, Eigen::MatrixXd* jacobian) {
   const bool grad = jacobian != nullptr;
   const Eigen::VectorXd areas = m.MemberAreas(variables), prestress = m.Prestress(variables);
-  const TrussAnalysis analysis(m, areas, prestress);
+  // The linear analysis where it is read: the linear statics, or the modes. The nonlinear
+  // statics factorise their own tangents (the first of them this one).
+  std::optional<TrussAnalysis> analysis;
+  if (m.analysis == TrussAnalysisKind::kLinear || ModesAsked(m) > 0)
+    analysis.emplace(m, areas, prestress);
   const std::vector<TrussCaseResponse> responses =
-      SolveTrussCases(m, analysis, areas, prestress, grad);
+      SolveTrussCases(m, analysis ? &*analysis : nullptr, areas, prestress, grad);
   TrussModes modes;
-  if (ModesAsked(m) > 0) modes = analysis.Modes(ModesAsked(m), grad);
+  if (ModesAsked(m) > 0) modes = analysis->Modes(ModesAsked(m), grad);
   const int nv = m.num_variables();
   Eigen::VectorXd g(static_cast<int>(rows.size()));
   if (grad) jacobian->setZero(static_cast<int>(rows.size()), nv);
