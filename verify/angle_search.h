@@ -16,7 +16,8 @@ namespace tbridge {
 // shallower the more (a shallower substructure carries the load with more thrust; the note says
 // where it stopped), then a golden section within a step either side of the scan's best, until its
 // bracket is under 0.5 deg (20 verified designs over the default 10-60 deg, each with its solver's
-// iterations capped at 300), then the design at the angle chosen with the config's own settings.
+// iterations capped at 300, each started from the sizes of the nearest angle that passed:
+// SizingStart), then the design at the angle chosen, fresh, with the config's own settings.
 // The mass need not be unimodal in the angle: the scan finds the region, the section refines it,
 // and a better angle between the scan's points outside that region is not sought. Returns that
 // design with `config.bridge` echoing "auto" and beta_deg the angle chosen, and `angle` the record.

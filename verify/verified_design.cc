@@ -973,7 +973,7 @@ Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) 
 
 }  // namespace
 
-Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
+Design DesignAndVerify(const Config& config, ProgressReporter* progress, const SizingStart* start) {
   if (config.bridge.beta_auto) return DesignAtBestAngle(config, progress);
   const int max_iterations = config.design.max_sizings;
   const std::string solver = SizingSolver(config);
@@ -1018,7 +1018,15 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress) {
   const FirstSizes first_sizes{MemberAreas(first), PrestressCoefficients(first)};
   std::vector<double> areas = first_sizes.areas;
   Eigen::VectorXd alpha = first_sizes.alpha;
-  // The start: the first design's areas and prestress under the config's own loads and weight.
+  if (start != nullptr && start->areas.size() == areas.size() &&
+      static_cast<size_t>(start->prestress_forces.size()) == areas.size() && alpha.size() > 0) {
+    areas = start->areas;
+    alpha =
+        EquilibriumSolver(BuildEquilibrium(first.topology.structure)).SelfStresses().transpose() *
+        start->prestress_forces;
+  }
+  // The start: the first design's (or the given) areas and prestress under the config's own loads
+  // and weight.
   Design current = SizedDesign(config, areas, alpha);
   record.structure_mass_kg.push_back(current.mass.structure);
   SizingCorrections corrections;

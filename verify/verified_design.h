@@ -39,8 +39,19 @@ void CheckAgain(Design& design, ProgressReporter* progress = nullptr);
 // no area mends. The verified sizing mends so a design whose mass has settled while it fails.
 std::vector<double> MendedAreas(const Design& design, const std::vector<int>& group_of, int* mended);
 
+// Sizes to start a verified design from, in place of its equilibrium design's: another
+// design's of the same bridge drawn otherwise (the angle's search starts each angle from the
+// nearest angle designed, whose optimum lies near).
+struct SizingStart {
+  std::vector<double> areas;         // [m^2] per member [bars; strings]
+  Eigen::VectorXd prestress_forces;  // [N] per member: projected on the bridge's self-stresses
+};
+
 // The last design, with its static check and its `resizing` record.
-// At most config.design.max_sizings sizings.
-Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr);
+// At most config.design.max_sizings sizings. `start` (optional) replaces the first design's
+// sizes as the first sizing's start; the second start and the mass's premium still refer to
+// the first design's, and a start whose member count differs is not used.
+Design DesignAndVerify(const Config& config, ProgressReporter* progress = nullptr,
+                       const SizingStart* start = nullptr);
 
 }  // namespace tbridge
