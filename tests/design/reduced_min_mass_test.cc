@@ -147,7 +147,11 @@ TEST_CASE("The self-stress form and the full NLP find the same optimum", "[desig
       // goes to NLopt up to 600 variables (planar p = 1 up to n = 6, 3D up to n = 4); beyond,
       // NLopt's self-stress solution is held to the full problem solved by Ipopt.
       const std::string full_solver = solver == "nlopt" && full_variables > 600 ? "ipopt" : solver;
-      if (!test::HaveSolvers({solver.c_str(), full_solver.c_str()})) continue;  // not built in
+      if (!test::HaveSolvers({solver.c_str(), full_solver.c_str()})) {
+        WARN("skipped for " << solver << ": " << full_solver << " or " << solver
+                            << " not built in (its TBRIDGE_WITH_ option is off)");
+        continue;
+      }
       INFO(c.label << ", " << solver << " (full problem: " << full_solver << ")");
       const Optimum full = SolveFull(in, full_solver);
       // The direct solve (planar) or the product's own self-stress NLP (3D: the same as below).
