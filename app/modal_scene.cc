@@ -7,7 +7,8 @@
 
 namespace tbridge {
 
-ModalScene ModalSceneOf(const Config& config, ProgressReporter* progress, const std::string& mass_model) {
+ModalScene ModalSceneOf(const Config& config, ProgressReporter* progress,
+                        const std::string& mass_model) {
   const ModelOptions options = ModalModelOptions(config);
   ModalScene scene;
   if (config.structure) {

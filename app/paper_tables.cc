@@ -4,12 +4,12 @@
 #include <filesystem>
 #include <map>
 
+#include "app/scenario.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
 #include "core/progress.h"
 #include "design/design.h"
-#include "app/scenario.h"
 
 namespace tbridge {
 
@@ -75,7 +75,8 @@ class ScenarioCache {
     auto it = cache_.find(key);
     if (it == cache_.end()) {
       ++runs;
-      it = cache_.emplace(key, RunScenario(config, HooksFor(path, progress_)).simulation.summary).first;
+      it = cache_.emplace(key, RunScenario(config, HooksFor(path, progress_)).simulation.summary)
+               .first;
     }
     return it->second;
   }
@@ -88,7 +89,8 @@ class ScenarioCache {
 void DesignTables(const std::string& dir, const std::set<int>& tables, PaperReproduction& out) {
   const nlohmann::json ref = ReadJsonFile(dir + "/reference/paper_tables_1_4.json");
   std::map<int, Design> designs;
-  for (int n = 1; n <= 3; ++n) designs.emplace(n, RunDesign(LoadConfig(dir + "/paper_n" + std::to_string(n) + ".json")));
+  for (int n = 1; n <= 3; ++n)
+    designs.emplace(n, RunDesign(LoadConfig(dir + "/paper_n" + std::to_string(n) + ".json")));
   if (tables.count(1)) {
     for (const auto& row : ref.at("table1")) {
       const int n = row.at("n");
@@ -100,7 +102,8 @@ void DesignTables(const std::string& dir, const std::set<int>& tables, PaperRepr
       AddAbsolute(out, 1, tag + "n_s", s.num_strings(), row.at("n_s"), 0.5);
       AddAbsolute(out, 1, tag + "l [m]", d.deck.section_length, row.at("l"),
                   PrintedTolerance(row.at("l")));
-      AddAbsolute(out, 1, tag + "f [N]", d.deck.node_load, row.at("f"), PrintedTolerance(row.at("f")));
+      AddAbsolute(out, 1, tag + "f [N]", d.deck.node_load, row.at("f"),
+                  PrintedTolerance(row.at("f")));
       out.json["table1"].push_back({{"n", n},
                                     {"nodes", s.num_nodes()},
                                     {"bars", s.num_bars()},
@@ -116,19 +119,25 @@ void DesignTables(const std::string& dir, const std::set<int>& tables, PaperRepr
       if (!tables.count(table_of[n])) continue;
       const std::string name = row.at("member");
       const MemberSizing* m = FindMember(designs.at(n), name);
-      if (!m) throw ModelError("paper: member " + name + " missing from the n = " + std::to_string(n) + " design");
-      const std::string tag = "n=" + std::to_string(n) + " " + (m->kind == MemberKind::kBar ? "bar " : "cable ") + name;
+      if (!m)
+        throw ModelError("paper: member " + name + " missing from the n = " + std::to_string(n) +
+                         " design");
+      const std::string tag =
+          "n=" + std::to_string(n) + " " + (m->kind == MemberKind::kBar ? "bar " : "cable ") + name;
       // Radii are rounded to 0.1 mm in the paper (SPEC.md §5).
       AddAbsolute(out, table_of[n], tag + " r [mm]", m->radius * 1e3, row.at("r_mm"), 0.05);
-      nlohmann::json j = {{"n", n}, {"member", name}, {"type", KindName(m->kind)}, {"radius_mm", m->radius * 1e3}};
+      nlohmann::json j = {
+          {"n", n}, {"member", name}, {"type", KindName(m->kind)}, {"radius_mm", m->radius * 1e3}};
       if (m->kind == MemberKind::kBar) {
-        AddAbsolute(out, table_of[n], tag + " m_b [kg]", m->mass, row.at("m_b"), PrintedTolerance(row.at("m_b")));
+        AddAbsolute(out, table_of[n], tag + " m_b [kg]", m->mass, row.at("m_b"),
+                    PrintedTolerance(row.at("m_b")));
         j["mass_kg"] = m->mass;
       } else {
         const double scale = row.at("k_scale");
-        AddAbsolute(out, table_of[n], tag + " L0 [m]", m->rest_length, row.at("L0"), PrintedTolerance(row.at("L0")));
-        AddAbsolute(out, table_of[n], tag + " k_s [N/m] / " + nlohmann::json(scale).dump(), m->stiffness / scale,
-                    row.at("k"), PrintedTolerance(row.at("k")));
+        AddAbsolute(out, table_of[n], tag + " L0 [m]", m->rest_length, row.at("L0"),
+                    PrintedTolerance(row.at("L0")));
+        AddAbsolute(out, table_of[n], tag + " k_s [N/m] / " + nlohmann::json(scale).dump(),
+                    m->stiffness / scale, row.at("k"), PrintedTolerance(row.at("k")));
         j["rest_length_m"] = m->rest_length;
         j["stiffness_N_m"] = m->stiffness;
       }
@@ -145,7 +154,8 @@ std::string RowConfig(const std::string& dir, int table, int n, int cls, int lev
 
 }  // namespace
 
-PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& tables, ProgressReporter* progress) {
+PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& tables,
+                                 ProgressReporter* progress) {
   PaperReproduction out;
   out.json = nlohmann::json::object();
   if (tables.count(1) || tables.count(2) || tables.count(3) || tables.count(4)) {
@@ -182,12 +192,15 @@ PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& ta
       const int n = row.at("n");
       const int cls = PerturbedClass(row.at("delta"));
       const SimulationSummary& s = cache.Run(RowConfig(dir, 5, n, cls, 0), out.runs);
-      if (!s.has_frequency) throw ModelError("paper: Table 5 run n = " + std::to_string(n) + " has no frequency");
-      const std::string tag = "n=" + std::to_string(n) + " delta=" + DeltaText(row.at("delta")) + " ";
+      if (!s.has_frequency)
+        throw ModelError("paper: Table 5 run n = " + std::to_string(n) + " has no frequency");
+      const std::string tag =
+          "n=" + std::to_string(n) + " delta=" + DeltaText(row.at("delta")) + " ";
       const double tol = n == 1 ? kTable5Tolerance : kTable5ChaoticTolerance;
       AddRelative(out, 5, tag + "T [s]", s.frequency.period_s, row.at("T_s"), tol, /*period=*/true);
       AddRelative(out, 5, tag + "f [Hz]", s.frequency.frequency_hz, row.at("frequency_hz"), tol);
-      AddRelative(out, 5, tag + "omega [rad/s]", s.frequency.omega_rad_s, row.at("omega_rad_s"), tol);
+      AddRelative(out, 5, tag + "omega [rad/s]", s.frequency.omega_rad_s, row.at("omega_rad_s"),
+                  tol);
       out.json["table5"].push_back({{"n", n},
                                     {"delta", row.at("delta")},
                                     {"T_s", s.frequency.period_s},
@@ -204,20 +217,24 @@ PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& ta
       const int cls = PerturbedClass(row.at("delta"));
       for (int level = 1; level <= 3; ++level) {
         const SimulationSummary& s = cache.Run(RowConfig(dir, 6, n, cls, level), out.runs);
-        if (!s.has_frequency) throw ModelError("paper: Table 6 run n = " + std::to_string(n) + " has no frequency");
+        if (!s.has_frequency)
+          throw ModelError("paper: Table 6 run n = " + std::to_string(n) + " has no frequency");
         const double printed = row.at("omega_rad_s")[level - 1];
         // The p1 column is the design state, i.e. Table 5 (SPEC.md §9).
-        const double tol = level == 1 ? (n == 1 ? kTable5Tolerance : kTable5ChaoticTolerance)
-                                      : (n == 1 ? kTable6PeriodicTolerance : kTable6IrregularTolerance);
+        const double tol = level == 1
+                               ? (n == 1 ? kTable5Tolerance : kTable5ChaoticTolerance)
+                               : (n == 1 ? kTable6PeriodicTolerance : kTable6IrregularTolerance);
         const std::string prestrain = level == 1 ? "design" : levels[level - 1].dump();
-        AddRelative(out, 6, "n=" + std::to_string(n) + " delta=" + DeltaText(row.at("delta")) + " p=" + prestrain +
-                                " omega [rad/s]",
+        AddRelative(out, 6,
+                    "n=" + std::to_string(n) + " delta=" + DeltaText(row.at("delta")) +
+                        " p=" + prestrain + " omega [rad/s]",
                     s.frequency.omega_rad_s, printed, tol);
-        out.json["table6"].push_back({{"n", n},
-                                      {"delta", row.at("delta")},
-                                      {"prestrain", level == 1 ? nlohmann::json("design") : levels[level - 1]},
-                                      {"omega_rad_s", s.frequency.omega_rad_s},
-                                      {"paper_omega_rad_s", printed}});
+        out.json["table6"].push_back(
+            {{"n", n},
+             {"delta", row.at("delta")},
+             {"prestrain", level == 1 ? nlohmann::json("design") : levels[level - 1]},
+             {"omega_rad_s", s.frequency.omega_rad_s},
+             {"paper_omega_rad_s", printed}});
       }
     }
   }

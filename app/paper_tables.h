@@ -15,10 +15,10 @@ class ProgressReporter;
 // printed digit, radii to 0.05 mm); Tables 5-6 use SPEC.md §9's relative tolerances.
 struct PaperCheck {
   int table = 0;
-  std::string item;       // e.g. "n=2 cable 4-7 r [mm]" or "n=3 delta=[0,0.1,0] omega [rad/s]"
+  std::string item;  // e.g. "n=2 cable 4-7 r [mm]" or "n=3 delta=[0,0.1,0] omega [rad/s]"
   double computed = 0;
   double printed = 0;
-  double tolerance = 0;   // absolute (tables 1-4) or relative (tables 5-6)
+  double tolerance = 0;  // absolute (tables 1-4) or relative (tables 5-6)
   bool relative = false;
   bool pass = false;
   double relative_error() const { return printed != 0 ? (computed - printed) / printed : 0.0; }
@@ -53,9 +53,9 @@ inline constexpr double kTable6IrregularTolerance = 0.25;
 inline constexpr int kSection73 = 7;
 
 // Runs the requested tables (1..6, and kSection73) from the configs in `configs_dir`
-// (paper_n*.json, paper_t5_*.json, paper_t6_*.json, paper_3d_*.json and reference/). Throws ConfigError when a config or the
-// reference data is missing or bad, ModelError when a design or run fails.
-// `progress` (optional) is told each design and run as a stage named after its config.
+// (paper_n*.json, paper_t5_*.json, paper_t6_*.json, paper_3d_*.json and reference/). Throws
+// ConfigError when a config or the reference data is missing or bad, ModelError when a design or
+// run fails. `progress` (optional) is told each design and run as a stage named after its config.
 PaperReproduction ReproducePaper(const std::string& configs_dir, const std::set<int>& tables,
                                  ProgressReporter* progress = nullptr);
 

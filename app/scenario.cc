@@ -1,11 +1,10 @@
 #include "app/scenario.h"
 
-#include "verify/verified_design.h"
-
 #include "bridge/design_model.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "dynamics/structure_model.h"
+#include "verify/verified_design.h"
 
 namespace tbridge {
 
@@ -37,16 +36,18 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
 ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks,
                                    const std::function<void(const Design&)>& on_design) {
   const auto verified = [](const Config& c) { return DesignAndVerify(c); };
-  return RunScenario(config, hooks, on_design,
-                     KeepsPaperSwitches(config) ? std::function<Design(const Config&)>{} : verified);
+  return RunScenario(
+      config, hooks, on_design,
+      KeepsPaperSwitches(config) ? std::function<Design(const Config&)>{} : verified);
 }
 
 ScenarioResult RunDesignScenario(const Design& design, const RunHooks& hooks,
                                  const std::function<void(const Design&)>& on_design) {
   if (!design.config.dynamics) {
-    throw ConfigError("config.dynamics", "(missing)",
-                      "a design file simulated needs a \"dynamics\" section in its config (configs/README.md): "
-                      "add one there, or to the config it was designed from");
+    throw ConfigError(
+        "config.dynamics", "(missing)",
+        "a design file simulated needs a \"dynamics\" section in its config (configs/README.md): "
+        "add one there, or to the config it was designed from");
   }
   return RunScenario(design.config, hooks, on_design, [&design](const Config&) { return design; });
 }

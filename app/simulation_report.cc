@@ -35,7 +35,8 @@ nlohmann::json ModelMembersJson(const DynamicModel& model) {
 
 }  // namespace
 
-nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, const SimulationResult& r) {
+nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
+                           const SimulationResult& r) {
   const SimulationSummary& s = r.summary;
   nlohmann::json j;
   j["config"] = ToJson(config);
@@ -44,7 +45,8 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
   for (size_t c = 0; c < groups.size(); ++c) {
     nlohmann::json bars = nlohmann::json::array();
     for (const int k : groups[c]) bars.push_back(MemberName(model.bars[k].i, model.bars[k].j));
-    classes.push_back({{"class", c + 1}, {"length_m", model.bars[groups[c].front()].length}, {"bars", bars}});
+    classes.push_back(
+        {{"class", c + 1}, {"length_m", model.bars[groups[c].front()].length}, {"bars", bars}});
   }
   j["model"] = {{"dim", model.dim},
                 {"nodes", model.num_nodes()},
@@ -53,9 +55,10 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
                 {"moving_mass_kg", MovingMass(model)},
                 {"bar_length_classes", classes},
                 {"members", ModelMembersJson(model)}};
-  j["run"] = {{"integrator", s.integrator}, {"substeps", s.substeps}, {"engine", s.engine}, {"steps", s.steps},
-              {"rejected_steps", s.rejected},
-              {"evaluations", s.evaluations}, {"duration_s", s.duration}, {"wall_s", s.wall_seconds}};
+  j["run"] = {{"integrator", s.integrator},   {"substeps", s.substeps},
+              {"engine", s.engine},           {"steps", s.steps},
+              {"rejected_steps", s.rejected}, {"evaluations", s.evaluations},
+              {"duration_s", s.duration},     {"wall_s", s.wall_seconds}};
   if (s.has_frequency) {
     j["frequency"] = {{"method", "dominant spectral peak of the summed vertical deck displacement"},
                       {"periods", {s.frequency.period_s}},
@@ -74,8 +77,9 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
     // The summed signal shows only the symmetric modes; the mirror-odd projection the rest.
     j["frequency"]["antisymmetric"] =
         s.antisymmetric_frequency
-            ? nlohmann::json{{"method", "dominant spectral peak of the deck displacement projected on the "
-                                        "mirror-odd shape (+1 left of mid-span, -1 right)"},
+            ? nlohmann::json{{"method",
+                              "dominant spectral peak of the deck displacement projected on the "
+                              "mirror-odd shape (+1 left of mid-span, -1 right)"},
                              {"period_s", s.antisymmetric_frequency->period_s},
                              {"omega_rad_s", s.antisymmetric_frequency->omega_rad_s},
                              {"frequency_hz", s.antisymmetric_frequency->frequency_hz}}
@@ -101,9 +105,10 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
   nlohmann::json peak = nlohmann::json::object();
   for (int d = 0; d < model.dim; ++d) {
     const int node = s.peak_deck_node[d];
-    peak[std::string(1, "xyz"[d])] = {{"displacement_m", s.peak_deck_displacement[d]},
-                                      {"node", node >= 0 ? nlohmann::json(node + 1) : nlohmann::json()},
-                                      {"time_s", s.peak_deck_time[d]}};
+    peak[std::string(1, "xyz"[d])] = {
+        {"displacement_m", s.peak_deck_displacement[d]},
+        {"node", node >= 0 ? nlohmann::json(node + 1) : nlohmann::json()},
+        {"time_s", s.peak_deck_time[d]}};
   }
   j["peak_deck_displacement"] = peak;
   if (!s.peak_bar_compression.empty()) {
@@ -116,10 +121,10 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, cons
     j["bar_force_peaks"] = bars;
   }
   const EnergyBalance& e = s.energy;
-  j["energy"] = {{"kinetic_start_j", e.kinetic_start}, {"elastic_start_j", e.elastic_start},
-                 {"kinetic_end_j", e.kinetic_end},     {"elastic_end_j", e.elastic_end},
-                 {"external_work_j", e.external_work}, {"dissipated_j", e.dissipated},
-                 {"reference_j", e.reference},         {"max_relative_drift", e.max_drift},
+  j["energy"] = {{"kinetic_start_j", e.kinetic_start},   {"elastic_start_j", e.elastic_start},
+                 {"kinetic_end_j", e.kinetic_end},       {"elastic_end_j", e.elastic_end},
+                 {"external_work_j", e.external_work},   {"dissipated_j", e.dissipated},
+                 {"reference_j", e.reference},           {"max_relative_drift", e.max_drift},
                  {"final_relative_drift", e.final_drift}};
   if (!s.prestrain.empty()) {
     nlohmann::json p = nlohmann::json::array();

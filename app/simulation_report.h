@@ -11,6 +11,7 @@
 
 namespace tbridge {
 
-nlohmann::json SummaryJson(const Config& config, const DynamicModel& model, const SimulationResult& result);
+nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
+                           const SimulationResult& result);
 
 }  // namespace tbridge

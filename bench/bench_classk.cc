@@ -29,7 +29,8 @@ double SecondsPerCall(Body body) {
   for (long reps = 8;; reps *= 2) {
     const auto start = std::chrono::steady_clock::now();
     for (long k = 0; k < reps; ++k) body();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (seconds > 0.2) return seconds / static_cast<double>(reps);
   }
 }
@@ -58,9 +59,9 @@ void Row(const std::string& name, const tbridge::DynamicModel& model) {
     tbridge::Class1Ode ode1(one);
     class1 = Rk4StepSeconds(ode1, y0);
   }
-  std::printf("%-8s %6d %5zu %6d %7ld %7ld %11.2f %11.2f %11.2f\n", name.c_str(), model.num_nodes(), model.bars.size(),
-              system.num_constraints(), system.matrix_nonzeros(), ws.factor_nonzeros(), 1e6 * step, 1e6 * factor,
-              1e6 * class1);
+  std::printf("%-8s %6d %5zu %6d %7ld %7ld %11.2f %11.2f %11.2f\n", name.c_str(), model.num_nodes(),
+              model.bars.size(), system.num_constraints(), system.matrix_nonzeros(),
+              ws.factor_nonzeros(), 1e6 * step, 1e6 * factor, 1e6 * class1);
   std::fflush(stdout);
 }
 
@@ -68,9 +69,10 @@ void Row(const std::string& name, const tbridge::DynamicModel& model) {
 
 int main(int argc, char** argv) {
   const int max_n = argc > 1 ? std::atoi(argv[1]) : 8;
-  std::printf("%-8s %6s %5s %6s %7s %7s %11s %11s %11s\n", "bridge", "nodes", "bars", "rows", "nnz(A)", "nnz(L)",
-              "step", "factorise", "class-1");
-  std::printf("%-8s %6s %5s %6s %7s %7s %11s %11s %11s\n", "", "", "", "", "", "", "us/RK4", "us/call", "us/RK4");
+  std::printf("%-8s %6s %5s %6s %7s %7s %11s %11s %11s\n", "bridge", "nodes", "bars", "rows",
+              "nnz(A)", "nnz(L)", "step", "factorise", "class-1");
+  std::printf("%-8s %6s %5s %6s %7s %7s %11s %11s %11s\n", "", "", "", "", "", "", "us/RK4",
+              "us/call", "us/RK4");
   for (const int p : {1, 2}) {
     for (int n = 1; n <= max_n; ++n) {
       tbridge::Config config;

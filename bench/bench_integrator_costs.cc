@@ -21,9 +21,9 @@
 #include "design/design.h"
 #include "dynamics/class1.h"
 #include "dynamics/coupling.h"
+#include "dynamics/initial_state.h"
 #include "dynamics/integrator_policy.h"
 #include "dynamics/integrators.h"
-#include "dynamics/initial_state.h"
 #include "dynamics/sdirk.h"
 #include "ns_per_call.h"
 
@@ -44,8 +44,8 @@ int main(int argc, char** argv) {
   const int max_n = argc > 1 ? std::atoi(argv[1]) : 8;
   const int min_n = argc > 2 ? std::atoi(argv[2]) : 2;
   const double dt = argc > 3 ? std::atof(argv[3]) : 5e-4;
-  std::printf("%3s %8s %9s %12s %12s %12s %12s %10s %10s %9s %9s\n", "n", "members", "L+U nnz", "rk4 [ns]",
-              "model", "sdirk3 [ns]", "model", "ratio", "model", "newton", "refresh");
+  std::printf("%3s %8s %9s %12s %12s %12s %12s %10s %10s %9s %9s\n", "n", "members", "L+U nnz",
+              "rk4 [ns]", "model", "sdirk3 [ns]", "model", "ratio", "model", "newton", "refresh");
   for (int n = min_n; n <= max_n; ++n) {
     tbridge::Config config = tbridge::LoadConfig(TBRIDGE_SOURCE_DIR "/configs/paper_n1.json");
     config.bridge.n = n;
@@ -75,10 +75,12 @@ int main(int argc, char** argv) {
     }
 
     const int members = static_cast<int>(model.bars.size() + model.strings.size());
-    const tbridge::StepCosts model_cost = tbridge::EstimateStepCosts(members, system.coordinates(), sdirk.counts());
+    const tbridge::StepCosts model_cost =
+        tbridge::EstimateStepCosts(members, system.coordinates(), sdirk.counts());
     std::printf("%3d %8d %9.0f %12.0f %12.0f %12.0f %12.0f %10.1f %10.1f %9.2f %9.3f\n", n, members,
-                sdirk.counts().factor_nonzeros, rk4, model_cost.rk4_ns, sdirk_ns, model_cost.sdirk3_ns,
-                sdirk_ns / rk4, model_cost.sdirk3_ns / model_cost.rk4_ns, newton, refresh);
+                sdirk.counts().factor_nonzeros, rk4, model_cost.rk4_ns, sdirk_ns,
+                model_cost.sdirk3_ns, sdirk_ns / rk4, model_cost.sdirk3_ns / model_cost.rk4_ns,
+                newton, refresh);
     std::fflush(stdout);
   }
   return 0;

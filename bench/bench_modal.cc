@@ -31,7 +31,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double Ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+double Ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
 
 // Resident set size now [KB] (second field of /proc/self/statm, in pages).
 long ResidentKb() {
@@ -42,12 +44,12 @@ long ResidentKb() {
 }
 
 struct ChildReport {
-  double best_ms = 0;      // lowest six modes (ComputeModes), best of the repeats
-  double linearise_ms = 0; // of which the sparse assembly (Linearise), best of the repeats
-  double omega1 = 0;       // lowest omega [rad/s]
-  double omega_max = 0;    // highest omega [rad/s]
+  double best_ms = 0;       // lowest six modes (ComputeModes), best of the repeats
+  double linearise_ms = 0;  // of which the sparse assembly (Linearise), best of the repeats
+  double omega1 = 0;        // lowest omega [rad/s]
+  double omega_max = 0;     // highest omega [rad/s]
   int iterations = 0;
-  int sparse = 0;          // 1: sparse solver, 0: dense (too few modes for Lanczos)
+  int sparse = 0;  // 1: sparse solver, 0: dense (too few modes for Lanczos)
   long baseline_kb = 0;
   long peak_kb = 0;
 };
@@ -102,8 +104,8 @@ void TimeProcess(const std::string& config_path, const std::string& out_path, in
   const auto t0 = Clock::now();
   const pid_t pid = fork();
   if (pid == 0) {
-    execl(TBRIDGE_BINARY, TBRIDGE_BINARY, "modes", config_path.c_str(), "-o", out_path.c_str(), "--modes", "6", "-q",
-          static_cast<char*>(nullptr));
+    execl(TBRIDGE_BINARY, TBRIDGE_BINARY, "modes", config_path.c_str(), "-o", out_path.c_str(),
+          "--modes", "6", "-q", static_cast<char*>(nullptr));
     _exit(127);
   }
   int status = 0;
@@ -111,8 +113,8 @@ void TimeProcess(const std::string& config_path, const std::string& out_path, in
   wait4(pid, &status, 0, &usage);
   const auto t1 = Clock::now();
   const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  std::printf("tbridge modes --modes 6, n = %2d: %8.2f s wall, peak %8ld KB%s\n", n, Ms(t0, t1) / 1e3, usage.ru_maxrss,
-              ok ? "" : " (FAILED)");
+  std::printf("tbridge modes --modes 6, n = %2d: %8.2f s wall, peak %8ld KB%s\n", n,
+              Ms(t0, t1) / 1e3, usage.ru_maxrss, ok ? "" : " (FAILED)");
 }
 
 }  // namespace
@@ -128,8 +130,9 @@ int main(int argc, char** argv) {
     }
   }
   const std::string base = std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_n3.json";
-  std::printf("%3s %7s %9s %12s %9s %6s %10s %12s %12s %14s %15s\n", "n", "dofs", "design_s", "modes6_ms",
-              "lin_ms", "iters", "omega1", "omega_max", "solver", "modal_peak_KB", "process_peak_KB");
+  std::printf("%3s %7s %9s %12s %9s %6s %10s %12s %12s %14s %15s\n", "n", "dofs", "design_s",
+              "modes6_ms", "lin_ms", "iters", "omega1", "omega_max", "solver", "modal_peak_KB",
+              "process_peak_KB");
   for (int n = 1; n <= max_n; ++n) {
     tbridge::Config c = tbridge::LoadConfig(base);
     c.bridge.n = n;
@@ -140,9 +143,10 @@ int main(int argc, char** argv) {
     int free_nodes = 0;
     for (const bool fixed : model.fixed) free_nodes += fixed ? 0 : 1;
     const ChildReport r = MeasureInChild(model, repeats);
-    std::printf("%3d %7d %9.2f %12.2f %9.2f %6d %10.3f %12.1f %12s %14ld %15ld\n", n, free_nodes * model.dim,
-                Ms(t0, t1) / 1e3, r.best_ms, r.linearise_ms, r.iterations, r.omega1, r.omega_max,
-                r.sparse ? "sparse" : "dense", r.peak_kb - r.baseline_kb, r.peak_kb);
+    std::printf("%3d %7d %9.2f %12.2f %9.2f %6d %10.3f %12.1f %12s %14ld %15ld\n", n,
+                free_nodes * model.dim, Ms(t0, t1) / 1e3, r.best_ms, r.linearise_ms, r.iterations,
+                r.omega1, r.omega_max, r.sparse ? "sparse" : "dense", r.peak_kb - r.baseline_kb,
+                r.peak_kb);
     std::fflush(stdout);
   }
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "bench_modal";

@@ -4,7 +4,8 @@
 // cutoffs, done whatever the bridge's nonlinearity (which its line names) so that its error
 // can be read against it.
 //
-//   build/bench/bench_moving_load [n_min=3] [n_max=6] [config=configs/default.json] [stabilised=1] [reference]
+//   build/bench/bench_moving_load [n_min=3] [n_max=6] [config=configs/default.json] [stabilised=1]
+//   [reference]
 //
 // `config` may instead be a pattern of design files with %d for n (e.g. out/default_n%d.json,
 // written by `tbridge design`): the runs are then of those designs (the verified ones).
@@ -28,10 +29,10 @@
 #include "design/design.h"
 #include "design/design_reader.h"
 #include "design/sizing.h"
+#include "design/static_model.h"
 #include "dynamics/integrator_policy.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
-#include "design/static_model.h"
 #include "verify/load_scenarios.h"
 #include "verify/modal_run.h"
 
@@ -62,11 +63,14 @@ double ForceError(const Design& d, const SimulationSummary& a, const SimulationS
   for (size_t j = 0; j < d.bars.size(); ++j) {
     const BarCapacity cap = BarResistance(d.bars[j].area, d.bars[j].length, rule, E);
     const double r = std::min(cap.yield, cap.buckling);
-    if (r > 0) worst = std::max(worst, std::abs(a.peak_bar_compression[j] - ref.peak_bar_compression[j]) / r);
+    if (r > 0)
+      worst =
+          std::max(worst, std::abs(a.peak_bar_compression[j] - ref.peak_bar_compression[j]) / r);
   }
   for (size_t j = 0; j < d.strings.size(); ++j) {
     const double r = d.strings[j].area * sigma_w;
-    if (r > 0) worst = std::max(worst, std::abs(a.peak_string_tension[j] - ref.peak_string_tension[j]) / r);
+    if (r > 0)
+      worst = std::max(worst, std::abs(a.peak_string_tension[j] - ref.peak_string_tension[j]) / r);
   }
   return worst;
 }
@@ -76,10 +80,12 @@ double ForceError(const Design& d, const SimulationSummary& a, const SimulationS
 int main(int argc, char** argv) {
   const int n_min = argc > 1 ? std::atoi(argv[1]) : 3;
   const int n_max = argc > 2 ? std::atoi(argv[2]) : 6;
-  const std::string path = argc > 3 ? argv[3] : std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json";
+  const std::string path =
+      argc > 3 ? argv[3] : std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json";
   const bool stabilised = argc > 4 ? std::atoi(argv[4]) != 0 : true;
   const bool reference_only = argc > 5 && std::string(argv[5]) == "reference";
-  std::printf("n,method,dt_s,steps,seconds,force_error_of_resistance,deck_peak_error,deck_peak_m\n");
+  std::printf(
+      "n,method,dt_s,steps,seconds,force_error_of_resistance,deck_peak_error,deck_peak_m\n");
   for (int n = n_min; n <= n_max; ++n) {
     Design d;
     if (path.find("%d") != std::string::npos) {
@@ -98,7 +104,8 @@ int main(int argc, char** argv) {
     options.deck_inertia = true;
     const DynamicModel model = BuildDynamicModel(d, options);
     const LoadsConfig& l = config.loads;
-    DynamicsConfig scene = MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s);
+    DynamicsConfig scene =
+        MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s);
     // Stabilised bar lengths: over a crossing of 8 s or more, RK4's drift of the bar lengths
     // passes the guard's 1e-3 from n = 6.
     scene.stabilisation.enabled = stabilised;
@@ -107,8 +114,8 @@ int main(int argc, char** argv) {
     if (ref_scene.dt > stable) ref_scene.dt /= std::ceil(ref_scene.dt / stable);
     const Run ref = Time(model, ref_scene);
     const auto line = [&](const char* method, const DynamicsConfig& sc, const Run& r) {
-      std::printf("%d,%s,%.4g,%ld,%.4g,%.3e,%.3e,%.6g\n", n, method, sc.dt, static_cast<long>(r.s.steps), r.seconds,
-                  ForceError(d, r.s, ref.s),
+      std::printf("%d,%s,%.4g,%ld,%.4g,%.3e,%.3e,%.6g\n", n, method, sc.dt,
+                  static_cast<long>(r.s.steps), r.seconds, ForceError(d, r.s, ref.s),
                   std::abs(r.s.peak_deck_displacement[1] - ref.s.peak_deck_displacement[1]) /
                       ref.s.peak_deck_displacement[1],
                   r.s.peak_deck_displacement[1]);
@@ -121,8 +128,8 @@ int main(int argc, char** argv) {
     StaticState standing;
     bool converged = false;
     const auto stations_start = Clock::now();
-    const StationResponses stations =
-        MovingLoadStations(d, model, statics, l.travelling_load_n, scene.duration, standing, converged);
+    const StationResponses stations = MovingLoadStations(d, model, statics, l.travelling_load_n,
+                                                         scene.duration, standing, converged);
     const double stations_s = std::chrono::duration<double>(Clock::now() - stations_start).count();
     std::printf("%d,station_solves,,%zu,%.4g,,,\n", n, stations.forces.size(), stations_s);
     for (const double cutoff : {25.0, 50.0, 100.0, 200.0, 400.0}) {
@@ -145,8 +152,8 @@ int main(int argc, char** argv) {
       DynamicsConfig sc = scene;
       sc.dt = m.sample_dt_s;
       char name[64];
-      std::snprintf(name, sizeof name, "modal_%d_modes_to_%.0f_hz_nonlinearity_%.3g", m.modes, m.highest_mode_hz,
-                    m.nonlinearity);
+      std::snprintf(name, sizeof name, "modal_%d_modes_to_%.0f_hz_nonlinearity_%.3g", m.modes,
+                    m.highest_mode_hz, m.nonlinearity);
       line(name, sc, r);
     }
     for (const double dt : {4e-3, 2e-3, 1e-3, 5e-4}) {

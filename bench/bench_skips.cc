@@ -54,12 +54,14 @@ double NsPerStep(OdeSystem& ode, const Eigen::VectorXd& y0, long steps) {
   return 1e9 * Best([&] {
            y = y0;
            for (long k = 0; k < steps; ++k) Rk4Step(ode, k * 1e-8, 1e-8, y, ws);
-         }) / static_cast<double>(steps);
+         }) /
+         static_cast<double>(steps);
 }
 
-void Line(const char* what, const char* with, double a, const char* without, double b, const char* unit) {
-  std::printf("%-16s %-34s %12.4g %s | %-30s %12.4g %s | saved %5.1f %%  (x%.2f)\n", what, with, a, unit, without, b,
-              unit, 100.0 * (a - b) / a, a / b);
+void Line(const char* what, const char* with, double a, const char* without, double b,
+          const char* unit) {
+  std::printf("%-16s %-34s %12.4g %s | %-30s %12.4g %s | saved %5.1f %%  (x%.2f)\n", what, with, a,
+              unit, without, b, unit, 100.0 * (a - b) / a, a / b);
 }
 
 }  // namespace
@@ -73,9 +75,10 @@ int main(int argc, char** argv) {
   DynamicsConfig scene;
   scene.perturbation = {1, 1e-4};
   const Eigen::VectorXd y0 = InitialState(plain, scene);
-  const long steps = std::max<long>(200, 2000000 / static_cast<long>(plain.strings.size() + plain.bars.size()));
-  std::printf("n = %d: %d nodes, %zu bars, %zu strings; %ld steps per timing\n", n, plain.num_nodes(),
-              plain.bars.size(), plain.strings.size(), steps);
+  const long steps =
+      std::max<long>(200, 2000000 / static_cast<long>(plain.strings.size() + plain.bars.size()));
+  std::printf("n = %d: %d nodes, %zu bars, %zu strings; %ld steps per timing\n", n,
+              plain.num_nodes(), plain.bars.size(), plain.strings.size(), steps);
 
   {  // damping
     ModelOptions o;
@@ -83,16 +86,16 @@ int main(int argc, char** argv) {
     const DynamicModel damped = BuildDynamicModel(design, o);
     const Class1System a(damped), b(plain);
     Class1Ode oa(a), ob(b);
-    Line("damping", "velocity terms (c = 1e-300)", NsPerStep(oa, y0, steps), "skipped (c = 0)", NsPerStep(ob, y0, steps),
-         "ns/step");
+    Line("damping", "velocity terms (c = 1e-300)", NsPerStep(oa, y0, steps), "skipped (c = 0)",
+         NsPerStep(ob, y0, steps), "ns/step");
   }
   {  // multipliers
     const ClassKSystem k(plain);
     ClassKOde ok(k);
     const Class1System one(plain);
     Class1Ode o1(one);
-    Line("multipliers", "class-k engine (CHOLMOD solve)", NsPerStep(ok, y0, steps / 4), "class-1 closed form",
-         NsPerStep(o1, y0, steps), "ns/step");
+    Line("multipliers", "class-k engine (CHOLMOD solve)", NsPerStep(ok, y0, steps / 4),
+         "class-1 closed form", NsPerStep(o1, y0, steps), "ns/step");
   }
   {  // recording
     DynamicsConfig full = scene;
@@ -110,7 +113,8 @@ int main(int argc, char** argv) {
     // against the bare RK4 loop it is the price of the guard.
     const Class1System s(plain);
     Class1Ode o(s);
-    Line("monitor", "Simulate, nothing recorded", without, "bare RK4 loop", NsPerStep(o, y0, 2000), "ns/step");
+    Line("monitor", "Simulate, nothing recorded", without, "bare RK4 loop", NsPerStep(o, y0, 2000),
+         "ns/step");
   }
   {  // modal analysis
     const Class1System s(plain);
@@ -118,7 +122,8 @@ int main(int argc, char** argv) {
     const double modal = n <= 9 ? Best([&] { ComputeModes(plain); }) : 0.0;
     const double power = Best([&] { HighestFrequency(o, s.RestState()); });
     if (n <= 9) {
-      Line("modal analysis", "ComputeModes (dense)", 1e3 * modal, "power iteration (omega_max)", 1e3 * power, "ms");
+      Line("modal analysis", "ComputeModes (dense)", 1e3 * modal, "power iteration (omega_max)",
+           1e3 * power, "ms");
     }
   }
   {  // string mass

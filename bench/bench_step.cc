@@ -37,7 +37,8 @@ double NsPerMemberStep(const tbridge::DynamicModel& model, const Class1Options& 
   tbridge::Rk4Workspace ws(system.state_size());
   Eigen::VectorXd y = y0;
   const double dt = 1e-8;  // tiny: the state barely changes, so every step costs the same
-  return NsPerCall([&](long k) { tbridge::Rk4Step(ode, k * dt, dt, y, ws); }) / system.num_members();
+  return NsPerCall([&](long k) { tbridge::Rk4Step(ode, k * dt, dt, y, ws); }) /
+         system.num_members();
 }
 
 // The yardstick's members: flat arrays of end coordinates and constants, planar.
@@ -147,17 +148,14 @@ double YardstickNsPerMemberStep(const tbridge::DynamicModel& m, const Eigen::Vec
   const double dt = 1e-8, half = 0.5 * dt;
   const long members = static_cast<long>(strings.size() + bars.size() + pinned.size());
   const double ns_per_step = NsPerCall([&](long) {
-      PlainDerivative(strings, bars, pinned, loads, fixed, omega, y.data(), k1.data(), f.data());
-      for (int i = 0; i < n; ++i) stage[i] = y[i] + half * k1[i];
-      PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k2.data(),
-                      f.data());
-      for (int i = 0; i < n; ++i) stage[i] = y[i] + half * k2[i];
-      PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k3.data(),
-                      f.data());
-      for (int i = 0; i < n; ++i) stage[i] = y[i] + dt * k3[i];
-      PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k4.data(),
-                      f.data());
-      for (int i = 0; i < n; ++i) y[i] += (dt / 6.0) * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+    PlainDerivative(strings, bars, pinned, loads, fixed, omega, y.data(), k1.data(), f.data());
+    for (int i = 0; i < n; ++i) stage[i] = y[i] + half * k1[i];
+    PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k2.data(), f.data());
+    for (int i = 0; i < n; ++i) stage[i] = y[i] + half * k2[i];
+    PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k3.data(), f.data());
+    for (int i = 0; i < n; ++i) stage[i] = y[i] + dt * k3[i];
+    PlainDerivative(strings, bars, pinned, loads, fixed, omega, stage.data(), k4.data(), f.data());
+    for (int i = 0; i < n; ++i) y[i] += (dt / 6.0) * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
   });
   return ns_per_step / static_cast<double>(members);
 }

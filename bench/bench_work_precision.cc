@@ -115,8 +115,8 @@ class Scene {
   }
 
   // A fixed-step run from `start` with `step(t, dt, y)`; dt must divide kSample.
-  Run FixedStep(double dt, const std::function<void(double, double, Eigen::VectorXd&)>& step, long evals_per_step,
-                const Eigen::VectorXd& start) {
+  Run FixedStep(double dt, const std::function<void(double, double, Eigen::VectorXd&)>& step,
+                long evals_per_step, const Eigen::VectorXd& start) {
     Run r;
     const long per_sample = std::lround(kSample / dt);
     const long samples = std::lround(kDuration / kSample);
@@ -124,7 +124,9 @@ class Scene {
     Eigen::VectorXd y = start;
     Take(y, r.deck, 0);
     const auto begin = std::chrono::steady_clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
+    auto elapsed = [&] {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    };
     try {
       for (long s = 1; s <= samples; ++s) {
         for (long k = 0; k < per_sample; ++k) step(((s - 1) * per_sample + k) * dt, dt, y);
@@ -148,13 +150,15 @@ class Scene {
 
   Run Rk4(double dt, const Eigen::VectorXd& start) {
     Rk4Workspace ws(ode_->size());
-    return FixedStep(dt, [&](double t, double h, Eigen::VectorXd& y) { Rk4Step(*ode_, t, h, y, ws); }, 4, start);
+    return FixedStep(
+        dt, [&](double t, double h, Eigen::VectorXd& y) { Rk4Step(*ode_, t, h, y, ws); }, 4, start);
   }
 
   // `wall_per_step`: wall time per accepted step (for the budget).
   Run Sdirk(double dt, double* wall_per_step) {
     Sdirk3 sdirk(CouplingOf(model_), ode_->size());
-    Run r = FixedStep(dt, [&](double t, double h, Eigen::VectorXd& y) { sdirk.Step(*ode_, t, h, y); }, 0, y0_);
+    Run r = FixedStep(
+        dt, [&](double t, double h, Eigen::VectorXd& y) { sdirk.Step(*ode_, t, h, y); }, 0, y0_);
     r.evaluations = sdirk.stats().evaluations;
     *wall_per_step = r.wall / static_cast<double>(std::max(sdirk.stats().steps, 1L));
     return r;
@@ -228,8 +232,8 @@ Errors Report(int n, const char* scene, const char* method, double parameter, co
   } else {
     e.disp = DispError(r.deck, reference);
     e.period = std::abs(Period(r.deck) - ref_period) / ref_period;
-    std::printf("%d,%s,%s,%g,%.6g,%ld,%.3e,%.3e,ok\n", n, scene, method, parameter, r.wall, r.evaluations, e.disp,
-                e.period);
+    std::printf("%d,%s,%s,%g,%.6g,%ld,%.3e,%.3e,ok\n", n, scene, method, parameter, r.wall,
+                r.evaluations, e.disp, e.period);
   }
   std::fflush(stdout);
   return e;
@@ -253,7 +257,8 @@ void RunScene(int n, const char* scene, const DynamicModel& model, double delta,
   const Run& probe = rk4_at(probe_dt);
   const Run nudged = s.Rk4(probe_dt, s.nudged());
   if (!probe.ok || !nudged.ok) {
-    std::printf("# n=%d %s: sensitivity probe failed (%s)\n", n, scene, probe.ok ? nudged.note.c_str() : probe.note.c_str());
+    std::printf("# n=%d %s: sensitivity probe failed (%s)\n", n, scene,
+                probe.ok ? nudged.note.c_str() : probe.note.c_str());
     return;
   }
   const double sensitivity = DispError(nudged.deck, probe.deck);
@@ -263,19 +268,21 @@ void RunScene(int n, const char* scene, const DynamicModel& model, double delta,
   const Run& ref = rk4_at(ref_dt);
   const Run& ref2 = rk4_at(2 * ref_dt);
   if (!ref.ok || !ref2.ok) {
-    std::printf("# n=%d %s: reference failed (%s)\n", n, scene, ref.ok ? ref2.note.c_str() : ref.note.c_str());
+    std::printf("# n=%d %s: reference failed (%s)\n", n, scene,
+                ref.ok ? ref2.note.c_str() : ref.note.c_str());
     return;
   }
   const double ref_period = Period(ref.deck);
   const double floor_disp = DispError(ref2.deck, ref.deck);
   const double floor_period = std::abs(Period(ref2.deck) - ref_period) / ref_period;
   const double ns_per_eval = 1e9 * ref.wall / static_cast<double>(ref.evaluations);
-  std::printf("# n=%d scene=%s engine=%s nodes=%d members=%zu omega_max=%.6g rk4_limit=%.4g probe_dt=%.4g "
-              "sensitivity=%.3e chaotic=%d ref_dt=%.4g ref_wall=%.3g ref_period=%.6g ref_floor_disp=%.3e "
-              "ref_floor_period=%.3e peak_disp=%.4g\n",
-              n, scene, s.engine(), model.num_nodes(), model.bars.size() + model.strings.size(), bound.omega_max,
-              limit, probe_dt, sensitivity, chaotic ? 1 : 0, ref_dt, ref.wall, ref_period, floor_disp, floor_period,
-              ref.deck.cwiseAbs().maxCoeff());
+  std::printf(
+      "# n=%d scene=%s engine=%s nodes=%d members=%zu omega_max=%.6g rk4_limit=%.4g probe_dt=%.4g "
+      "sensitivity=%.3e chaotic=%d ref_dt=%.4g ref_wall=%.3g ref_period=%.6g ref_floor_disp=%.3e "
+      "ref_floor_period=%.3e peak_disp=%.4g\n",
+      n, scene, s.engine(), model.num_nodes(), model.bars.size() + model.strings.size(),
+      bound.omega_max, limit, probe_dt, sensitivity, chaotic ? 1 : 0, ref_dt, ref.wall, ref_period,
+      floor_disp, floor_period, ref.deck.cwiseAbs().maxCoeff());
   std::fflush(stdout);
   // RK4: from 1e-3 down to 4 ref_dt (and the probe's step), beyond the limit included (they
   // show the blow-up).
@@ -329,7 +336,8 @@ int main(int argc, char** argv) {
       const DynamicModel model = BuildDynamicModel(RunDesign(config));
       RunScene(config.bridge.n, "3d", model, 1e-4, kBudget);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "bench_work_precision: 3D scene from %s: %s\n", config_3d.c_str(), e.what());
+      std::fprintf(stderr, "bench_work_precision: 3D scene from %s: %s\n", config_3d.c_str(),
+                   e.what());
       return 1;
     }
   }

@@ -11,7 +11,8 @@ double NsPerCall(Call&& call) {
   for (long calls = 16;; calls *= 2) {
     const auto start = std::chrono::steady_clock::now();
     for (long k = 0; k < calls; ++k) call(k);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (seconds > 0.2) return 1e9 * seconds / static_cast<double>(calls);
   }
 }

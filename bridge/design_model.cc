@@ -76,7 +76,8 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
   // then the run keeps that weight, lumped as the design lumps it, so that a run with nothing
   // added starts in the design's own equilibrium. Otherwise the members' weight is added here,
   // before the deck's masses join the node masses (their weight is in the loads already).
-  if (options.gravity_on_structure && design.reference.factor[kSelfWeight] == 0) AddStructureWeight(m);
+  if (options.gravity_on_structure && design.reference.factor[kSelfWeight] == 0)
+    AddStructureWeight(m);
   if (options.deck_inertia) AddDeckInertia(m, design, options.payload_share);
   SettleAtEquilibrium(m, design);
   CheckModel(m, "design model");

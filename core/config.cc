@@ -24,8 +24,9 @@ void CheckMaterialRules(const Material& m) {
   auto modulus_above_yield = [](const std::string& section, double E, double f) {
     if (E > f) return;
     throw ConfigError(section + "youngs_modulus", NumberText(E),
-                      "must exceed " + section + "yield_stress = " + NumberText(f) + " Pa: a strain at yield of " +
-                          NumberText(f / E) + " is no structural material (steel: 0.0017); are both in Pa?");
+                      "must exceed " + section + "yield_stress = " + NumberText(f) +
+                          " Pa: a strain at yield of " + NumberText(f / E) +
+                          " is no structural material (steel: 0.0017); are both in Pa?");
   };
   modulus_above_yield("material.", m.youngs_modulus, m.yield_stress);
   const MemberMaterial strings = StringMaterial(m, 1.0), bars = BarMaterial(m, 1.0);
@@ -33,12 +34,14 @@ void CheckMaterialRules(const Material& m) {
   modulus_above_yield("material.bars.", bars.youngs_modulus, bars.yield_stress);
   if (m.strings.breaking_stress && !(*m.strings.breaking_stress > strings.yield_stress)) {
     throw ConfigError("material.strings.breaking_stress", NumberText(*m.strings.breaking_stress),
-                      "must exceed the strings' proof strength yield_stress = " + NumberText(strings.yield_stress) +
+                      "must exceed the strings' proof strength yield_stress = " +
+                          NumberText(strings.yield_stress) +
                           " Pa: a cable breaks above its 0.2 % proof stress");
   }
   if (m.strings.end_efficiency && !m.strings.breaking_stress) {
-    throw ConfigError("material.strings.end_efficiency", NumberText(*m.strings.end_efficiency),
-                      "applies to a cable's breaking strength: give material.strings.breaking_stress with it");
+    throw ConfigError(
+        "material.strings.end_efficiency", NumberText(*m.strings.end_efficiency),
+        "applies to a cable's breaking strength: give material.strings.breaking_stress with it");
   }
 }
 
@@ -46,8 +49,9 @@ void CheckMaterialRules(const Material& m) {
 void CheckLoadsRules(const LoadsConfig& l) {
   const auto& c = l.cases;
   if (c.size() > 1 && std::find(c.begin(), c.end(), "paper") != c.end()) {
-    throw ConfigError("loads.cases", "[\"paper\", ...]",
-                      "\"paper\" stands alone: it is the paper's one unfactored case, which replaces the others");
+    throw ConfigError(
+        "loads.cases", "[\"paper\", ...]",
+        "\"paper\" stands alone: it is the paper's one unfactored case, which replaces the others");
   }
   if (c.empty()) throw ConfigError("loads.cases", "[]", "must list at least one case");
   const bool temperature = std::find(c.begin(), c.end(), "temperature") != c.end();
@@ -137,16 +141,19 @@ void ApplyPaperSwitches(Config& c) {
   }
 }
 
-bool KeepsPaperSwitches(const Config& c) { return c.loads.cases == std::vector<std::string>{"paper"}; }
+bool KeepsPaperSwitches(const Config& c) {
+  return c.loads.cases == std::vector<std::string>{"paper"};
+}
 
 Config ParseConfig(const nlohmann::json& root) {
   JsonSection top(root, "");
   Config c;
   if (top.Has("structure")) {
     if (top.Has("bridge")) {
-      throw ConfigError("structure", "(given with 'bridge')",
-                        "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
-                        "not both");
+      throw ConfigError(
+          "structure", "(given with 'bridge')",
+          "a config has either \"bridge\" (a designed bridge) or \"structure\" (a custom scene), "
+          "not both");
     }
     c.structure = ParseStructureConfig(top.Section("structure"));
     const bool designable = c.structure->Designable();
@@ -171,7 +178,8 @@ Config ParseConfig(const nlohmann::json& root) {
     }
   } else {
     if (!top.Has("bridge")) {
-      throw ConfigError("bridge", "(missing)", "required section (or \"structure\" for a custom scene)");
+      throw ConfigError("bridge", "(missing)",
+                        "required section (or \"structure\" for a custom scene)");
     }
     c.bridge = ParseSection<BridgeConfig>(top.Section("bridge"), CheckBridgeRules);
     c.material = ParseSection<Material>(top.Section("material"), CheckMaterialRules);

@@ -16,13 +16,13 @@
 namespace tbridge {
 
 struct BridgeConfig {
-  int n = 2;                // complexity: self-similar iterations, 1..16
-  int p = 1;                // bars per substructure module, 1..8
-  double beta_deg = 10.0;   // aspect angle [deg], (0, 90); with beta_auto, the angle chosen
-  double span = 12.0;       // L [m]
-  double payload = 12000.0; // F, total external payload [N]
-  double deck_width = 1.5;  // w_d, deck beam width and distance between planes [m]
-  int planes = 1;           // 1 = planar bridge, 2 = 3D bridge of two coupled planes
+  int n = 2;                 // complexity: self-similar iterations, 1..16
+  int p = 1;                 // bars per substructure module, 1..8
+  double beta_deg = 10.0;    // aspect angle [deg], (0, 90); with beta_auto, the angle chosen
+  double span = 12.0;        // L [m]
+  double payload = 12000.0;  // F, total external payload [N]
+  double deck_width = 1.5;   // w_d, deck beam width and distance between planes [m]
+  int planes = 1;            // 1 = planar bridge, 2 = 3D bridge of two coupled planes
   // beta_deg given as "auto": the verified design chooses it in design.beta_range_deg
   // (verify/angle_search.h), and beta_deg then holds the angle chosen.
   bool beta_auto = false;
@@ -38,21 +38,21 @@ struct DesignConfig {
   // carry nothing under symmetric vertical loads, so without this floor min mass would
   // leave them at zero area and the coupled bridge would be a mechanism.
   double transverse_string_min_radius = 0.005;
-  double bar_min_radius = 0.0;           // [m]; 0 = no minimum
-  double gravity = 9.81;                 // g [m/s^2], for the deck self-weight
+  double bar_min_radius = 0.0;  // [m]; 0 = no minimum
+  double gravity = 9.81;        // g [m/s^2], for the deck self-weight
   // "auto" | "direct" | "ipopt" | "nlopt": how the self-stress coefficients are found. "direct"
   // applies when there is at most one self-stress and it loads no bar (every planar bridge);
   // "auto" takes it there and Ipopt elsewhere (the 3D bridge).
   std::string solver = "auto";
-  double tolerance = 1e-10;              // relative optimality tolerance of the solver
-  int max_iterations = 3000;             // solver iteration limit
+  double tolerance = 1e-10;   // relative optimality tolerance of the solver
+  int max_iterations = 3000;  // solver iteration limit
   // Members' own weight in the permanent load, iterated with the sizing to a fixed point.
   bool self_weight = true;
   // "column_curve": N <= chi(lambda) A f_y / gamma_M1 (EN 1993-1-1 6.3.1.2); "euler": the
   // paper's A >= 2 l sqrt(SF C / (pi E)) with SF = buckling_safety_factor.
   std::string bar_resistance = "column_curve";
-  double imperfection_factor = 0.49;     // alpha of the column curve (curve c: solid sections)
-  int max_sizings = 25;                  // the verified sizing's designs at most (outer iterations)
+  double imperfection_factor = 0.49;  // alpha of the column curve (curve c: solid sections)
+  int max_sizings = 25;               // the verified sizing's designs at most (outer iterations)
   // The static utilisation above which the verified sizing does not run the dynamic runs on
   // one of its own designs (it fails whatever they find); the design it delivers runs them.
   double dynamic_screen = 1.1;
@@ -99,18 +99,18 @@ struct LoadsConfig {
   // The modal run is done where the bridge's linear deck response to a station's load is within
   // this fraction of its nonlinear one; beyond it the nonlinear run.
   double dynamic_modal_max_nonlinearity = 0.015;
-  double gamma_g_sup = 1.35;               // unfavourable permanent
-  double gamma_g_inf = 1.0;                // favourable permanent
-  double gamma_q = 1.5;                    // payload and travelling load
-  double gamma_w = 1.5;                    // wind
-  double psi0_wind = 0.3;                  // wind accompanying traffic (EN 1990 A2, footbridges)
+  double gamma_g_sup = 1.35;  // unfavourable permanent
+  double gamma_g_inf = 1.0;   // favourable permanent
+  double gamma_q = 1.5;       // payload and travelling load
+  double gamma_w = 1.5;       // wind
+  double psi0_wind = 0.3;     // wind accompanying traffic (EN 1990 A2, footbridges)
   // The "temperature" case: Delta T_N [K] either way, accompanying at psi_0 with gamma_t.
   double temperature_delta_k = 0.0;
   double psi0_temperature = 0.6;
   double gamma_t = 1.5;
-  double deflection_limit = 500.0;         // serviceability: deflection <= span / this
-  double deck_sag_limit = 300.0;           // serviceability: a deck beam's sag <= its length / this
-  double station_margin = 1.0;             // the static check's nonlinear stations (config_fields.h)
+  double deflection_limit = 500.0;  // serviceability: deflection <= span / this
+  double deck_sag_limit = 300.0;    // serviceability: a deck beam's sag <= its length / this
+  double station_margin = 1.0;      // the static check's nonlinear stations (config_fields.h)
 };
 
 // Footbridge comfort under pedestrians (verify/comfort_check.h): the Sétra footbridge guide

@@ -111,7 +111,8 @@ void ValidateVisitor::CheckChoices(const std::string& path, const std::vector<st
                                    const std::vector<std::string>& allowed) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     if (std::find(allowed.begin(), allowed.end(), list[k]) == allowed.end()) {
-      throw ConfigError(Item(path, k), "\"" + Printable(list[k]) + "\"", "must be one of " + ChoiceText(allowed));
+      throw ConfigError(Item(path, k), "\"" + Printable(list[k]) + "\"",
+                        "must be one of " + ChoiceText(allowed));
     }
     if (std::find(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(k), list[k]) !=
         list.begin() + static_cast<std::ptrdiff_t>(k)) {
@@ -125,14 +126,18 @@ void ParseVisitor::Choices(const KeyInfo& key, std::vector<std::string>& field,
   const std::string path = s.PathOf(key.name);
   const nlohmann::json* raw = s.Raw(key.name);
   if (raw == nullptr) {
-    if (key.required) throw ConfigError(path, "(missing)", "required: a list of " + ChoiceText(allowed));
+    if (key.required)
+      throw ConfigError(path, "(missing)", "required: a list of " + ChoiceText(allowed));
     return;
   }
-  if (!raw->is_array()) throw ConfigError(path, Show(*raw), "must be a list of " + ChoiceText(allowed));
+  if (!raw->is_array())
+    throw ConfigError(path, Show(*raw), "must be a list of " + ChoiceText(allowed));
   field.clear();
   for (std::size_t k = 0; k < raw->size(); ++k) {
     const nlohmann::json& e = (*raw)[k];
-    if (!e.is_string()) throw ConfigError(ValidateVisitor::Item(path, k), Show(e), "must be one of " + ChoiceText(allowed));
+    if (!e.is_string())
+      throw ConfigError(ValidateVisitor::Item(path, k), Show(e),
+                        "must be one of " + ChoiceText(allowed));
     field.push_back(e.get<std::string>());
   }
   ValidateVisitor::CheckChoices(path, field, allowed);

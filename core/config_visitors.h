@@ -96,7 +96,8 @@ struct ParseVisitor {
   void Text(const KeyInfo& key, std::string& field) {
     field = s.Text(key.name, Fallback(key, field));
   }
-  void Choices(const KeyInfo& key, std::vector<std::string>& field, const std::vector<std::string>& allowed);
+  void Choices(const KeyInfo& key, std::vector<std::string>& field,
+               const std::vector<std::string>& allowed);
   void OptionalNumber(const KeyInfo& key, std::optional<double>& field, Range range,
                       Absent absent) {
     if (!s.Has(key.name)) return;
@@ -167,7 +168,8 @@ struct EchoVisitor {
     Put(key, field);
   }
   void Text(const KeyInfo& key, const std::string& field) { Put(key, field); }
-  void Choices(const KeyInfo& key, const std::vector<std::string>& field, const std::vector<std::string>&) {
+  void Choices(const KeyInfo& key, const std::vector<std::string>& field,
+               const std::vector<std::string>&) {
     Put(key, field);
   }
   void OptionalNumber(const KeyInfo& key, const std::optional<double>& field, Range,

@@ -30,10 +30,10 @@ void CheckDynamicsRules(const DynamicsConfig& d) {
     }
     const LoadStepConfig& l = d.loads[k];
     if (l.rise_s + l.fall_s > l.t_end - l.t_start) {
-      throw ConfigError("dynamics.loads[" + std::to_string(k) + "].rise_s",
-                        std::to_string(l.rise_s),
-                        "rise_s + fall_s (" + std::to_string(l.rise_s + l.fall_s) +
-                            ") must fit in t_end - t_start = " + std::to_string(l.t_end - l.t_start));
+      throw ConfigError(
+          "dynamics.loads[" + std::to_string(k) + "].rise_s", std::to_string(l.rise_s),
+          "rise_s + fall_s (" + std::to_string(l.rise_s + l.fall_s) +
+              ") must fit in t_end - t_start = " + std::to_string(l.t_end - l.t_start));
     }
   }
 }

@@ -24,8 +24,8 @@ struct StabilisationConfig {
 
 // Rest length = ratio x stretched (design) length for every string of `group`; k = E A / L0.
 struct PrestrainConfig {
-  std::string group;  // "deck" | "substructure" | "transverse"
-  double ratio = 1.0; // (0, 1.5]
+  std::string group;   // "deck" | "substructure" | "transverse"
+  double ratio = 1.0;  // (0, 1.5]
 };
 
 // The paper's perturbation: both end nodes of every bar of one length class move down (-y)
@@ -50,8 +50,8 @@ struct LoadStepConfig {
   double t_end = 0;    // [s], > t_start
   int node = 1;
   std::array<double, 3> force{0, 0, 0};  // [N]
-  double rise_s = 0;   // [s], >= 0; rise_s + fall_s <= t_end - t_start
-  double fall_s = 0;   // [s], >= 0
+  double rise_s = 0;                     // [s], >= 0; rise_s + fall_s <= t_end - t_start
+  double fall_s = 0;                     // [s], >= 0
   double frequency_hz = 0;  // [Hz], >= 0; > 0: the force times sin(2 pi frequency_hz t)
 };
 
@@ -93,8 +93,8 @@ struct LimitsConfig {
 };
 
 struct DynamicsConfig {
-  double duration = 1.0;              // simulated time [s]
-  double dt = 1e-5;                   // step (rk4) or first step and output spacing (dopri5) [s]
+  double duration = 1.0;  // simulated time [s]
+  double dt = 1e-5;       // step (rk4) or first step and output spacing (dopri5) [s]
   // "auto" | "rk4" | "dopri5" | "sdirk3". "auto": RK4 when dt is at most 0.9 of its stability
   // limit 2 sqrt(2)/omega_max (omega_max of the initial state, by power iteration), RK4
   // sub-steps while they cost no more than one SDIRK3 step (estimated from the model's
@@ -104,10 +104,10 @@ struct DynamicsConfig {
   // "auto": the class-1 closed form when no node carries two bars, else class k;
   // "class1" (throws for a class-k bridge) | "classk" (Lagrange multipliers, any bridge)
   EngineKind engine = EngineKind::kAuto;
-  double rtol = 1e-8;                 // dopri5 relative tolerance
-  double atol = 1e-10;                // dopri5 absolute tolerance [m, m/s]
+  double rtol = 1e-8;                                    // dopri5 relative tolerance
+  double atol = 1e-10;                                   // dopri5 absolute tolerance [m, m/s]
   StringMassMode string_mass = StringMassMode::kOnBars;  // "bars" (eq 27) | "nodes" | "off"
-  double damping_c = 0;               // c per string [N s/m]
+  double damping_c = 0;                                  // c per string [N s/m]
   StabilisationConfig stabilisation;
   std::vector<PrestrainConfig> prestrain;
   PerturbationConfig perturbation;

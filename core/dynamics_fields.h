@@ -10,9 +10,10 @@
 
 namespace tbridge {
 
-inline const SectionInfo kDynamicsSection{"dynamics", "a dynamic scenario (`tbridge simulate`)",
-                                          "`dt` at most `duration`; `loads[].t_end` greater than "
-                                          "its `t_start` by at least `rise_s` + `fall_s`; each `prestrain` group at most once."};
+inline const SectionInfo kDynamicsSection{
+    "dynamics", "a dynamic scenario (`tbridge simulate`)",
+    "`dt` at most `duration`; `loads[].t_end` greater than "
+    "its `t_start` by at least `rise_s` + `fall_s`; each `prestrain` group at most once."};
 
 // Largest node number accepted before the structure is known; the simulation checks the
 // real node count.
@@ -77,10 +78,12 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
                    "A load moving at speed v between deck nodes h apart is, on each node, a ramp "
                    "with rise_s = fall_s = h/v"},
            l.fall_s, Range::NonNegative());
-  v.Number(KeyInfo{"frequency_hz", "Hz",
-                   "0: the force as given; f > 0: the force times sin(2·pi·f·t), a harmonic load such as a "
-                   "pedestrian crowd's (the comfort check's load, `comfort`)"},
-           l.frequency_hz, Range::Closed(0.0, 1e6));
+  v.Number(
+      KeyInfo{
+          "frequency_hz", "Hz",
+          "0: the force as given; f > 0: the force times sin(2·pi·f·t), a harmonic load such as a "
+          "pedestrian crowd's (the comfort check's load, `comfort`)"},
+      l.frequency_hz, Range::Closed(0.0, 1e6));
 }
 
 template <class R, class V>
@@ -141,16 +144,18 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
       KeyInfo{"dt", "s",
               "RK4 and SDIRK3 step; DOPRI5's first step and output spacing; at most `duration`"},
       d.dt, Range::Closed(1e-12, 1.0));
-  EnumChoice(v, KeyInfo{"integrator", "–",
-                   "`\"rk4\"`: fixed-step classical RK4 (the paper's); `\"dopri5\"`: adaptive "
-                   "Dormand-Prince 5(4); `\"sdirk3\"`: fixed-step implicit L-stable SDIRK3 with "
-                   "Newton on a sparse Jacobian (dynamics/sdirk.h); `\"auto\"`: RK4 when `dt` <= "
-                   "0.9 × 2√2/ω_max; beyond, RK4 with m = ceil(dt / (0.9 × 2√2/ω_max)) sub-steps "
-                   "per step while m RK4 steps cost no more than one SDIRK3 step, as estimated from the "
-                   "model's member, coordinate and sparse-factor counts (12-27 on the paper's "
-                   "bridges n = 2..7, ~40 at n = 8; summary.json "
-                   "`run.substeps`); else SDIRK3 at the same `dt` (below)"},
-           d.integrator, kIntegratorNames);
+  EnumChoice(
+      v,
+      KeyInfo{"integrator", "–",
+              "`\"rk4\"`: fixed-step classical RK4 (the paper's); `\"dopri5\"`: adaptive "
+              "Dormand-Prince 5(4); `\"sdirk3\"`: fixed-step implicit L-stable SDIRK3 with "
+              "Newton on a sparse Jacobian (dynamics/sdirk.h); `\"auto\"`: RK4 when `dt` <= "
+              "0.9 × 2√2/ω_max; beyond, RK4 with m = ceil(dt / (0.9 × 2√2/ω_max)) sub-steps "
+              "per step while m RK4 steps cost no more than one SDIRK3 step, as estimated from the "
+              "model's member, coordinate and sparse-factor counts (12-27 on the paper's "
+              "bridges n = 2..7, ~40 at n = 8; summary.json "
+              "`run.substeps`); else SDIRK3 at the same `dt` (below)"},
+      d.integrator, kIntegratorNames);
   EnumChoice(
       v,
       KeyInfo{
@@ -163,10 +168,12 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
            d.rtol, Range::Closed(1e-14, 1e-1));
   v.Number(KeyInfo{"atol", "m and m/s", "DOPRI5 absolute tolerance, of positions and velocities"},
            d.atol, Range::Closed(1e-16, 1.0));
-  EnumChoice(v, KeyInfo{"string_mass", "–",
-                   "eq. 27: half of each string's mass (rho·A·L0) on the bars at each end, spread "
-                   "uniformly; or lumped at the end nodes; or massless strings"},
-           d.string_mass, kStringMassNames);
+  EnumChoice(
+      v,
+      KeyInfo{"string_mass", "–",
+              "eq. 27: half of each string's mass (rho·A·L0) on the bars at each end, spread "
+              "uniformly; or lumped at the end nodes; or massless strings"},
+      d.string_mass, kStringMassNames);
   v.Number(
       KeyInfo{"damping_c", "N·s/m", "c of every string: force density term c·(s·ṡ)/s² (eq. 16)"},
       d.damping_c, Range::Closed(0.0, 1e9));
@@ -182,15 +189,20 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
   v.Section("frequency", d.frequency);
   v.Section("guard", d.guard);
   v.Bool(
-      KeyInfo{"gravity_on_structure", "–",
-              "add the weight of bars and node masses to the loads (the paper's runs have none). For a "
-              "designed bridge it follows `design.self_weight` unless given; the run then starts from the "
-              "static equilibrium under the loads it applies (the members' weight lumped as the dynamic model "
-              "lumps its masses)"},
+      KeyInfo{
+          "gravity_on_structure", "–",
+          "add the weight of bars and node masses to the loads (the paper's runs have none). For a "
+          "designed bridge it follows `design.self_weight` unless given; the run then starts from "
+          "the "
+          "static equilibrium under the loads it applies (the members' weight lumped as the "
+          "dynamic model "
+          "lumps its masses)"},
       d.gravity_on_structure);
   v.Bool(KeyInfo{"deck_inertia", "–",
-                 "a designed bridge's deck beams (and the payload, where the run's loads carry its weight) are "
-                 "masses at the deck nodes, not only loads. The paper's Table 5–6 runs leave them out (false)"},
+                 "a designed bridge's deck beams (and the payload, where the run's loads carry its "
+                 "weight) are "
+                 "masses at the deck nodes, not only loads. The paper's Table 5–6 runs leave them "
+                 "out (false)"},
          d.deck_inertia);
   v.Section("limits", d.limits);
 }

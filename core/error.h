@@ -38,7 +38,8 @@ inline std::string Printable(const std::string& text) {
 class ConfigError : public std::runtime_error {
  public:
   ConfigError(const std::string& key, const std::string& value, const std::string& allowed)
-      : std::runtime_error("config key '" + Printable(key) + "' = " + value + ": " + allowed), key_(key) {}
+      : std::runtime_error("config key '" + Printable(key) + "' = " + value + ": " + allowed),
+        key_(key) {}
   // A message of its own; a NUL in it is escaped so that what() shows all of it.
   explicit ConfigError(const std::string& message) : std::runtime_error(EscapeNul(message)) {}
   const std::string& key() const { return key_; }
@@ -54,7 +55,8 @@ class ConfigError : public std::runtime_error {
 
 // A bad value of a command-line option, reported like a bad key (exit 2):
 // "option '--shard' = "3/2": ...".
-inline ConfigError OptionError(const std::string& option, const std::string& value, const std::string& allowed) {
+inline ConfigError OptionError(const std::string& option, const std::string& value,
+                               const std::string& allowed) {
   return ConfigError("option '" + Printable(option) + "' = " + value + ": " + allowed);
 }
 

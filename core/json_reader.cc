@@ -28,7 +28,8 @@ bool Range::Contains(double v) const {
 
 std::string Range::Interval() const {
   const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
-  if (has_lo && has_hi) return std::string(lo_open ? "(" : "[") + Num(lo) + ", " + Num(hi) + (hi_open ? ")" : "]");
+  if (has_lo && has_hi)
+    return std::string(lo_open ? "(" : "[") + Num(lo) + ", " + Num(hi) + (hi_open ? ")" : "]");
   if (has_lo) return std::string(lo_open ? "> " : ">= ") + Num(lo);
   if (has_hi) return std::string(hi_open ? "< " : "<= ") + Num(hi);
   return "";
@@ -37,7 +38,8 @@ std::string Range::Interval() const {
 std::string Range::Describe() const {
   const std::string interval = Interval();
   if (interval.empty()) return "a finite number";
-  return std::string(interval[0] == '(' || interval[0] == '[' ? "a number in " : "a number ") + interval;
+  return std::string(interval[0] == '(' || interval[0] == '[' ? "a number in " : "a number ") +
+         interval;
 }
 
 std::string Range::Refusal(double v) const {
@@ -207,12 +209,14 @@ std::vector<int> JsonSection::Integers(const std::string& key,
 std::array<double, 3> JsonSection::Vector3(const std::string& key,
                                            std::optional<std::array<double, 3>> fallback) {
   if (!Has(key)) {
-    if (!fallback) throw ConfigError(PathOf(key), "(missing)", "required: a list of 3 numbers [x, y, z]");
+    if (!fallback)
+      throw ConfigError(PathOf(key), "(missing)", "required: a list of 3 numbers [x, y, z]");
     return *fallback;
   }
   const std::vector<double> v = Numbers(key, std::nullopt, Range());
   if (v.size() != 3) {
-    throw ConfigError(PathOf(key), std::to_string(v.size()) + " numbers", "must be a list of 3 numbers [x, y, z]");
+    throw ConfigError(PathOf(key), std::to_string(v.size()) + " numbers",
+                      "must be a list of 3 numbers [x, y, z]");
   }
   return {v[0], v[1], v[2]};
 }
@@ -239,9 +243,10 @@ void JsonSection::Finish() const {
   for (auto it = object_.begin(); it != object_.end(); ++it) {
     if (std::find(read_.begin(), read_.end(), it.key()) == read_.end()) {
       const std::string nearest = NearestKey(it.key(), known_);
-      throw ConfigError(PathOf(it.key()), Show(it.value()),
-                        "unknown key" + (nearest.empty() ? std::string() : ", did you mean '" + nearest + "'?") +
-                            " (see configs/README.md for the keys allowed here)");
+      throw ConfigError(
+          PathOf(it.key()), Show(it.value()),
+          "unknown key" + (nearest.empty() ? std::string() : ", did you mean '" + nearest + "'?") +
+              " (see configs/README.md for the keys allowed here)");
     }
   }
 }

@@ -36,7 +36,9 @@ struct Range {
   Range(double lo_end, double hi_end, bool lo_excluded = false, bool hi_excluded = false)
       : lo(lo_end), hi(hi_end), lo_open(lo_excluded), hi_open(hi_excluded) {}
   static Range Positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
-  static Range NonNegative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range NonNegative() {
+    return {0.0, std::numeric_limits<double>::infinity(), false, false};
+  }
   static Range AtLeast(double a) {
     return {a, std::numeric_limits<double>::infinity(), false, false};
   }
@@ -94,7 +96,8 @@ class JsonSection {
   std::vector<int> Integers(const std::string& key, std::optional<std::vector<int>> fallback,
                             int lo, int hi);
   // A list of exactly 3 finite numbers [x, y, z]; `fallback` when absent (nullopt = required).
-  std::array<double, 3> Vector3(const std::string& key, std::optional<std::array<double, 3>> fallback);
+  std::array<double, 3> Vector3(const std::string& key,
+                                std::optional<std::array<double, 3>> fallback);
   // Nested object; absent -> empty object when `optional_section`, else ConfigError.
   JsonSection Section(const std::string& key, bool optional_section = true);
   // Raw access for arrays of objects; marks the key read. Returns nullptr when absent.
@@ -132,9 +135,11 @@ std::vector<T> ObjectList(JsonSection& section, const std::string& key, F parse)
   std::vector<T> out;
   const nlohmann::json* raw = section.Raw(key);
   if (raw == nullptr) return out;
-  if (!raw->is_array()) throw ConfigError(section.PathOf(key), Show(*raw), "must be a list of objects");
+  if (!raw->is_array())
+    throw ConfigError(section.PathOf(key), Show(*raw), "must be a list of objects");
   for (std::size_t k = 0; k < raw->size(); ++k) {
-    out.push_back(parse(JsonSection((*raw)[k], section.PathOf(key) + "[" + std::to_string(k) + "]")));
+    out.push_back(
+        parse(JsonSection((*raw)[k], section.PathOf(key) + "[" + std::to_string(k) + "]")));
   }
   return out;
 }

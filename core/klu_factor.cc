@@ -54,32 +54,37 @@ bool KluFactor::Factorise(const Eigen::SparseMatrix<double>& m) {
 }
 
 void KluFactor::Solve(Eigen::VectorXd& x) const {
-  klu_solve(impl_->symbolic, impl_->numeric, static_cast<int>(x.size()), 1, x.data(), &impl_->common);
+  klu_solve(impl_->symbolic, impl_->numeric, static_cast<int>(x.size()), 1, x.data(),
+            &impl_->common);
 }
 
 void KluFactor::Solve(Eigen::MatrixXd& x) const {
   if (x.size() == 0) return;
-  klu_solve(impl_->symbolic, impl_->numeric, static_cast<int>(x.rows()), static_cast<int>(x.cols()), x.data(),
-            &impl_->common);
+  klu_solve(impl_->symbolic, impl_->numeric, static_cast<int>(x.rows()), static_cast<int>(x.cols()),
+            x.data(), &impl_->common);
 }
 
 void KluFactor::SolveTransposed(Eigen::MatrixXd& x) const {
   if (x.size() == 0) return;
-  klu_tsolve(impl_->symbolic, impl_->numeric, static_cast<int>(x.rows()), static_cast<int>(x.cols()), x.data(),
-             &impl_->common);
+  klu_tsolve(impl_->symbolic, impl_->numeric, static_cast<int>(x.rows()),
+             static_cast<int>(x.cols()), x.data(), &impl_->common);
 }
 
 double KluFactor::ReciprocalCondition(const Eigen::SparseMatrix<double>& m) const {
   if (!impl_->numeric) return 0;
-  if (!klu_condest(const_cast<int*>(m.outerIndexPtr()), const_cast<double*>(m.valuePtr()), impl_->symbolic,
-                   impl_->numeric, &impl_->common)) {
+  if (!klu_condest(const_cast<int*>(m.outerIndexPtr()), const_cast<double*>(m.valuePtr()),
+                   impl_->symbolic, impl_->numeric, &impl_->common)) {
     return 0;
   }
   return impl_->common.condest > 0 ? 1.0 / impl_->common.condest : 0.0;
 }
 
-double KluFactor::FactorEntries() const { return impl_->symbolic ? impl_->symbolic->lnz + impl_->symbolic->unz : 0; }
+double KluFactor::FactorEntries() const {
+  return impl_->symbolic ? impl_->symbolic->lnz + impl_->symbolic->unz : 0;
+}
 
-double KluFactor::EstimatedFlops() const { return impl_->symbolic ? impl_->symbolic->est_flops : 0; }
+double KluFactor::EstimatedFlops() const {
+  return impl_->symbolic ? impl_->symbolic->est_flops : 0;
+}
 
 }  // namespace tbridge

@@ -6,7 +6,8 @@ namespace tbridge {
 
 namespace {
 
-MemberMaterial Resolve(const Material& m, const BarMaterialConfig& own, double yield_safety_factor) {
+MemberMaterial Resolve(const Material& m, const BarMaterialConfig& own,
+                       double yield_safety_factor) {
   MemberMaterial out;
   out.density = own.density.value_or(m.density);
   out.yield_stress = own.yield_stress.value_or(m.yield_stress);
@@ -21,11 +22,14 @@ MemberMaterial Resolve(const Material& m, const BarMaterialConfig& own, double y
 double MemberMaterial::DesignStress() const {
   // EN 1993-1-11 6.3.2: the 1.5 keeps a cable's stress at the ultimate load well below its
   // breaking strength, where the wires' fatigue and creep stay small.
-  const double strength = cable() ? std::min(end_efficiency * breaking_stress / 1.5, yield_stress) : yield_stress;
+  const double strength =
+      cable() ? std::min(end_efficiency * breaking_stress / 1.5, yield_stress) : yield_stress;
   return strength / partial_factor;
 }
 
-const char* MemberMaterial::TensionClause() const { return cable() ? "EN 1993-1-11 6.3.2" : "EN 1993-1-1 6.2.3"; }
+const char* MemberMaterial::TensionClause() const {
+  return cable() ? "EN 1993-1-11 6.3.2" : "EN 1993-1-1 6.2.3";
+}
 
 double MemberMaterial::ServiceStress(double gamma_m_ser, double f_const_ratio) const {
   return cable() ? f_const_ratio * breaking_stress : yield_stress / gamma_m_ser;

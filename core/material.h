@@ -10,10 +10,10 @@ namespace tbridge {
 
 // What the bars are made of, where it differs from `Material`.
 struct BarMaterialConfig {
-  std::optional<double> density;         // [kg/m^3]
-  std::optional<double> yield_stress;    // f_y [Pa]
-  std::optional<double> youngs_modulus;  // E [Pa]
-  std::optional<double> partial_factor;  // gamma_M0 on the yield resistance [-]
+  std::optional<double> density;            // [kg/m^3]
+  std::optional<double> yield_stress;       // f_y [Pa]
+  std::optional<double> youngs_modulus;     // E [Pa]
+  std::optional<double> partial_factor;     // gamma_M0 on the yield resistance [-]
   std::optional<double> thermal_expansion;  // alpha_T [1/K]
 };
 
@@ -27,9 +27,9 @@ struct StringMaterialConfig : BarMaterialConfig {
 };
 
 struct Material {
-  double density = 7862.0;          // rho [kg/m^3]
-  double yield_stress = 6.9e8;      // sigma_yield [Pa]
-  double youngs_modulus = 2.06e11;  // E [Pa]
+  double density = 7862.0;            // rho [kg/m^3]
+  double yield_stress = 6.9e8;        // sigma_yield [Pa]
+  double youngs_modulus = 2.06e11;    // E [Pa]
   double thermal_expansion = 1.2e-5;  // alpha_T [1/K]: steel (EN 1993-1-1 3.2.6)
   StringMaterialConfig strings;
   BarMaterialConfig bars;
@@ -37,12 +37,12 @@ struct Material {
 
 // One member kind's material with every value resolved.
 struct MemberMaterial {
-  double density = 0;         // [kg/m^3]
-  double yield_stress = 0;    // f_y, or a cable's proof strength f_k [Pa]
-  double youngs_modulus = 0;  // [Pa]
-  double partial_factor = 1;  // gamma_M0, or a cable's gamma_R [-]
-  double breaking_stress = 0; // a cable's f_uk [Pa]; 0: not a cable
-  double end_efficiency = 1;  // a cable's k_e [-]
+  double density = 0;            // [kg/m^3]
+  double yield_stress = 0;       // f_y, or a cable's proof strength f_k [Pa]
+  double youngs_modulus = 0;     // [Pa]
+  double partial_factor = 1;     // gamma_M0, or a cable's gamma_R [-]
+  double breaking_stress = 0;    // a cable's f_uk [Pa]; 0: not a cable
+  double end_efficiency = 1;     // a cable's k_e [-]
   double thermal_expansion = 0;  // alpha_T [1/K]
   bool cable() const { return breaking_stress > 0; }
   // The design resistance per unit area [Pa]: f_y / gamma_M0, or for a cable

@@ -31,7 +31,8 @@ constexpr const char* NameIn(const std::array<Named<E>, N>& table, E value) {
 // table's names, and the parse writes the enum back. A visitor that writes a text outside the
 // table (a test's) leaves a value outside it too, which Validate() refuses as it would the text.
 template <class V, class F, std::size_t N>
-void EnumChoice(V& v, const auto& key, F& field, const std::array<Named<std::remove_const_t<F>>, N>& table) {
+void EnumChoice(V& v, const auto& key, F& field,
+                const std::array<Named<std::remove_const_t<F>>, N>& table) {
   std::vector<std::string> allowed;
   for (const auto& n : table) allowed.emplace_back(n.name);
   std::string text = NameIn(table, field);

@@ -9,7 +9,9 @@ namespace tbridge {
 
 namespace {
 
-double Seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
+double Seconds(std::chrono::steady_clock::duration d) {
+  return std::chrono::duration<double>(d).count();
+}
 
 }  // namespace
 
@@ -20,7 +22,8 @@ std::string ClockText(double seconds) {
   return buf;
 }
 
-std::string ProgressReporter::Line(const std::string& stage, double fraction, double elapsed_s, double eta_s) {
+std::string ProgressReporter::Line(const std::string& stage, double fraction, double elapsed_s,
+                                   double eta_s) {
   std::string line = stage;
   if (fraction >= 0) {
     const double f = std::min(1.0, fraction);
@@ -44,7 +47,10 @@ std::string ProgressReporter::Line(const std::string& stage, double fraction, do
 }
 
 ProgressReporter::ProgressReporter(bool enabled, std::FILE* out, double delay_s, double interval_s)
-    : out_(out), delay_s_(delay_s), interval_s_(interval_s), created_(std::chrono::steady_clock::now()) {
+    : out_(out),
+      delay_s_(delay_s),
+      interval_s_(interval_s),
+      created_(std::chrono::steady_clock::now()) {
   stage_start_ = created_;
   if (enabled && out_ != nullptr) {
     enabled_ = true;
@@ -128,7 +134,8 @@ void ProgressReporter::DrawLocked() {
     const double rate = (done_ - first_done_) / Seconds(now - first_time_);  // units per second
     if (rate > 0) eta = (total_ - done_) / rate;
   }
-  const std::string line = Line(stage_.empty() ? "working" : stage_, fraction, Seconds(now - stage_start_), eta);
+  const std::string line =
+      Line(stage_.empty() ? "working" : stage_, fraction, Seconds(now - stage_start_), eta);
   // "\r" + the line + clearing of what a longer previous line left ("\033[K" is understood
   // by terminals; in a log file it is a harmless escape).
   std::fprintf(out_, "\r%s\033[K", line.c_str());

@@ -38,7 +38,8 @@ class ProgressReporter {
   ProgressReporter() = default;
   // `enabled` false gives the disabled reporter. `out` is the stream drawn on (stderr);
   // `delay_s` [s] the quiet time before the first draw; `interval_s` [s] between redraws.
-  explicit ProgressReporter(bool enabled, std::FILE* out = stderr, double delay_s = 1.0, double interval_s = 0.25);
+  explicit ProgressReporter(bool enabled, std::FILE* out = stderr, double delay_s = 1.0,
+                            double interval_s = 0.25);
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;
   // Finish().
@@ -70,7 +71,8 @@ class ProgressReporter {
   // The line drawn for a stage at `elapsed_s` since its first update, for tests: e.g.
   // "simulate  45% [#####.....] elapsed 0:00:03  ETA 0:00:04". `fraction` < 0: unknown;
   // `eta_s` < 0: unknown.
-  static std::string Line(const std::string& stage, double fraction, double elapsed_s, double eta_s);
+  static std::string Line(const std::string& stage, double fraction, double elapsed_s,
+                          double eta_s);
 
  private:
   void Run();

@@ -13,7 +13,8 @@ namespace tbridge {
 
 // A bar or string between nodes i and j (0-based). `group` names a family of members that
 // can be addressed together from a config: strings "deck", "substructure", "transverse";
-// bars "vertical", "substructure" (leaning bars of p >= 2 modules), "transverse". A string in group "deck" is a deck string.
+// bars "vertical", "substructure" (leaning bars of p >= 2 modules), "transverse". A string in group
+// "deck" is a deck string.
 struct Member {
   int i = 0;
   int j = 0;
@@ -38,7 +39,7 @@ std::vector<int> ComponentOf(int num_nodes, const Edges& edges) {
 }
 
 struct Structure {
-  Eigen::Matrix3Xd nodes;     // 3 x n_n node positions [m]
+  Eigen::Matrix3Xd nodes;       // 3 x n_n node positions [m]
   std::vector<Member> bars;     // compressive members (rigid in the dynamics)
   std::vector<Member> strings;  // tensile members (elastic, may go slack)
   std::vector<bool> fixed;      // per node: true for a pinned support

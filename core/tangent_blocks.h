@@ -27,8 +27,8 @@ inline std::vector<int> FreeDofs(const std::vector<bool>& fixed, int dim, int& n
 
 // Adds the member block `g` as [g -g; -g g] on the free DOFs of its end nodes i and j (the
 // top-left dim x dim of g; zero entries are left out of the pattern).
-inline void AddPairBlock(const Eigen::Matrix3d& g, int i, int j, const std::vector<int>& first_dof, int dim,
-                         TangentTriplets& out) {
+inline void AddPairBlock(const Eigen::Matrix3d& g, int i, int j, const std::vector<int>& first_dof,
+                         int dim, TangentTriplets& out) {
   const int ends[2] = {i, j};
   for (int a = 0; a < 2; ++a) {
     for (int c = 0; c < 2; ++c) {
@@ -46,8 +46,8 @@ inline void AddPairBlock(const Eigen::Matrix3d& g, int i, int j, const std::vect
 
 // Row `row` of the bar-length constraints: -d on node i's free DOFs, +d on node j's, with d
 // the bar's direction (b = n_j - n_i, or its unit vector).
-inline void AddBarRow(int row, int i, int j, const Eigen::Vector3d& d, const std::vector<int>& first_dof, int dim,
-                      TangentTriplets& out) {
+inline void AddBarRow(int row, int i, int j, const Eigen::Vector3d& d,
+                      const std::vector<int>& first_dof, int dim, TangentTriplets& out) {
   for (int r = 0; r < dim; ++r) {
     if (first_dof[i] >= 0) out.emplace_back(row, first_dof[i] + r, -d[r]);
     if (first_dof[j] >= 0) out.emplace_back(row, first_dof[j] + r, d[r]);

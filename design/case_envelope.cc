@@ -15,14 +15,16 @@ StationInfluence InfluenceOfStations(const EquilibriumSolver& solver, const Equi
   out.argmax.assign(members, -1);
   out.argmin.assign(members, -1);
   // At most 2^24 doubles (128 MB) of solutions at once, whatever the size.
-  block = static_cast<int>(std::clamp<Eigen::Index>((Eigen::Index{1} << 24) / std::max<Eigen::Index>(members, 1), 1, block));
+  block = static_cast<int>(std::clamp<Eigen::Index>(
+      (Eigen::Index{1} << 24) / std::max<Eigen::Index>(members, 1), 1, block));
   for (int first = 0; first < stations; first += block) {
     const int count = std::min(block, stations - first);
     Eigen::MatrixXd w(eq.A.rows(), count);
     for (int k = 0; k < count; ++k) w.col(k) = FreeLoads(eq, actions.StationLoad(first + k, 1.0));
     const Eigen::MatrixXd x = solver.Particular(w);
     const Eigen::MatrixXd residual = eq.A * x + w;
-    if (residual.size()) out.load_residual = std::max(out.load_residual, residual.cwiseAbs().maxCoeff());
+    if (residual.size())
+      out.load_residual = std::max(out.load_residual, residual.cwiseAbs().maxCoeff());
     for (int k = 0; k < count; ++k) {
       for (Eigen::Index j = 0; j < members; ++j) {
         const double v = x(j, k);
@@ -62,10 +64,12 @@ CaseEnvelope EnvelopeOf(const std::vector<LoadCase>& cases, const Eigen::MatrixX
   return env;
 }
 
-std::string CaseLabel(const std::vector<LoadCase>& cases, const Actions& actions, const MemberExtreme& e) {
+std::string CaseLabel(const std::vector<LoadCase>& cases, const Actions& actions,
+                      const MemberExtreme& e) {
   if (e.case_index < 0) return "";
   std::string label = cases[e.case_index].name;
-  if (e.station >= 0) label += " at node " + std::to_string(actions.station_nodes[e.station].front() + 1);
+  if (e.station >= 0)
+    label += " at node " + std::to_string(actions.station_nodes[e.station].front() + 1);
   return label;
 }
 

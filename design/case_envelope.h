@@ -36,7 +36,8 @@ struct MemberExtreme {
 
 struct CaseEnvelope {
   std::vector<MemberExtreme> uls_max;  // largest force over the ultimate cases: sizes the member
-  std::vector<MemberExtreme> min;      // smallest force over every case: strings stay taut, bars compressed
+  std::vector<MemberExtreme>
+      min;  // smallest force over every case: strings stay taut, bars compressed
 };
 
 // `base` is members x kNumBaseActions (the particular forces of Actions::base); `influence`
@@ -45,6 +46,7 @@ CaseEnvelope EnvelopeOf(const std::vector<LoadCase>& cases, const Eigen::MatrixX
                         const StationInfluence* influence);
 
 // "uls_travelling at node 12" (1-based node of the station's first deck node) or the case name.
-std::string CaseLabel(const std::vector<LoadCase>& cases, const Actions& actions, const MemberExtreme& e);
+std::string CaseLabel(const std::vector<LoadCase>& cases, const Actions& actions,
+                      const MemberExtreme& e);
 
 }  // namespace tbridge

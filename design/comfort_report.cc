@@ -92,20 +92,23 @@ std::vector<std::string> ComfortSummaryLines(const Design& d) {
     return out;
   }
   std::snprintf(text, sizeof text,
-                "comfort: %s; traffic class %s (%.3g pedestrians/m^2, %.4g on the deck, %.4g kg), comfort level %s, "
+                "comfort: %s; traffic class %s (%.3g pedestrians/m^2, %.4g on the deck, %.4g kg), "
+                "comfort level %s, "
                 "damping ratio %.3g; comfort class reached: %s%s%s",
-                CheckStatusName(c.Status()), c.traffic_class.c_str(), c.density_per_m2, c.pedestrians, c.crowd_mass_kg,
-                c.comfort_level.c_str(), c.damping_ratio, ComfortClassReached(c).c_str(), c.note.empty() ? "" : "; ",
-                c.note.c_str());
+                CheckStatusName(c.Status()), c.traffic_class.c_str(), c.density_per_m2,
+                c.pedestrians, c.crowd_mass_kg, c.comfort_level.c_str(), c.damping_ratio,
+                ComfortClassReached(c).c_str(), c.note.empty() ? "" : "; ", c.note.c_str());
   out.push_back(text);
-  if (!c.required) out.push_back("  no deck mode below EN 1990 A2.4.3.2's triggers: comfort not required");
+  if (!c.required)
+    out.push_back("  no deck mode below EN 1990 A2.4.3.2's triggers: comfort not required");
   for (const ComfortMode& m : c.modes) {
     std::snprintf(text, sizeof text,
-                  "  mode %d %s: f = %.4g Hz (empty %.4g Hz), modal mass %.5g kg, range %d; %s; peak acceleration "
+                  "  mode %d %s: f = %.4g Hz (empty %.4g Hz), modal mass %.5g kg, range %d; %s; "
+                  "peak acceleration "
                   "%.4g m/s^2 at node %d, limit %.3g m/s^2: %s (%s)",
-                  m.index, m.direction.c_str(), m.frequency_hz, m.frequency_empty_hz, m.modal_mass_kg, m.range,
-                  m.load_model.c_str(), m.acceleration_m_s2, m.node + 1, m.limit_m_s2, m.pass ? "passes" : "FAILS",
-                  m.comfort_class.c_str());
+                  m.index, m.direction.c_str(), m.frequency_hz, m.frequency_empty_hz,
+                  m.modal_mass_kg, m.range, m.load_model.c_str(), m.acceleration_m_s2, m.node + 1,
+                  m.limit_m_s2, m.pass ? "passes" : "FAILS", m.comfort_class.c_str());
     out.push_back(text);
   }
   return out;

@@ -48,7 +48,8 @@ Deck ComputeDeck(const BridgeConfig& b, const Material& m, const DesignConfig& d
   return deck;
 }
 
-Deck DeckOfThickness(const BridgeConfig& b, const Material& m, const DesignConfig& d, double thickness_m) {
+Deck DeckOfThickness(const BridgeConfig& b, const Material& m, const DesignConfig& d,
+                     double thickness_m) {
   Deck deck;
   deck.section_length = b.span / std::ldexp(1.0, b.n);
   deck.thickness = thickness_m;
@@ -57,12 +58,14 @@ Deck DeckOfThickness(const BridgeConfig& b, const Material& m, const DesignConfi
   return deck;
 }
 
-void CheckComputable(const Deck& deck, const BridgeConfig& b, const Material& m, const DesignConfig& d) {
-  const std::pair<const char*, double> derived[] = {{"deck section length L / 2^n", deck.section_length},
-                                                    {"deck beam mass m_d (eq 7)", deck.section_mass},
-                                                    {"deck thickness (eq 6)", deck.thickness},
-                                                    {"total load F_tot (eq 9)", deck.total_load},
-                                                    {"deck node load", deck.node_load}};
+void CheckComputable(const Deck& deck, const BridgeConfig& b, const Material& m,
+                     const DesignConfig& d) {
+  const std::pair<const char*, double> derived[] = {
+      {"deck section length L / 2^n", deck.section_length},
+      {"deck beam mass m_d (eq 7)", deck.section_mass},
+      {"deck thickness (eq 6)", deck.thickness},
+      {"total load F_tot (eq 9)", deck.total_load},
+      {"deck node load", deck.node_load}};
   for (const auto& [what, value] : derived) {
     if (std::isfinite(value) && value > 0 && value < kMaxComputable) continue;
     // The input farthest from its default, in orders of magnitude, is the likeliest cause.
@@ -90,7 +93,8 @@ void CheckComputable(const Deck& deck, const BridgeConfig& b, const Material& m,
     }
     throw ConfigError(key, NumberText(input),
                       std::string("gives a ") + what + " of " + NumberText(value) +
-                          ", outside what can be computed (finite, > 0 and < " + NumberText(kMaxComputable) +
+                          ", outside what can be computed (finite, > 0 and < " +
+                          NumberText(kMaxComputable) +
                           "): bring the inputs nearer to a real bridge (configs/README.md)");
   }
 }

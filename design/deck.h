@@ -29,8 +29,8 @@ inline constexpr double kMaxComputable = 1e100;
 Deck ComputeDeck(const BridgeConfig& bridge, const Material& material, const DesignConfig& design);
 // The deck of beams `thickness_m` thick, with the loads that follow (eqs 6 and 9). Throws
 // ConfigError (CheckComputable) as ComputeDeck does.
-Deck DeckOfThickness(const BridgeConfig& bridge, const Material& material, const DesignConfig& design,
-                     double thickness_m);
+Deck DeckOfThickness(const BridgeConfig& bridge, const Material& material,
+                     const DesignConfig& design, double thickness_m);
 
 // Throws ConfigError when a quantity of `deck` is not finite, not positive (underflow) or not
 // below kMaxComputable. It names the input farthest from its default in orders of magnitude

@@ -11,7 +11,8 @@ DeckBeamLoad DeckBeamLoadOf(const LoadCase& c, const Config& config, const Deck&
   const double q = b.payload / b.span;
   DeckBeamLoad load;
   // A half-span payload loads a beam of the loaded half fully: the worst beam carries q.
-  const double payload = c.factor[kPayloadFull] + std::max(c.factor[kPayloadLeft], c.factor[kPayloadRight]);
+  const double payload =
+      c.factor[kPayloadFull] + std::max(c.factor[kPayloadLeft], c.factor[kPayloadRight]);
   load.vertical_n_per_m = c.factor[kDeckDead] * (own + config.loads.superimposed_dead_n_per_m) +
                           c.factor[kPaperLoad] * (own + q) + payload * q;
   load.point_n = c.station_load;
@@ -20,14 +21,17 @@ DeckBeamLoad DeckBeamLoadOf(const LoadCase& c, const Config& config, const Deck&
 }
 
 CheckStatus DeckBeamCheck::Status() const {
-  return utilisation > 1.0 + 1e-9 || SagRatio() > 1.0 + 1e-9 ? CheckStatus::kFailed : CheckStatus::kPassed;
+  return utilisation > 1.0 + 1e-9 || SagRatio() > 1.0 + 1e-9 ? CheckStatus::kFailed
+                                                             : CheckStatus::kPassed;
 }
 
-DeckBeamCheck CheckDeckBeams(const Config& config, const Deck& deck, const std::vector<LoadCase>& cases) {
+DeckBeamCheck CheckDeckBeams(const Config& config, const Deck& deck,
+                             const std::vector<LoadCase>& cases) {
   const double l = deck.section_length, w = config.bridge.deck_width, t = deck.thickness;
   const double E = config.material.youngs_modulus;
-  const double vertical_modulus = w * t * t / 6.0, lateral_modulus = t * w * w / 6.0;  // elastic, [m^3]
-  const double inertia = w * t * t * t / 12.0;                                          // [m^4]
+  const double vertical_modulus = w * t * t / 6.0,
+               lateral_modulus = t * w * w / 6.0;  // elastic, [m^3]
+  const double inertia = w * t * t * t / 12.0;     // [m^4]
   DeckBeamCheck out;
   out.stress_rd_pa = config.material.yield_stress / config.design.yield_safety_factor;
   out.sag_limit_m = l / config.loads.deck_sag_limit;
@@ -76,7 +80,9 @@ Deck SizeDeckBeams(const Config& config, const Deck& start) {
   // the beams' share of F_tot).
   for (int round = 0; round < 50; ++round) {
     const std::vector<LoadCase> cases = MakeLoadCases(config, deck, notes);
-    auto ratio = [&](double t) { return WorstRatio(CheckDeckBeams(config, DeckOfThickness(b, m, d, t), cases)); };
+    auto ratio = [&](double t) {
+      return WorstRatio(CheckDeckBeams(config, DeckOfThickness(b, m, d, t), cases));
+    };
     if (!(ratio(start.thickness * 1e3) > 0)) return start;  // no case loads the beams: eq 7 stays
     // Bracket the thinnest passing plate from eq 7's, then bisect in log t to the last bit.
     double lo = start.thickness, hi = start.thickness;

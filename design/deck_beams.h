@@ -42,7 +42,8 @@ struct DeckBeamCheck {
 };
 
 // The check of `deck`'s beams under `cases`. Changes nothing.
-DeckBeamCheck CheckDeckBeams(const Config& config, const Deck& deck, const std::vector<LoadCase>& cases);
+DeckBeamCheck CheckDeckBeams(const Config& config, const Deck& deck,
+                             const std::vector<LoadCase>& cases);
 
 // The thinnest deck that passes CheckDeckBeams under the config's load cases, `start` (eq 7)
 // when no case loads the beams. The paper's switches keep eq 7's deck (`start`).

@@ -117,7 +117,8 @@ void DenseQpSolver::StartFrom(const DenseQp& qp, const std::vector<int>& warm, E
       // first: one that kept more is orthogonal to Q1 to rounding already (Daniel, Gragg,
       // Kaufman and Stewart, Math. Comp. 30, 1976). At n = 8, 72 % of the blocks need none.
       bool again = false;
-      for (int i = 0; i < b && !again; ++i) again = B.col(i).norm() < std::sqrt(0.5) * block_norm_[i];
+      for (int i = 0; i < b && !again; ++i)
+        again = B.col(i).norm() < std::sqrt(0.5) * block_norm_[i];
       if (again) {
         auto C2 = coef2_.topLeftCorner(q0, b);
         C2.noalias() = Q.transpose() * B;

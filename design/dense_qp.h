@@ -88,16 +88,17 @@ class DenseQpSolver {
   // The most violated constraint at p, -1 where none is.
   int MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, double tolerance);
   void Add(double z_norm, int k);  // constraint k joins: z_ / z_norm to Q1, [d1; z_norm] to R
-  void Drop(int l);         // removes active constraint l (0-based in the active list)
+  void Drop(int l);                // removes active constraint l (0-based in the active list)
 
   static constexpr int kBlock = 32;  // warm constraints that join StartFrom's active set at once
-  int n_ = -1, m_ = -1, q_ = 0;  // sizes; q_: active constraints
-  bool diagonal_ = true;         // G diagonal: L = sqrt(G), its inverse inv_sqrt_
+  int n_ = -1, m_ = -1, q_ = 0;      // sizes; q_: active constraints
+  bool diagonal_ = true;             // G diagonal: L = sqrt(G), its inverse inv_sqrt_
   Eigen::VectorXd inv_sqrt_;
   Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::MatrixXd Q1_, R_;  // n x n and n x n, of which the first q_ columns are in use
   Eigen::VectorXd nt_, d1_, z_, r_, u_, dp_, y0_, Cp_;
-  Eigen::MatrixXd block_, coef_, coef2_;  // StartFrom's block of normals and their coefficients on Q1
+  Eigen::MatrixXd block_, coef_,
+      coef2_;  // StartFrom's block of normals and their coefficients on Q1
   Eigen::VectorXd block_norm_;
   std::vector<int> active_;
   // Per constraint, numbered as DenseQpSolution::active: 1 active, 2 left out as met by

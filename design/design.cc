@@ -1,14 +1,14 @@
 #include "design/design.h"
 
 #include <cmath>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "core/error.h"
-#include "design/equilibrium.h"
 #include "design/case_envelope.h"
 #include "design/deck_beams.h"
+#include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/reduced_min_mass.h"
 #include "design/solvers.h"
@@ -31,8 +31,9 @@ void CheckBasis(const EquilibriumBasis& basis) {
   // Rounding of A x_p grows with the largest member force it sums, not with the node load.
   const double force_scale = basis.particular.size() ? basis.particular.cwiseAbs().maxCoeff() : 0.0;
   if (basis.load_residual > 1e-9 * force_scale) {
-    throw ModelError("no equilibrium: the loads excite a mechanism of the bridge (unbalanced force " +
-                     std::to_string(basis.load_residual) + " N)");
+    throw ModelError(
+        "no equilibrium: the loads excite a mechanism of the bridge (unbalanced force " +
+        std::to_string(basis.load_residual) + " N)");
   }
 }
 
@@ -50,7 +51,8 @@ struct MinMassSolution {
 
 MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, const Structure& s,
                              const Eigen::Matrix3Xd* single_loads, const MinMassSettings& settings,
-                             const DesignConfig& config, SolverOutcome& outcome, std::string& form) {
+                             const DesignConfig& config, SolverOutcome& outcome,
+                             std::string& form) {
   const bool applies = problem && problem->DirectApplies();
   const bool direct = config.solver == "direct" || (config.solver == "auto" && applies);
   form = "self-stress";
@@ -64,11 +66,13 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
   };
   if (direct) {
     if (!applies) {
-      throw ConfigError("design.solver", "direct",
-                        "\"direct\" needs at most one self-stress state loading no bar; this bridge has " +
-                            std::to_string(states) + " states" +
-                            (problem ? " with " + std::to_string(problem->num_active_bars()) + " bars in them" : "") +
-                            ": use \"auto\", \"ipopt\" or \"nlopt\"");
+      throw ConfigError(
+          "design.solver", "direct",
+          "\"direct\" needs at most one self-stress state loading no bar; this bridge has " +
+              std::to_string(states) + " states" +
+              (problem ? " with " + std::to_string(problem->num_active_bars()) + " bars in them"
+                       : "") +
+              ": use \"auto\", \"ipopt\" or \"nlopt\"");
     }
     outcome = problem->SolveDirect(x);
     return reduced_forces();
@@ -78,10 +82,11 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
   if (name == "auto") {
     const std::vector<std::string> built = BuiltInIterativeSolvers();
     if (built.empty()) {
-      throw ConfigError("design.solver", "\"auto\"",
-                        "this bridge has " + std::to_string(states) +
-                            " self-stress states and needs an iterative solver, but this build has neither "
-                            "Ipopt nor NLopt (rebuild with -DTBRIDGE_WITH_IPOPT=ON or -DTBRIDGE_WITH_NLOPT=ON)");
+      throw ConfigError(
+          "design.solver", "\"auto\"",
+          "this bridge has " + std::to_string(states) +
+              " self-stress states and needs an iterative solver, but this build has neither "
+              "Ipopt nor NLopt (rebuild with -DTBRIDGE_WITH_IPOPT=ON or -DTBRIDGE_WITH_NLOPT=ON)");
     }
     name = built.front();
   }
@@ -91,18 +96,22 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
   auto solve = [&](const NlpProblem& nlp) { return SolveNlp(name, nlp, options, x); };
   // The full problem holds one load case; several cases need the self-stress form.
   if (single_loads == nullptr && problem == nullptr) {
-    throw ModelError("this bridge has " + std::to_string(states) +
-                     " self-stress states, too many for the several load cases of loads.cases to share one "
-                     "self-stress form; design it for one case (loads.cases [\"paper\"]) or at a lower n");
+    throw ModelError(
+        "this bridge has " + std::to_string(states) +
+        " self-stress states, too many for the several load cases of loads.cases to share one "
+        "self-stress form; design it for one case (loads.cases [\"paper\"]) or at a lower n");
   }
   if (single_loads) {
     const MinMassProblem full(s, *single_loads, settings);
     // NLopt's SLSQP holds the Jacobian dense (rows x variables): there the smaller dense size
     // decides, and Ipopt's sparse factorisation counts the non-zeros.
-    auto dense = [](const NlpProblem& p) { return static_cast<double>(p.num_constraints()) * p.num_variables(); };
-    const bool take_full = !problem || (config.solver == "nlopt" ? dense(*problem) > dense(full)
-                                                                : problem->JacobianPattern().size() >
-                                                                      full.JacobianPattern().size());
+    auto dense = [](const NlpProblem& p) {
+      return static_cast<double>(p.num_constraints()) * p.num_variables();
+    };
+    const bool take_full =
+        !problem || (config.solver == "nlopt"
+                         ? dense(*problem) > dense(full)
+                         : problem->JacobianPattern().size() > full.JacobianPattern().size());
     if (take_full) {
       form = "full";
       x = full.StartingPoint();
@@ -188,29 +197,33 @@ Verdict DesignVerdict(const Design& d) {
   }
   if (deck.utilisation > 1.0 + 1e-9) {
     std::ostringstream os;
-    os << "deck beams: bending utilisation " << deck.utilisation << " > 1 (" << deck.governing_case << ")";
+    os << "deck beams: bending utilisation " << deck.utilisation << " > 1 (" << deck.governing_case
+       << ")";
     fails.push_back(os.str());
   }
   if (deck.SagRatio() > 1.0 + 1e-9) {
     std::ostringstream os;
-    os << "deck beams: sag " << deck.sag_m << " m > l_d / " << d.config.loads.deck_sag_limit << " = "
-       << deck.sag_limit_m << " m (" << deck.sag_case << ")";
+    os << "deck beams: sag " << deck.sag_m << " m > l_d / " << d.config.loads.deck_sag_limit
+       << " = " << deck.sag_limit_m << " m (" << deck.sag_case << ")";
     fails.push_back(os.str());
   }
   AbutmentVerdicts(d.statics, v, fails);
   if (!d.stability.stable) fails.push_back("unstable");
-  if (d.statics.done && !d.statics.all_converged) fails.push_back("a static case found no equilibrium");
+  if (d.statics.done && !d.statics.all_converged)
+    fails.push_back("a static case found no equilibrium");
   if (d.statics.done && d.statics.deflection_max_m > d.statics.deflection_limit_m) {
     std::ostringstream os;
-    os << "deflection " << d.statics.deflection_max_m << " m > span / " << d.config.loads.deflection_limit << " = "
-       << d.statics.deflection_limit_m << " m (" << d.statics.deflection_case << ")";
+    os << "deflection " << d.statics.deflection_max_m << " m > span / "
+       << d.config.loads.deflection_limit << " = " << d.statics.deflection_limit_m << " m ("
+       << d.statics.deflection_case << ")";
     fails.push_back(os.str());
   }
   const CheckStatus comfort = d.comfort.Status();
   if (comfort == CheckStatus::kFailed) fails.push_back("comfort: " + d.comfort.Failures());
   const bool comfort_asked = d.config.comfort.check && !KeepsPaperSwitches(d.config);
   if (comfort_asked && comfort == CheckStatus::kNotRun) {
-    not_done.push_back("comfort check not run" + (d.comfort.note.empty() ? "" : " (" + d.comfort.note + ")"));
+    not_done.push_back("comfort check not run" +
+                       (d.comfort.note.empty() ? "" : " (" + d.comfort.note + ")"));
   }
   if (d.unchecked_cases) not_done.push_back("some asked-for cases were not checked (notes)");
   if (!d.statics.done) not_done.push_back("static check not run");
@@ -222,14 +235,17 @@ Verdict DesignVerdict(const Design& d) {
                                   : VerdictOutcome::kPass;
   v.pass = v.outcome == VerdictOutcome::kPass;
   std::ostringstream os;
-  os << VerdictName(v.outcome) << ": utilisation_max " << v.utilisation_max << " (" << v.governing << ")";
+  os << VerdictName(v.outcome) << ": utilisation_max " << v.utilisation_max << " (" << v.governing
+     << ")";
   for (const std::string& f : fails) os << "; " << f;
   for (const std::string& f : not_done) os << "; " << f;
   v.summary = os.str();
-  v.scope = d.topology.planes == 1
-                ? "in-plane only: a planar bridge is checked in its own plane; its lateral system (bracing, "
-                  "wind, lateral-torsional motion) is not checked, nor its lateral and torsional comfort"
-                : "both planes and the transverse strings, wind included where loads.cases asks for it";
+  v.scope =
+      d.topology.planes == 1
+          ? "in-plane only: a planar bridge is checked in its own plane; its lateral system "
+            "(bracing, "
+            "wind, lateral-torsional motion) is not checked, nor its lateral and torsional comfort"
+          : "both planes and the transverse strings, wind included where loads.cases asks for it";
   if (!comfort_asked) {
     v.scope += KeepsPaperSwitches(d.config) ? "; comfort not checked (the paper's switches)"
                                             : "; comfort not checked (comfort.check is false)";
@@ -248,7 +264,8 @@ LoadCase ReferenceCase(const Config& config, const std::vector<LoadCase>& cases)
 }
 
 bool MustStayTaut(const Design& d, int k) {
-  return d.strings[k].kind == MemberKind::kDeckString || d.topology.structure.strings[k].group == "transverse";
+  return d.strings[k].kind == MemberKind::kDeckString ||
+         d.topology.structure.strings[k].group == "transverse";
 }
 
 void RequireStable(const Design& d) {
@@ -256,9 +273,10 @@ void RequireStable(const Design& d) {
   if (v.stable) return;
   std::ostringstream os;
   os << "the design is unstable: its tangent stiffness on the " << v.reduced_dofs
-     << " motions that keep the bar lengths has " << v.negative_pivots << " negative and " << v.zero_pivots
-     << " zero pivots (smallest " << v.min_pivot
-     << " N/m), so the compressed bars can swing away from equilibrium under the design load; more string "
+     << " motions that keep the bar lengths has " << v.negative_pivots << " negative and "
+     << v.zero_pivots << " zero pivots (smallest " << v.min_pivot
+     << " N/m), so the compressed bars can swing away from equilibrium under the design load; more "
+        "string "
         "prestress holds them (design.deck_string_min_radius, design.transverse_string_min_radius)";
   throw ModelError(os.str());
 }
@@ -292,9 +310,10 @@ const MemberSizing* FindMember(const Design& d, const std::string& name) {
 
 DesignInputs PrepareDesign(const Config& config) {
   if (config.structure) {
-    throw ConfigError("structure", "(custom scene)",
-                      "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
-                      "or tbridge modes");
+    throw ConfigError(
+        "structure", "(custom scene)",
+        "designing needs a \"bridge\" section; a \"structure\" config runs with tbridge simulate "
+        "or tbridge modes");
   }
   Validate(config);                            // a config built in code gets the parse's checks
   RequireSolverBuiltIn(config.design.solver);  // before any work: the build decides what it accepts
@@ -321,7 +340,8 @@ DesignInputs PrepareDesign(const Config& config) {
     }
     // Transverse strings (3D bridge) likewise: unloaded by symmetric vertical loads, they
     // stiffen the coupling only through this prestress.
-    if (s.strings[k].group == "transverse") in.string_min_area[k] = circle(config.design.transverse_string_min_radius);
+    if (s.strings[k].group == "transverse")
+      in.string_min_area[k] = circle(config.design.transverse_string_min_radius);
     settings.string_min_tension[k] = sigma_w * in.string_min_area[k];
   }
   return in;
@@ -342,7 +362,8 @@ namespace {
 
 // Utilisation of a sized member under its largest and smallest force, and the mode that
 // governs it: strings yield (or go slack below zero), bars yield or buckle.
-void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& rule, double sigma_w, double E) {
+void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& rule, double sigma_w,
+             double E) {
   if (m.kind == MemberKind::kBar) {
     const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
     const double u_yield = cap.yield > 0 ? largest / cap.yield : 0.0;
@@ -378,7 +399,8 @@ LoadCase PermanentCase(const Config& c) {
   return g;
 }
 
-Design RunDesign(const Config& config, ProgressReporter* progress, const std::vector<double>* area_floor) {
+Design RunDesign(const Config& config, ProgressReporter* progress,
+                 const std::vector<double>* area_floor) {
   // Fractions of a whole design's time at n = 16: topology 0.2, factorisation 0.4, solve and
   // sizing the rest (the caller's output writing comes after).
   auto done = [progress](double fraction) {
@@ -393,9 +415,11 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   d.deck = in.deck;
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars(), members = nb + s.num_strings();
-  if (area_floor && static_cast<int>(area_floor->size()) != members) throw ModelError("RunDesign: area floors do not match the members");
+  if (area_floor && static_cast<int>(area_floor->size()) != members)
+    throw ModelError("RunDesign: area floors do not match the members");
   auto floor = [area_floor](int j) { return area_floor ? (*area_floor)[j] : 0.0; };
-  for (int b = 0; b < nb; ++b) in.settings.bar_min_area[b] = std::max(in.settings.bar_min_area[b], floor(b));
+  for (int b = 0; b < nb; ++b)
+    in.settings.bar_min_area[b] = std::max(in.settings.bar_min_area[b], floor(b));
   const MinMassSettings& settings = in.settings;
   const double sigma_w = settings.strings.DesignStress();
   const BarRule rule = BarRuleOf(config);
@@ -410,13 +434,18 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   const double station_members = static_cast<double>(d.actions.station_nodes.size()) * members;
   if (travels && station_members > 8388608.0) {
     std::erase_if(d.cases, [](const LoadCase& c) { return c.station_load != 0; });
-    d.notes.push_back("loads.cases: the travelling loads are not checked: " +
-                      std::to_string(d.actions.station_nodes.size()) + " deck stations x " + std::to_string(members) +
-                      " members exceed the 2^23 station-members a design solves for them (n <= 10 on a planar "
-                      "bridge)");
+    d.notes.push_back(
+        "loads.cases: the travelling loads are not checked: " +
+        std::to_string(d.actions.station_nodes.size()) + " deck stations x " +
+        std::to_string(members) +
+        " members exceed the 2^23 station-members a design solves for them (n <= 10 on a planar "
+        "bridge)");
     d.unchecked_cases = true;
     travels = false;
-    if (d.cases.empty()) throw ModelError("loads.cases: only travelling loads were asked for, and they are too costly to check at this n");
+    if (d.cases.empty())
+      throw ModelError(
+          "loads.cases: only travelling loads were asked for, and they are too costly to check at "
+          "this n");
   }
   const bool single = d.cases.size() == 1 && !travels;
 
@@ -430,7 +459,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   basis.states = solver.states();
   basis.basis_formed = static_cast<double>(members) * basis.states <= 1048576.0;
   basis.self_stress = basis.basis_formed ? solver.SelfStresses() : Eigen::MatrixXd(members, 0);
-  if (basis.self_stress.size()) basis.basis_residual = (eq.A * basis.self_stress).cwiseAbs().maxCoeff();
+  if (basis.self_stress.size())
+    basis.basis_residual = (eq.A * basis.self_stress).cwiseAbs().maxCoeff();
   done(0.6);
 
   // The reference state: the drawn geometry is in equilibrium under it (the paper's design
@@ -448,22 +478,25 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     Eigen::MatrixXd w(eq.A.rows(), kNumBaseActions);
     for (int a = 0; a < kNumBaseActions; ++a) w.col(a) = FreeLoads(eq, d.actions.base[a]);
     base_forces = solver.Particular(w);
-    basis.load_residual = std::max(influence.load_residual, (eq.A * base_forces + w).cwiseAbs().maxCoeff());
+    basis.load_residual =
+        std::max(influence.load_residual, (eq.A * base_forces + w).cwiseAbs().maxCoeff());
     env = EnvelopeOf(d.cases, base_forces, travels ? &influence : nullptr);
     const Eigen::Matrix3Xd single_loads = d.actions.Loads(d.cases[0]);
     if (single) {
       basis.particular = solver.Particular(FreeLoads(eq, single_loads));
     } else {
       basis.particular.resize(members, 2);
-      for (int j = 0; j < members; ++j) basis.particular(j, 0) = env.uls_max[j].force, basis.particular(j, 1) = env.min[j].force;
+      for (int j = 0; j < members; ++j)
+        basis.particular(j, 0) = env.uls_max[j].force, basis.particular(j, 1) = env.min[j].force;
     }
     CheckBasis(basis);
     std::optional<ReducedMinMassProblem> problem;
     if (basis.basis_formed) problem.emplace(s, basis, settings);
-    solution = SolveMinMass(problem ? &*problem : nullptr, basis.states, s, single ? &single_loads : nullptr, settings,
-                            config.design, d.solver, d.solver_form);
-    reference_forces =
-        single ? Eigen::VectorXd(solution.forces.col(0)) : Eigen::VectorXd(base_forces * reference.Factors());
+    solution = SolveMinMass(problem ? &*problem : nullptr, basis.states, s,
+                            single ? &single_loads : nullptr, settings, config.design, d.solver,
+                            d.solver_form);
+    reference_forces = single ? Eigen::VectorXd(solution.forces.col(0))
+                              : Eigen::VectorXd(base_forces * reference.Factors());
     if (!single && solution.alpha.size()) reference_forces += basis.self_stress * solution.alpha;
 
     // Size every member for its largest force; rest lengths from the reference state.
@@ -472,7 +505,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     d.strings.clear();
     double total = 0;
     for (int b = 0; b < nb; ++b) {
-      MemberSizing m = SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, settings.bars);
+      MemberSizing m =
+          SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, settings.bars);
       if (floor(b) > 0 && m.area == floor(b)) m.governed_by = "resized";
       m.kind = MemberKind::kBar;
       m.i = s.bars[b].i;
@@ -486,7 +520,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     for (int k = 0; k < s.num_strings(); ++k) {
       MemberSizing m = SizeString(s.Length(s.strings[k]), largest[nb + k], reference_forces[nb + k],
                                   std::max(in.string_min_area[k], floor(nb + k)), settings.strings);
-      if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k)) m.governed_by = "resized";
+      if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k))
+        m.governed_by = "resized";
       m.kind = StringKind(s.strings[k]);
       m.i = s.strings[k].i;
       m.j = s.strings[k].j;
@@ -510,23 +545,28 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     // change that grows after the first passes does not settle: the mass either diverges or
     // jumps between optima (the 3D bridge at n = 4: 1232, 1233, 1172, 1197, 1171 kg).
     const double change = std::abs(total - previous_total) / total;
-    const bool settled = change <= 1e-12 ||
-                         (change <= 100 * config.design.tolerance && change > 0.5 * previous_change) ||
-                         (d.self_weight_iterations > 8 && change <= 1e-5);
+    const bool settled =
+        change <= 1e-12 ||
+        (change <= 100 * config.design.tolerance && change > 0.5 * previous_change) ||
+        (d.self_weight_iterations > 8 && change <= 1e-5);
     if (!config.design.self_weight || settled) break;
-    const bool unsettled = d.self_weight_iterations >= 3 && change > previous_change && change > 1e-5;
+    const bool unsettled =
+        d.self_weight_iterations >= 3 && change > previous_change && change > 1e-5;
     previous_change = change;
     if (d.self_weight_iterations >= 200 || unsettled || !std::isfinite(total)) {
       // Still growing: the weight outruns what the members carry. Moving back and forth: the
       // minimum-mass problem has many optima (self-stresses), and a small change of weight
       // moves the solver from one to another.
       const bool growing = !std::isfinite(total) || total > 1.05 * previous_total;
-      throw ModelError("self-weight: the member mass did not settle in " + std::to_string(d.self_weight_iterations) +
-                       " sizings (" + NumberText(previous_total) + " kg, then " + NumberText(total) + " kg): " +
-                       (growing ? std::string("the members cannot carry their own weight at this span and material")
-                                : std::string("it moves between optima of the minimum-mass problem (" +
-                                              std::to_string(d.self_stress_states) +
-                                              " self-stress states); design.self_weight false designs without it")));
+      throw ModelError(
+          "self-weight: the member mass did not settle in " +
+          std::to_string(d.self_weight_iterations) + " sizings (" + NumberText(previous_total) +
+          " kg, then " + NumberText(total) + " kg): " +
+          (growing
+               ? std::string("the members cannot carry their own weight at this span and material")
+               : std::string("it moves between optima of the minimum-mass problem (" +
+                             std::to_string(d.self_stress_states) +
+                             " self-stress states); design.self_weight false designs without it")));
     }
     previous_total = total;
   }
@@ -538,8 +578,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   const double load_scale = SelfStressForceScale(basis, settings);
   const double smallest = solution.forces.col(solution.forces.cols() - 1).minCoeff();
-  if (!d.solver.success || !std::isfinite(d.equilibrium_residual) || d.equilibrium_residual > 1e-6 * load_scale ||
-      smallest < -1e-6 * load_scale) {
+  if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
+      d.equilibrium_residual > 1e-6 * load_scale || smallest < -1e-6 * load_scale) {
     std::ostringstream os;
     os << "no minimum-mass design found for n = " << config.bridge.n << ", p = " << config.bridge.p
        << ", beta = " << config.bridge.beta_deg << " deg: solver " << d.solver.solver
@@ -549,8 +589,10 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
       // The transverse strings' prestress floor grows with sigma_w; where the loads cannot
       // balance it, no member forces are both in equilibrium and of the right sign.
       const double r = config.design.transverse_string_min_radius;
-      os << "; the transverse strings are prestressed at sigma_w pi r^2 = " << sigma_w * std::numbers::pi * r * r
-         << " N each (design.transverse_string_min_radius = " << r << " m), which these loads may not balance: a "
+      os << "; the transverse strings are prestressed at sigma_w pi r^2 = "
+         << sigma_w * std::numbers::pi * r * r
+         << " N each (design.transverse_string_min_radius = " << r
+         << " m), which these loads may not balance: a "
          << "smaller radius lowers it";
     }
     throw ModelError(os.str());
@@ -564,9 +606,11 @@ Design RunDesign(const Config& config, ProgressReporter* progress, const std::ve
     Utilise(m, largest[j], least[j], rule, sigma_w, settings.bars.youngs_modulus);
     m.force_min = least[j];
     m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
-    if (m.mode == "slack" || m.mode == "tension") m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
-    (m.kind == MemberKind::kBar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) +=
-        m.mass;
+    if (m.mode == "slack" || m.mode == "tension")
+      m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
+    (m.kind == MemberKind::kBar          ? d.mass.bars
+     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
+                                         : d.mass.strings) += m.mass;
   }
   d.alpha = solution.alpha;
   d.reference_forces = reference_forces;

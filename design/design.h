@@ -38,15 +38,15 @@ struct AsBuilt {
   // The members whose reference force in the file is not what they carry as read (an edited
   // area or rest length), in the file's order; empty when only the weight changed.
   std::vector<std::string> edited;
-  double node_move_m = 0;        // the largest move of a node from the drawn geometry [m]
-  int node = -1;                 // 0-based, where it is
-  double force_change_n = 0;     // the largest change of a member's reference force [N]
-  std::string force_member;      // where it is
-  int slack_strings = 0;         // strings slack in the re-derived reference state
+  double node_move_m = 0;     // the largest move of a node from the drawn geometry [m]
+  int node = -1;              // 0-based, where it is
+  double force_change_n = 0;  // the largest change of a member's reference force [N]
+  std::string force_member;   // where it is
+  int slack_strings = 0;      // strings slack in the re-derived reference state
 };
 
 struct Design {
-  Config config;             // resolved
+  Config config;  // resolved
   BridgeTopology topology;
   Deck deck;
   // 3 x n_n node loads of the reference state [N]: the drawn geometry is in equilibrium under
@@ -54,25 +54,26 @@ struct Design {
   // payload) with its switches; else the permanent load G (deck beams, superimposed dead load
   // and, with design.self_weight, the members' weight).
   Eigen::Matrix3Xd loads;
-  LoadCase reference;              // the factors of `loads` on the base actions
-  Actions actions;                 // characteristic base actions and deck stations
-  std::vector<LoadCase> cases;     // the load cases sized and checked for
-  std::vector<std::string> notes;  // cases left out, and why
+  LoadCase reference;                // the factors of `loads` on the base actions
+  Actions actions;                   // characteristic base actions and deck stations
+  std::vector<LoadCase> cases;       // the load cases sized and checked for
+  std::vector<std::string> notes;    // cases left out, and why
   Eigen::VectorXd reference_forces;  // [C; T] of the reference state [N]
   Eigen::VectorXd alpha;             // self-stress coefficients [N]; empty when not computed
   int self_weight_iterations = 0;    // sizings of the self-weight fixed point
   bool unchecked_cases = false;      // some asked-for cases were left out (notes say which)
   StaticCheck statics;               // the nonlinear static check, when it was run (verify/)
   Resizing resizing;                 // the verification's resizing, when it was run (verify/)
-  AngleSearch angle;  // the angle's search, where bridge.beta_deg is "auto" (verify/)
-  DynamicCheck dynamics;             // the dynamic check, when it was run (verify/)
-  MassAttribution attribution;       // what drives the verified sizing's mass; members empty when not sized
-  ComfortCheck comfort;              // the footbridge comfort check, when it was run (verify/)
+  AngleSearch angle;      // the angle's search, where bridge.beta_deg is "auto" (verify/)
+  DynamicCheck dynamics;  // the dynamic check, when it was run (verify/)
+  MassAttribution
+      attribution;       // what drives the verified sizing's mass; members empty when not sized
+  ComfortCheck comfort;  // the footbridge comfort check, when it was run (verify/)
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
   MassBreakdown mass;
   SolverOutcome solver;
-  std::string solver_form;           // "self-stress" (the reduced problem), "full", or kReadFromFile
+  std::string solver_form;          // "self-stress" (the reduced problem), "full", or kReadFromFile
   double equilibrium_residual = 0;  // max |A x + w| over free DOFs [N]
   int self_stress_states = -1;      // n_b + n_s - rank(A); -1 when not computed (large n)
   // Static stability at the design state (design/stability.h); the critical load factor is
@@ -121,7 +122,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
 // reference state gets the rest length of zero tension (its drawn length): such a design is
 // a start for the sizing, whose reference-taut rows mend it, not a bridge (its stability
 // verdict says so).
-Design SizedDesign(const Config& config, const std::vector<double>& areas, const Eigen::VectorXd& alpha);
+Design SizedDesign(const Config& config, const std::vector<double>& areas,
+                   const Eigen::VectorXd& alpha);
 
 // `design` after the loss of `loss` of its prestress (design.prestress_loss): its reference
 // forces less that share of the self-stress part (PrestressForces; the forces carrying its
@@ -144,9 +146,9 @@ struct Verdict {
   VerdictOutcome outcome = VerdictOutcome::kIncomplete;
   bool pass = false;  // outcome == kPass
   double utilisation_max = 0;
-  std::string governing;  // "member 3-5 (buckling, uls_payload_full)"
-  std::string summary;    // "PASS: ...", "FAIL: ...; ..." or "INCOMPLETE: ...; ..."
-  std::string scope;      // what the checks cover, and what they do not
+  std::string governing;     // "member 3-5 (buckling, uls_payload_full)"
+  std::string summary;       // "PASS: ...", "FAIL: ...; ..." or "INCOMPLETE: ...; ..."
+  std::string scope;         // what the checks cover, and what they do not
   DeckBeamCheck deck_beams;  // the deck beams' check the verdict read (design/deck_beams.h)
 };
 Verdict DesignVerdict(const Design& design);

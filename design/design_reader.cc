@@ -25,7 +25,8 @@ using nlohmann::json;
 // file[key] as a number, or a ConfigError naming `where`.
 double Number(const json& j, const char* key, const std::string& where) {
   if (!j.is_object() || !j.contains(key) || !j.at(key).is_number()) {
-    throw ConfigError(where + "." + key, j.is_object() && j.contains(key) ? j.at(key).dump() : "(missing)",
+    throw ConfigError(where + "." + key,
+                      j.is_object() && j.contains(key) ? j.at(key).dump() : "(missing)",
                       "a number, as tbridge design writes it");
   }
   return j.at(key).get<double>();
@@ -116,19 +117,18 @@ void RequireSection(const json& j, const MemberSizing& m, const MemberMaterial& 
 // carry its weight, so a deck of another thickness is another design.
 void RequireDeck(const json& file, const Deck& deck) {
   const json& j = file.contains("deck") ? file.at("deck") : json();
-  const std::pair<const char*, double> derived[] = {{"thickness", deck.thickness},
-                                                    {"section_length", deck.section_length},
-                                                    {"section_mass", deck.section_mass},
-                                                    {"beams_mass", deck.beams_mass},
-                                                    {"total_load", deck.total_load},
-                                                    {"node_load", deck.node_load}};
+  const std::pair<const char*, double> derived[] = {
+      {"thickness", deck.thickness},       {"section_length", deck.section_length},
+      {"section_mass", deck.section_mass}, {"beams_mass", deck.beams_mass},
+      {"total_load", deck.total_load},     {"node_load", deck.node_load}};
   for (const auto& [key, value] : derived) {
     const double given = Number(j, key, "deck");
     if (std::abs(given - value) <= kDerivedTolerance * std::abs(value)) continue;
-    throw ConfigError(std::string("deck.") + key, NumberText(given),
-                      "the config gives " + NumberText(value) + " (" + deck.sized_by +
-                          "); the members' reference forces carry the deck's weight, so an edit of the deck is "
-                          "another design: edit the config (loads, deck_sag_limit) and run tbridge design");
+    throw ConfigError(
+        std::string("deck.") + key, NumberText(given),
+        "the config gives " + NumberText(value) + " (" + deck.sized_by +
+            "); the members' reference forces carry the deck's weight, so an edit of the deck is "
+            "another design: edit the config (loads, deck_sag_limit) and run tbridge design");
   }
 }
 
@@ -156,14 +156,16 @@ json FileOf(const Design& design) {
 const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
   const json& list = file.at("members");
   const std::string where = "members[" + std::to_string(index) + "]";
-  if (index >= list.size()) throw ConfigError("members", std::to_string(list.size()) + " members", "the config draws " +
-                                                                 std::to_string(s.num_bars() + s.num_strings()));
+  if (index >= list.size())
+    throw ConfigError("members", std::to_string(list.size()) + " members",
+                      "the config draws " + std::to_string(s.num_bars() + s.num_strings()));
   const json& m = list[index];
   const int nb = s.num_bars();
   const ::tbridge::Member& e = static_cast<int>(index) < nb ? s.bars[index] : s.strings[index - nb];
   const json want = {e.i + 1, e.j + 1};
   if (!m.is_object() || !m.contains("nodes") || m.at("nodes") != want) {
-    throw ConfigError(where + ".nodes", m.is_object() && m.contains("nodes") ? m.at("nodes").dump() : "(missing)",
+    throw ConfigError(where + ".nodes",
+                      m.is_object() && m.contains("nodes") ? m.at("nodes").dump() : "(missing)",
                       "the config draws this member between nodes " + want.dump());
   }
   return m;
@@ -173,7 +175,8 @@ const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
 void WeighMembers(Design& d, std::vector<double>& masses) {
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars();
-  const double bar_density = BarMaterial(d.config).density, string_density = StringMaterial(d.config).density;
+  const double bar_density = BarMaterial(d.config).density,
+               string_density = StringMaterial(d.config).density;
   d.mass.bars = d.mass.strings = d.mass.deck_strings = 0;
   for (int k = 0; k < nb + s.num_strings(); ++k) {
     const bool bar = k < nb;
@@ -181,7 +184,9 @@ void WeighMembers(Design& d, std::vector<double>& masses) {
     m.length = s.Length(bar ? s.bars[k] : s.strings[k - nb]);
     m.mass = (bar ? bar_density : string_density) * m.area * m.length;
     masses[k] = m.mass;
-    (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
+    (bar                                 ? d.mass.bars
+     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
+                                         : d.mass.strings) += m.mass;
   }
   d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
   d.mass.total = d.mass.structure + d.mass.deck_beams;
@@ -214,12 +219,14 @@ void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::strin
   // equilibrium under the loads those forces balance.
   Eigen::VectorXd forces = d.reference_forces;
   for (int k = 0; k < ns; ++k) {
-    forces[nb + k] = StringTension(d.strings[k].stiffness, d.strings[k].rest_length, d.strings[k].length);
+    forces[nb + k] =
+        StringTension(d.strings[k].stiffness, d.strings[k].rest_length, d.strings[k].length);
   }
   const EquilibriumSystem eq = BuildEquilibrium(s);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, forces, d.loads);
   Eigen::Matrix3Xd from_loads = d.loads;
-  for (Eigen::Index r = 0; r < residual.size(); ++r) from_loads(eq.row_axis[r], eq.row_node[r]) -= residual[r];
+  for (Eigen::Index r = 0; r < residual.size(); ++r)
+    from_loads(eq.row_axis[r], eq.row_node[r]) -= residual[r];
   StaticState state = StateAt(model, s.nodes, forces.head(nb), from_loads);
   const Eigen::VectorXd file_forces = d.reference_forces;
   auto names = [&edited] {
@@ -230,9 +237,10 @@ void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::strin
   for (int pass = 0;; ++pass) {
     const StaticResult result = SolveStatic(model, state, from_loads, d.loads);
     if (!result.converged) {
-      throw ConfigError("members[].area", edited.empty() ? "(the members' weight)" : names(),
-                        "the structure as edited has no reference state under its permanent load (" +
-                            result.message + "): it does not stand as built");
+      throw ConfigError(
+          "members[].area", edited.empty() ? "(the members' weight)" : names(),
+          "the structure as edited has no reference state under its permanent load (" +
+              result.message + "): it does not stand as built");
     }
     state = result.state;
     from_loads = d.loads;
@@ -241,7 +249,8 @@ void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::strin
     const double change = (d.loads - from_loads).cwiseAbs().maxCoeff();
     if (change <= 1e-12 * std::max(d.loads.cwiseAbs().maxCoeff(), 1.0)) break;
     if (pass == 4) {
-      throw ConfigError("members[].area", names(), "the strings' weight at the solved geometry did not settle in five solves");
+      throw ConfigError("members[].area", names(),
+                        "the strings' weight at the solved geometry did not settle in five solves");
     }
   }
   d.reference_forces.resize(nb + ns);
@@ -283,13 +292,15 @@ double ChosenAngle(const json& file) {
 }  // namespace
 
 Design ReadDesign(const json& file) {
-  if (!file.is_object() || !file.contains("config") || !file.contains("members") || !file.contains("nodes") ||
-      !file.at("members").is_array() || !file.at("nodes").is_array()) {
-    throw ConfigError("(root)", "(a JSON value)", "a design file of tbridge design, with config, members and nodes");
+  if (!file.is_object() || !file.contains("config") || !file.contains("members") ||
+      !file.contains("nodes") || !file.at("members").is_array() || !file.at("nodes").is_array()) {
+    throw ConfigError("(root)", "(a JSON value)",
+                      "a design file of tbridge design, with config, members and nodes");
   }
   Design d;
   d.config = ParseConfig(file.at("config"));
-  if (d.config.structure) throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
+  if (d.config.structure)
+    throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
   if (d.config.bridge.beta_auto) d.config.bridge.beta_deg = ChosenAngle(file);
   // The bridge as designed: its deck plates sized for the loads it was designed for, which the
   // file records beside the config; the config's loads, where an engineer changed them, are the
@@ -314,7 +325,8 @@ Design ReadDesign(const json& file) {
   d.cases = MakeLoadCases(d.config, d.deck, d.notes);
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();
-  const MemberMaterial bar_material = BarMaterial(d.config), string_material = StringMaterial(d.config);
+  const MemberMaterial bar_material = BarMaterial(d.config),
+                       string_material = StringMaterial(d.config);
   const BarRule rule = BarRuleOf(d.config);
 
   // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it
@@ -322,7 +334,8 @@ Design ReadDesign(const json& file) {
   // as-built geometry, with every bar of its drawn length (to 1e-9 m: bars are rigid).
   const json& nodes = file.at("nodes");
   if (static_cast<int>(nodes.size()) != s.num_nodes()) {
-    throw ConfigError("nodes", std::to_string(nodes.size()) + " nodes", "the config draws " + std::to_string(s.num_nodes()));
+    throw ConfigError("nodes", std::to_string(nodes.size()) + " nodes",
+                      "the config draws " + std::to_string(s.num_nodes()));
   }
   const bool as_built = file.contains("as_built") && file.at("as_built").is_object() &&
                         file.at("as_built").value("re_derived", false);
@@ -330,9 +343,12 @@ Design ReadDesign(const json& file) {
   for (int v = 0; v < s.num_nodes(); ++v) {
     const json& p = nodes[v];
     bool same = p.is_array() && p.size() == 3;
-    for (int a = 0; same && a < 3; ++a) same = p[a].is_number() && std::abs(p[a].get<double>() - s.nodes(a, v)) <= 1e-9;
-    if (!same && as_built && p.is_array() && p.size() == 3 && p[0].is_number() && p[1].is_number() && p[2].is_number()) {
-      d.topology.structure.nodes.col(v) = Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+    for (int a = 0; same && a < 3; ++a)
+      same = p[a].is_number() && std::abs(p[a].get<double>() - s.nodes(a, v)) <= 1e-9;
+    if (!same && as_built && p.is_array() && p.size() == 3 && p[0].is_number() &&
+        p[1].is_number() && p[2].is_number()) {
+      d.topology.structure.nodes.col(v) =
+          Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
       continue;
     }
     if (!same) {
@@ -345,15 +361,18 @@ Design ReadDesign(const json& file) {
   if (as_built) {
     for (int v = 0; v < s.num_nodes(); ++v) {
       if (s.fixed[v] && (s.nodes.col(v) - drawn.col(v)).norm() > 1e-9) {
-        throw ConfigError("nodes[" + std::to_string(v) + "]", "(a support moved)",
-                          "node " + std::to_string(v + 1) + " is a support: where the config draws it");
+        throw ConfigError(
+            "nodes[" + std::to_string(v) + "]", "(a support moved)",
+            "node " + std::to_string(v + 1) + " is a support: where the config draws it");
       }
     }
     for (const ::tbridge::Member& e : s.bars) {
       const double drawn_length = (drawn.col(e.j) - drawn.col(e.i)).norm();
       if (std::abs(s.Length(e) - drawn_length) > 1e-9) {
-        throw ConfigError("nodes", "(bar " + Structure::Name(e) + " " + NumberText(s.Length(e)) + " m long)",
-                          "an as-built geometry keeps every bar at its drawn length, " + NumberText(drawn_length) + " m");
+        throw ConfigError("nodes",
+                          "(bar " + Structure::Name(e) + " " + NumberText(s.Length(e)) + " m long)",
+                          "an as-built geometry keeps every bar at its drawn length, " +
+                              NumberText(drawn_length) + " m");
       }
     }
   }
@@ -373,7 +392,9 @@ Design ReadDesign(const json& file) {
     const ::tbridge::Member& e = bar ? s.bars[k] : s.strings[k - nb];
     MemberSizing m;
     m.name = Structure::Name(e);
-    m.kind = bar ? MemberKind::kBar : e.group == "deck" ? MemberKind::kDeckString : MemberKind::kString;
+    m.kind = bar                 ? MemberKind::kBar
+             : e.group == "deck" ? MemberKind::kDeckString
+                                 : MemberKind::kString;
     m.i = e.i;
     m.j = e.j;
     m.length = s.Length(e);
@@ -394,7 +415,8 @@ Design ReadDesign(const json& file) {
       // allows the file's rounding and the design's own sizing tolerance, and no real edit.
       // Otherwise its area or rest length was edited: the reference state is re-derived.
       const double tension = StringTension(m.stiffness, m.rest_length, m.length);
-      if (std::abs(tension - m.reference_force) > 1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
+      if (std::abs(tension - m.reference_force) >
+          1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
         edited.push_back(m.name);
       }
     }
@@ -421,7 +443,9 @@ Design ReadDesign(const json& file) {
     m.governed_by = j.value("governed_by", "");
     masses[k] = m.mass;
     d.reference_forces[k] = m.reference_force;
-    (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
+    (bar                                 ? d.mass.bars
+     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
+                                         : d.mass.strings) += m.mass;
     (bar ? d.bars : d.strings).push_back(m);
   }
   d.mass.deck_beams = d.deck.beams_mass;
@@ -445,9 +469,10 @@ Design ReadDesign(const json& file) {
   if (!edited.empty() || !residual_of()) {
     SolveAsBuilt(d, masses, std::move(edited), drawn);
     if (!residual_of()) {
-      throw ConfigError("members[].reference_force", "(the re-derived reference forces)",
-                        "they leave " + NumberText(d.equilibrium_residual) +
-                            " N unbalanced at a node: the as-built reference state did not converge");
+      throw ConfigError(
+          "members[].reference_force", "(the re-derived reference forces)",
+          "they leave " + NumberText(d.equilibrium_residual) +
+              " N unbalanced at a node: the as-built reference state did not converge");
     }
   } else if (as_built) {
     // A file check wrote with its reference state re-derived: as built, and it says so again.
@@ -458,7 +483,8 @@ Design ReadDesign(const json& file) {
       const double move = (s.nodes.col(v) - drawn.col(v)).norm();
       if (move > d.as_built.node_move_m) d.as_built.node_move_m = move, d.as_built.node = v;
     }
-    for (int k = 0; k < ns; ++k) d.as_built.slack_strings += d.strings[k].reference_force <= 0 ? 1 : 0;
+    for (int k = 0; k < ns; ++k)
+      d.as_built.slack_strings += d.strings[k].reference_force <= 0 ? 1 : 0;
   }
   AssessReferenceState(d);
   d.solver.solver = "none";
@@ -514,21 +540,25 @@ Design WithAreas(const Design& design, const std::vector<double>& areas) {
   json file = FileOf(design);
   json& members = file.at("members");
   if (areas.size() != members.size()) {
-    throw ConfigError("areas", std::to_string(areas.size()) + " areas", "one per member: " + std::to_string(members.size()));
+    throw ConfigError("areas", std::to_string(areas.size()) + " areas",
+                      "one per member: " + std::to_string(members.size()));
   }
   const size_t nb = design.bars.size();
-  const MemberMaterial bar_material = BarMaterial(design.config), string_material = StringMaterial(design.config);
+  const MemberMaterial bar_material = BarMaterial(design.config),
+                       string_material = StringMaterial(design.config);
   for (size_t k = 0; k < areas.size(); ++k) {
     const MemberMaterial& mat = k < nb ? bar_material : string_material;
     const double a = areas[k];
     if (!(a >= 0) || !std::isfinite(a)) {
-      throw ConfigError("areas[" + std::to_string(k) + "]", NumberText(a), "a finite area >= 0 [m^2]");
+      throw ConfigError("areas[" + std::to_string(k) + "]", NumberText(a),
+                        "a finite area >= 0 [m^2]");
     }
     json& m = members[k];
     m["area"] = a;
     m["radius"] = std::sqrt(a / std::numbers::pi);
     m["mass"] = mat.density * a * m.at("length").get<double>();
-    if (!m.at("stiffness").is_null()) m["stiffness"] = mat.youngs_modulus * a / m.at("rest_length").get<double>();
+    if (!m.at("stiffness").is_null())
+      m["stiffness"] = mat.youngs_modulus * a / m.at("rest_length").get<double>();
   }
   return ReadDesign(file);
 }

@@ -165,7 +165,6 @@ int CountDeckStrings(const Design& d) {
   return count;
 }
 
-
 // The JSON number of `v` appended to `out`: the shortest text that reads back to the same
 // double; null when not finite (JSON has no inf or nan). Members and nodes are appended to a
 // text buffer written in large blocks: a stream call per field was a third of the paper's
@@ -179,7 +178,8 @@ void AppendNumber(std::string& out, double v) {
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
   out.append(buffer, result.ptr);
   // Keep a double a JSON float ("0.0", not "0") as a JSON library writes it.
-  if (std::find_if(buffer, result.ptr, [](char c) { return c == '.' || c == 'e'; }) == result.ptr) out += ".0";
+  if (std::find_if(buffer, result.ptr, [](char c) { return c == '.' || c == 'e'; }) == result.ptr)
+    out += ".0";
 }
 
 // A JSON string; names, groups and modes are plain ASCII, but quotes, backslashes and
@@ -223,14 +223,15 @@ json AttributionJson(const Design& d) {
 
 // The rule a member's governing check applies, by its mode: EN 1993-1-1's resistances of a
 // steel member in tension (6.2.3; a cable's: EN 1993-1-11 6.3.2) or compression (6.2.4) and
-// its flexural buckling (6.3.1, the column curve) or the paper's Euler load; the dynamic check compares a run's demand with the
-// same resistances; "slack" is the tool's serviceability rule that the deck chain (and the 3D
-// bridge's transverse strings) stay taut (README: "The slack measure").
+// its flexural buckling (6.3.1, the column curve) or the paper's Euler load; the dynamic check
+// compares a run's demand with the same resistances; "slack" is the tool's serviceability rule that
+// the deck chain (and the 3D bridge's transverse strings) stay taut (README: "The slack measure").
 std::string ClauseOf(const MemberSizing& m, const Config& config) {
   const bool bar = m.kind == MemberKind::kBar;
   const bool euler = config.design.bar_resistance == "euler";
   const std::string& mode = m.mode;
-  if (mode == "slack" || mode == "taut" || mode == "reference_taut") return "taut under service (tbridge)";
+  if (mode == "slack" || mode == "taut" || mode == "reference_taut")
+    return "taut under service (tbridge)";
   if (mode == "tension") return "bar in tension (tbridge)";
   if (mode == "deflection") return "EN 1990 A2.4.1 (deflection), stiffness";
   if (mode == "buckling") return euler ? "Euler load (paper eq. 46)" : "EN 1993-1-1 6.3.1";
@@ -283,13 +284,18 @@ void AppendMember(std::string& out, const MemberSizing& m, const Member& topolog
   number("mass", m.mass);
   text("mode", m.mode);
   text("name", m.name);
-  out.append(", \"nodes\": [").append(std::to_string(m.i + 1)).append(", ").append(std::to_string(m.j + 1)).append("]");
+  out.append(", \"nodes\": [")
+      .append(std::to_string(m.i + 1))
+      .append(", ")
+      .append(std::to_string(m.j + 1))
+      .append("]");
   number("radius", m.radius);
   number("reference_force", m.reference_force);
   number("resistance", m.resistance);
   number("rest_length", m.rest_length);
   // A bar is rigid in the model: it has no axial stiffness to report.
-  number("stiffness", m.kind == MemberKind::kBar ? std::numeric_limits<double>::quiet_NaN() : m.stiffness);
+  number("stiffness",
+         m.kind == MemberKind::kBar ? std::numeric_limits<double>::quiet_NaN() : m.stiffness);
   number("stress", m.stress);
   text("type", KindName(m.kind));
   number("utilisation", m.utilisation);
@@ -305,7 +311,8 @@ json StabilityJson(const StabilityVerdict& v) {
               {"reduced_dofs", v.reduced_dofs},
               {"min_pivot", v.min_pivot}};
   // null: not computed (n > 6), or no positive factor exists.
-  out["critical_load_factor"] = v.critical_load_factor ? json(*v.critical_load_factor) : json(nullptr);
+  out["critical_load_factor"] =
+      v.critical_load_factor ? json(*v.critical_load_factor) : json(nullptr);
   out["critical_load_factor_computed"] = v.critical_load_factor_computed;
   return out;
 }
@@ -316,16 +323,19 @@ json StabilityJson(const StabilityVerdict& v) {
 // at the node itself (its share of the members' weight and of the deck), so that the reactions
 // and every applied load sum to zero.
 constexpr const char* kReactionsInclude =
-    "the members' forces on the support and the loads applied at the support node itself (its share of the "
+    "the members' forces on the support and the loads applied at the support node itself (its "
+    "share of the "
     "members' weight and of the deck): with them every applied load sums to zero";
 
 // Per support: the largest and smallest of each component over the converged ultimate cases of
 // the static check, each with its case.
 struct ReactionExtreme {
-  double max = -std::numeric_limits<double>::infinity(), min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity(),
+         min = std::numeric_limits<double>::infinity();
   std::string max_case, min_case;
 };
-std::vector<std::array<ReactionExtreme, 3>> ReactionEnvelope(const Design& d, std::vector<int>& supports) {
+std::vector<std::array<ReactionExtreme, 3>> ReactionEnvelope(const Design& d,
+                                                             std::vector<int>& supports) {
   const Structure& s = d.topology.structure;
   supports.clear();
   for (int v = 0; v < s.num_nodes(); ++v) {
@@ -356,7 +366,8 @@ json ReactionEnvelopeJson(const Design& d) {
     for (int a = 0; a < 3; ++a) {
       const ReactionExtreme& e = envelope[k][a];
       if (e.max_case.empty()) continue;
-      node[axes[a]] = {{"max", e.max}, {"max_case", e.max_case}, {"min", e.min}, {"min_case", e.min_case}};
+      node[axes[a]] = {
+          {"max", e.max}, {"max_case", e.max_case}, {"min", e.min}, {"min_case", e.min_case}};
     }
     list.push_back(node);
   }
@@ -448,7 +459,9 @@ json ReactionsJson(const Design& d) {
   auto add = [&](const std::string& label, const Eigen::Matrix3Xd& r) {
     for (int v = 0; v < s.num_nodes() && v < r.cols(); ++v) {
       if (!s.fixed[v]) continue;
-      out.push_back({{"case", label}, {"node", v + 1}, {"force", {r(0, v) + 0.0, r(1, v) + 0.0, r(2, v) + 0.0}}});
+      out.push_back({{"case", label},
+                     {"node", v + 1},
+                     {"force", {r(0, v) + 0.0, r(1, v) + 0.0, r(2, v) + 0.0}}});
     }
   };
   add("reference", d.reactions);
@@ -475,7 +488,9 @@ json DeflectionsJson(const Design& d) {
 json CasesJson(const Design& d) {
   json out = json::array();
   for (const LoadCase& c : d.cases) {
-    out.push_back({{"name", c.name}, {"limit_state", LimitStateName(c.state)}, {"combination", c.combination},
+    out.push_back({{"name", c.name},
+                   {"limit_state", LimitStateName(c.state)},
+                   {"combination", c.combination},
                    {"travelling", c.station_load != 0}});
   }
   return out;
@@ -483,7 +498,9 @@ json CasesJson(const Design& d) {
 
 // A group's largest force in the run over its largest in the static counterpart (0 when that
 // is 0): the group's figure, beside `amplification`, the largest ratio of one of its members.
-double PeakRatio(const GroupAmplification& g) { return g.static_peak > 0 ? g.dynamic_peak / g.static_peak : 0.0; }
+double PeakRatio(const GroupAmplification& g) {
+  return g.static_peak > 0 ? g.dynamic_peak / g.static_peak : 0.0;
+}
 
 json DynamicsJson(const Design& d) {
   json runs = json::array();
@@ -497,8 +514,11 @@ json DynamicsJson(const Design& d) {
     }
     json groups = json::array();
     for (const GroupAmplification& g : r.groups) {
-      groups.push_back({{"group", g.group}, {"static_peak", g.static_peak}, {"dynamic_peak", g.dynamic_peak},
-                        {"peak_ratio", PeakRatio(g)}, {"amplification", g.amplification}});
+      groups.push_back({{"group", g.group},
+                        {"static_peak", g.static_peak},
+                        {"dynamic_peak", g.dynamic_peak},
+                        {"peak_ratio", PeakRatio(g)},
+                        {"amplification", g.amplification}});
     }
     runs.push_back({{"name", r.name},
                     {"load", r.load},
@@ -537,12 +557,16 @@ json AsBuiltJson(const Design& d) {
 std::string AsBuiltLine(const AsBuilt& a) {
   std::string edited;
   for (size_t k = 0; k < a.edited.size(); ++k) edited += (k ? ", " : "") + a.edited[k];
-  return Format("as built: reference state re-derived (rest lengths and bar lengths kept, each member's weight from its "
-                "area%s%s); nodes moved up to %.4g mm from the drawn geometry%s%s, reference forces changed up to "
-                "%.6g N%s%s; %d strings slack in it",
-                edited.empty() ? "" : "; edited: ", edited.c_str(), a.node_move_m * 1e3,
-                a.node >= 0 ? " at node " : "", a.node >= 0 ? std::to_string(a.node + 1).c_str() : "",
-                a.force_change_n, a.force_member.empty() ? "" : " in ", a.force_member.c_str(), a.slack_strings);
+  return Format(
+      "as built: reference state re-derived (rest lengths and bar lengths kept, each member's "
+      "weight from its "
+      "area%s%s); nodes moved up to %.4g mm from the drawn geometry%s%s, reference forces changed "
+      "up to "
+      "%.6g N%s%s; %d strings slack in it",
+      edited.empty() ? "" : "; edited: ", edited.c_str(), a.node_move_m * 1e3,
+      a.node >= 0 ? " at node " : "", a.node >= 0 ? std::to_string(a.node + 1).c_str() : "",
+      a.force_change_n, a.force_member.empty() ? "" : " in ", a.force_member.c_str(),
+      a.slack_strings);
 }
 
 // The loads a design read back is checked under, where they are not those it was designed for.
@@ -636,10 +660,14 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (v < static_cast<int>(s.fixed.size()) && s.fixed[v]) fixed.push_back(v + 1);
   }
-  const json topology = {{"n", d.config.bridge.n},       {"p", d.config.bridge.p},
-                         {"beta_deg", d.config.bridge.beta_deg}, {"planes", d.topology.planes},
-                         {"nodes", s.num_nodes()},       {"bars", s.num_bars()},
-                         {"strings", s.num_strings()},   {"class", s.TensegrityClass()},
+  const json topology = {{"n", d.config.bridge.n},
+                         {"p", d.config.bridge.p},
+                         {"beta_deg", d.config.bridge.beta_deg},
+                         {"planes", d.topology.planes},
+                         {"nodes", s.num_nodes()},
+                         {"bars", s.num_bars()},
+                         {"strings", s.num_strings()},
+                         {"class", s.TensegrityClass()},
                          {"fixed_nodes", fixed}};
   const Verdict verdict = DesignVerdict(d);
   const DeckBeamCheck& beams = verdict.deck_beams;
@@ -653,10 +681,14 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                            {"sag", beams.sag_m},
                            {"sag_limit", beams.sag_limit_m},
                            {"sag_case", beams.sag_case}};
-  const json deck = {{"section_length", d.deck.section_length}, {"section_mass", d.deck.section_mass},
-                     {"thickness", d.deck.thickness},           {"node_load", d.deck.node_load},
-                     {"total_load", d.deck.total_load},         {"beams_mass", d.deck.beams_mass},
-                     {"sized_by", d.deck.sized_by},             {"check", deck_check}};
+  const json deck = {{"section_length", d.deck.section_length},
+                     {"section_mass", d.deck.section_mass},
+                     {"thickness", d.deck.thickness},
+                     {"node_load", d.deck.node_load},
+                     {"total_load", d.deck.total_load},
+                     {"beams_mass", d.deck.beams_mass},
+                     {"sized_by", d.deck.sized_by},
+                     {"check", deck_check}};
   const json mass = {{"bars", d.mass.bars},
                      {"strings", d.mass.strings},
                      {"deck_strings", d.mass.deck_strings},
@@ -683,7 +715,8 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                                    {"null_space_dimension", kkt.null_space_dimension}}}};
   auto field = [&os](const char* key, const json& value, bool last = false) {
     std::string text = value.dump(2);
-    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3)) text.insert(at + 1, "  ");
+    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3))
+      text.insert(at + 1, "  ");
     os << "  \"" << key << "\": " << text << (last ? "\n" : ",\n");
   };
 
@@ -719,7 +752,8 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
     text += separator;
     const bool bar = j < d.bars.size();
     const size_t k = bar ? j : j - d.bars.size();
-    AppendMember(text, bar ? d.bars[k] : d.strings[k], bar ? s.bars[k] : s.strings[k], BindingOf(d, j), d.config);
+    AppendMember(text, bar ? d.bars[k] : d.strings[k], bar ? s.bars[k] : s.strings[k],
+                 BindingOf(d, j), d.config);
     separator = ",\n    ";
     flush(false);
   }
@@ -770,83 +804,99 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   auto line = [&out](const std::string& text) { out += text + "\n"; };
 
   line(Format("%s bridge: n = %d, p = %d, beta = %g deg, span %g m, payload %g N",
-              b.planes == 1 ? "planar substructure" : "3D coupled", b.n, b.p, b.beta_deg,
-              b.span, b.payload));
+              b.planes == 1 ? "planar substructure" : "3D coupled", b.n, b.p, b.beta_deg, b.span,
+              b.payload));
   if (d.angle.done) line(AngleSearchLine(d.angle));
   line(Format("topology: %d nodes (%d fixed), %d bars, %d strings (%d deck), class %d",
               s.num_nodes(), s.num_nodes() - s.num_free_nodes(), s.num_bars(), s.num_strings(),
               CountDeckStrings(d), s.TensegrityClass()));
-  line(Format("deck: section l = %.4g m, m_d = %.5g kg, thickness %.4g mm; f = %.6g N per deck "
-              "node, F_tot = %.6g N",
-              d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3,
-              d.deck.node_load, d.deck.total_load));
+  line(
+      Format("deck: section l = %.4g m, m_d = %.5g kg, thickness %.4g mm; f = %.6g N per deck "
+             "node, F_tot = %.6g N",
+             d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3, d.deck.node_load,
+             d.deck.total_load));
   const Verdict verdict = DesignVerdict(d);
   const DeckBeamCheck& beams = verdict.deck_beams;
-  line(Format("deck beams: thickness set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / %g = %.4g mm (%s)",
-              d.deck.sized_by.c_str(), beams.utilisation, beams.governing_case.c_str(), beams.sag_m * 1e3,
-              d.config.loads.deck_sag_limit, beams.sag_limit_m * 1e3,
-              beams.sag_case.empty() ? "no serviceability case" : beams.sag_case.c_str()));
+  line(
+      Format("deck beams: thickness set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / "
+             "%g = %.4g mm (%s)",
+             d.deck.sized_by.c_str(), beams.utilisation, beams.governing_case.c_str(),
+             beams.sag_m * 1e3, d.config.loads.deck_sag_limit, beams.sag_limit_m * 1e3,
+             beams.sag_case.empty() ? "no serviceability case" : beams.sag_case.c_str()));
   if (d.solver_form == kReadFromFile) {
-    line(Format("design: read from its file, checked as written; equilibrium residual %.2e N", d.equilibrium_residual));
+    line(Format("design: read from its file, checked as written; equilibrium residual %.2e N",
+                d.equilibrium_residual));
     if (d.as_built.re_derived) line(AsBuiltLine(d.as_built));
     if (d.designed_for) line(LoadsChangedLine(*d.designed_for, d.config));
   } else {
-    line(Format("solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
-                "self-stress states: %d",
-                d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(), d.solver.iterations,
-                d.equilibrium_residual, d.self_stress_states));
+    line(Format(
+        "solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
+        "self-stress states: %d",
+        d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(),
+        d.solver.iterations, d.equilibrium_residual, d.self_stress_states));
   }
   const StabilityVerdict& v = d.stability;
   std::string critical = "not computed (n > 6)";
   if (v.critical_load_factor_computed) {
-    critical = v.critical_load_factor ? Format("%.4g", *v.critical_load_factor) : std::string("none (no softening)");
+    critical = v.critical_load_factor ? Format("%.4g", *v.critical_load_factor)
+                                      : std::string("none (no softening)");
   }
-  line(Format("stability: %s (LDL^T of the %d x %d stiffness on the motions that keep bar lengths: %d negative, "
-              "%d zero pivots); critical load factor %s",
-              v.stable ? "stable" : "UNSTABLE", v.reduced_dofs, v.reduced_dofs, v.negative_pivots, v.zero_pivots,
-              critical.c_str()));
+  line(
+      Format("stability: %s (LDL^T of the %d x %d stiffness on the motions that keep bar lengths: "
+             "%d negative, "
+             "%d zero pivots); critical load factor %s",
+             v.stable ? "stable" : "UNSTABLE", v.reduced_dofs, v.reduced_dofs, v.negative_pivots,
+             v.zero_pivots, critical.c_str()));
   std::string reactions;
   for (int n = 0; n < s.num_nodes() && n < d.reactions.cols(); ++n) {
     if (!s.fixed[n]) continue;
-    reactions += Format("%s node %d (%.6g, %.6g, %.6g)", reactions.empty() ? "" : ";", n + 1, d.reactions(0, n),
-                        d.reactions(1, n), d.reactions(2, n));
+    reactions += Format("%s node %d (%.6g, %.6g, %.6g)", reactions.empty() ? "" : ";", n + 1,
+                        d.reactions(0, n), d.reactions(1, n), d.reactions(2, n));
   }
   line(reactions.size() < 400 ? "support reactions [N], reference state:" + reactions
                               : "support reactions: in the JSON output");
   if (d.statics.done) {
     std::vector<int> supports;
     const auto envelope = ReactionEnvelope(d, supports);
-    line("support reactions [N], envelope over the ultimate cases (each holds " + std::string(kReactionsInclude) + "):");
+    line("support reactions [N], envelope over the ultimate cases (each holds " +
+         std::string(kReactionsInclude) + "):");
     for (size_t k = 0; k < supports.size() && k < 8; ++k) {
       std::string text;
       const char* axes[] = {"H (x)", "V (y)", "z"};
       for (int a = 0; a < d.topology.structure.dim(); ++a) {
         const ReactionExtreme& e = envelope[k][a];
         if (e.max_case.empty()) continue;
-        text += Format("%s %s %.6g (%s) to %.6g (%s)", text.empty() ? "" : ";", axes[a], e.min, e.min_case.c_str(),
-                       e.max, e.max_case.c_str());
+        text += Format("%s %s %.6g (%s) to %.6g (%s)", text.empty() ? "" : ";", axes[a], e.min,
+                       e.min_case.c_str(), e.max, e.max_case.c_str());
       }
       line(Format("  node %d:%s", supports[k] + 1, text.c_str()));
     }
     for (const AbutmentFinding& a : d.statics.abutments) line(AbutmentLine(a));
   }
-  line(Format("load cases: %zu (%s)%s", d.cases.size(), d.config.design.self_weight ? "self-weight in G" : "no self-weight",
-              d.self_weight_iterations > 1 ? Format(", self-weight fixed point in %d sizings", d.self_weight_iterations).c_str()
-                                           : ""));
+  line(Format(
+      "load cases: %zu (%s)%s", d.cases.size(),
+      d.config.design.self_weight ? "self-weight in G" : "no self-weight",
+      d.self_weight_iterations > 1
+          ? Format(", self-weight fixed point in %d sizings", d.self_weight_iterations).c_str()
+          : ""));
   for (const std::string& note : d.notes) line("  note: " + note);
   if (d.statics.done) {
     double worst_balance = 0;
-    for (const CaseResponse& c : d.statics.cases) worst_balance = std::max(worst_balance, c.balance);
+    for (const CaseResponse& c : d.statics.cases)
+      worst_balance = std::max(worst_balance, c.balance);
     const double margin = d.config.loads.station_margin;
     const std::string stations =
         margin >= 1 ? Format("travelling loads at all %d stations", d.statics.stations)
-                    : Format("travelling loads at all %d stations linearly, nonlinearly within loads.station_margin = "
-                             "%g of a largest or a limit",
-                             d.statics.stations, margin);
+                    : Format(
+                          "travelling loads at all %d stations linearly, nonlinearly within "
+                          "loads.station_margin = "
+                          "%g of a largest or a limit",
+                          d.statics.stations, margin);
     const std::string mirrored =
-        d.statics.mirrored > 0 ? Format(", %d stations as mirror images of solved ones on this symmetric bridge",
-                                        d.statics.mirrored)
-                               : "";
+        d.statics.mirrored > 0
+            ? Format(", %d stations as mirror images of solved ones on this symmetric bridge",
+                     d.statics.mirrored)
+            : "";
     std::string loss;
     for (const std::string& state : d.statics.prestress_states)
       loss += (loss.empty() ? "" : "; ") + state;
@@ -878,12 +928,15 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     const Resizing& r = d.resizing;
     for (size_t k = 0; k + 1 < r.structure_mass_kg.size(); ++k) {
       if (k < r.utilisation_max.size()) {
-        line(Format("  sizing %zu: %.6g kg, utilisation_max %.6f%s%s", k + 1, r.structure_mass_kg[k + 1],
-                    r.utilisation_max[k], k < r.changes.size() ? "; then " : "",
+        line(Format("  sizing %zu: %.6g kg, utilisation_max %.6f%s%s", k + 1,
+                    r.structure_mass_kg[k + 1], r.utilisation_max[k],
+                    k < r.changes.size() ? "; then " : "",
                     k < r.changes.size() ? r.changes[k].c_str() : ""));
       } else {
-        line(Format("  sizing %zu: %.6g kg, within %g of the last passing design's mass: settled, not checked", k + 1,
-                    r.structure_mass_kg[k + 1], r.tolerance));
+        line(
+            Format("  sizing %zu: %.6g kg, within %g of the last passing design's mass: settled, "
+                   "not checked",
+                   k + 1, r.structure_mass_kg[k + 1], r.tolerance));
       }
     }
     if (!r.optima.empty()) line("  " + r.optima);
@@ -898,7 +951,8 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
              : "optimality: not proved: " + k.failed);
   }
   for (const std::string& row : d.resizing.comfort_rows) line("comfort row of the sizing: " + row);
-  if (d.dynamics.done && d.dynamics.runs.empty()) line("dynamic check: no dynamic load among loads.cases");
+  if (d.dynamics.done && d.dynamics.runs.empty())
+    line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {
     if (!r.done) {
       line("dynamic check, " + r.name + ": " + r.note);
@@ -906,7 +960,8 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     }
     std::string amp;
     for (const GroupAmplification& g : r.groups) {
-      amp += Format("%s %s %.3g (%.3g)", amp.empty() ? "" : ",", g.group.c_str(), PeakRatio(g), g.amplification);
+      amp += Format("%s %s %.3g (%.3g)", amp.empty() ? "" : ",", g.group.c_str(), PeakRatio(g),
+                    g.amplification);
     }
     line(Format(
         "dynamic check, %s (%s): %s at dt = %.3g s, %ld steps; peak deck displacement %.4g m; peak "
@@ -924,12 +979,15 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   line("scope: " + verdict.scope);
   line("");
 
-  line("members (force: the largest over the ultimate cases, tension for strings, compression for bars; "
-       "util. = demand / resist., the governing demand, static or dynamic, against its resistance; for mode slack "
-       "the strain measure against the working strain):");
-  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %-11s %11s %11s %6s  %s", "name", "type", "s [m]", "force [N]",
-              "r [mm]", "L0 [m]", "k_s [N/m]", "m [kg]", "governed by", "demand [N]", "resist. [N]", "util.",
-              "governing case (mode; clause)"));
+  line(
+      "members (force: the largest over the ultimate cases, tension for strings, compression for "
+      "bars; "
+      "util. = demand / resist., the governing demand, static or dynamic, against its resistance; "
+      "for mode slack "
+      "the strain measure against the working strain):");
+  line(Format("  %-9s %-11s %9s %11s %8s %9s %11s %9s  %-11s %11s %11s %6s  %s", "name", "type",
+              "s [m]", "force [N]", "r [mm]", "L0 [m]", "k_s [N/m]", "m [kg]", "governed by",
+              "demand [N]", "resist. [N]", "util.", "governing case (mode; clause)"));
   std::vector<const MemberSizing*> rows;
   for (const MemberSizing& m : d.bars) rows.push_back(&m);
   for (const MemberSizing& m : d.strings) rows.push_back(&m);
@@ -937,15 +995,17 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   for (size_t k = 0; k < shown; ++k) {
     const MemberSizing& m = *rows[k];
     const bool bar = m.kind == MemberKind::kBar;
-    line(Format("  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %-11s %11.6g %11.6g %6.3f  %s (%s; %s)",
-                m.name.c_str(), KindName(m.kind), m.length, m.force, m.radius * 1e3,
-                bar ? "-" : Format("%.4f", m.rest_length).c_str(), bar ? "-" : Format("%.4e", m.stiffness).c_str(),
-                m.mass, m.governed_by.c_str(), m.demand, m.resistance, m.utilisation, m.governing_case.c_str(),
-                m.mode.c_str(), ClauseOf(m, d.config).c_str()));
+    line(Format(
+        "  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %-11s %11.6g %11.6g %6.3f  %s (%s; %s)",
+        m.name.c_str(), KindName(m.kind), m.length, m.force, m.radius * 1e3,
+        bar ? "-" : Format("%.4f", m.rest_length).c_str(),
+        bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, m.governed_by.c_str(), m.demand,
+        m.resistance, m.utilisation, m.governing_case.c_str(), m.mode.c_str(),
+        ClauseOf(m, d.config).c_str()));
   }
   if (shown < rows.size()) {
-    line(Format("  ... %zu more members omitted (all are in the JSON output)",
-                rows.size() - shown));
+    line(
+        Format("  ... %zu more members omitted (all are in the JSON output)", rows.size() - shown));
   }
   line("");
 
@@ -960,9 +1020,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
   const MassAttribution& a = d.attribution;
   if (!a.members.empty()) {
     line("");
-    line(Format("what the structure's mass pays for [kg] (the verified sizing's multipliers; stationarity residual "
-                "%.1e):",
-                a.stationarity_residual));
+    line(
+        Format("what the structure's mass pays for [kg] (the verified sizing's multipliers; "
+               "stationarity residual "
+               "%.1e):",
+               a.stationarity_residual));
     line(Format("  %-21s %12s %22s", "constraint", "mass", "premium over first"));
     for (int k = 0; k < kNumConstraintKinds; ++k) {
       line(Format("  %-21s %12.3f %22.3f", kConstraintKinds[k], a.mass_by_kind_kg[k],

@@ -1,7 +1,7 @@
 #include "design/equilibrium_basis.h"
 
-#include <SuiteSparseQR.hpp>
 #include <Eigen/SparseCore>
+#include <SuiteSparseQR.hpp>
 #include <memory>
 
 #include "core/error.h"
@@ -58,9 +58,9 @@ cholmod_dense DenseView(Eigen::MatrixXd& m) {
 // Copies a cholmod result into Eigen and frees it.
 Eigen::MatrixXd TakeDense(cholmod_dense* d, cholmod_common* cc, const char* what) {
   if (d == nullptr) throw ModelError(std::string("equilibrium factorisation: ") + what + " failed");
-  Eigen::MatrixXd out = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(d->x),
-                                                    static_cast<Eigen::Index>(d->nrow),
-                                                    static_cast<Eigen::Index>(d->ncol));
+  Eigen::MatrixXd out =
+      Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(d->x), static_cast<Eigen::Index>(d->nrow),
+                                  static_cast<Eigen::Index>(d->ncol));
   cholmod_l_free_dense(&d, cc);
   return out;
 }
@@ -79,7 +79,8 @@ struct EquilibriumSolver::Impl {
   }
 };
 
-EquilibriumSolver::EquilibriumSolver(const EquilibriumSystem& eq) : impl_(std::make_unique<Impl>()) {
+EquilibriumSolver::EquilibriumSolver(const EquilibriumSystem& eq)
+    : impl_(std::make_unique<Impl>()) {
   Impl& d = *impl_;
   d.members = eq.A.cols();
   d.dofs = eq.A.rows();
@@ -89,7 +90,9 @@ EquilibriumSolver::EquilibriumSolver(const EquilibriumSystem& eq) : impl_(std::m
   d.at.makeCompressed();
   cholmod_sparse at_view = SparseView(d.at);
   d.qr = SuiteSparseQR_factorize<double>(SPQR_ORDERING_DEFAULT, SPQR_DEFAULT_TOL, &at_view, cc);
-  if (!d.qr) throw ModelError("equilibrium factorisation: sparse QR failed (status " + std::to_string(cc->status) + ")");
+  if (!d.qr)
+    throw ModelError("equilibrium factorisation: sparse QR failed (status " +
+                     std::to_string(cc->status) + ")");
   d.rank = static_cast<int>(d.qr->rank);
 }
 
@@ -100,14 +103,17 @@ int EquilibriumSolver::states() const { return static_cast<int>(impl_->members) 
 
 Eigen::MatrixXd EquilibriumSolver::Particular(const Eigen::MatrixXd& free_loads) const {
   Impl& d = *impl_;
-  if (free_loads.rows() != d.dofs) throw ModelError("equilibrium factorisation: load rows differ from the DOFs");
-  if (d.dofs == 0 || free_loads.cols() == 0) return Eigen::MatrixXd::Zero(d.members, free_loads.cols());
+  if (free_loads.rows() != d.dofs)
+    throw ModelError("equilibrium factorisation: load rows differ from the DOFs");
+  if (d.dofs == 0 || free_loads.cols() == 0)
+    return Eigen::MatrixXd::Zero(d.members, free_loads.cols());
   cholmod_common* cc = d.common.get();
   // y = R^-T (E^T (-w)), zero past the rank; x_p = Q y.
   Eigen::MatrixXd rhs = -free_loads;
   cholmod_dense rhs_view = DenseView(rhs);
-  Eigen::MatrixXd y = TakeDense(SuiteSparseQR_solve<double>(SPQR_RTX_EQUALS_ETB, d.qr, &rhs_view, cc), cc,
-                                "the triangular solve");
+  Eigen::MatrixXd y =
+      TakeDense(SuiteSparseQR_solve<double>(SPQR_RTX_EQUALS_ETB, d.qr, &rhs_view, cc), cc,
+                "the triangular solve");
   y.bottomRows(d.members - d.rank).setZero();
   cholmod_dense y_view = DenseView(y);
   return TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, d.qr, &y_view, cc), cc, "Q x");
@@ -121,7 +127,8 @@ Eigen::MatrixXd EquilibriumSolver::SelfStresses() const {
   Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(d.members, s);
   for (Eigen::Index k = 0; k < s; ++k) unit(d.rank + k, k) = 1.0;
   cholmod_dense unit_view = DenseView(unit);
-  return TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, d.qr, &unit_view, d.common.get()), d.common.get(), "Q e");
+  return TakeDense(SuiteSparseQR_qmult<double>(SPQR_QX, d.qr, &unit_view, d.common.get()),
+                   d.common.get(), "Q e");
 }
 
 EquilibriumBasis FactorEquilibrium(const EquilibriumSolver& solver, const EquilibriumSystem& eq,

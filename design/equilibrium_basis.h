@@ -19,13 +19,13 @@
 namespace tbridge {
 
 struct EquilibriumBasis {
-  int rank = 0;                // numerical rank of A (SuiteSparseQR's default tolerance)
-  int states = 0;              // n_b + n_s - rank: the number of self-stresses
+  int rank = 0;    // numerical rank of A (SuiteSparseQR's default tolerance)
+  int states = 0;  // n_b + n_s - rank: the number of self-stresses
   // False when the basis was not formed because members x states exceeded the limit given to
   // FactorEquilibrium (self_stress is then members x 0; `states` still counts them).
   bool basis_formed = true;
-  Eigen::MatrixXd particular;  // (n_b + n_s) x n_cases: forces of each load case [N]
-  Eigen::MatrixXd self_stress; // (n_b + n_s) x (n_b + n_s - rank): orthonormal columns
+  Eigen::MatrixXd particular;   // (n_b + n_s) x n_cases: forces of each load case [N]
+  Eigen::MatrixXd self_stress;  // (n_b + n_s) x (n_b + n_s - rank): orthonormal columns
   // Largest |A x_p + w| over every case and free DOF [N]: nonzero when a load has a
   // component the network cannot carry (a mechanism it excites).
   double load_residual = 0;
@@ -67,6 +67,7 @@ EquilibriumBasis FactorEquilibrium(const EquilibriumSystem& eq, const Eigen::Mat
                                    double max_basis_entries = 1048576.0);
 // The same from a factorisation already made.
 EquilibriumBasis FactorEquilibrium(const EquilibriumSolver& solver, const EquilibriumSystem& eq,
-                                   const Eigen::MatrixXd& free_loads, double max_basis_entries = 1048576.0);
+                                   const Eigen::MatrixXd& free_loads,
+                                   double max_basis_entries = 1048576.0);
 
 }  // namespace tbridge

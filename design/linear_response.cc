@@ -11,10 +11,13 @@ namespace tbridge {
 
 LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd& reference_forces,
                                const Eigen::VectorXd& string_stiffness)
-    : s_(structure), dim_(structure.dim()), nb_(structure.num_bars()), ns_(structure.num_strings()) {
+    : s_(structure),
+      dim_(structure.dim()),
+      nb_(structure.num_bars()),
+      ns_(structure.num_strings()) {
   if (reference_forces.size() != nb_ + ns_ || string_stiffness.size() != ns_) {
-    throw ModelError("linear response: expected " + std::to_string(nb_ + ns_) + " member forces and " +
-                     std::to_string(ns_) + " string stiffnesses");
+    throw ModelError("linear response: expected " + std::to_string(nb_ + ns_) +
+                     " member forces and " + std::to_string(ns_) + " string stiffnesses");
   }
   dof_ = FreeDofs(s_.fixed, dim_, ndof_);
   k_ = string_stiffness;
@@ -33,7 +36,8 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
     const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
     const Eigen::Matrix3d ee = unit_[j] * unit_[j].transpose();
     const double q = reference_forces[j] / length_[j];
-    const Eigen::Matrix3d g = bar ? Eigen::Matrix3d(-q * I) : Eigen::Matrix3d(k_[j - nb_] * ee + q * (I - ee));
+    const Eigen::Matrix3d g =
+        bar ? Eigen::Matrix3d(-q * I) : Eigen::Matrix3d(k_[j - nb_] * ee + q * (I - ee));
     AddPairBlock(g, m.i, m.j, dof_, dim_, t);
     if (bar) AddBarRow(ndof_ + j, m.i, m.j, unit_[j], dof_, dim_, t);
   }
@@ -71,8 +75,10 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
   // rounding.
   const double rcond = lu_.Analyse(kkt) && lu_.Factorise(kkt) ? lu_.ReciprocalCondition(kkt) : 0.0;
   if (!(rcond > 1e-13)) {
-    throw ModelError("linear response: the stiffness about the reference state is singular (reciprocal condition " +
-                     std::to_string(rcond) + "): a mechanism that the prestress does not hold");
+    throw ModelError(
+        "linear response: the stiffness about the reference state is singular (reciprocal "
+        "condition " +
+        std::to_string(rcond) + "): a mechanism that the prestress does not hold");
   }
 }
 
@@ -107,15 +113,16 @@ Eigen::RowVectorXd LinearResponse::Vertical(const Eigen::MatrixXd& u, int node) 
   return u.row(dof_[node] + 1);
 }
 
-void LinearResponse::AddBlockAction(const Eigen::Matrix3d& g, int i, int j, const Eigen::MatrixXd& u,
-                                    Eigen::MatrixXd& out) const {
+void LinearResponse::AddBlockAction(const Eigen::Matrix3d& g, int i, int j,
+                                    const Eigen::MatrixXd& u, Eigen::MatrixXd& out) const {
   // Column by column in fixed-size vectors: the sizing's Jacobian calls this for every member
   // and self-stress, and dense temporaries per call were a tenth of its time.
   const int fi = dof_[i], fj = dof_[j];
   Eigen::Vector3d d, w;
   for (Eigen::Index c = 0; c < u.cols(); ++c) {
     d.setZero();
-    for (int a = 0; a < dim_; ++a) d[a] = (fj >= 0 ? u(fj + a, c) : 0.0) - (fi >= 0 ? u(fi + a, c) : 0.0);
+    for (int a = 0; a < dim_; ++a)
+      d[a] = (fj >= 0 ? u(fj + a, c) : 0.0) - (fi >= 0 ? u(fi + a, c) : 0.0);
     w.noalias() = g * d;
     for (int a = 0; a < dim_; ++a) {
       if (fj >= 0) out(fj + a, c) += w[a];
@@ -124,15 +131,18 @@ void LinearResponse::AddBlockAction(const Eigen::Matrix3d& g, int i, int j, cons
   }
 }
 
-Eigen::MatrixXd LinearResponse::SolveDerivative(const Eigen::MatrixXd& u, const Direction& dp) const {
+Eigen::MatrixXd LinearResponse::SolveDerivative(const Eigen::MatrixXd& u,
+                                                const Direction& dp) const {
   Eigen::MatrixXd d = -StiffnessAction(u, dp);
   lu_.Solve(d);
   return d;
 }
 
-Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members, const std::vector<int>& nodes) const {
+Eigen::MatrixXd LinearResponse::Adjoint(const std::vector<int>& members,
+                                        const std::vector<int>& nodes) const {
   const int nm = static_cast<int>(members.size());
-  Eigen::MatrixXd l = Eigen::MatrixXd::Zero(ndof_ + nb_, nm + static_cast<Eigen::Index>(nodes.size()));
+  Eigen::MatrixXd l =
+      Eigen::MatrixXd::Zero(ndof_ + nb_, nm + static_cast<Eigen::Index>(nodes.size()));
   for (int f = 0; f < nm; ++f) {
     const int j = members[f];
     if (j < nb_) {
@@ -162,7 +172,8 @@ Eigen::MatrixXd LinearResponse::StringStretches(const Eigen::MatrixXd& u) const 
   return out;
 }
 
-Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u, const Direction& dp) const {
+Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u,
+                                                const Direction& dp) const {
   Eigen::MatrixXd dKu = Eigen::MatrixXd::Zero(ndof_ + nb_, u.cols());
   Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
   I.topLeftCorner(dim_, dim_).setIdentity();
@@ -173,13 +184,15 @@ Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u, const 
     if (dk == 0 && dq == 0) continue;
     const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
     const Eigen::Matrix3d ee = unit_[j] * unit_[j].transpose();
-    const Eigen::Matrix3d g = bar ? Eigen::Matrix3d(-dq * I) : Eigen::Matrix3d(dk * ee + dq * (I - ee));
+    const Eigen::Matrix3d g =
+        bar ? Eigen::Matrix3d(-dq * I) : Eigen::Matrix3d(dk * ee + dq * (I - ee));
     AddBlockAction(g, m.i, m.j, u, dKu);
   }
   return dKu;
 }
 
-Eigen::MatrixXd LinearResponse::ForceChangeDerivative(const Eigen::MatrixXd& u, const Eigen::MatrixXd& du,
+Eigen::MatrixXd LinearResponse::ForceChangeDerivative(const Eigen::MatrixXd& u,
+                                                      const Eigen::MatrixXd& du,
                                                       const Direction& dp) const {
   Eigen::MatrixXd dx = ForceChanges(du);
   dx.bottomRows(ns_) += dp.stiffness.asDiagonal() * StringStretches(u);

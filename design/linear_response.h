@@ -84,7 +84,8 @@ class LinearResponse {
   // e^T (u_j - u_i) of every string [m] in each solution: n_s x columns.
   Eigen::MatrixXd StringStretches(const Eigen::MatrixXd& solutions) const;
   // d(force changes)/dp: (n_b + n_s) x columns, from the solutions and their derivative.
-  Eigen::MatrixXd ForceChangeDerivative(const Eigen::MatrixXd& solutions, const Eigen::MatrixXd& d_solutions,
+  Eigen::MatrixXd ForceChangeDerivative(const Eigen::MatrixXd& solutions,
+                                        const Eigen::MatrixXd& d_solutions,
                                         const Direction& dp) const;
 
  private:

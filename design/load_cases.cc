@@ -16,7 +16,8 @@ const char* LimitStateName(LimitState state) {
 }
 
 const char* BaseActionName(int action) {
-  static const char* const kNames[kNumBaseActions] = {"G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W", "F_paper"};
+  static const char* const kNames[kNumBaseActions] = {"G_deck",  "G_self", "Q_full", "Q_left",
+                                                      "Q_right", "W",      "F_paper"};
   return kNames[action];
 }
 
@@ -70,9 +71,12 @@ Actions MakeActions(const Config& config, const BridgeTopology& topology, const 
     a.station_x.push_back(x);
     a.station_nodes.push_back(nodes);
     // Half spans: the station at midspan takes half of its section from each side.
-    const double left = x < 0.5 * b.span - 1e-9 * b.span ? 1.0 : (x > 0.5 * b.span + 1e-9 * b.span ? 0.0 : 0.5);
+    const double left =
+        x < 0.5 * b.span - 1e-9 * b.span ? 1.0 : (x > 0.5 * b.span + 1e-9 * b.span ? 0.0 : 0.5);
     for (int v : nodes) {
-      a.base[kDeckDead](1, v) = -(deck.section_mass * config.design.gravity + config.loads.superimposed_dead_n_per_m * l_d) / planes;
+      a.base[kDeckDead](1, v) = -(deck.section_mass * config.design.gravity +
+                                  config.loads.superimposed_dead_n_per_m * l_d) /
+                                planes;
       a.base[kPayloadFull](1, v) = -q * l_d / planes;
       a.base[kPayloadLeft](1, v) = -q * l_d * left / planes;
       a.base[kPayloadRight](1, v) = -q * l_d * (1.0 - left) / planes;
@@ -105,10 +109,13 @@ std::string Factor(double f) {
 
 }  // namespace
 
-std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std::vector<std::string>& notes) {
+std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
+                                    std::vector<std::string>& notes) {
   const LoadsConfig& l = config.loads;
   const bool self = config.design.self_weight;
-  auto wants = [&l](const char* name) { return std::find(l.cases.begin(), l.cases.end(), name) != l.cases.end(); };
+  auto wants = [&l](const char* name) {
+    return std::find(l.cases.begin(), l.cases.end(), name) != l.cases.end();
+  };
   std::vector<LoadCase> cases;
   // G with factor g (deck, self-weight when on), and its text.
   auto permanent = [self](LoadCase& c, double g) {
@@ -133,8 +140,8 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std:
   const std::string Gs = Factor(gs) + " G", Gi = Factor(gi) + " G";
   // An ultimate case with unfavourable G, its twin with favourable G (when the factors
   // differ), and the characteristic (serviceability) case.
-  auto family = [&](const std::string& name, const std::string& variable_uls, const std::string& variable_sls,
-                    LoadCase variable_u, LoadCase variable_s) {
+  auto family = [&](const std::string& name, const std::string& variable_uls,
+                    const std::string& variable_sls, LoadCase variable_u, LoadCase variable_s) {
     permanent(variable_u, gs);
     add("uls_" + name, LimitState::kUltimate, Gs + variable_uls, variable_u);
     if (gi != gs) {
@@ -159,8 +166,8 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std:
     LoadCase u, s;
     u.station_load = gq * l.travelling_load_n;
     s.station_load = l.travelling_load_n;
-    family("travelling", " + " + Factor(gq) + " Q_t (each deck station in turn)", " + Q_t (each deck station in turn)",
-           u, s);
+    family("travelling", " + " + Factor(gq) + " Q_t (each deck station in turn)",
+           " + Q_t (each deck station in turn)", u, s);
   }
   if (wants("paper_travelling")) {
     // Eqs 50-51: the deck node load f on each inner deck node in turn, on top of the payload.
@@ -186,7 +193,8 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std:
         uq.factor[kWind] = l.gamma_w * l.psi0_wind;
         sq.factor[kPayloadFull] = 1.0;
         sq.factor[kWind] = l.psi0_wind;
-        family("payload_wind", " + " + Factor(gq) + " Q_full + " + Factor(l.gamma_w * l.psi0_wind) + " W",
+        family("payload_wind",
+               " + " + Factor(gq) + " Q_full + " + Factor(l.gamma_w * l.psi0_wind) + " W",
                " + Q_full + " + Factor(l.psi0_wind) + " W", uq, sq);
       }
     }

@@ -25,8 +25,18 @@ const char* LimitStateName(LimitState state);  // "ultimate" | "serviceability"
 // The characteristic base actions, in this order. kPaperLoad is the paper's design load as eq. 9
 // writes it, f = F_tot / 2^n (deck beams and payload together) on each deck node, so that the
 // paper's case gives its loads bit for bit.
-enum BaseAction { kDeckDead = 0, kSelfWeight, kPayloadFull, kPayloadLeft, kPayloadRight, kWind, kPaperLoad, kNumBaseActions };
-const char* BaseActionName(int action);  // "G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W", "F_paper"
+enum BaseAction {
+  kDeckDead = 0,
+  kSelfWeight,
+  kPayloadFull,
+  kPayloadLeft,
+  kPayloadRight,
+  kWind,
+  kPaperLoad,
+  kNumBaseActions
+};
+const char* BaseActionName(
+    int action);  // "G_deck", "G_self", "Q_full", "Q_left", "Q_right", "W", "F_paper"
 
 struct LoadCase;
 // The share of the full-span payload that `c` carries (its own, or within the paper's load).
@@ -65,11 +75,13 @@ struct Actions {
 Actions MakeActions(const Config& config, const BridgeTopology& topology, const Deck& deck);
 
 // Half of each member's weight rho A l g at each of its ends, downward [N].
-Eigen::Matrix3Xd SelfWeightLoads(const Structure& s, const std::vector<double>& member_mass_kg, double gravity);
+Eigen::Matrix3Xd SelfWeightLoads(const Structure& s, const std::vector<double>& member_mass_kg,
+                                 double gravity);
 
 // The cases of config.loads.cases for this bridge, never none: a list that leaves none (only
 // "wind" on a planar bridge) throws ConfigError naming loads.cases. `notes` receives what was
 // left out and why (wind on a planar bridge).
-std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck, std::vector<std::string>& notes);
+std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
+                                    std::vector<std::string>& notes);
 
 }  // namespace tbridge

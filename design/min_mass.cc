@@ -11,7 +11,10 @@ namespace tbridge {
 
 MinMassProblem::MinMassProblem(const Structure& s, const Eigen::Matrix3Xd& loads,
                                MinMassSettings settings)
-    : nb_(s.num_bars()), ns_(s.num_strings()), settings_(std::move(settings)), eq_(BuildEquilibrium(s)) {
+    : nb_(s.num_bars()),
+      ns_(s.num_strings()),
+      settings_(std::move(settings)),
+      eq_(BuildEquilibrium(s)) {
   if (loads.cols() != s.num_nodes()) throw ModelError("min-mass: load matrix has the wrong size");
   if (static_cast<int>(settings_.string_min_tension.size()) != ns_ ||
       static_cast<int>(settings_.bar_min_area.size()) != nb_) {
@@ -31,7 +34,8 @@ MinMassProblem::MinMassProblem(const Structure& s, const Eigen::Matrix3Xd& loads
   const double sigma_w = settings_.bars.DesignStress();
   const double E = settings_.bars.youngs_modulus;
   const double bar_mass_ratio = settings_.BarMassRatio();
-  mass_ref_ = settings_.strings.density * length_ref * force_ref_ / settings_.strings.DesignStress();
+  mass_ref_ =
+      settings_.strings.density * length_ref * force_ref_ / settings_.strings.DesignStress();
 
   rhs_ = -FreeLoads(eq_, loads) / force_ref_;
   cost_.setZero(num_variables());

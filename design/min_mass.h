@@ -32,7 +32,8 @@ struct MinMassSettings {
   // ratio BarMassRatio().
   MemberMaterial strings, bars;
   double buckling_safety_factor = 1;  // on the bar force in the Euler check
-  // A bar's mass per unit of force it carries over a string's: (rho_b / sigma_b) / (rho_s / sigma_s).
+  // A bar's mass per unit of force it carries over a string's: (rho_b / sigma_b) / (rho_s /
+  // sigma_s).
   double BarMassRatio() const {
     return (bars.density / bars.DesignStress()) / (strings.density / strings.DesignStress());
   }
@@ -67,7 +68,8 @@ class MinMassProblem final : public NlpProblem {
                          Eigen::Ref<Eigen::VectorXd> grad) const override {
     grad = cost_;  // constant
   }
-  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x,
+                   Eigen::Ref<Eigen::VectorXd> g) const override;
 
   // Jacobian of g: fixed sparsity (row, col) and values in that order.
   const Pattern& JacobianPattern() const override { return jac_pattern_; }
@@ -79,7 +81,7 @@ class MinMassProblem final : public NlpProblem {
                      double* values) const override;
 
   // Unscaled results.
-  double MassScale() const { return mass_ref_; }  // kg per objective unit
+  double MassScale() const { return mass_ref_; }    // kg per objective unit
   double ForceScale() const { return force_ref_; }  // N per force unit
   Eigen::VectorXd MemberForces(const Eigen::Ref<const Eigen::VectorXd>& x) const;  // [C; T] in N
   const EquilibriumSystem& equilibrium() const { return eq_; }

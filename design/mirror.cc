@@ -17,7 +17,8 @@ bool Mirror::Complete(const Structure& s) const {
 Eigen::Matrix3Xd Mirror::Of(const Eigen::Matrix3Xd& loads) const {
   Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, loads.cols());
   for (Eigen::Index a = 0; a < loads.cols(); ++a) {
-    if (node[static_cast<size_t>(a)] >= 0) out.col(node[static_cast<size_t>(a)]) = flip.cwiseProduct(loads.col(a));
+    if (node[static_cast<size_t>(a)] >= 0)
+      out.col(node[static_cast<size_t>(a)]) = flip.cwiseProduct(loads.col(a));
   }
   return out;
 }
@@ -32,10 +33,12 @@ bool Mirror::KeepsStrings(const std::vector<double>& per_string, int bars) const
   return true;
 }
 
-bool Mirror::Same(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b) {
+bool Mirror::Same(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                  const Eigen::Ref<const Eigen::MatrixXd>& b) {
   if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
   if (a.size() == 0) return true;
-  return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  return (a - b).cwiseAbs().maxCoeff() <=
+         1e-9 * std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
 }
 
 StaticState Mirror::Of(const StaticState& state) const {
@@ -44,9 +47,11 @@ StaticState Mirror::Of(const StaticState& state) const {
   for (Eigen::Index a = 0; a < state.nodes.cols(); ++a) {
     const int image = node[static_cast<size_t>(a)];
     out.nodes.col(image) = flip.cwiseProduct(state.nodes.col(a)) + offset;
-    if (state.reactions.cols() > 0) out.reactions.col(image) = flip.cwiseProduct(state.reactions.col(a));
+    if (state.reactions.cols() > 0)
+      out.reactions.col(image) = flip.cwiseProduct(state.reactions.col(a));
   }
-  for (int b = 0; b < nb; ++b) out.bar_compression[member[static_cast<size_t>(b)]] = state.bar_compression[b];
+  for (int b = 0; b < nb; ++b)
+    out.bar_compression[member[static_cast<size_t>(b)]] = state.bar_compression[b];
   for (Eigen::Index k = 0; k < state.string_tension.size(); ++k) {
     out.string_tension[member[static_cast<size_t>(nb + k)] - nb] = state.string_tension[k];
   }
@@ -86,7 +91,8 @@ std::vector<Mirror> Mirrors(const Structure& s, double span) {
     mirror.member.assign(static_cast<size_t>(nm), -1);
     for (int j = 0; j < nm; ++j) {
       const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
-      const int a = mirror.node[static_cast<size_t>(m.i)], b = mirror.node[static_cast<size_t>(m.j)];
+      const int a = mirror.node[static_cast<size_t>(m.i)],
+                b = mirror.node[static_cast<size_t>(m.j)];
       if (a < 0 || b < 0) continue;
       const auto it = member_at.find({std::min(a, b), std::max(a, b)});
       if (it == member_at.end() || (it->second < nb) != (j < nb)) continue;
@@ -104,7 +110,8 @@ std::vector<int> StationImages(const Mirror& m, const Actions& actions, double s
     const double x = m.flip[0] < 0 ? span - actions.station_x[k] : actions.station_x[k];
     const Eigen::Matrix3Xd image = m.Of(actions.StationLoad(k, 1.0));
     for (int k2 = 0; k2 < stations; ++k2) {
-      if (std::abs(actions.station_x[k2] - x) <= 1e-9 * span && Mirror::Same(image, actions.StationLoad(k2, 1.0))) {
+      if (std::abs(actions.station_x[k2] - x) <= 1e-9 * span &&
+          Mirror::Same(image, actions.StationLoad(k2, 1.0))) {
         out[static_cast<size_t>(k)] = k2;
         break;
       }
@@ -114,13 +121,15 @@ std::vector<int> StationImages(const Mirror& m, const Actions& actions, double s
   return out;
 }
 
-std::vector<int> CaseImages(const Mirror& m, const Actions& actions, const std::vector<LoadCase>& cases) {
+std::vector<int> CaseImages(const Mirror& m, const Actions& actions,
+                            const std::vector<LoadCase>& cases) {
   std::vector<int> out(cases.size(), -1);
   for (size_t c = 0; c < cases.size(); ++c) {
     const Eigen::Matrix3Xd image = m.Of(actions.Loads(cases[c]));
     for (size_t c2 = 0; c2 < cases.size(); ++c2) {
       const LoadCase &a = cases[c], &b = cases[c2];
-      if (a.state == b.state && a.station_load == b.station_load && Mirror::Same(image, actions.Loads(b))) {
+      if (a.state == b.state && a.station_load == b.station_load &&
+          Mirror::Same(image, actions.Loads(b))) {
         out[c] = static_cast<int>(c2);
         break;
       }
@@ -131,7 +140,8 @@ std::vector<int> CaseImages(const Mirror& m, const Actions& actions, const std::
 }
 
 std::optional<StationMirror> MidSpanMirror(const StaticModel& model, const StaticState& start,
-                                           const Eigen::Matrix3Xd& loads, const Actions& actions, double span) {
+                                           const Eigen::Matrix3Xd& loads, const Actions& actions,
+                                           double span) {
   const Structure& s = model.structure;
   std::vector<Mirror> mirrors = Mirrors(s, span);
   Mirror& m = mirrors.front();  // about x = span / 2
@@ -139,9 +149,11 @@ std::optional<StationMirror> MidSpanMirror(const StaticModel& model, const Stati
       !m.KeepsStrings(model.string_rest_length, s.num_bars())) {
     return std::nullopt;
   }
-  // The reference state is its own image (to 1e-9 of its coordinates and forces: one solve's rounding).
+  // The reference state is its own image (to 1e-9 of its coordinates and forces: one solve's
+  // rounding).
   const StaticState image = m.Of(start);
-  if (!Mirror::Same(image.nodes, start.nodes) || !Mirror::Same(image.bar_compression, start.bar_compression) ||
+  if (!Mirror::Same(image.nodes, start.nodes) ||
+      !Mirror::Same(image.bar_compression, start.bar_compression) ||
       !Mirror::Same(image.string_tension, start.string_tension)) {
     return std::nullopt;
   }

@@ -33,7 +33,8 @@ struct Mirror {
   // Equal to 1e-9 of the larger entry: loads built from the same nodal shares on both sides
   // differ by rounding alone where they are alike, and by the loads themselves where not; a
   // state's forces and positions likewise, by one solve's rounding.
-  static bool Same(const Eigen::Ref<const Eigen::MatrixXd>& a, const Eigen::Ref<const Eigen::MatrixXd>& b);
+  static bool Same(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                   const Eigen::Ref<const Eigen::MatrixXd>& b);
   // The image of a static state (positions, forces member by member, reactions), and of a
   // solve's result; of a complete mirror only.
   StaticState Of(const StaticState& state) const;
@@ -51,7 +52,8 @@ std::vector<int> StationImages(const Mirror& m, const Actions& actions, double s
 // Per case, its image under `m`: the case of its limit state and travelling load whose loads
 // are the image of its own (itself for a symmetric case; the payload on the left for the
 // right's). Empty where some case has none.
-std::vector<int> CaseImages(const Mirror& m, const Actions& actions, const std::vector<LoadCase>& cases);
+std::vector<int> CaseImages(const Mirror& m, const Actions& actions,
+                            const std::vector<LoadCase>& cases);
 
 // The mirror about mid-span of a static model whose structure, string sizes, reference state
 // `start` and standing `loads` are their own images, with each deck station's image: a load at
@@ -63,6 +65,7 @@ struct StationMirror {
 // None where the model, state or loads are not symmetric (a design edited on one side), or a
 // station has no image.
 std::optional<StationMirror> MidSpanMirror(const StaticModel& model, const StaticState& start,
-                                           const Eigen::Matrix3Xd& loads, const Actions& actions, double span);
+                                           const Eigen::Matrix3Xd& loads, const Actions& actions,
+                                           double span);
 
 }  // namespace tbridge

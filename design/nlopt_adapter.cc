@@ -2,9 +2,8 @@
 // SLSQP works on dense matrices (the constraint gradients are m x n): its cost grows with the
 // cube of the variable count, so it suits small problems such as the self-stress form of the
 // design; Ipopt serves large ones.
-#include <nlopt.hpp>
-
 #include <limits>
+#include <nlopt.hpp>
 #include <stdexcept>
 
 #include "design/nlp.h"
@@ -105,13 +104,27 @@ SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& opt
   try {
     const nlopt::result r = opt.optimize(xs, f);
     switch (r) {
-      case nlopt::SUCCESS: out.status = "SUCCESS"; break;
-      case nlopt::STOPVAL_REACHED: out.status = "STOPVAL_REACHED"; break;
-      case nlopt::FTOL_REACHED: out.status = "FTOL_REACHED"; break;
-      case nlopt::XTOL_REACHED: out.status = "XTOL_REACHED"; break;
-      case nlopt::MAXEVAL_REACHED: out.status = "MAXEVAL_REACHED"; break;
-      case nlopt::MAXTIME_REACHED: out.status = "MAXTIME_REACHED"; break;
-      default: out.status = "RESULT_" + std::to_string(static_cast<int>(r)); break;
+      case nlopt::SUCCESS:
+        out.status = "SUCCESS";
+        break;
+      case nlopt::STOPVAL_REACHED:
+        out.status = "STOPVAL_REACHED";
+        break;
+      case nlopt::FTOL_REACHED:
+        out.status = "FTOL_REACHED";
+        break;
+      case nlopt::XTOL_REACHED:
+        out.status = "XTOL_REACHED";
+        break;
+      case nlopt::MAXEVAL_REACHED:
+        out.status = "MAXEVAL_REACHED";
+        break;
+      case nlopt::MAXTIME_REACHED:
+        out.status = "MAXTIME_REACHED";
+        break;
+      default:
+        out.status = "RESULT_" + std::to_string(static_cast<int>(r));
+        break;
     }
     out.success = r == nlopt::SUCCESS || r == nlopt::FTOL_REACHED || r == nlopt::XTOL_REACHED;
   } catch (const nlopt::roundoff_limited&) {
@@ -123,7 +136,8 @@ SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& opt
   x = Eigen::Map<Eigen::VectorXd>(xs.data(), n);
   out.iterations = context.evaluations;
   out.objective = problem.Objective(x);
-  if (out.message.empty()) out.message = out.success ? "optimal" : "NLopt stopped with " + out.status;
+  if (out.message.empty())
+    out.message = out.success ? "optimal" : "NLopt stopped with " + out.status;
   return out;
 }
 

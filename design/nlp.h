@@ -34,7 +34,8 @@ class NlpProblem {
   // The Jacobian as a dense matrix (rows x variables), for a solver that keeps it so (the
   // SQP); false where the problem gives it only by its pattern. A problem whose rows read
   // every variable saves the pattern (a pair per entry) and the copy through it.
-  virtual bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const {
+  virtual bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                             Eigen::MatrixXd& jac) const {
     (void)x;
     (void)jac;
     return false;
@@ -79,7 +80,9 @@ struct SolverOptions {
 // entry and the solution on return. Both may be called from several threads; Ipopt solves
 // then run one at a time, all on one thread of the adapter (its sequential MUMPS is not
 // reentrant).
-SolverOutcome SolveWithIpopt(const NlpProblem& problem, const SolverOptions& options, Eigen::VectorXd& x);
-SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& options, Eigen::VectorXd& x);
+SolverOutcome SolveWithIpopt(const NlpProblem& problem, const SolverOptions& options,
+                             Eigen::VectorXd& x);
+SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& options,
+                             Eigen::VectorXd& x);
 
 }  // namespace tbridge

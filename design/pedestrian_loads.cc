@@ -30,7 +30,8 @@ struct Trapezoid {
 // harmonic): with Sétra's ranges and load cases they would leave modes in range 2 unloaded,
 // so the tool takes Sétra's throughout.
 Trapezoid PsiShape(LoadAxis axis, int harmonic) {
-  if (axis == LoadAxis::kLateral) return harmonic == 1 ? Trapezoid{0.3, 0.5, 1.1, 1.3} : Trapezoid{1.3, 1.7, 2.1, 2.5};
+  if (axis == LoadAxis::kLateral)
+    return harmonic == 1 ? Trapezoid{0.3, 0.5, 1.1, 1.3} : Trapezoid{1.3, 1.7, 2.1, 2.5};
   return harmonic == 1 ? Trapezoid{1.0, 1.7, 2.1, 2.6} : Trapezoid{2.6, 3.4, 4.2, 5.0};
 }
 
@@ -128,8 +129,9 @@ std::optional<CrowdLoadCase> LoadCaseFor(const std::string& traffic_class, int r
 
 int ComfortLevelReached(LoadAxis axis, double a) {
   // Sétra Stage 2, the tables of acceleration ranges (vertical; horizontal).
-  const std::array<double, 3> bounds =
-      axis == LoadAxis::kVertical ? std::array<double, 3>{0.5, 1.0, 2.5} : std::array<double, 3>{0.15, 0.3, 0.8};
+  const std::array<double, 3> bounds = axis == LoadAxis::kVertical
+                                           ? std::array<double, 3>{0.5, 1.0, 2.5}
+                                           : std::array<double, 3>{0.15, 0.3, 0.8};
   for (int level = 0; level < 3; ++level) {
     if (a <= bounds[level]) return level + 1;
   }

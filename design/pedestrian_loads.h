@@ -61,8 +61,8 @@ double EquivalentPedestrians(double damping_ratio, double pedestrians, bool very
 // verifications): class III: case 1 in range 1; class II: case 1 in ranges 1 and 2, case 3 in
 // range 3; class I: case 2 in ranges 1 and 2, case 3 in range 3; none otherwise.
 struct CrowdLoadCase {
-  int number = 0;    // Sétra's case 1, 2 or 3
-  int harmonic = 1;  // 1; 2 for case 3
+  int number = 0;           // Sétra's case 1, 2 or 3
+  int harmonic = 1;         // 1; 2 for case 3
   bool very_dense = false;  // d >= 1: 1.85 sqrt(n), else 10.8 sqrt(xi n)
 };
 std::optional<CrowdLoadCase> LoadCaseFor(const std::string& traffic_class, int range);

@@ -52,10 +52,10 @@ void CountMembers(const Design& d, const std::function<bool(const MemberSizing&)
 // One abutment's largest horizontal reaction over the ultimate cases, with that case's load.
 struct AbutmentThrust {
   Abutment abutment;
-  double h = -1;           // [N], the in-plan vector sum of its nodes' horizontal reactions
-  double w = 0;            // [N], the case's total vertical load
-  double thrust = 0;       // [N], that load's own thrust W L / (8 d)
-  std::string label;       // the case
+  double h = -1;      // [N], the in-plan vector sum of its nodes' horizontal reactions
+  double w = 0;       // [N], the case's total vertical load
+  double thrust = 0;  // [N], that load's own thrust W L / (8 d)
+  std::string label;  // the case
   double Ratio() const { return h / thrust; }
 };
 
@@ -140,10 +140,11 @@ std::vector<std::string> ConfigWarnings(const Config& c) {
       {"material.bars.density", c.material.bars.density}};
   for (const auto& [key, density] : densities) {
     if (!density || *density >= kMinPlausibleDensity) continue;
-    out.push_back(std::string(key) + " = " + Format("%g", *density) + " kg/m^3 is below " +
-                  Format("%g", kMinPlausibleDensity) +
-                  " kg/m^3, lighter than water: timber is about 450, steel 7850; a density given in "
-                  "t/m^3 or g/cm^3 is 1000 times too small");
+    out.push_back(
+        std::string(key) + " = " + Format("%g", *density) + " kg/m^3 is below " +
+        Format("%g", kMinPlausibleDensity) +
+        " kg/m^3, lighter than water: timber is about 450, steel 7850; a density given in "
+        "t/m^3 or g/cm^3 is 1000 times too small");
   }
   // The paper's one case has no partial factors, and its 12 kN on 12 m is its own.
   if (KeepsPaperSwitches(c)) return out;
@@ -207,7 +208,8 @@ std::vector<std::string> PlausibilityWarnings(const Design& d) {
     out.push_back("deck thickness " + Format("%.3g m", t) + " is below 1 mm");
   }
   if (t > kMaxDeckThicknessPerSpan * span) {
-    out.push_back("deck thickness " + Format("%.3g m exceeds span / 10 = %.3g m", t, kMaxDeckThicknessPerSpan * span));
+    out.push_back("deck thickness " +
+                  Format("%.3g m exceeds span / 10 = %.3g m", t, kMaxDeckThicknessPerSpan * span));
   }
   // An engineering design only: the paper's blanket factor of 10 makes its members thick on
   // purpose.
@@ -229,8 +231,10 @@ std::vector<std::string> PlausibilityWarnings(const Design& d) {
     }
     CheckAbutmentThrust(d, out);
   }
-  const std::pair<const char*, double> masses[] = {
-      {"bars", d.mass.bars}, {"strings", d.mass.strings}, {"structure", d.mass.structure}, {"total", d.mass.total}};
+  const std::pair<const char*, double> masses[] = {{"bars", d.mass.bars},
+                                                   {"strings", d.mass.strings},
+                                                   {"structure", d.mass.structure},
+                                                   {"total", d.mass.total}};
   for (const auto& [name, mass] : masses) {
     if (mass < kMinPrintedMass) {
       out.push_back(std::string("mass.") + name + " = " + Format("%.3g kg", mass) +

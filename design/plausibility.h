@@ -11,8 +11,8 @@
 
 namespace tbridge {
 
-inline constexpr double kMinMemberLength = 1e-3;      // [m]: a member shorter than a millimetre
-inline constexpr double kMinDeckThickness = 1e-3;     // [m]: a deck thinner than a millimetre
+inline constexpr double kMinMemberLength = 1e-3;         // [m]: a member shorter than a millimetre
+inline constexpr double kMinDeckThickness = 1e-3;        // [m]: a deck thinner than a millimetre
 inline constexpr double kMaxDeckThicknessPerSpan = 0.1;  // deck thicker than span / 10
 // l / r of a solid bar (r its radius; the radius of gyration is r / 2): 500 is l / r_g = 1000,
 // five times the slenderness limit 200 of steel design codes for compression members.

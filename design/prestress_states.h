@@ -32,10 +32,10 @@ enum class PrestressState { kAsDesigned, kHighest, kLowest };
 
 struct PrestressStateSpec {
   PrestressState state = PrestressState::kAsDesigned;
-  double alpha_factor = 1;  // the share of the self-stress kept: 1, or 1 - prestress_loss
-  int tolerance_sign = 0;   // +1: the strings short by the tolerance, -1: long, 0: as designed
+  double alpha_factor = 1;   // the share of the self-stress kept: 1, or 1 - prestress_loss
+  int tolerance_sign = 0;    // +1: the strings short by the tolerance, -1: long, 0: as designed
   double temperature_k = 0;  // the uniform temperature change [K] from that built at (0: none)
-  std::string suffix;       // appended to a case's label in this state ("" as designed)
+  std::string suffix;        // appended to a case's label in this state ("" as designed)
 };
 
 // The states `config` asks for: as designed first, then the highest where a tolerance is given,

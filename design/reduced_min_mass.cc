@@ -30,11 +30,15 @@ double SelfStressForceScale(const EquilibriumBasis& basis, const MinMassSettings
 
 ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const EquilibriumBasis& basis,
                                              MinMassSettings settings)
-    : nb_(s.num_bars()), ns_(s.num_strings()), s_(static_cast<int>(basis.self_stress.cols())),
+    : nb_(s.num_bars()),
+      ns_(s.num_strings()),
+      s_(static_cast<int>(basis.self_stress.cols())),
       settings_(std::move(settings)) {
   const int members = nb_ + ns_;
-  if (!basis.basis_formed) throw ModelError("min-mass: the self-stress basis was not formed (too large)");
-  if (basis.particular.rows() != members || basis.self_stress.rows() != members || basis.particular.cols() < 1) {
+  if (!basis.basis_formed)
+    throw ModelError("min-mass: the self-stress basis was not formed (too large)");
+  if (basis.particular.rows() != members || basis.self_stress.rows() != members ||
+      basis.particular.cols() < 1) {
     throw ModelError("min-mass: the equilibrium basis does not match the structure");
   }
   if (static_cast<int>(settings_.string_min_tension.size()) != ns_ ||
@@ -52,7 +56,8 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
   force_ref_ = SelfStressForceScale(basis, settings_);
   const Eigen::Vector3d extent = s.nodes.rowwise().maxCoeff() - s.nodes.rowwise().minCoeff();
   const double length_ref = std::max(extent.norm(), 1e-300);
-  mass_ref_ = settings_.strings.density * length_ref * force_ref_ / settings_.strings.DesignStress();
+  mass_ref_ =
+      settings_.strings.density * length_ref * force_ref_ / settings_.strings.DesignStress();
   p_ = basis.particular / force_ref_;
   n_ = basis.self_stress;
   const int cases = num_cases();
@@ -81,8 +86,9 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
         if (f < lo - kFloorTolerance) {
           std::ostringstream os;
           os << "min-mass: " << (bar ? "bar " : "string ") << Structure::Name(m) << " carries "
-             << f * force_ref_ << " N in load case " << c + 1 << " (" << (bar ? "compression" : "tension")
-             << " must be at least " << lo * force_ref_ << " N) and no self-stress can change it";
+             << f * force_ref_ << " N in load case " << c + 1 << " ("
+             << (bar ? "compression" : "tension") << " must be at least " << lo * force_ref_
+             << " N) and no self-stress can change it";
           throw ModelError(os.str());
         }
         area = std::max({area, f, kappa * std::sqrt(std::max(f, 0.0))});
@@ -141,7 +147,8 @@ void ReducedMinMassProblem::ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorX
   hi.setConstant(num_constraints(), std::numeric_limits<double>::infinity());
 }
 
-double ReducedMinMassProblem::ScaledForce(const Active& a, int c, const Eigen::Ref<const Eigen::VectorXd>& x) const {
+double ReducedMinMassProblem::ScaledForce(const Active& a, int c,
+                                          const Eigen::Ref<const Eigen::VectorXd>& x) const {
   double f = p_(a.member, c);
   for (const auto& [k, v] : a.row) f += v * x[k];
   return f;
@@ -178,14 +185,21 @@ void ReducedMinMassProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>&
     double nalpha = 0;
     for (const auto& [k, v] : a.row) nalpha += v * x[k];
     switch (rows_[r].kind) {
-      case 0: g[r] = nalpha; break;
-      case 1: g[r] = x[a.envelope] - nalpha; break;
-      default: g[r] = x[a.envelope] * x[a.envelope] - a.kappa * a.kappa * nalpha; break;
+      case 0:
+        g[r] = nalpha;
+        break;
+      case 1:
+        g[r] = x[a.envelope] - nalpha;
+        break;
+      default:
+        g[r] = x[a.envelope] * x[a.envelope] - a.kappa * a.kappa * nalpha;
+        break;
     }
   }
 }
 
-void ReducedMinMassProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const {
+void ReducedMinMassProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                           double* values) const {
   size_t v = 0;
   for (const Row& row : rows_) {
     const Active& a = active_[row.active];
@@ -204,12 +218,14 @@ void ReducedMinMassProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd
   }
 }
 
-Eigen::VectorXd ReducedMinMassProblem::MemberForces(const Eigen::Ref<const Eigen::VectorXd>& x, int c) const {
+Eigen::VectorXd ReducedMinMassProblem::MemberForces(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                                    int c) const {
   return (p_.col(c) + n_ * x.head(s_)) * force_ref_;
 }
 
 SolverOutcome ReducedMinMassProblem::SolveDirect(Eigen::VectorXd& x) const {
-  if (!DirectApplies()) throw ModelError("min-mass: the direct solve needs at most one self-stress, loading no bar");
+  if (!DirectApplies())
+    throw ModelError("min-mass: the direct solve needs at most one self-stress, loading no bar");
   SolverOutcome out;
   out.solver = "direct";
   x = Eigen::VectorXd::Zero(num_variables());
@@ -224,16 +240,20 @@ SolverOutcome ReducedMinMassProblem::SolveDirect(Eigen::VectorXd& x) const {
       scale += a.weight * std::abs(v);
       for (int c = 0; c < num_cases(); ++c) {
         const double bound = (a.lo - p_(a.member, c)) / v;  // N_j alpha >= lo - p
-        if (v > 0) lo = std::max(lo, bound);
-        else hi = std::min(hi, bound);
+        if (v > 0)
+          lo = std::max(lo, bound);
+        else
+          hi = std::min(hi, bound);
       }
     }
-    if (lo > hi) throw ModelError("min-mass: the self-stress cannot bring every string to its floor at once");
+    if (lo > hi)
+      throw ModelError("min-mass: the self-stress cannot bring every string to its floor at once");
     // A slope within rounding of zero leaves alpha free: take the feasible value nearest zero.
     const bool flat = std::abs(slope) <= 1e-12 * scale;
     const double alpha = flat ? std::clamp(0.0, lo, hi) : (slope > 0 ? lo : hi);
     if (!std::isfinite(alpha)) {
-      throw ModelError("min-mass: the self-stress lowers the mass without bound (no string floors it)");
+      throw ModelError(
+          "min-mass: the self-stress lowers the mass without bound (no string floors it)");
     }
     x[0] = alpha;
     out.message = "self-stress coefficient at the cheaper end of its feasible interval";

@@ -45,7 +45,8 @@ class ReducedMinMassProblem final : public NlpProblem {
   // `structure`; `settings` as for the full problem. Throws ModelError on size mismatches, and
   // when a fixed member is infeasible in some case (a bar in tension or a string below its
   // floor that no self-stress can reach).
-  ReducedMinMassProblem(const Structure& structure, const EquilibriumBasis& basis, MinMassSettings settings);
+  ReducedMinMassProblem(const Structure& structure, const EquilibriumBasis& basis,
+                        MinMassSettings settings);
 
   int num_self_stresses() const { return s_; }
   int num_cases() const { return static_cast<int>(p_.cols()); }
@@ -63,10 +64,12 @@ class ReducedMinMassProblem final : public NlpProblem {
   void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
   Eigen::VectorXd StartingPoint() const;
   double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
-  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>&, Eigen::Ref<Eigen::VectorXd> grad) const override {
+  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>&,
+                         Eigen::Ref<Eigen::VectorXd> grad) const override {
     grad = cost_;  // constant
   }
-  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x,
+                   Eigen::Ref<Eigen::VectorXd> g) const override;
   const Pattern& JacobianPattern() const override { return jac_pattern_; }
   void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override;
   const Pattern& HessianPattern() const override { return hess_pattern_; }
@@ -84,9 +87,9 @@ class ReducedMinMassProblem final : public NlpProblem {
     int member;    // index into [bars; strings]
     int envelope;  // variable index of e_j, or -1
     bool bar;
-    double weight;  // l_j / L_ref: objective per unit of scaled area
-    double lo;      // floor of the scaled force (0 bars, T_min strings)
-    double kappa;   // buckling coefficient (bars)
+    double weight;                            // l_j / L_ref: objective per unit of scaled area
+    double lo;                                // floor of the scaled force (0 bars, T_min strings)
+    double kappa;                             // buckling coefficient (bars)
     std::vector<std::pair<int, double>> row;  // nonzeros (k, N_jk) of N's row
   };
   // One constraint row: kind 0 floor, 1 envelope, 2 buckling; of active member a in case c.
@@ -105,7 +108,8 @@ class ReducedMinMassProblem final : public NlpProblem {
   double constant_ = 0;  // objective of the fixed members (and of priced string tensions)
   double force_ref_ = 1, mass_ref_ = 1;
   Pattern jac_pattern_, hess_pattern_;
-  std::vector<int> hess_of_active_;  // Hessian entry of each active member's envelope, -1 for strings
+  std::vector<int>
+      hess_of_active_;  // Hessian entry of each active member's envelope, -1 for strings
 };
 
 }  // namespace tbridge

@@ -9,7 +9,8 @@
 
 namespace tbridge {
 
-Design SizedDesign(const Config& config, const std::vector<double>& areas, const Eigen::VectorXd& alpha) {
+Design SizedDesign(const Config& config, const std::vector<double>& areas,
+                   const Eigen::VectorXd& alpha) {
   DesignInputs in = PrepareDesign(config);
   Design d;
   d.config = config;
@@ -19,7 +20,8 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
   d.cases = MakeLoadCases(config, d.deck, d.notes);
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();
-  if (static_cast<int>(areas.size()) != nb + ns) throw ModelError("SizedDesign: one area per member expected");
+  if (static_cast<int>(areas.size()) != nb + ns)
+    throw ModelError("SizedDesign: one area per member expected");
 
   const MemberMaterial bar_material = BarMaterial(config), string_material = StringMaterial(config);
   std::vector<double> masses(nb + ns);
@@ -27,7 +29,8 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
     masses[j] = (j < nb ? bar_material : string_material).density * areas[j] *
                 s.Length(j < nb ? s.bars[j] : s.strings[j - nb]);
   }
-  if (config.design.self_weight) d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, config.design.gravity);
+  if (config.design.self_weight)
+    d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, config.design.gravity);
   d.reference = ReferenceCase(config, d.cases);
   d.loads = d.actions.Loads(d.reference);
 
@@ -55,7 +58,9 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas, const
     m.force = force;
     m.force_density = force / m.length;
     m.stress = m.area > 0 ? force / m.area : 0.0;
-    (bar ? d.mass.bars : m.kind == MemberKind::kDeckString ? d.mass.deck_strings : d.mass.strings) += m.mass;
+    (bar                                 ? d.mass.bars
+     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
+                                         : d.mass.strings) += m.mass;
     (bar ? d.bars : d.strings).push_back(m);
   }
   const Eigen::VectorXd residual = EquilibriumResidual(eq, d.reference_forces, d.loads);

@@ -11,9 +11,12 @@ namespace tbridge {
 
 const char* KindName(MemberKind kind) {
   switch (kind) {
-    case MemberKind::kBar: return "bar";
-    case MemberKind::kDeckString: return "deck_string";
-    default: return "string";
+    case MemberKind::kBar:
+      return "bar";
+    case MemberKind::kDeckString:
+      return "deck_string";
+    default:
+      return "string";
   }
 }
 
@@ -67,7 +70,8 @@ MemberSizing SizeString(double length, double tension, double reference_tension,
   s.radius = std::sqrt(s.area / std::numbers::pi);
   s.stress = s.area > 0 ? s.force / s.area : 0.0;
   s.reference_force = std::max(reference_tension, 0.0);
-  s.rest_length = length / (1.0 + (s.area > 0 ? s.reference_force / s.area : 0.0) / m.youngs_modulus);
+  s.rest_length =
+      length / (1.0 + (s.area > 0 ? s.reference_force / s.area : 0.0) / m.youngs_modulus);
   s.stiffness = s.area > 0 ? m.youngs_modulus * s.area / s.rest_length : 0.0;
   s.mass = m.density * s.area * length;
   CheckFinite(s, m);
@@ -81,13 +85,12 @@ void Govern(MemberSizing& m, double demand, double resistance, const char* mode)
   m.mode = mode;
 }
 
-void RaiseUtilisation(MemberSizing& m, double demand, double resistance, const std::string& governing_case,
-                      const char* mode) {
+void RaiseUtilisation(MemberSizing& m, double demand, double resistance,
+                      const std::string& governing_case, const char* mode) {
   if (!(resistance > 0) || demand / resistance <= m.utilisation) return;
   Govern(m, demand, resistance, mode);
   m.governing_case = governing_case;
 }
-
 
 double ColumnCurveChi(double lambda, double alpha) {
   const double phi = 0.5 * (1.0 + alpha * (lambda - 0.2) + lambda * lambda);
@@ -102,7 +105,8 @@ BarCapacity BarResistance(double area, double length, const BarRule& rule, doubl
   const double n_cr = std::numbers::pi * E * area * area / (4.0 * length * length);
   if (!rule.column_curve) {
     c.buckling = n_cr / rule.buckling_factor;
-    c.d_buckling = 2.0 * std::numbers::pi * E * area / (4.0 * length * length) / rule.buckling_factor;
+    c.d_buckling =
+        2.0 * std::numbers::pi * E * area / (4.0 * length * length) / rule.buckling_factor;
   } else {
     const double lambda = n_cr > 0 ? std::sqrt(area * rule.yield_stress / n_cr) : 0.0;
     const double chi = ColumnCurveChi(lambda, rule.imperfection);
@@ -130,7 +134,9 @@ namespace {
 double ColumnCurveArea(double length, double compression, const BarRule& rule, double E) {
   double lo = compression * rule.buckling_factor / rule.yield_stress;  // chi = 1: a lower bound
   if (!(lo > 0)) return 0.0;
-  auto carries = [&](double a) { return BarResistance(a, length, rule, E).buckling >= compression; };
+  auto carries = [&](double a) {
+    return BarResistance(a, length, rule, E).buckling >= compression;
+  };
   double hi = lo;
   for (int k = 0; k < 2100 && !carries(hi); ++k) hi *= 2.0;  // bounded: a non-finite area ends it
   if (hi == lo) return lo;
@@ -153,9 +159,9 @@ MemberSizing SizeBar(double length, double compression, double min_area, const B
   b.force = std::max(compression, 0.0);
   b.force_density = b.force / length;
   const double yield_area = b.force * rule.yield_factor / rule.yield_stress;
-  const double buckling_area = rule.column_curve
-                                   ? ColumnCurveArea(length, b.force, rule, m.youngs_modulus)
-                                   : EulerArea(length, rule.buckling_factor * b.force, m.youngs_modulus);
+  const double buckling_area =
+      rule.column_curve ? ColumnCurveArea(length, b.force, rule, m.youngs_modulus)
+                        : EulerArea(length, rule.buckling_factor * b.force, m.youngs_modulus);
   b.area = yield_area;
   b.governed_by = "yield";
   if (buckling_area > b.area) {

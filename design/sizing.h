@@ -11,32 +11,32 @@ enum class MemberKind { kBar, kString, kDeckString };
 const char* KindName(MemberKind kind);  // "bar" | "string" | "deck_string"
 
 struct MemberSizing {
-  std::string name;         // "i-j", 1-based
+  std::string name;  // "i-j", 1-based
   MemberKind kind = MemberKind::kString;
-  int i = 0, j = 0;         // 0-based nodes
-  double length = 0;        // stretched (design) length [m]
-  double force = 0;         // tension (strings) or compression (bars), >= 0 [N]
-  double force_density = 0; // force / length [N/m]
-  double area = 0;          // [m^2]
-  double radius = 0;        // solid circular section [m]
-  double mass = 0;          // rho A length [kg]
-  double rest_length = 0;   // strings: L0 = s / (1 + sigma/E) [m]; bars: length
-  double stiffness = 0;     // strings: k = E A / L0 [N/m]; bars: 0 (rigid)
-  double stress = 0;        // force / area [Pa]
-  std::string governed_by;  // bars: "yield" | "buckling" | "min_radius"; strings: "yield" |
-                            // "min_radius"
+  int i = 0, j = 0;          // 0-based nodes
+  double length = 0;         // stretched (design) length [m]
+  double force = 0;          // tension (strings) or compression (bars), >= 0 [N]
+  double force_density = 0;  // force / length [N/m]
+  double area = 0;           // [m^2]
+  double radius = 0;         // solid circular section [m]
+  double mass = 0;           // rho A length [kg]
+  double rest_length = 0;    // strings: L0 = s / (1 + sigma/E) [m]; bars: length
+  double stiffness = 0;      // strings: k = E A / L0 [N/m]; bars: 0 (rigid)
+  double stress = 0;         // force / area [Pa]
+  std::string governed_by;   // bars: "yield" | "buckling" | "min_radius"; strings: "yield" |
+                             // "min_radius"
   // The force of the reference state (design/design.h), which sets the rest length [N].
   double reference_force = 0;
-  double force_min = 0;       // smallest force over every case [N]; < 0: slack or in tension
-  double utilisation = 0;     // largest force / resistance over every case (and the dynamic check)
+  double force_min = 0;    // smallest force over every case [N]; < 0: slack or in tension
+  double utilisation = 0;  // largest force / resistance over every case (and the dynamic check)
   // What `utilisation` compares: demand / resistance. The governing force [N] (a static case's,
   // or a run's dynamic demand) and the resistance it is held against [N] (A sigma_w; a bar's
   // yield or column-curve buckling resistance); for mode "slack" the strain measure
   // (working strain - strain) and the working strain sigma_w / E instead.
   double demand = 0;
   double resistance = 0;
-  std::string governing_case; // the case of that largest utilisation
-  std::string mode;           // "yield" | "buckling" | "slack" | "tension" | "dynamic"
+  std::string governing_case;  // the case of that largest utilisation
+  std::string mode;            // "yield" | "buckling" | "slack" | "tension" | "dynamic"
 };
 
 // String working at its material's design stress under `tension`, or at the minimum area when
@@ -58,8 +58,8 @@ struct BarRule {
 void Govern(MemberSizing& m, double demand, double resistance, const char* mode);
 // Raises m's utilisation to demand / resistance when that is larger, naming where
 // (`governing_case`) and how.
-void RaiseUtilisation(MemberSizing& m, double demand, double resistance, const std::string& governing_case,
-                      const char* mode);
+void RaiseUtilisation(MemberSizing& m, double demand, double resistance,
+                      const std::string& governing_case, const char* mode);
 
 // chi(lambda) of EN 1993-1-1 eq 6.49: Phi = 0.5 [1 + alpha (lambda - 0.2) + lambda^2],
 // chi = 1 / (Phi + sqrt(Phi^2 - lambda^2)), at most 1.

@@ -55,7 +55,9 @@ int KindOf(const SizingRow& row) {
 double DynamicShare(const SizingRow& row, const std::vector<double>& dynamic) {
   const int kind = KindOf(row);
   const bool strength = kind == kStrengthKind || kind == kBucklingKind || kind == kYieldKind;
-  return strength && row.member >= 0 && row.member < static_cast<int>(dynamic.size()) ? dynamic[row.member] : 0.0;
+  return strength && row.member >= 0 && row.member < static_cast<int>(dynamic.size())
+             ? dynamic[row.member]
+             : 0.0;
 }
 
 // The multiplier of a row in physical units: the rows are scaled (problem.h), utilisation and
@@ -78,7 +80,8 @@ const char* UnitOf(int kind) {
 
 }  // namespace
 
-MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, const std::vector<double>& dynamic,
+MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x,
+                              const std::vector<double>& dynamic,
                               const Eigen::VectorXd& reference_x) {
   const int nv = p.num_variables(), nr = p.num_constraints();
   Eigen::VectorXd grad(nv), lo, hi;
@@ -88,7 +91,8 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
   p.JacobianValues(x, jac_values.data());
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr, nv);
   for (size_t k = 0; k < p.JacobianPattern().size(); ++k) {
-    J(p.JacobianPattern()[k].first, p.JacobianPattern()[k].second) = jac_values[static_cast<Eigen::Index>(k)];
+    J(p.JacobianPattern()[k].first, p.JacobianPattern()[k].second) =
+        jac_values[static_cast<Eigen::Index>(k)];
   }
   // Unknowns: lambda per posed row, then mu per variable at its lower bound (a minimum size).
   std::vector<int> at_floor;
@@ -98,7 +102,8 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
   Eigen::MatrixXd A(nv, nr + static_cast<int>(at_floor.size()));
   A.leftCols(nr) = J.transpose();
   A.rightCols(static_cast<Eigen::Index>(at_floor.size())).setZero();
-  for (size_t k = 0; k < at_floor.size(); ++k) A(at_floor[k], nr + static_cast<Eigen::Index>(k)) = 1.0;
+  for (size_t k = 0; k < at_floor.size(); ++k)
+    A(at_floor[k], nr + static_cast<Eigen::Index>(k)) = 1.0;
   double residual = 0;
   const Eigen::VectorXd z = NonNegativeLeastSquares(A, grad, &residual);
 
@@ -111,7 +116,8 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
   // the variables (zero at zero), so grad f . x = f and grad f . dx = df, and with grad f =
   // J^T lambda + mu each row's term lambda_r J_r . x (and mu . x) is its kind's share.
   const bool premium = reference_x.size() == x.size();
-  const Eigen::VectorXd along_x = J * x, along_dx = premium ? Eigen::VectorXd(J * (x - reference_x)) : Eigen::VectorXd();
+  const Eigen::VectorXd along_x = J * x, along_dx = premium ? Eigen::VectorXd(J * (x - reference_x))
+                                                            : Eigen::VectorXd();
   for (int r = 0; r < nr; ++r) {
     const double f = DynamicShare(p.rows()[r], dynamic);
     const int kind = KindOf(p.rows()[r]);
@@ -152,7 +158,8 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x, 
     const int v = group_of[j], r = best_row[v];
     MemberBinding& b = out.members[j];
     if (r >= 0) {
-      const int kind = DynamicShare(p.rows()[r], dynamic) > 0.5 ? kDynamicsKind : KindOf(p.rows()[r]);
+      const int kind =
+          DynamicShare(p.rows()[r], dynamic) > 0.5 ? kDynamicsKind : KindOf(p.rows()[r]);
       b.kind = kConstraintKinds[kind];
       b.case_label = p.RowLabel(r);
       b.multiplier = Physical(kind, z[r], p, v);

@@ -28,7 +28,8 @@ namespace tbridge {
 // 1 - static / dynamic utilisation (0 when the static cases govern): that share of its
 // strength rows' mass counts as "dynamics".
 // `reference_x` (the first design's variables; empty: none) gives the premium split.
-MassAttribution AttributeMass(const SizingProblem& problem, const Eigen::VectorXd& x, const std::vector<double>& dynamic,
+MassAttribution AttributeMass(const SizingProblem& problem, const Eigen::VectorXd& x,
+                              const std::vector<double>& dynamic,
                               const Eigen::VectorXd& reference_x);
 
 }  // namespace tbridge

@@ -34,7 +34,8 @@ constexpr double kAreaFloor = 1e-8;
 // orthonormal basis again. The bridge and every load family on it are symmetric, so a
 // symmetric prestress loses nothing the areas (shared by the same groups) could use, and the 3D
 // bridge's 122 states at n = 4 become 39 variables.
-Eigen::MatrixXd SymmetricSelfStresses(const Eigen::MatrixXd& N, const std::vector<int>& group_of, int groups) {
+Eigen::MatrixXd SymmetricSelfStresses(const Eigen::MatrixXd& N, const std::vector<int>& group_of,
+                                      int groups) {
   if (N.cols() == 0) return N;
   // Each row minus its group's mean: zero exactly on the symmetric combinations.
   Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(groups, N.cols());
@@ -55,7 +56,8 @@ Eigen::MatrixXd SymmetricSelfStresses(const Eigen::MatrixXd& N, const std::vecto
     if (k >= sv.size() || sv[k] <= kSymmetric) keep.push_back(k);
   }
   Eigen::MatrixXd out(N.rows(), static_cast<Eigen::Index>(keep.size()));
-  for (size_t k = 0; k < keep.size(); ++k) out.col(static_cast<Eigen::Index>(k)) = N * svd.matrixV().col(keep[k]);
+  for (size_t k = 0; k < keep.size(); ++k)
+    out.col(static_cast<Eigen::Index>(k)) = N * svd.matrixV().col(keep[k]);
   return out;
 }
 
@@ -76,7 +78,8 @@ std::vector<int> MirrorGroups(const Structure& s, double span) {
   };
   for (const Mirror& mirror : Mirrors(s, span)) {
     for (int j = 0; j < nm; ++j) {
-      if (mirror.member[static_cast<size_t>(j)] >= 0) root[find(mirror.member[static_cast<size_t>(j)])] = find(j);
+      if (mirror.member[static_cast<size_t>(j)] >= 0)
+        root[find(mirror.member[static_cast<size_t>(j)])] = find(j);
     }
   }
   std::vector<int> group(nm, -1), index(nm, -1);
@@ -128,7 +131,8 @@ struct SizingProblem::Impl {
   BarRule rule;
   std::vector<double> length, min_area;
   std::vector<int> group_of;
-  std::vector<double> area_scale;  // per group [m^2]: its area in the design the problem is built from
+  std::vector<double>
+      area_scale;  // per group [m^2]: its area in the design the problem is built from
   std::vector<std::vector<int>> members_of;
   std::vector<bool> must_taut;
   std::vector<int> deck_nodes;
@@ -165,9 +169,9 @@ struct SizingProblem::Impl {
   // combination, its self-weight factor. G holds the weight at area0, so the row adds the change.
   std::array<std::vector<double>, 2> weight_share;
   std::vector<double> self_weight_factor;
-  Eigen::MatrixXd N;      // members x states, orthonormal symmetric self-stresses
+  Eigen::MatrixXd N;         // members x states, orthonormal symmetric self-stresses
   Eigen::MatrixXd to_basis;  // the equilibrium solver's states x states: N's coefficients there
-  Eigen::VectorXd x_g;    // the reference loads' particular forces [N]
+  Eigen::VectorXd x_g;       // the reference loads' particular forces [N]
   // The areas and reference forces of the design the problem is built from: the comfort rows'
   // Rayleigh quotients are taken about them.
   std::vector<double> area0;
@@ -213,7 +217,7 @@ struct SizingProblem::Impl {
     Eigen::VectorXd xr;
     std::vector<double> a;
     std::vector<BarCapacity> bar_capacity;  // per bar, at its area a
-    std::vector<Eigen::VectorXd> forces;  // per combination [N]
+    std::vector<Eigen::VectorXd> forces;    // per combination [N]
     // Per comfort entry that follows its mode: its row about this point, found on first use.
     std::vector<std::optional<ComfortRow>> followed;
     // Per combination read (with support rows), per abutment: the turning term of its reaction [N].
@@ -310,7 +314,8 @@ struct SizingProblem::Impl {
     // Each bar's resistances, once per point: a member's rows are many (n = 8: 777
     // combinations), its resistance one.
     st.bar_capacity.resize(static_cast<size_t>(nb));
-    for (int j = 0; j < nb; ++j) st.bar_capacity[static_cast<size_t>(j)] = BarResistance(st.a[j], length[j], rule, E_bar);
+    for (int j = 0; j < nb; ++j)
+      st.bar_capacity[static_cast<size_t>(j)] = BarResistance(st.a[j], length[j], rule, E_bar);
     st.xr = Reference(x, &st.shift_jac);
     Eigen::VectorXd k(ns);
     for (int q = 0; q < ns; ++q) k[q] = (E * st.a[nb + q] + st.xr[nb + q]) / length[nb + q];
@@ -476,7 +481,8 @@ struct SizingProblem::Impl {
     const SizingRow& row = rows[r];
     if (!IsStrength(row)) return st.margin[r];
     const int j = row.member;
-    return (ResistanceOf(row).value - corrections.demand_factor[j] * st.forces[row.combination][j]) /
+    return (ResistanceOf(row).value -
+            corrections.demand_factor[j] * st.forces[row.combination][j]) /
            reference_resistance[r];
   }
 
@@ -582,7 +588,8 @@ struct SizingProblem::Impl {
   // `d_force` [N] (member rows), its node's vertical displacement there by `d_vertical` [m]
   // (deflection rows), the member's reference force by `d_reference` [N] and its area by
   // `d_area`.
-  double Derivative(int r, double d_force, double d_vertical, double d_reference, double d_area) const {
+  double Derivative(int r, double d_force, double d_vertical, double d_reference,
+                    double d_area) const {
     const SizingRow& row = rows[r];
     const int j = row.member;
     switch (row.kind) {
@@ -628,7 +635,8 @@ struct SizingProblem::Impl {
         continue;
       }
       if (row.kind == SizingRow::kReferenceTaut || row.kind == SizingRow::kComfort) continue;
-      const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
+      const bool deflection =
+          row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
       std::vector<int>& col = deflection ? node_col : member_col;
       std::vector<int>& list = deflection ? adjoint_nodes : adjoint_members;
       if (col[row.member] < 0) {
@@ -722,12 +730,14 @@ struct SizingProblem::Impl {
     if (used == loads.cols()) return;
     Eigen::MatrixXd read(loads.rows(), used);
     for (Eigen::Index k = 0; k < loads.cols(); ++k) {
-      if (column[static_cast<size_t>(k)] >= 0) read.col(column[static_cast<size_t>(k)]) = loads.col(k);
+      if (column[static_cast<size_t>(k)] >= 0)
+        read.col(column[static_cast<size_t>(k)]) = loads.col(k);
     }
     loads = std::move(read);
     for (size_t c = 0; c < combos.size(); ++c) {
       base_column[c] = column[static_cast<size_t>(base_column[c])];
-      if (station_column[c] >= 0) station_column[c] = column[static_cast<size_t>(station_column[c])];
+      if (station_column[c] >= 0)
+        station_column[c] = column[static_cast<size_t>(station_column[c])];
     }
   }
 
@@ -746,9 +756,11 @@ struct SizingProblem::Impl {
     std::vector<const Mirror*> symmetries;
     std::vector<std::vector<int>> combo_image;
     const std::vector<Mirror> mirrors = Mirrors(s, span);
-    std::vector<std::vector<int>> combo_at(d.cases.size(), std::vector<int>(static_cast<size_t>(stations) + 1, -1));
+    std::vector<std::vector<int>> combo_at(d.cases.size(),
+                                           std::vector<int>(static_cast<size_t>(stations) + 1, -1));
     for (size_t c = 0; c < combos.size(); ++c) {
-      combo_at[static_cast<size_t>(combos[c].case_index)][static_cast<size_t>(combos[c].station + 1)] = static_cast<int>(c);
+      combo_at[static_cast<size_t>(combos[c].case_index)]
+              [static_cast<size_t>(combos[c].station + 1)] = static_cast<int>(c);
     }
     for (const Mirror& m : mirrors) {
       if (!m.Complete(s) || !m.Keeps(d.loads)) continue;
@@ -758,8 +770,9 @@ struct SizingProblem::Impl {
       std::vector<int> image(combos.size());
       for (size_t c = 0; c < combos.size(); ++c) {
         const int k = combos[c].station;
-        image[c] = combo_at[static_cast<size_t>(case_image[static_cast<size_t>(combos[c].case_index)])]
-                          [static_cast<size_t>(k < 0 ? 0 : station_image[static_cast<size_t>(k)] + 1)];
+        image[c] =
+            combo_at[static_cast<size_t>(case_image[static_cast<size_t>(combos[c].case_index)])]
+                    [static_cast<size_t>(k < 0 ? 0 : station_image[static_cast<size_t>(k)] + 1)];
       }
       symmetries.push_back(&m);
       combo_image.push_back(std::move(image));
@@ -769,8 +782,8 @@ struct SizingProblem::Impl {
     // combination and its image, which share a case. The reference-taut rows by member.
     const int kinds = SizingRow::kComfort + 1;
     const int width = std::max({nm, s.num_nodes(), static_cast<int>(corrections.comfort.size())});
-    std::vector<std::vector<int>> slot;     // per combination layout: kind x width -> offset
-    std::vector<int> layout(combos.size()); // per combination, its layout in `slot`
+    std::vector<std::vector<int>> slot;      // per combination layout: kind x width -> offset
+    std::vector<int> layout(combos.size());  // per combination, its layout in `slot`
     std::map<std::vector<char>, int> layouts;
     std::vector<int> reference_taut(static_cast<size_t>(nm), -1);
     // The comfort and reference-taut rows come last, after every combination's.
@@ -782,9 +795,11 @@ struct SizingProblem::Impl {
         reference_taut[static_cast<size_t>(row.member)] = r;
     }
     for (size_t c = 0; c < combos.size(); ++c) {
-      const int begin = (*first_row)[c], end = c + 1 < combos.size() ? (*first_row)[c + 1] : combos_end;
+      const int begin = (*first_row)[c],
+                end = c + 1 < combos.size() ? (*first_row)[c + 1] : combos_end;
       std::vector<char> key;  // the kinds in order: the layout
-      for (int r = begin; r < end; ++r) key.push_back(static_cast<char>(rows[static_cast<size_t>(r)].kind));
+      for (int r = begin; r < end; ++r)
+        key.push_back(static_cast<char>(rows[static_cast<size_t>(r)].kind));
       const auto [it, added] = layouts.try_emplace(key, static_cast<int>(slot.size()));
       layout[c] = it->second;
       if (!added) continue;
@@ -800,7 +815,8 @@ struct SizingProblem::Impl {
       // A mode's eigenvalue reads the group variables only, which the mirrors keep.
       if (row.kind == SizingRow::kComfort) return r;
       const Mirror& mirror = *symmetries[m];
-      const bool deflection = row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
+      const bool deflection =
+          row.kind == SizingRow::kDeflectionDown || row.kind == SizingRow::kDeflectionUp;
       const int member = IsSupport(row)
                              ? abutment_of_node[static_cast<size_t>(mirror.node[static_cast<size_t>(
                                    abutments[static_cast<size_t>(row.member)].nodes.front())])]
@@ -809,7 +825,8 @@ struct SizingProblem::Impl {
       if (row.combination < 0) return reference_taut[static_cast<size_t>(member)];
       const int c = combo_image[m][static_cast<size_t>(row.combination)];
       if (c < 0) return -1;
-      const int offset = slot[static_cast<size_t>(layout[static_cast<size_t>(c)])][static_cast<size_t>(row.kind) * width + member];
+      const int offset = slot[static_cast<size_t>(layout[static_cast<size_t>(c)])]
+                             [static_cast<size_t>(row.kind) * width + member];
       return offset < 0 ? -1 : (*first_row)[static_cast<size_t>(c)] + offset;
     };
     std::vector<int> orbit;
@@ -829,7 +846,9 @@ struct SizingProblem::Impl {
       int first = j;
       for (const Mirror* m : symmetries) first = std::min(first, m->member[static_cast<size_t>(j)]);
       for (const Mirror* m1 : symmetries) {
-        for (const Mirror* m2 : symmetries) first = std::min(first, m2->member[static_cast<size_t>(m1->member[static_cast<size_t>(j)])]);
+        for (const Mirror* m2 : symmetries)
+          first =
+              std::min(first, m2->member[static_cast<size_t>(m1->member[static_cast<size_t>(j)])]);
       }
       member_representative[static_cast<size_t>(j)] = first;
     }
@@ -863,11 +882,13 @@ struct SizingProblem::Impl {
       adjoint.rightCols(6) = st.lin->AdjointOf(TurnFunctionals());
     }
     const Eigen::MatrixXd stretch = st.lin->StringStretches(st.u);
-    const Eigen::MatrixXd adjoint_stretch = st.lin->StringStretches(adjoint);  // strings x functionals
+    const Eigen::MatrixXd adjoint_stretch =
+        st.lin->StringStretches(adjoint);  // strings x functionals
     st.jac.resize(nr, nv);
     std::vector<Coefficients> k(nr);
     for (int r = 0; r < nr; ++r) {
-      k[r] = {Derivative(r, 1, 0, 0, 0), Derivative(r, 0, 1, 0, 0), Derivative(r, 0, 0, 1, 0), Derivative(r, 0, 0, 0, 1)};
+      k[r] = {Derivative(r, 1, 0, 0, 0), Derivative(r, 0, 1, 0, 0), Derivative(r, 0, 0, 1, 0),
+              Derivative(r, 0, 0, 0, 1)};
     }
     // The columns in two lanes (core/two_lanes.h), each column written by one of them: the
     // first half of the variables and the second (half of each kind in each lane took longer
@@ -907,8 +928,8 @@ struct SizingProblem::Impl {
   };
 
   // The Jacobian's columns of the areas v_first .. v_last - 1.
-  void AreaColumns(int v_first, int v_last, const std::vector<Coefficients>& k, const Eigen::MatrixXd& adjoint_stretch,
-                   const Eigen::MatrixXd& stretch) const {
+  void AreaColumns(int v_first, int v_last, const std::vector<Coefficients>& k,
+                   const Eigen::MatrixXd& adjoint_stretch, const Eigen::MatrixXd& stretch) const {
     const int nr = static_cast<int>(rows.size());
     const int n_members = static_cast<int>(adjoint_members.size());
     for (int v = v_first; v < v_last; ++v) {
@@ -965,8 +986,8 @@ struct SizingProblem::Impl {
   }
 
   // The Jacobian's columns of the self-stresses v_first .. v_last - 1 (numbered after the areas).
-  void StateColumns(int v_first, int v_last, const std::vector<Coefficients>& k, const Eigen::MatrixXd& adjoint,
-                    const Eigen::MatrixXd& stretch) const {
+  void StateColumns(int v_first, int v_last, const std::vector<Coefficients>& k,
+                    const Eigen::MatrixXd& adjoint, const Eigen::MatrixXd& stretch) const {
     const int nr = static_cast<int>(rows.size());
     const int n_members = static_cast<int>(adjoint_members.size());
     std::vector<int> touched;
@@ -1023,7 +1044,8 @@ struct SizingProblem::Impl {
           if (j >= nb) d_force += dp.stiffness[j - nb] * Combined(stretch, j - nb, c);
         }
         const double d_reference = row.kind == SizingRow::kReferenceTaut ? dp.forces[j] : 0.0;
-        st.jac(r, v) = k[r].force * d_force + k[r].vertical * d_vertical + k[r].reference * d_reference;
+        st.jac(r, v) =
+            k[r].force * d_force + k[r].vertical * d_vertical + k[r].reference * d_reference;
       }
     }
   }
@@ -1079,7 +1101,8 @@ size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections correcti
   const EquilibriumSolver solver(eq);
   if (solver.states() > kMaxSoughtStates) {
     throw ModelError("the verified sizing seeks its symmetric self-stress states among at most " +
-                     std::to_string(kMaxSoughtStates) + " states; this bridge has " + std::to_string(solver.states()));
+                     std::to_string(kMaxSoughtStates) + " states; this bridge has " +
+                     std::to_string(solver.states()));
   }
   if (solver.states()) {
     const Eigen::MatrixXd all = solver.SelfStresses();
@@ -1107,9 +1130,11 @@ size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections correcti
   auto free = [&s](const Eigen::Matrix3Xd& loads) { return LinearResponse::FreeVector(s, loads); };
   const Eigen::VectorXd reference_free = free(d.loads);
   p.loads.resize(reference_free.size(), static_cast<Eigen::Index>(d.cases.size()) + stations);
-  for (size_t c = 0; c < d.cases.size(); ++c) p.loads.col(c) = free(d.actions.Loads(d.cases[c])) - reference_free;
+  for (size_t c = 0; c < d.cases.size(); ++c)
+    p.loads.col(c) = free(d.actions.Loads(d.cases[c])) - reference_free;
   const int station_column0 = static_cast<int>(d.cases.size());
-  for (int k = 0; k < stations; ++k) p.loads.col(station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
+  for (int k = 0; k < stations; ++k)
+    p.loads.col(station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
     for (int k = lc.station_load != 0 ? 0 : -1; k < (lc.station_load != 0 ? stations : 0); ++k) {
@@ -1181,7 +1206,8 @@ size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections correcti
   // violated (n = 8: 126 strings at 0.95 of the row's margin once the weight had grown) or not,
   // which no sizing can mend. The checks find such a string slack or taut.
   for (int j = p.nb; j < p.nm; ++j) {
-    if (p.states > 0 && !p.N.row(j).isZero(1e-12)) p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
+    if (p.states > 0 && !p.N.row(j).isZero(1e-12))
+      p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
   }
   const size_t whole = p.rows.size();
   for (SizingRow& row : p.rows) row.state = p.state;
@@ -1311,7 +1337,8 @@ void SizingProblem::ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) c
 double SizingProblem::Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const {
   const Impl& p = *impl_;
   double mass = 0;
-  for (int j = 0; j < p.nm; ++j) mass += p.rho[j] * p.length[j] * p.area_scale[p.group_of[j]] * x[p.group_of[j]];
+  for (int j = 0; j < p.nm; ++j)
+    mass += p.rho[j] * p.length[j] * p.area_scale[p.group_of[j]] * x[p.group_of[j]];
   return mass / p.mass_scale;
 }
 
@@ -1320,10 +1347,12 @@ void SizingProblem::ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x
   const Impl& p = *impl_;
   (void)x;
   grad.setZero();
-  for (int j = 0; j < p.nm; ++j) grad[p.group_of[j]] += p.rho[j] * p.length[j] * p.area_scale[p.group_of[j]] / p.mass_scale;
+  for (int j = 0; j < p.nm; ++j)
+    grad[p.group_of[j]] += p.rho[j] * p.length[j] * p.area_scale[p.group_of[j]] / p.mass_scale;
 }
 
-void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const {
+void SizingProblem::Constraints(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                Eigen::Ref<Eigen::VectorXd> g) const {
   Eigen::Index row = 0;
   for (const Impl* p : Parts()) {
     p->Evaluate(x);
@@ -1354,7 +1383,8 @@ const NlpProblem::Pattern& SizingProblem::JacobianPattern() const {
   return p.jacobian;
 }
 
-void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const {
+void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                   double* values) const {
   const Eigen::MatrixXd& jac = JacobianAt(x);
   // Row-major, as the pattern lists (r, v) pairs.
   for (Eigen::Index r = 0; r < jac.rows(); ++r) {
@@ -1362,7 +1392,8 @@ void SizingProblem::JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, d
   }
 }
 
-bool SizingProblem::DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const {
+bool SizingProblem::DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                  Eigen::MatrixXd& jac) const {
   jac = JacobianAt(x);
   return true;
 }
@@ -1393,12 +1424,15 @@ void SizingProblem::HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, do
         v < p.groups ? ReciprocalCurvature(x[v], jac.col(v), binding, sigma * grad[v]) : 0.0;
 }
 
-Eigen::VectorXd SizingProblem::VariablesOf(const std::vector<double>& areas, const Eigen::VectorXd& alpha) const {
+Eigen::VectorXd SizingProblem::VariablesOf(const std::vector<double>& areas,
+                                           const Eigen::VectorXd& alpha) const {
   const Impl& p = *impl_;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(p.num_variables());
-  for (int j = 0; j < p.nm; ++j) x[p.group_of[j]] = std::max(x[p.group_of[j]], areas[j] / p.area_scale[p.group_of[j]]);
+  for (int j = 0; j < p.nm; ++j)
+    x[p.group_of[j]] = std::max(x[p.group_of[j]], areas[j] / p.area_scale[p.group_of[j]]);
   // alpha on the solver's basis: its symmetric part on N's.
-  if (p.states && alpha.size() == p.to_basis.rows()) x.tail(p.states) = p.to_basis.transpose() * alpha / p.force_scale;
+  if (p.states && alpha.size() == p.to_basis.rows())
+    x.tail(p.states) = p.to_basis.transpose() * alpha / p.force_scale;
   return x;
 }
 
@@ -1506,7 +1540,8 @@ SizingCorrections SizingProblem::ImageCorrections(const SizingCorrections& c) co
   SizingCorrections out = c;
   out.demand_factor.resize(static_cast<size_t>(p.nm), 1.0);
   out.taut_margin_n.resize(static_cast<size_t>(p.nm), 0.0);
-  std::vector<double> factor(static_cast<size_t>(p.nm), 0.0), margin(static_cast<size_t>(p.nm), -std::numeric_limits<double>::infinity());
+  std::vector<double> factor(static_cast<size_t>(p.nm), 0.0),
+      margin(static_cast<size_t>(p.nm), -std::numeric_limits<double>::infinity());
   for (int j = 0; j < p.nm; ++j) {
     const size_t first = static_cast<size_t>(p.member_representative[static_cast<size_t>(j)]);
     factor[first] = std::max(factor[first], out.demand_factor[static_cast<size_t>(j)]);

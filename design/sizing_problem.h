@@ -150,7 +150,8 @@ class SizingProblem final : public NlpProblem {
   // state has no stiffness.
   // `keep` (optional, one flag per row of the whole problem, in rows() order of the whole
   // problem): the rows this problem poses; the others are left out (an active set).
-  SizingProblem(const Design& design, SizingCorrections corrections, const std::vector<char>* keep = nullptr);
+  SizingProblem(const Design& design, SizingCorrections corrections,
+                const std::vector<char>* keep = nullptr);
   ~SizingProblem() override;
 
   int num_variables() const override;
@@ -158,19 +159,22 @@ class SizingProblem final : public NlpProblem {
   void VariableBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
   void ConstraintBounds(Eigen::VectorXd& lo, Eigen::VectorXd& hi) const override;
   double Objective(const Eigen::Ref<const Eigen::VectorXd>& x) const override;
-  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> grad) const override;
-  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void ObjectiveGradient(const Eigen::Ref<const Eigen::VectorXd>& x,
+                         Eigen::Ref<Eigen::VectorXd> grad) const override;
+  void Constraints(const Eigen::Ref<const Eigen::VectorXd>& x,
+                   Eigen::Ref<Eigen::VectorXd> g) const override;
   const Pattern& JacobianPattern() const override;
   void JacobianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double* values) const override;
-  bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::MatrixXd& jac) const override;
+  bool DenseJacobian(const Eigen::Ref<const Eigen::VectorXd>& x,
+                     Eigen::MatrixXd& jac) const override;
   const Pattern& HessianPattern() const override;  // the diagonal
   void HessianValues(const Eigen::Ref<const Eigen::VectorXd>& x, double sigma, const double* lambda,
                      double* values) const override;
 
   // The variables of a design's own areas and prestress (its start), and back.
   Eigen::VectorXd VariablesOf(const std::vector<double>& areas, const Eigen::VectorXd& alpha) const;
-  std::vector<double> Areas(const Eigen::VectorXd& x) const;    // per member [bars; strings] [m^2]
-  Eigen::VectorXd Alpha(const Eigen::VectorXd& x) const;        // self-stress coefficients [N]
+  std::vector<double> Areas(const Eigen::VectorXd& x) const;  // per member [bars; strings] [m^2]
+  Eigen::VectorXd Alpha(const Eigen::VectorXd& x) const;      // self-stress coefficients [N]
   // The coefficients of the prestress in reference forces [N] carrying this problem's G.
   Eigen::VectorXd AlphaOf(const Eigen::VectorXd& reference_forces) const;
   // Each member's largest linear utilisation (with its correction) over the combinations,

@@ -37,8 +37,9 @@ SolveFunction LoadAdapter(const std::string& name) {
     if (entry != nullptr) return reinterpret_cast<SolveFunction>(entry());
     errors += "; " + path.string() + " has no tbridge_solver_entry";
   }
-  throw ConfigError("design.solver", "\"" + name + "\"",
-                    "its module " + file + " is not next to the executable nor in " TBRIDGE_MODULE_DIR + errors);
+  throw ConfigError(
+      "design.solver", "\"" + name + "\"",
+      "its module " + file + " is not next to the executable nor in " TBRIDGE_MODULE_DIR + errors);
 }
 
 SolveFunction Adapter(const std::string& name) {
@@ -79,16 +80,18 @@ void RequireSolverBuiltIn(const std::string& name) {
   std::string list;
   for (const std::string& s : BuiltInSolvers()) list += (list.empty() ? "\"" : ", \"") + s + "\"";
   const std::string option = name == "ipopt" ? "TBRIDGE_WITH_IPOPT" : "TBRIDGE_WITH_NLOPT";
-  throw ConfigError("design.solver", "\"" + Printable(name) + "\"",
-                    "this build has no " + name + " (built in: " + list + "; rebuild with -D" + option + "=ON)");
+  throw ConfigError(
+      "design.solver", "\"" + Printable(name) + "\"",
+      "this build has no " + name + " (built in: " + list + "; rebuild with -D" + option + "=ON)");
 }
 
-SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem, const SolverOptions& options,
-                       Eigen::VectorXd& x) {
+SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem,
+                       const SolverOptions& options, Eigen::VectorXd& x) {
   if (name == "sqp") return SolveWithSqp(problem, options, x);
   RequireSolverBuiltIn(name);
   if (name == "ipopt" || name == "nlopt") return Adapter(name)(problem, options, x);
-  throw ConfigError("design.solver", "\"" + Printable(name) + "\"", "not an iterative solver (\"ipopt\" or \"nlopt\")");
+  throw ConfigError("design.solver", "\"" + Printable(name) + "\"",
+                    "not an iterative solver (\"ipopt\" or \"nlopt\")");
 }
 
 }  // namespace tbridge

@@ -28,7 +28,7 @@ void RequireSolverBuiltIn(const std::string& name);
 // verified sizing's own, design/sqp_solver.h, always built in and not a value of
 // design.solver); `x` is the start on entry and the solution on return. Throws ConfigError
 // (design.solver) when `name` is not built in.
-SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem, const SolverOptions& options,
-                       Eigen::VectorXd& x);
+SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem,
+                       const SolverOptions& options, Eigen::VectorXd& x);
 
 }  // namespace tbridge

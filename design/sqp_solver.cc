@@ -160,7 +160,8 @@ void PoseSubproblem(const Point& cur, const Eigen::VectorXd& lambda, const Eigen
     // multiplier weighs them yet (the prestress, which the mass does not read, had a
     // curvature of 1e-18 there, and the subproblem's transformed rows all lay along it).
     const double width = std::max(qp.hi[j] - qp.lo[j], 1e-300);
-    const double rows = std::max(abs_sum[j], cur.jac.rows() > 0 ? cur.jac.col(j).cwiseAbs().maxCoeff() : 0.0);
+    const double rows =
+        std::max(abs_sum[j], cur.jac.rows() > 0 ? cur.jac.col(j).cwiseAbs().maxCoeff() : 0.0);
     qp.G(j, j) = std::max(h, 1e-6 * (std::abs(cur.grad[j]) + rows + 1e-12) / width);
   }
   qp.a = cur.grad;

@@ -31,14 +31,14 @@ struct Tangent {
   SparseMatrix K, Km, Kg, C;
 };
 
-Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const std::vector<double>& k_string,
-                        bool split) {
+Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces,
+                        const std::vector<double>& k_string, bool split) {
   const int nb = s.num_bars();
   const int ns = s.num_strings();
   if (forces.size() != nb + ns || static_cast<int>(k_string.size()) != ns) {
     throw ModelError("stability: expected " + std::to_string(nb + ns) + " member forces and " +
-                     std::to_string(ns) + " string stiffnesses, got " + std::to_string(forces.size()) + " and " +
-                     std::to_string(k_string.size()));
+                     std::to_string(ns) + " string stiffnesses, got " +
+                     std::to_string(forces.size()) + " and " + std::to_string(k_string.size()));
   }
   const int dim = s.dim();
   Tangent t;
@@ -49,7 +49,9 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces, const
   if (split) km.reserve(block * ns);
   kg.reserve(block * ((split ? ns : 2 * ns) + nb));
   c.reserve(static_cast<size_t>(2 * dim * nb));
-  auto add = [&](Triplets& out, const Member& m, const Eigen::Matrix3d& G) { AddPairBlock(G, m.i, m.j, t.dof, dim, out); };
+  auto add = [&](Triplets& out, const Member& m, const Eigen::Matrix3d& G) {
+    AddPairBlock(G, m.i, m.j, t.dof, dim, out);
+  };
   auto unit = [&](const Member& m) {
     Eigen::Vector3d u = Eigen::Vector3d::Zero();
     u.head(dim) = (s.nodes.col(m.j) - s.nodes.col(m.i)).head(dim).normalized();

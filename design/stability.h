@@ -35,12 +35,13 @@ struct Design;
 
 // The product's verdict (the design JSON's `stability` object).
 struct StabilityVerdict {
-  bool stable = false;          // K_r positive definite: no negative and no zero pivot
-  int negative_pivots = 0;      // pivots < -relative_tolerance * max diag(K_r): negative eigenvalues of K_r
-  int zero_pivots = 0;          // |pivot| <= relative_tolerance * max diag(K_r): mechanisms (to rounding)
-  int free_dofs = 0;            // dim() x free nodes
-  int reduced_dofs = 0;         // columns of Z: motions that keep every bar length
-  double min_pivot = 0;         // smallest pivot of the LDL^T [N/m]
+  bool stable = false;  // K_r positive definite: no negative and no zero pivot
+  int negative_pivots =
+      0;                // pivots < -relative_tolerance * max diag(K_r): negative eigenvalues of K_r
+  int zero_pivots = 0;  // |pivot| <= relative_tolerance * max diag(K_r): mechanisms (to rounding)
+  int free_dofs = 0;    // dim() x free nodes
+  int reduced_dofs = 0;  // columns of Z: motions that keep every bar length
+  double min_pivot = 0;  // smallest pivot of the LDL^T [N/m]
   std::string method = "nullspace-ldlt";
   // Smallest factor c > 0 on every member force (the design load and the prestress together,
   // member areas and stiffnesses held) at which K_m + c K_g turns singular on the motions that
@@ -61,8 +62,8 @@ struct StabilityVerdict {
 // reduced motions for critical_load_factor; O(reduced_dofs^3), meant for n <= 6.
 // Throws ModelError on size mismatches.
 StabilityVerdict AssessStability(const Structure& structure, const Eigen::VectorXd& member_forces,
-                                 const std::vector<double>& string_axial_stiffness, bool critical_load_factor,
-                                 double relative_tolerance = 1e-10);
+                                 const std::vector<double>& string_axial_stiffness,
+                                 bool critical_load_factor, double relative_tolerance = 1e-10);
 
 struct StabilityReport {
   int free_dofs = 0;          // dim() x free nodes

@@ -11,8 +11,9 @@ namespace {
 constexpr double kUtilisationRounding = 1e-9;
 
 bool AnyOver(const std::vector<MemberFinding>& members) {
-  return std::any_of(members.begin(), members.end(),
-                     [](const MemberFinding& f) { return f.utilisation > 1.0 + kUtilisationRounding; });
+  return std::any_of(members.begin(), members.end(), [](const MemberFinding& f) {
+    return f.utilisation > 1.0 + kUtilisationRounding;
+  });
 }
 
 }  // namespace
@@ -31,8 +32,8 @@ const char* CheckStatusName(CheckStatus status) {
   return "not_run";
 }
 
-void RaiseFinding(MemberFinding& f, double demand, double resistance, const std::string& governing_case,
-                  const char* mode) {
+void RaiseFinding(MemberFinding& f, double demand, double resistance,
+                  const std::string& governing_case, const char* mode) {
   const double u = demand / resistance;
   if (!(u > f.utilisation)) return;
   f.utilisation = u;
@@ -42,8 +43,8 @@ void RaiseFinding(MemberFinding& f, double demand, double resistance, const std:
   f.mode = mode;
 }
 
-void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress, double youngs_modulus,
-                       const std::string& governing_case) {
+void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress,
+                       double youngs_modulus, const std::string& governing_case) {
   const double working_strain = working_stress / youngs_modulus;
   RaiseFinding(f, working_strain - strain, working_strain, governing_case, "slack");
 }

@@ -14,7 +14,8 @@ namespace tbridge {
 // frequency is above EN 1990 A2's triggers). A design is PASS only when every check passed or
 // was not required.
 enum class CheckStatus { kPassed, kFailed, kNotRun, kNotRequired };
-const char* CheckStatusName(CheckStatus status);  // "passed" | "failed" | "not_run" | "not_required"
+const char* CheckStatusName(
+    CheckStatus status);  // "passed" | "failed" | "not_run" | "not_required"
 
 // One member's governing finding in a check: the largest demand / resistance over what the
 // check ran, and where. A slack string that must stay taut is measured by its strain instead
@@ -29,23 +30,24 @@ struct MemberFinding {
   std::string mode;            // "yield" | "buckling" | "dynamic" | "slack"
 };
 // Keeps the larger of `f` and the finding (utilisation, demand, resistance, case, mode).
-void RaiseFinding(MemberFinding& f, double demand, double resistance, const std::string& governing_case,
-                  const char* mode);
+void RaiseFinding(MemberFinding& f, double demand, double resistance,
+                  const std::string& governing_case, const char* mode);
 
 // The finding of a string that must stay taut and is slack by `strain` (< 0), working at
 // `working_stress` [Pa] with modulus `youngs_modulus` [Pa] (mode "slack").
-void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress, double youngs_modulus,
-                       const std::string& governing_case);
+void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress,
+                       double youngs_modulus, const std::string& governing_case);
 
 // One load case solved as a nonlinear static problem (verify/static_check.h).
 struct CaseResponse {
-  std::string label;  // the case, with its station for a travelling family ("sls_travelling at node 5")
+  std::string
+      label;  // the case, with its station for a travelling family ("sls_travelling at node 5")
   int case_index = -1;
   int station = -1;
   bool converged = false;
-  std::string message;         // why not, when not converged
-  double deflection_m = 0;     // largest vertical deck-node displacement from the drawn geometry [m]
-  int deflection_node = -1;    // 0-based
+  std::string message;       // why not, when not converged
+  double deflection_m = 0;   // largest vertical deck-node displacement from the drawn geometry [m]
+  int deflection_node = -1;  // 0-based
   Eigen::Matrix3Xd reactions;  // 3 x n_n [N], zero at free nodes
   double balance = 0;          // |sum reactions + sum loads| / sum |loads|
   int slack_strings = 0;
@@ -78,9 +80,9 @@ struct StaticCheck {
   double deflection_limit_m = 0;  // span / loads.deflection_limit
   double deflection_max_m = 0;    // over the serviceability cases
   std::string deflection_case;
-  int stations = 0;               // deck stations of a travelling family, each solved linearly
-  int nonlinear_solves = 0;       // cases and stations solved nonlinearly (each in `cases`)
-  int mirrored = 0;  // stations in `cases` taken as the mirror image of their image's solve
+  int stations = 0;          // deck stations of a travelling family, each solved linearly
+  int nonlinear_solves = 0;  // cases and stations solved nonlinearly (each in `cases`)
+  int mirrored = 0;          // stations in `cases` taken as the mirror image of their image's solve
   // The other states of the prestress the check also ran in (design/prestress_states.h: after
   // the loss, with the rest lengths off by their tolerance), by the suffix of their cases'
   // labels ("after the prestress loss"); their cases follow the design's own in `cases`, and
@@ -96,21 +98,21 @@ struct StaticCheck {
 
 // The dynamic check (verify/dynamic_check.h): each dynamic load run at service level.
 struct GroupAmplification {
-  std::string group;          // member group ("deck", "substructure", "vertical", ...)
-  double static_peak = 0;     // largest force of the group's members over the static counterpart [N]
-  double dynamic_peak = 0;    // largest in the run [N]
-  double amplification = 0;   // the largest dynamic / static ratio of a member of the group
+  std::string group;         // member group ("deck", "substructure", "vertical", ...)
+  double static_peak = 0;    // largest force of the group's members over the static counterpart [N]
+  double dynamic_peak = 0;   // largest in the run [N]
+  double amplification = 0;  // the largest dynamic / static ratio of a member of the group
 };
 
 struct DynamicRun {
-  std::string name;        // "paper_travelling", "moving_load" or "wind_gust"
-  std::string load;        // what it applies, as an engineer writes it
+  std::string name;  // "paper_travelling", "moving_load" or "wind_gust"
+  std::string load;  // what it applies, as an engineer writes it
   bool done = false;
   std::string note;        // why it was skipped, when not done
   std::string integrator;  // as resolved
   double dt = 0;           // [s]
   long steps = 0;
-  double duration = 0;     // [s]
+  double duration = 0;                // [s]
   double peak_deck_displacement = 0;  // [m], from the run's start (static equilibrium)
   // Per abutment (AbutmentsOf's order): its largest horizontal (in plan) and vertical reaction
   // over the run [N], characteristic (the run is at service level). Reported, not constrained.
@@ -152,10 +154,11 @@ inline constexpr const char* kConstraintKinds[] = {
 inline constexpr int kNumConstraintKinds = 11;
 
 struct MemberBinding {
-  std::string kind;         // one of kConstraintKinds: the constraint that costs its group most
-  std::string case_label;   // its combination ("uls_travelling at node 3"), empty for a size
-  double multiplier = 0;    // lambda of that constraint, in `unit`
-  std::string unit;         // "kg per unit utilisation", "kg per unit deflection / limit", "kg/N", "kg/m^2"
+  std::string kind;        // one of kConstraintKinds: the constraint that costs its group most
+  std::string case_label;  // its combination ("uls_travelling at node 3"), empty for a size
+  double multiplier = 0;   // lambda of that constraint, in `unit`
+  std::string
+      unit;  // "kg per unit utilisation", "kg per unit deflection / limit", "kg/N", "kg/m^2"
 };
 
 struct MassAttribution {
@@ -163,7 +166,7 @@ struct MassAttribution {
   double mass_by_kind_kg[kNumConstraintKinds] = {};
   // The same split of the change from the first design.
   double premium_by_kind_kg[kNumConstraintKinds] = {};
-  double structure_kg = 0;         // the sized members' mass
+  double structure_kg = 0;           // the sized members' mass
   double stationarity_residual = 0;  // |grad f - J^T lambda - mu| / |grad f|
   int active_rows = 0;
   // lambda per posed row, then mu per variable at its floor, in the program's scaled units
@@ -174,37 +177,38 @@ struct MassAttribution {
 // One deck mode of the comfort check (verify/comfort_check.h): its motion, frequencies, modal
 // mass and, in a range of resonance risk, its steady peak acceleration under the crowd load.
 struct ComfortMode {
-  int index = 0;                   // 1-based, in ascending frequency with the pedestrians on the deck
-  std::string direction;           // "vertical" | "lateral" | "longitudinal" | "torsional"
-  double share = 0;                // of the deck's motion in `direction` (DeckMotionReport)
-  double frequency_hz = 0;         // with the class's pedestrians on the deck
-  double frequency_empty_hz = 0;   // without them
-  double modal_mass_kg = 0;        // for the shape scaled to a largest deck displacement of 1 along its axis
-  double load_weight_m2 = 0;       // sum of deck area x |shape| over the deck nodes, scaled shape [m^2]
-  int range = 4;                   // Sétra's frequency range (1-4), the riskiest between empty and crowded
-  std::string load_model;          // the Sétra load case applied, or why none
-  double psi = 0;                  // Sétra's psi, the largest between the two frequencies
+  int index = 0;            // 1-based, in ascending frequency with the pedestrians on the deck
+  std::string direction;    // "vertical" | "lateral" | "longitudinal" | "torsional"
+  double share = 0;         // of the deck's motion in `direction` (DeckMotionReport)
+  double frequency_hz = 0;  // with the class's pedestrians on the deck
+  double frequency_empty_hz = 0;  // without them
+  double modal_mass_kg =
+      0;  // for the shape scaled to a largest deck displacement of 1 along its axis
+  double load_weight_m2 = 0;  // sum of deck area x |shape| over the deck nodes, scaled shape [m^2]
+  int range = 4;           // Sétra's frequency range (1-4), the riskiest between empty and crowded
+  std::string load_model;  // the Sétra load case applied, or why none
+  double psi = 0;          // Sétra's psi, the largest between the two frequencies
   double equivalent_pedestrians = 0;
-  double modal_force_n = 0;        // F*, the crowd load's amplitude on the scaled shape [N]
-  double acceleration_m_s2 = 0;    // steady peak a = F* / (2 xi M*) at `node`
+  double modal_force_n = 0;      // F*, the crowd load's amplitude on the scaled shape [N]
+  double acceleration_m_s2 = 0;  // steady peak a = F* / (2 xi M*) at `node`
   double limit_m_s2 = 0;
   int node = -1;                   // 0-based deck node of the largest displacement along the axis
   std::string comfort_class;       // Sétra's comfort level reached ("maximum" ... "unacceptable")
   double lock_in_pedestrians = 0;  // lateral: the critical number N_L (0 for the other motions)
-  bool pass = true;                // acceleration within the limit (and, lateral, fewer pedestrians than N_L)
+  bool pass = true;  // acceleration within the limit (and, lateral, fewer pedestrians than N_L)
 };
 
 // The comfort check: plain data filled by verify/comfort_check.h.
 struct ComfortCheck {
-  bool done = false;        // carried out (not with the paper's switches or comfort.check false)
-  bool required = false;    // a deck frequency below EN 1990 A2's trigger for its motion
-  std::string note;         // why not done, or what it left out
+  bool done = false;      // carried out (not with the paper's switches or comfort.check false)
+  bool required = false;  // a deck frequency below EN 1990 A2's trigger for its motion
+  std::string note;       // why not done, or what it left out
   std::string traffic_class, comfort_level;
   double damping_ratio = 0;
-  double density_per_m2 = 0;     // the class's crowd density d
-  double pedestrians = 0;        // n = d x deck area
-  double crowd_mass_kg = 0;      // their mass on the deck
-  bool planar = false;           // a planar bridge: lateral and torsional motions not checked
+  double density_per_m2 = 0;       // the class's crowd density d
+  double pedestrians = 0;          // n = d x deck area
+  double crowd_mass_kg = 0;        // their mass on the deck
+  bool planar = false;             // a planar bridge: lateral and torsional motions not checked
   std::vector<ComfortMode> modes;  // the deck modes below their trigger
   // not_run when not done; not_required when done and no mode is below its trigger; failed
   // when a mode does not pass; else passed.
@@ -229,7 +233,7 @@ struct AngleSearch {
 };
 
 struct Resizing {
-  int iterations = 0;                     // designs run
+  int iterations = 0;  // designs run
   // A sizing from a passing design's corrections within `tolerance` of that design's mass.
   bool converged = false;
   double tolerance = 0;                   // relative, on the structure's mass
@@ -237,10 +241,10 @@ struct Resizing {
   // Per checked sizing: the largest utilisation the checks found (a violation above 1). The
   // settling sizing of a converged run is not checked, so it has none.
   std::vector<double> utilisation_max;
-  std::vector<std::string> changes;       // per sizing but the last: how its checks corrected the next
-  double second_start_kg = 0;             // the last sizing from twice the first design's areas
-  std::string optima;                     // what that second start found, and which design was kept
-  std::string why;                        // when not converged: the last verdict
+  std::vector<std::string> changes;  // per sizing but the last: how its checks corrected the next
+  double second_start_kg = 0;        // the last sizing from twice the first design's areas
+  std::string optima;                // what that second start found, and which design was kept
+  std::string why;                   // when not converged: the last verdict
   // The comfort rows of the sizing that gave the design (verify/comfort_sizing.h): each deck
   // mode's bound on its frequency, and why.
   std::vector<std::string> comfort_rows;

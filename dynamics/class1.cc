@@ -25,8 +25,8 @@ Class1System::Class1System(const DynamicModel& model, const Class1Options& optio
   }
   for (int a = 0; a < n_n_; ++a) {
     if (bars_at[a] > 1) {
-      throw ModelError(Where() + ": node " + NodeName(a) + " carries " + std::to_string(bars_at[a]) +
-                       " bars; this is a class-k structure");
+      throw ModelError(Where() + ": node " + NodeName(a) + " carries " +
+                       std::to_string(bars_at[a]) + " bars; this is a class-k structure");
     }
   }
 
@@ -38,8 +38,10 @@ Class1System::Class1System(const DynamicModel& model, const Class1Options& optio
     if (fi || fj) {
       const int pinned = fi ? b.i : b.j, free = fi ? b.j : b.i;
       const double mass = b.mass / 3.0 + NodeMass(free);
-      if (!(mass > 0)) throw ModelError(Where() + ": bar at node " + NodeName(free) + " has no mass");
-      pinned_bars_.push_back({pinned * dim_, free * dim_, mass, 1.0 / mass, b.length * b.length, index});
+      if (!(mass > 0))
+        throw ModelError(Where() + ": bar at node " + NodeName(free) + " has no mass");
+      pinned_bars_.push_back(
+          {pinned * dim_, free * dim_, mass, 1.0 / mass, b.length * b.length, index});
       AddMassBlock(-1, free * dim_, 0.0, 0.0, mass);
       continue;
     }
@@ -75,14 +77,16 @@ void Class1System::BarForceDensities(const Class1Workspace& ws, Eigen::VectorXd&
 }
 
 template <int D, bool Damped, bool Stabilised>
-void Class1System::DerivativeImpl(double t, const double* y, double* dy, Class1Workspace& ws) const {
+void Class1System::DerivativeImpl(double t, const double* y, double* dy,
+                                  Class1Workspace& ws) const {
   // CAUTION: performance-sensitive. Plain loops over flat arrays; no allocation, no matrices.
   const int c = coordinates();
   const double* x = y;
   const double* v = y + c;
   double* f = ws.force.data();
   double* acc = dy + c;
-  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f, ws.record_strings);  // x' = v; loads, strings (eqs 16-17)
+  ws.damper_power = StartDerivative<D, Damped>(
+      t, y, dy, f, ws.record_strings);  // x' = v; loads, strings (eqs 16-17)
   ws.record_strings = nullptr;
   double* lambdas = ws.lambda.data();
 
@@ -129,7 +133,8 @@ void Class1System::DerivativeImpl(double t, const double* y, double* dy, Class1W
       bbd += b[d] * v[bar.oj + d];
     }
     double numerator = bar.mass * bd2 + bf;
-    if constexpr (Stabilised) numerator += bar.mass * (two_zeta_omega * bbd + half_omega_sq * (l2 - bar.rest_sq));
+    if constexpr (Stabilised)
+      numerator += bar.mass * (two_zeta_omega * bbd + half_omega_sq * (l2 - bar.rest_sq));
     const double lambda = -numerator / l2;
     lambdas[bar.model_index] = lambda;
     for (int d = 0; d < D; ++d) acc[bar.oj + d] = (f[bar.oj + d] + lambda * b[d]) * bar.inv_mass;

@@ -49,7 +49,9 @@ class Class1System : public EngineFrame {
   Class1System(const DynamicModel& model, const Class1Options& options = {},
                std::vector<TimedLoad> timed_loads = {});
 
-  int num_members() const { return static_cast<int>(strings_.size() + bars_.size() + pinned_bars_.size()); }
+  int num_members() const {
+    return static_cast<int>(strings_.size() + bars_.size() + pinned_bars_.size());
+  }
   int num_model_bars() const { return n_model_bars_; }
 
   // dy = f(t, y); t only selects the timed loads. Allocation-free; `ws` must be
@@ -72,7 +74,7 @@ class Class1System : public EngineFrame {
   };
   struct PinnedBar {  // end i pinned
     int oi, oj;
-    double mass;           // m/3 + m_j
+    double mass;  // m/3 + m_j
     double inv_mass;
     double rest_sq;
     int model_index;

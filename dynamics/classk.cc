@@ -73,7 +73,8 @@ struct ClassKWorkspace::Solver {
 
 ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& options,
                            std::vector<TimedLoad> timed_loads)
-    : EngineFrame(model, options, timed_loads, kEngine), n_model_bars_(static_cast<int>(model.bars.size())) {
+    : EngineFrame(model, options, timed_loads, kEngine),
+      n_model_bars_(static_cast<int>(model.bars.size())) {
   // Bars and their copies. A node's first copy is its primary: it takes the node's mass and
   // force, and the node's acceleration is read from it.
   primary_copy_.assign(n_n_, -1);
@@ -104,13 +105,16 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
     const double m01 = free_i && free_j ? b.mass / 6.0 : 0.0;
     if (free_i && free_j) {
       const double det = m00 * m11 - m01 * m01;
-      if (!(det > 0)) throw ModelError(std::string(kEngine) + ": " + name + " has a singular mass matrix (no mass)");
+      if (!(det > 0))
+        throw ModelError(std::string(kEngine) + ": " + name +
+                         " has a singular mass matrix (no mass)");
       p.a00 = m11 / det;
       p.a11 = m00 / det;
       p.a01 = -m01 / det;
     } else {
       const double m = free_i ? m00 : m11;
-      if (!(m > 0)) throw ModelError(std::string(kEngine) + ": " + name + " has no mass at its free end");
+      if (!(m > 0))
+        throw ModelError(std::string(kEngine) + ": " + name + " has no mass at its free end");
       (free_i ? p.a00 : p.a11) = 1.0 / m;
     }
     p.w = p.a00 + p.a11 - 2.0 * p.a01;
@@ -172,10 +176,12 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
     cholmod_common c;
     cholmod_start(&c);
     c.print = 0;
-    cholmod_sparse* pattern = cholmod_allocate_sparse(n_rows_, n_rows_, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c);
+    cholmod_sparse* pattern =
+        cholmod_allocate_sparse(n_rows_, n_rows_, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c);
     if (pattern == nullptr) {
       cholmod_finish(&c);
-      throw ModelError(std::string(kEngine) + ": CHOLMOD could not allocate the constraint pattern");
+      throw ModelError(std::string(kEngine) +
+                       ": CHOLMOD could not allocate the constraint pattern");
     }
     std::vector<std::vector<int>> by_col(n_rows_);
     for (const auto& [rc, e] : entries) by_col[rc.second].push_back(rc.first);
@@ -191,7 +197,8 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
     const int ok = cholmod_amd(pattern, nullptr, 0, perm.data(), &c);
     cholmod_free_sparse(&pattern, &c);
     cholmod_finish(&c);
-    if (!ok) throw ModelError(std::string(kEngine) + ": CHOLMOD could not order the constraint matrix");
+    if (!ok)
+      throw ModelError(std::string(kEngine) + ": CHOLMOD could not order the constraint matrix");
     for (int k = 0; k < n_rows_; ++k) new_row[perm[k]] = k;
   }
 
@@ -255,8 +262,10 @@ ClassKWorkspace::ClassKWorkspace(const ClassKSystem& system)
   const Eigen::VectorXd y = system.RestState();
   Eigen::VectorXd dy(y.size());
   system.Derivative(0.0, y.data(), dy.data(), *this);
-  if (solver->factor->is_super || solver->factor->is_ll || solver->factor->ordering != CHOLMOD_NATURAL) {
-    throw ModelError(std::string(kEngine) + ": CHOLMOD did not keep a simplicial LDL^T factor in natural order");
+  if (solver->factor->is_super || solver->factor->is_ll ||
+      solver->factor->ordering != CHOLMOD_NATURAL) {
+    throw ModelError(std::string(kEngine) +
+                     ": CHOLMOD did not keep a simplicial LDL^T factor in natural order");
   }
 }
 
@@ -280,14 +289,16 @@ void ClassKSystem::BarForceDensities(const ClassKWorkspace& ws, Eigen::VectorXd&
 }
 
 template <int D, bool Damped, bool Stabilised>
-void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKWorkspace& ws) const {
+void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy,
+                                  ClassKWorkspace& ws) const {
   // CAUTION: performance-sensitive. Flat loops over preallocated buffers; CHOLMOD refactorises
   // into the factor and work arrays it allocated during the workspace's warm-up evaluation.
   const int c = coordinates();
   const double* x = y;
   const double* v = y + c;
   double* f = ws.force.data();
-  ws.damper_power = StartDerivative<D, Damped>(t, y, dy, f, ws.record_strings);  // x' = v; loads, strings (eqs 16-17)
+  ws.damper_power = StartDerivative<D, Damped>(
+      t, y, dy, f, ws.record_strings);  // x' = v; loads, strings (eqs 16-17)
   ws.record_strings = nullptr;
 
   ClassKWorkspace::Solver& s = *ws.solver;
@@ -334,10 +345,12 @@ void ClassKSystem::DerivativeImpl(double t, const double* y, double* dy, ClassKW
   if (s.a != nullptr) {
     double* a = static_cast<double*>(s.a->x);
     std::memcpy(a, a_const_.data(), sizeof(double) * a_const_.size());
-    for (const BarEntry& e : a_bar_) a[e.at] += e.coef * (e.d < 0 ? l2v[e.bar] : bvec[e.bar * D + e.d]);
+    for (const BarEntry& e : a_bar_)
+      a[e.at] += e.coef * (e.d < 0 ? l2v[e.bar] : bvec[e.bar * D + e.d]);
     cholmod_factorize(s.a, s.factor, &s.common);
     if (s.common.status != CHOLMOD_OK || s.factor->minor != s.factor->n) {
-      throw ModelError(std::string(kEngine) + ": the constraint matrix J M^-1 J^T is not positive definite at t = " +
+      throw ModelError(std::string(kEngine) +
+                       ": the constraint matrix J M^-1 J^T is not positive definite at t = " +
                        std::to_string(t) + " s (dependent bar constraints or a collapsed bar)");
     }
     s.Solve(rhs);

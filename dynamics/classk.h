@@ -52,14 +52,15 @@ class ClassKWorkspace;
 class ClassKSystem : public EngineFrame {
  public:
   // Compiles `model` into flat arrays and the constant pattern of A. Throws ModelError when
-  // the model fails CheckModel (dynamics/model.h), a bar has a singular mass block, a free node without a bar has no mass, stabilisation has omega <= 0 or
-  // zeta < 0, or a timed load names a node out of range.
+  // the model fails CheckModel (dynamics/model.h), a bar has a singular mass block, a free node
+  // without a bar has no mass, stabilisation has omega <= 0 or zeta < 0, or a timed load names a
+  // node out of range.
   ClassKSystem(const DynamicModel& model, const ClassKOptions& options = {},
                std::vector<TimedLoad> timed_loads = {});
 
   int num_copies() const { return static_cast<int>(copies_.size()); }
   int num_bars() const { return static_cast<int>(bars_.size()); }  // bars with a free end
-  int num_constraints() const { return n_rows_; }  // bar rows + dim x extra copies
+  int num_constraints() const { return n_rows_; }                  // bar rows + dim x extra copies
   long matrix_nonzeros() const { return static_cast<long>(a_row_.size()); }  // lower triangle
 
   // dy = f(t, y). `ws` must be ClassKWorkspace(*this). Allocation-free after the workspace's
@@ -77,21 +78,21 @@ class ClassKSystem : public EngineFrame {
   friend class ClassKWorkspace;
 
   struct PackedBar {
-    int oi, oj;          // coordinate offsets of the end nodes
-    int ci, cj;          // copy indices of the ends, -1 for a pinned end
-    int row;             // its row of A (after the fill-reducing order)
-    bool fi, fj;         // whether the end's copy receives the node force (primary copy)
+    int oi, oj;            // coordinate offsets of the end nodes
+    int ci, cj;            // copy indices of the ends, -1 for a pinned end
+    int row;               // its row of A (after the fill-reducing order)
+    bool fi, fj;           // whether the end's copy receives the node force (primary copy)
     double a00, a01, a11;  // inverse mass block (a00 unused for a pinned i, a11 for a pinned j)
-    double w;            // (-1, 1) A_inv (-1, 1)^T over the free ends: A_kk = w |b|^2
-    double rest_sq;      // l0^2
-    int model_index;     // index in model.bars
+    double w;              // (-1, 1) A_inv (-1, 1)^T over the free ends: A_kk = w |b|^2
+    double rest_sq;        // l0^2
+    int model_index;       // index in model.bars
   };
   struct Copy {
     int bar, end;  // owning packed bar and end (0 = i, 1 = j)
     int o;         // coordinate offset of its node
   };
   struct Coincidence {  // dim rows q_copy - q_primary
-    int row;      // first of its dim rows in the natural order
+    int row;            // first of its dim rows in the natural order
     int copy, primary;
     int rows[3];  // its rows of A (after the fill-reducing order)
   };
@@ -129,13 +130,13 @@ class ClassKWorkspace {
   ClassKWorkspace(const ClassKWorkspace&) = delete;
   ClassKWorkspace& operator=(const ClassKWorkspace&) = delete;
 
-  Eigen::VectorXd force;  // non-bar node forces, packed [N]
-  Eigen::VectorXd u;      // M^-1 F per copy, then the copy accelerations [m/s^2]
-  Eigen::VectorXd jt_mu;  // J^T mu per copy [N]
-  Eigen::VectorXd b;      // bar vectors, dim per packed bar [m]
+  Eigen::VectorXd force;          // non-bar node forces, packed [N]
+  Eigen::VectorXd u;              // M^-1 F per copy, then the copy accelerations [m/s^2]
+  Eigen::VectorXd jt_mu;          // J^T mu per copy [N]
+  Eigen::VectorXd b;              // bar vectors, dim per packed bar [m]
   Eigen::VectorXd bar_length_sq;  // |b|^2 per packed bar [m^2]
-  Eigen::VectorXd mu;     // right-hand side, then the multipliers, per row of A [N/m], [N]
-  double damper_power = 0;  // the dampers' power at the last evaluation [W]
+  Eigen::VectorXd mu;             // right-hand side, then the multipliers, per row of A [N/m], [N]
+  double damper_power = 0;        // the dampers' power at the last evaluation [W]
   // When set, the next evaluation writes each string's geometry there (one per model string)
   // and clears it.
   const StringGeometry* record_strings = nullptr;

@@ -18,7 +18,7 @@ namespace tbridge {
 struct AccelerationCoupling {
   int dim = 2;
   std::vector<std::vector<int>> depends_on;  // one list per node
-  long entries() const;                       // sum of the list sizes
+  long entries() const;                      // sum of the list sizes
 };
 
 // Throws nothing; node indices of the model are assumed valid (the engines check them).

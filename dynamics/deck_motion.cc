@@ -26,7 +26,8 @@ const char* DeckMotionName(DeckMotion motion) {
 
 DeckMotionReport ProjectOnDeckMotions(const DynamicModel& model, const Eigen::Matrix3Xd& shape) {
   if (model.deck_nodes.empty()) throw ModelError("deck motions: the model has no deck nodes");
-  if (shape.cols() != model.num_nodes()) throw ModelError("deck motions: the shape's size differs from the model's");
+  if (shape.cols() != model.num_nodes())
+    throw ModelError("deck motions: the shape's size differs from the model's");
   std::vector<int> deck = model.deck_nodes;
   const Eigen::Matrix3Xd& p = model.positions;
   std::sort(deck.begin(), deck.end(), [&p](int a, int b) { return p(0, a) < p(0, b); });
@@ -54,7 +55,8 @@ DeckMotionReport ProjectOnDeckMotions(const DynamicModel& model, const Eigen::Ma
       lever2 += arm * arm;
       moment += arm * shape(1, deck[k]);
     }
-    if (lever2 > 0) squares[3] += moment * moment / lever2;  // theta^2 sum(arm^2), theta = moment / lever2
+    if (lever2 > 0)
+      squares[3] += moment * moment / lever2;  // theta^2 sum(arm^2), theta = moment / lever2
     first = last;
   }
   double deck_total = 0;
@@ -64,7 +66,8 @@ DeckMotionReport ProjectOnDeckMotions(const DynamicModel& model, const Eigen::Ma
   if (!(deck_total > kLocalDeckShare * whole)) return r;
   for (int k = 0; k < 4; ++k) r.share[k] = squares[k] / deck_total;
   if (r.share[0] + r.share[1] + r.share[2] + r.share[3] < kSectionShare) return r;
-  const int best = static_cast<int>(std::max_element(r.share.begin(), r.share.end()) - r.share.begin());
+  const int best =
+      static_cast<int>(std::max_element(r.share.begin(), r.share.end()) - r.share.begin());
   r.motion = static_cast<DeckMotion>(best);
   r.axis = r.motion == DeckMotion::kLateral ? 2 : r.motion == DeckMotion::kLongitudinal ? 0 : 1;
   for (const int a : deck) {

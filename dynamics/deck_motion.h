@@ -23,7 +23,8 @@
 namespace tbridge {
 
 enum class DeckMotion { kVertical, kLateral, kLongitudinal, kTorsional, kLocal };
-const char* DeckMotionName(DeckMotion motion);  // "vertical" | "lateral" | "longitudinal" | "torsional" | "local"
+const char* DeckMotionName(
+    DeckMotion motion);  // "vertical" | "lateral" | "longitudinal" | "torsional" | "local"
 
 inline constexpr double kLocalDeckShare = 1e-3;
 inline constexpr double kSectionShare = 0.5;
@@ -35,7 +36,7 @@ struct DeckMotionReport {
   // The coordinate a crowd loads this motion along, and its acceleration is measured on:
   // 1 (y) for vertical and torsional, 2 (z) lateral, 0 (x) longitudinal.
   int axis = 1;
-  int peak_node = -1;            // the deck node (0-based) of the largest |displacement| along `axis`
+  int peak_node = -1;  // the deck node (0-based) of the largest |displacement| along `axis`
   double peak_displacement = 0;  // that |displacement|, in the shape's unit
 };
 

@@ -4,8 +4,8 @@
 
 namespace tbridge {
 
-EngineFrame::EngineFrame(const DynamicModel& model, const EngineOptions& options, const std::vector<TimedLoad>& timed,
-                         const char* engine)
+EngineFrame::EngineFrame(const DynamicModel& model, const EngineOptions& options,
+                         const std::vector<TimedLoad>& timed, const char* engine)
     : engine_(engine), dim_(model.dim), n_n_(model.num_nodes()), options_(options) {
   const std::string where(engine);
   CheckModel(model, where);
@@ -29,8 +29,9 @@ void EngineFrame::AddNodes(const DynamicModel& model, const std::vector<bool>& h
     } else if (!has_bar[a]) {
       const double m = NodeMass(a);
       if (!(m > 0)) {
-        throw ModelError(Where() + ": free node " + std::to_string(a + 1) +
-                         " has neither a bar nor a mass (use string_mass \"nodes\" or give it mass)");
+        throw ModelError(
+            Where() + ": free node " + std::to_string(a + 1) +
+            " has neither a bar nor a mass (use string_mass \"nodes\" or give it mass)");
       }
       lone_.push_back({a * dim_, m, 1.0 / m});
     }
@@ -71,7 +72,8 @@ double EngineFrame::KineticEnergyOf(const double* y) const {
     }
     for (; i < c; ++i) e[0] += m[i] * v[i] * v[i];
   } else {
-    for (size_t k = 0; k < lone_.size(); ++k) e[k % 2] += lone_[k].mass * dot(lone_[k].o, lone_[k].o);
+    for (size_t k = 0; k < lone_.size(); ++k)
+      e[k % 2] += lone_[k].mass * dot(lone_[k].o, lone_[k].o);
   }
   for (const MassBlock& b : blocks_) {
     e[1] += b.m00 * dot(b.oi, b.oi);

@@ -42,8 +42,8 @@ class EngineFrame {
  protected:
   // Throws ModelError naming `engine` when the model fails CheckModel (dynamics/model.h),
   // stabilisation has omega <= 0 or zeta < 0, or a timed load names a node out of range.
-  EngineFrame(const DynamicModel& model, const EngineOptions& options, const std::vector<TimedLoad>& timed,
-              const char* engine);
+  EngineFrame(const DynamicModel& model, const EngineOptions& options,
+              const std::vector<TimedLoad>& timed, const char* engine);
 
   // Once the bars are known (`has_bar[a]`: a bar ends at node a): pinned nodes are held, and
   // free nodes without a bar move as point masses. Throws ModelError for such a node without mass.
@@ -72,12 +72,14 @@ class EngineFrame {
   // and the strings' pulls). Returns the dampers' power [W]. With `record`, each string's
   // geometry at y goes there too, by model string. CAUTION: performance-sensitive.
   template <int D, bool Damped>
-  double StartDerivative(double t, const double* y, double* dy, double* f, const StringGeometry* record) const {
+  double StartDerivative(double t, const double* y, double* dy, double* f,
+                         const StringGeometry* record) const {
     const int c = coordinates();
     std::memcpy(dy, y + c, sizeof(double) * static_cast<size_t>(c));
     loads_.At(t, f);
-    return record != nullptr ? AccumulateStringForces<D, Damped, true>(strings_, y, y + c, f, record)
-                             : AccumulateStringForces<D, Damped>(strings_, y, y + c, f);
+    return record != nullptr
+               ? AccumulateStringForces<D, Damped, true>(strings_, y, y + c, f, record)
+               : AccumulateStringForces<D, Damped>(strings_, y, y + c, f);
   }
 
   // Mass-proportional damping (DynamicModel::mass_damping_per_s): the force -alpha M v takes

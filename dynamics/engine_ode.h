@@ -14,9 +14,11 @@ template <class Body>
 inline void Specialise(int dim, bool damped, bool stabilised, Body&& body) {
   auto in_dim = [&]<int D>() {
     if (damped) {
-      stabilised ? body.template operator()<D, true, true>() : body.template operator()<D, true, false>();
+      stabilised ? body.template operator()<D, true, true>()
+                 : body.template operator()<D, true, false>();
     } else {
-      stabilised ? body.template operator()<D, false, true>() : body.template operator()<D, false, false>();
+      stabilised ? body.template operator()<D, false, true>()
+                 : body.template operator()<D, false, false>();
     }
   };
   dim == 2 ? in_dim.template operator()<2>() : in_dim.template operator()<3>();

@@ -62,10 +62,13 @@ Eigen::VectorXd InitialState(const DynamicModel& model, const DynamicsConfig& co
     const NodeInitialConfig& in = config.initial[k];
     const std::string key = "dynamics.initial[" + std::to_string(k) + "]";
     if (in.node > n_n) {
-      throw ConfigError(key + ".node", std::to_string(in.node), "must be in 1.." + std::to_string(n_n));
+      throw ConfigError(key + ".node", std::to_string(in.node),
+                        "must be in 1.." + std::to_string(n_n));
     }
     const int a = in.node - 1;
-    if (model.fixed[a]) throw ConfigError(key + ".node", std::to_string(in.node), "is a support; supports do not move");
+    if (model.fixed[a])
+      throw ConfigError(key + ".node", std::to_string(in.node),
+                        "is a support; supports do not move");
     if (dim == 2 && (in.displacement[2] != 0 || in.velocity[2] != 0)) {
       throw ConfigError(key, "z component", "must be 0: this bridge moves in the x-y plane");
     }
@@ -88,11 +91,12 @@ Eigen::VectorXd InitialState(const DynamicModel& model, const DynamicsConfig& co
     const std::string name = std::to_string(b.i + 1) + "-" + std::to_string(b.j + 1);
     if (std::abs(len - b.length) > 1e-9 * b.length) {
       throw ConfigError("dynamics.initial", "bar " + name + " length " + NumberText(len) + " m",
-                        "initial displacements must keep every bar's length " + NumberText(b.length) +
-                            " m (move both ends of a bar together)");
+                        "initial displacements must keep every bar's length " +
+                            NumberText(b.length) + " m (move both ends of a bar together)");
     }
     if (std::abs(rate) > 1e-9 * len * std::max(std::sqrt(speed2), 1e-300) && speed2 > 0) {
-      throw ConfigError("dynamics.initial", "bar " + name + " length rate " + NumberText(rate / len) + " m/s",
+      throw ConfigError("dynamics.initial",
+                        "bar " + name + " length rate " + NumberText(rate / len) + " m/s",
                         "initial velocities must keep every bar's length (relative velocity "
                         "of its ends perpendicular to it)");
     }

@@ -49,10 +49,11 @@ int StepCosts::Rk4StepsPerSdirk3Step() const {
 
 StepCosts EstimateStepCosts(int rhs_members, int coordinates, const SdirkCounts& newton) {
   const double rhs = kRhsNsPerMember * rhs_members + kRhsNsPerCoordinate * coordinates;
-  const double iteration =
-      rhs + kSolveNsPerNonzero * newton.factor_nonzeros + kVectorNsPerCoordinate * coordinates + kIterationNs;
+  const double iteration = rhs + kSolveNsPerNonzero * newton.factor_nonzeros +
+                           kVectorNsPerCoordinate * coordinates + kIterationNs;
   const double iterations =
-      kNewtonIterationsSmall * std::max(1.0, std::pow(coordinates / kNewtonCoordinatesSmall, kNewtonGrowth));
+      kNewtonIterationsSmall *
+      std::max(1.0, std::pow(coordinates / kNewtonCoordinatesSmall, kNewtonGrowth));
   const double refresh = newton.refresh_evaluations * rhs + kFactorNsPerFlop * newton.factor_flops;
   StepCosts c;
   c.rk4_ns = 4 * rhs;
@@ -74,7 +75,8 @@ EngineKind EngineFor(const DynamicModel& model, const DynamicsConfig& config) {
   return k > 1 ? EngineKind::kClassK : EngineKind::kClass1;
 }
 
-IntegratorChoice ResolveIntegrator(IntegratorKind requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y,
+IntegratorChoice ResolveIntegrator(IntegratorKind requested, double dt, OdeSystem& ode,
+                                   const Eigen::VectorXd& y,
                                    const std::function<StepCosts()>& costs) {
   if (requested != IntegratorKind::kAuto) return {requested, 1};
   const double stable = AutoRk4Step(ode, y);

@@ -48,7 +48,8 @@ struct IntegratorChoice {
 //   (m <= costs().Rk4StepsPerSdirk3Step(), asked only here): RK4 with m sub-steps per step;
 // - else SDIRK3 at dt, which damps what it does not resolve.
 // Any other request is returned as it is, with one sub-step.
-IntegratorChoice ResolveIntegrator(IntegratorKind requested, double dt, OdeSystem& ode, const Eigen::VectorXd& y,
+IntegratorChoice ResolveIntegrator(IntegratorKind requested, double dt, OdeSystem& ode,
+                                   const Eigen::VectorXd& y,
                                    const std::function<StepCosts()>& costs);
 
 // The largest RK4 step that is stable for a run of `config` on `model` at its start:

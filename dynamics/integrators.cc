@@ -106,7 +106,8 @@ double Dopri5::Step(OdeSystem& system, double& t, Eigen::VectorXd& y, double& h,
     double sum = 0;
     const Eigen::Index n = y.size();
     for (Eigen::Index i = 0; i < n; ++i) {
-      const double scale = options_.atol + options_.rtol * std::max(std::abs(y[i]), std::abs(ws.y_new[i]));
+      const double scale =
+          options_.atol + options_.rtol * std::max(std::abs(y[i]), std::abs(ws.y_new[i]));
       const double r = ws.stage[i] / scale;
       sum += r * r;
     }
@@ -123,7 +124,8 @@ double Dopri5::Step(OdeSystem& system, double& t, Eigen::VectorXd& y, double& h,
       t = (step == t_end - t) ? t_end : t + step;
       y.swap(ws.y_new);
       k[0].swap(k[6]);  // FSAL
-      last_dissipated_ = step * (a71 * power_[0] + a73 * power_[2] + a74 * power_[3] + a75 * power_[4] + a76 * power_[5]);
+      last_dissipated_ = step * (a71 * power_[0] + a73 * power_[2] + a74 * power_[3] +
+                                 a75 * power_[4] + a76 * power_[5]);
       power_[0] = power_[6];
       ++accepted_;
       const double fac = err > 0 ? options_.safety * std::pow(err, -0.2) : options_.fac_max;
@@ -133,11 +135,12 @@ double Dopri5::Step(OdeSystem& system, double& t, Eigen::VectorXd& y, double& h,
     ++rejected_;
     if (++failures > options_.max_rejections) {
       std::ostringstream msg;
-      msg << "dopri5: " << failures << " rejected steps in a row at t = " << t
-          << " s (last error " << err << "); the run blew up or the tolerances are too tight";
+      msg << "dopri5: " << failures << " rejected steps in a row at t = " << t << " s (last error "
+          << err << "); the run blew up or the tolerances are too tight";
       throw ModelError(msg.str());
     }
-    const double fac = std::isfinite(err) ? options_.safety * std::pow(err, -0.2) : options_.fac_min;
+    const double fac =
+        std::isfinite(err) ? options_.safety * std::pow(err, -0.2) : options_.fac_min;
     h = step * std::clamp(fac, options_.fac_min, 1.0);
   }
 }
@@ -145,9 +148,9 @@ double Dopri5::Step(OdeSystem& system, double& t, Eigen::VectorXd& y, double& h,
 void Dopri5::Interpolate(double t_out, const Dopri5Workspace& ws, Eigen::VectorXd& out) const {
   const double theta = h_last_ > 0 ? (t_out - t_old_) / h_last_ : 1.0;
   const double theta1 = 1.0 - theta;
-  out = ws.dense[0] +
-        theta * (ws.dense[1] +
-                 theta1 * (ws.dense[2] + theta * (ws.dense[3] + theta1 * ws.dense[4])));
+  out =
+      ws.dense[0] +
+      theta * (ws.dense[1] + theta1 * (ws.dense[2] + theta * (ws.dense[3] + theta1 * ws.dense[4])));
 }
 
 }  // namespace tbridge

@@ -39,12 +39,12 @@ void Rk4FirstStage(OdeSystem& system, double t, const Eigen::VectorXd& y, Rk4Wor
 double Rk4FinishStep(OdeSystem& system, double t, double h, Eigen::VectorXd& y, Rk4Workspace& ws);
 
 struct Dopri5Options {
-  double rtol = 1e-8;       // relative tolerance [-]
-  double atol = 1e-10;      // absolute tolerance [units of y]
-  double h_min = 1e-14;     // smallest step before giving up [s]
-  double h_max = 0;         // largest step [s]; 0 = no limit
-  double safety = 0.9;      // step-size safety factor
-  double fac_min = 0.2;     // bounds on the step change per attempt
+  double rtol = 1e-8;    // relative tolerance [-]
+  double atol = 1e-10;   // absolute tolerance [units of y]
+  double h_min = 1e-14;  // smallest step before giving up [s]
+  double h_max = 0;      // largest step [s]; 0 = no limit
+  double safety = 0.9;   // step-size safety factor
+  double fac_min = 0.2;  // bounds on the step change per attempt
   double fac_max = 5.0;
   int max_rejections = 50;  // consecutive rejected attempts before giving up
 };

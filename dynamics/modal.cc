@@ -75,8 +75,8 @@ std::vector<BarGroup> GroupBars(const DynamicModel& model, const std::vector<int
 
 // The group's bar force directions on its DOFs: column c is bar c's constraint row transposed
 // (G^T restricted to the group). `local` is scratch of n_dof entries, -1 on entry and exit.
-Eigen::MatrixXd GroupJacobianT(const DynamicModel& model, const BarGroup& group, const std::vector<int>& first_dof,
-                               std::vector<int>& local) {
+Eigen::MatrixXd GroupJacobianT(const DynamicModel& model, const BarGroup& group,
+                               const std::vector<int>& first_dof, std::vector<int>& local) {
   const int dim = model.dim;
   for (size_t r = 0; r < group.dofs.size(); ++r) local[group.dofs[r]] = static_cast<int>(r);
   Eigen::MatrixXd gt = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(group.dofs.size()),
@@ -93,7 +93,8 @@ Eigen::MatrixXd GroupJacobianT(const DynamicModel& model, const BarGroup& group,
 
 std::vector<int> FirstDofs(const LinearisedSystem& sys, int n_n) {
   std::vector<int> first_dof(n_n, -1);
-  for (int r = static_cast<int>(sys.dof_node.size()) - 1; r >= 0; --r) first_dof[sys.dof_node[r]] = r;
+  for (int r = static_cast<int>(sys.dof_node.size()) - 1; r >= 0; --r)
+    first_dof[sys.dof_node[r]] = r;
   return first_dof;
 }
 
@@ -154,14 +155,16 @@ void DenseModes(const DynamicModel& model, const LinearisedSystem& sys, const Mo
     throw ModelError(kMasslessMessage);
   }
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k_red, m_red);
-  if (eig.info() != Eigen::Success) throw ModelError("modal analysis: the eigensolver did not converge");
+  if (eig.info() != Eigen::Success)
+    throw ModelError("modal analysis: the eigensolver did not converge");
 
   const int kept = options.count > 0 ? std::min(options.count, n_red) : n_red;
   result.all_modes = kept == n_red;
   result.modes.reserve(kept);
   // The solver normalises y^T M_red y = 1; Z is orthonormal so x = Z y keeps x^T M x = 1.
   for (int r = 0; r < kept; ++r) {
-    result.modes.push_back(MakeMode(eig.eigenvalues()(r), z * eig.eigenvectors().col(r), sys, model.num_nodes()));
+    result.modes.push_back(
+        MakeMode(eig.eigenvalues()(r), z * eig.eigenvectors().col(r), sys, model.num_nodes()));
   }
   Mode top;
   SetOmega(eig.eigenvalues()(n_red - 1), top);
@@ -171,8 +174,8 @@ void DenseModes(const DynamicModel& model, const LinearisedSystem& sys, const Mo
 // The lowest options.count modes by Spectra on the block-wise null space of the bar groups
 // (see the header for why). Falls back to DenseModes when the count is too close to the
 // number of modes for a Lanczos basis.
-void SparseModes(const DynamicModel& model, const LinearisedSystem& sys, const ModalOptions& options,
-                 ModalResult& result) {
+void SparseModes(const DynamicModel& model, const LinearisedSystem& sys,
+                 const ModalOptions& options, ModalResult& result) {
   const int n_dof = static_cast<int>(sys.mass.rows());
   const std::vector<int> first_dof = FirstDofs(sys, model.num_nodes());
   const std::vector<BarGroup> groups = GroupBars(model, first_dof);
@@ -243,19 +246,22 @@ void SparseModes(const DynamicModel& model, const LinearisedSystem& sys, const M
   Eigen::VectorXd w2;
   Eigen::MatrixXd y;
   try {
-    Spectra::SymGEigsShiftSolver<ShiftOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(shift_op, mass_op, count, ncv,
-                                                                                        sigma);
+    Spectra::SymGEigsShiftSolver<ShiftOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
+        shift_op, mass_op, count, ncv, sigma);
     eigs.init();
-    eigs.compute(Spectra::SortRule::LargestMagn, 1000, options.tolerance, Spectra::SortRule::SmallestAlge);
+    eigs.compute(Spectra::SortRule::LargestMagn, 1000, options.tolerance,
+                 Spectra::SortRule::SmallestAlge);
     if (eigs.info() != Spectra::CompInfo::Successful) {
-      throw ModelError("modal analysis: the sparse eigensolver did not converge to " + std::to_string(count) +
-                       " modes");
+      throw ModelError("modal analysis: the sparse eigensolver did not converge to " +
+                       std::to_string(count) + " modes");
     }
     w2 = eigs.eigenvalues();
     y = eigs.eigenvectors();
     result.iterations = static_cast<int>(eigs.num_iterations());
   } catch (const std::invalid_argument& e) {
-    throw ModelError(std::string("modal analysis: the shifted stiffness is singular (a mechanism): ") + e.what());
+    throw ModelError(
+        std::string("modal analysis: the shifted stiffness is singular (a mechanism): ") +
+        e.what());
   }
   std::vector<int> order(w2.size());
   for (size_t r = 0; r < order.size(); ++r) order[r] = static_cast<int>(r);
@@ -274,12 +280,13 @@ void SparseModes(const DynamicModel& model, const LinearisedSystem& sys, const M
     using CholeskyOp = Spectra::SparseCholesky<double>;
     StiffnessOp stiffness_op(k_red);
     CholeskyOp cholesky_op(m_red);
-    Spectra::SymGEigsSolver<StiffnessOp, CholeskyOp, Spectra::GEigsMode::Cholesky> top(stiffness_op, cholesky_op, 1,
-                                                                                      std::min(n_red, 20));
+    Spectra::SymGEigsSolver<StiffnessOp, CholeskyOp, Spectra::GEigsMode::Cholesky> top(
+        stiffness_op, cholesky_op, 1, std::min(n_red, 20));
     top.init();
     top.compute(Spectra::SortRule::LargestAlge, 1000, options.highest_tolerance);
     if (top.info() != Spectra::CompInfo::Successful) {
-      throw ModelError("modal analysis: the sparse eigensolver did not converge to the highest mode");
+      throw ModelError(
+          "modal analysis: the sparse eigensolver did not converge to the highest mode");
     }
     Mode highest;
     SetOmega(top.eigenvalues()(0), highest);
@@ -334,7 +341,8 @@ LinearisedSystem Linearise(const DynamicModel& model) {
   // node i along -b. The same columns, transposed, are the constraint rows d(b.b/2)/dx.
   for (int k = 0; k < n_b; ++k) {
     const DynamicBar& bar = model.bars[k];
-    AddBarRow(k, bar.i, bar.j, model.positions.col(bar.j) - model.positions.col(bar.i), first_dof, dim, constraints);
+    AddBarRow(k, bar.i, bar.j, model.positions.col(bar.j) - model.positions.col(bar.i), first_dof,
+              dim, constraints);
   }
   sys.constraints.resize(n_b, n_dof);
   sys.constraints.setFromTriplets(constraints.begin(), constraints.end());
@@ -350,9 +358,11 @@ LinearisedSystem Linearise(const DynamicModel& model) {
       Eigen::VectorXd f_group(gt.rows());
       for (Eigen::Index r = 0; r < gt.rows(); ++r) f_group(r) = f(group.dofs[r]);
       const Eigen::VectorXd lambda = gt.completeOrthogonalDecomposition().solve(-f_group);
-      for (size_t c = 0; c < group.bars.size(); ++c) sys.bar_force_density(group.bars[c]) = lambda(c);
+      for (size_t c = 0; c < group.bars.size(); ++c)
+        sys.bar_force_density(group.bars[c]) = lambda(c);
     }
-    sys.equilibrium_residual = (f + sys.constraints.transpose() * sys.bar_force_density).cwiseAbs().maxCoeff();
+    sys.equilibrium_residual =
+        (f + sys.constraints.transpose() * sys.bar_force_density).cwiseAbs().maxCoeff();
   } else if (n_dof > 0) {
     sys.equilibrium_residual = f.cwiseAbs().maxCoeff();
   }
@@ -375,7 +385,8 @@ LinearisedSystem Linearise(const DynamicModel& model) {
   if (model.node_mass.size() != 0) {
     for (int a = 0; a < n_n; ++a) {
       if (first_dof[a] < 0) continue;
-      for (int d = 0; d < dim; ++d) mass.emplace_back(first_dof[a] + d, first_dof[a] + d, model.node_mass(a));
+      for (int d = 0; d < dim; ++d)
+        mass.emplace_back(first_dof[a] + d, first_dof[a] + d, model.node_mass(a));
     }
   }
   sys.stiffness.resize(n_dof, n_dof);
@@ -417,9 +428,12 @@ double Rk4StableStep(const ModalResult& result) {
 
 const char* SymmetryName(ModeSymmetry symmetry) {
   switch (symmetry) {
-    case ModeSymmetry::kSymmetric: return "symmetric";
-    case ModeSymmetry::kAntisymmetric: return "antisymmetric";
-    case ModeSymmetry::kMixed: return "mixed";
+    case ModeSymmetry::kSymmetric:
+      return "symmetric";
+    case ModeSymmetry::kAntisymmetric:
+      return "antisymmetric";
+    case ModeSymmetry::kMixed:
+      return "mixed";
   }
   return "mixed";
 }
@@ -434,32 +448,37 @@ std::vector<int> MirrorNodes(const Eigen::Matrix3Xd& positions) {
   // Nodes by x: a node's mirror lies among those within tol of its mirrored x.
   std::vector<int> by_x(n_n);
   for (int a = 0; a < n_n; ++a) by_x[a] = a;
-  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return positions(0, a) < positions(0, b); });
+  std::sort(by_x.begin(), by_x.end(),
+            [&](int a, int b) { return positions(0, a) < positions(0, b); });
   for (int a = 0; a < n_n; ++a) {
     Eigen::Vector3d mirrored = positions.col(a);
     mirrored.x() = 2 * mid - mirrored.x();
     auto it = std::lower_bound(by_x.begin(), by_x.end(), mirrored.x() - tol,
                                [&](int b, double x) { return positions(0, b) < x; });
     for (; it != by_x.end() && positions(0, *it) <= mirrored.x() + tol; ++it) {
-      if ((positions.col(*it) - mirrored).cwiseAbs().maxCoeff() <= tol && (mirror[a] < 0 || *it < mirror[a])) {
+      if ((positions.col(*it) - mirrored).cwiseAbs().maxCoeff() <= tol &&
+          (mirror[a] < 0 || *it < mirror[a])) {
         mirror[a] = *it;
       }
     }
     if (mirror[a] < 0) {
-      throw ModelError("mode symmetry: node " + std::to_string(a + 1) + " has no mirror node about x = " +
-                       std::to_string(mid));
+      throw ModelError("mode symmetry: node " + std::to_string(a + 1) +
+                       " has no mirror node about x = " + std::to_string(mid));
     }
   }
   return mirror;
 }
 
-SymmetryReport ClassifySymmetry(const std::vector<int>& mirror, const Eigen::Matrix3Xd& shape, double tolerance) {
+SymmetryReport ClassifySymmetry(const std::vector<int>& mirror, const Eigen::Matrix3Xd& shape,
+                                double tolerance) {
   const int n_n = static_cast<int>(mirror.size());
-  if (shape.cols() != n_n) throw ModelError("mode symmetry: shape and mirror map differ in node count");
+  if (shape.cols() != n_n)
+    throw ModelError("mode symmetry: shape and mirror map differ in node count");
   SymmetryReport report;
   double dot = 0, norm = 0;
   for (int a = 0; a < n_n; ++a) {
-    if (mirror[a] < 0 || mirror[a] >= n_n) throw ModelError("mode symmetry: the mirror map names no node");
+    if (mirror[a] < 0 || mirror[a] >= n_n)
+      throw ModelError("mode symmetry: the mirror map names no node");
     Eigen::Vector3d image = shape.col(mirror[a]);
     image.x() = -image.x();
     dot += shape.col(a).dot(image);
@@ -474,7 +493,8 @@ SymmetryReport ClassifySymmetry(const std::vector<int>& mirror, const Eigen::Mat
 
 SymmetryReport ClassifySymmetry(const Eigen::Matrix3Xd& positions, const Eigen::Matrix3Xd& shape,
                                 double tolerance) {
-  if (shape.cols() != positions.cols()) throw ModelError("mode symmetry: shape and positions differ in node count");
+  if (shape.cols() != positions.cols())
+    throw ModelError("mode symmetry: shape and positions differ in node count");
   return ClassifySymmetry(MirrorNodes(positions), shape, tolerance);
 }
 

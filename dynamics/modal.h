@@ -91,16 +91,16 @@ struct Mode {
 };
 
 struct ModalResult {
-  std::vector<Mode> modes;        // ascending omega^2: every mode, or the lowest options.count
-  bool all_modes = true;          // modes holds every mode of the constrained system
-  int total_modes = 0;            // free_dofs - constraints
+  std::vector<Mode> modes;  // ascending omega^2: every mode, or the lowest options.count
+  bool all_modes = true;    // modes holds every mode of the constrained system
+  int total_modes = 0;      // free_dofs - constraints
   // The highest mode's omega [rad/s] (modes.back() when all_modes); 0 when the sparse solver
   // was not asked for it (ModalOptions::highest = false) or there are no modes.
   double highest_omega_rad_s = 0;
-  std::string solver;             // "dense" | "sparse" ("" when there is no mode)
-  int iterations = 0;             // Lanczos restarts of the sparse solver (lowest modes); 0 dense
-  int free_dofs = 0;              // dim x free nodes
-  int constraints = 0;            // independent bar-length constraints removed
+  std::string solver;   // "dense" | "sparse" ("" when there is no mode)
+  int iterations = 0;   // Lanczos restarts of the sparse solver (lowest modes); 0 dense
+  int free_dofs = 0;    // dim x free nodes
+  int constraints = 0;  // independent bar-length constraints removed
   Eigen::VectorXd bar_force_density;  // lambda per bar, > 0 in compression [N/m]
   Eigen::VectorXd string_tension;     // T = k (s - L0), 0 when slack [N]
   int slack_strings = 0;              // strings with s < L0 at the model's positions
@@ -114,8 +114,8 @@ struct LinearisedSystem {
   Eigen::SparseMatrix<double> stiffness;    // n_dof x n_dof [N/m]
   Eigen::SparseMatrix<double> mass;         // n_dof x n_dof [kg]
   Eigen::SparseMatrix<double> constraints;  // n_b x n_dof, row k = d(b_k . b_k / 2)/dx [m]
-  std::vector<int> dof_node;    // node index of each DOF
-  std::vector<int> dof_axis;    // coordinate (0 x, 1 y, 2 z) of each DOF
+  std::vector<int> dof_node;                // node index of each DOF
+  std::vector<int> dof_axis;                // coordinate (0 x, 1 y, 2 z) of each DOF
   Eigen::VectorXd bar_force_density;
   Eigen::VectorXd string_tension;
   int slack_strings = 0;

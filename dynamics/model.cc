@@ -36,9 +36,9 @@ void CheckModel(const DynamicModel& m, const std::string& where) {
     if (size != b.size()) fail("the bar columns differ in length");
   }
   const StringColumns& s = m.strings;
-  for (const std::size_t size : {s.j.size(), s.rest_length.size(), s.stiffness.size(), s.damping.size(),
-                                 s.mass.size(), s.area.size(), m.names.string_name.size(),
-                                 m.names.string_group.size()}) {
+  for (const std::size_t size :
+       {s.j.size(), s.rest_length.size(), s.stiffness.size(), s.damping.size(), s.mass.size(),
+        s.area.size(), m.names.string_name.size(), m.names.string_group.size()}) {
     if (size != s.size()) fail("the string columns or names differ in length");
   }
   const auto member = [&](const char* kind, int i, int j) {
@@ -51,12 +51,15 @@ void CheckModel(const DynamicModel& m, const std::string& where) {
   };
   for (std::size_t k = 0; k < b.size(); ++k) {
     ends("bar", b.i[k], b.j[k]);
-    if (!(b.mass[k] >= 0 && b.length[k] > 0)) fail(member("bar", b.i[k], b.j[k]) + " needs mass >= 0 and length > 0");
+    if (!(b.mass[k] >= 0 && b.length[k] > 0))
+      fail(member("bar", b.i[k], b.j[k]) + " needs mass >= 0 and length > 0");
   }
   for (std::size_t k = 0; k < s.size(); ++k) {
     ends("string", s.i[k], s.j[k]);
-    if (!(s.rest_length[k] > 0 && s.stiffness[k] >= 0 && s.damping[k] >= 0 && s.mass[k] >= 0 && s.area[k] >= 0)) {
-      fail(member("string", s.i[k], s.j[k]) + " needs L0 > 0, k >= 0, c >= 0, mass >= 0 and area >= 0");
+    if (!(s.rest_length[k] > 0 && s.stiffness[k] >= 0 && s.damping[k] >= 0 && s.mass[k] >= 0 &&
+          s.area[k] >= 0)) {
+      fail(member("string", s.i[k], s.j[k]) +
+           " needs L0 > 0, k >= 0, c >= 0, mass >= 0 and area >= 0");
     }
   }
 }

@@ -12,24 +12,23 @@
 
 #include "core/dynamics_choices.h"
 
-
 namespace tbridge {
 
 // One bar as the code past the model reads it (a row of BarColumns).
 struct DynamicBar {
-  int i = 0, j = 0;    // 0-based end nodes; bar vector b = n_j - n_i
-  double mass = 0;     // bar mass plus its share of string mass (kOnBars) [kg]
-  double length = 0;   // l, held constant [m]
+  int i = 0, j = 0;   // 0-based end nodes; bar vector b = n_j - n_i
+  double mass = 0;    // bar mass plus its share of string mass (kOnBars) [kg]
+  double length = 0;  // l, held constant [m]
 };
 
 // One string as the code past the model reads it (a row of StringColumns).
 struct DynamicString {
-  int i = 0, j = 0;          // 0-based end nodes
-  double rest_length = 0;    // L0 [m]
-  double stiffness = 0;      // k = E A / L0 [N/m]
-  double damping = 0;        // c [N s/m]; force density term c (s . s_dot) / s^2
-  double mass = 0;           // rho A L0 [kg]
-  double area = 0;           // A [m^2], for stress reports; 0 when unknown (no stress)
+  int i = 0, j = 0;        // 0-based end nodes
+  double rest_length = 0;  // L0 [m]
+  double stiffness = 0;    // k = E A / L0 [N/m]
+  double damping = 0;      // c [N s/m]; force density term c (s . s_dot) / s^2
+  double mass = 0;         // rho A L0 [kg]
+  double area = 0;         // A [m^2], for stress reports; 0 when unknown (no stress)
 };
 
 // Iterates a column table row by row, each row a value (Row) read from the columns.
@@ -104,20 +103,20 @@ struct MemberNames {
 };
 
 struct DynamicModel {
-  int dim = 2;                        // 2: motion in the x-y plane; 3: full 3D
-  Eigen::Matrix3Xd positions;         // equilibrium node positions N0 (3 x n_n) [m]
-  std::vector<bool> fixed;            // pinned nodes are prescribed, not integrated
+  int dim = 2;                 // 2: motion in the x-y plane; 3: full 3D
+  Eigen::Matrix3Xd positions;  // equilibrium node positions N0 (3 x n_n) [m]
+  std::vector<bool> fixed;     // pinned nodes are prescribed, not integrated
   BarColumns bars;
   StringColumns strings;
-  MemberNames names;                  // side table of the strings, for reports only
-  Eigen::VectorXd node_mass;          // point masses at nodes [kg] (kAtNodes, free string nodes)
-  Eigen::Matrix3Xd loads;             // constant external node loads W [N]
-  double allowed_stress = 0;          // the strings' sigma_w [Pa], for stress reports
-  double youngs_modulus = 0;          // the strings' E [Pa], for stress reports
-  int tensegrity_class = 1;           // max bars at a node
-  std::vector<int> deck_nodes;        // free deck nodes (0-based, in order of x), for the
-                                      // deck measurement of SPEC.md §9; may be empty
-  double gravity = 9.81;              // g [m/s^2] used when gravity acts on the structure
+  MemberNames names;            // side table of the strings, for reports only
+  Eigen::VectorXd node_mass;    // point masses at nodes [kg] (kAtNodes, free string nodes)
+  Eigen::Matrix3Xd loads;       // constant external node loads W [N]
+  double allowed_stress = 0;    // the strings' sigma_w [Pa], for stress reports
+  double youngs_modulus = 0;    // the strings' E [Pa], for stress reports
+  int tensegrity_class = 1;     // max bars at a node
+  std::vector<int> deck_nodes;  // free deck nodes (0-based, in order of x), for the
+                                // deck measurement of SPEC.md §9; may be empty
+  double gravity = 9.81;        // g [m/s^2] used when gravity acts on the structure
   // alpha [1/s] of mass-proportional (Rayleigh) damping C = alpha M: every mode of frequency
   // omega is damped at alpha / (2 omega) of critical, so alpha = 2 xi omega gives one mode the
   // damping ratio xi exactly (the comfort check's time-history run). 0: none.
@@ -136,10 +135,10 @@ struct DynamicModel {
 };
 
 // Throws ModelError, prefixed by `where`, unless `model` is consistent: dim 2 or 3; fixed,
-// node_mass (>= 0) and loads sized for its nodes; every column and name sized for its members; every
-// member joining two distinct nodes in range; bars with mass >= 0 and length > 0; strings with
-// L0 > 0, k >= 0, c >= 0, mass >= 0 and area >= 0. The one check of a model: the builders,
-// the engines and the modal analysis call it.
+// node_mass (>= 0) and loads sized for its nodes; every column and name sized for its members;
+// every member joining two distinct nodes in range; bars with mass >= 0 and length > 0; strings
+// with L0 > 0, k >= 0, c >= 0, mass >= 0 and area >= 0. The one check of a model: the builders, the
+// engines and the modal analysis call it.
 void CheckModel(const DynamicModel& model, const std::string& where);
 
 // Rest length = ratio x stretched (design) length for every string of `group`, with
@@ -154,7 +153,7 @@ struct ModelOptions {
   double damping = 0;                      // c for every string [N s/m], >= 0
   std::vector<StringPrestrain> prestrain;  // at most one entry per group
   bool gravity_on_structure = false;       // add -m g (y) of bars and node masses to the loads
-  bool deck_inertia = false;               // deck beams (and payload in the loads) as deck-node masses
+  bool deck_inertia = false;  // deck beams (and payload in the loads) as deck-node masses
   // The share of a designed bridge's payload the model carries as load and, with deck_inertia,
   // as mass (bridge/design_model.h): 1 for a run under the design loads; the comfort check
   // puts the pedestrians' weight there instead (0 for the empty deck).
@@ -165,11 +164,11 @@ struct ModelOptions {
 struct PrestrainReport {
   std::string group;
   double ratio = 1.0;
-  int strings = 0;              // strings in the group
-  double max_stress = 0;        // [Pa], over the group's strings
-  double allowed_stress = 0;    // sigma_w [Pa]
-  double yield_stress = 0;      // [Pa]
-  bool exceeds_allowed = false; // max_stress > allowed_stress
+  int strings = 0;               // strings in the group
+  double max_stress = 0;         // [Pa], over the group's strings
+  double allowed_stress = 0;     // sigma_w [Pa]
+  double yield_stress = 0;       // [Pa]
+  bool exceeds_allowed = false;  // max_stress > allowed_stress
 };
 
 // Shares the mass of every string of `model` out as BuildDynamicModel describes for `mode`

@@ -8,7 +8,8 @@
 
 namespace tbridge {
 
-NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& timed, const char* engine)
+NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& timed,
+                     const char* engine)
     : dim_(model.dim) {
   const int n_n = model.num_nodes();
   constant_ = Eigen::VectorXd::Zero(dim_ * n_n);
@@ -19,10 +20,15 @@ NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& ti
   }
   for (const TimedLoad& l : timed) {
     if (l.node < 0 || l.node >= n_n) {
-      throw ModelError(std::string(engine) + ": a timed load names node " + std::to_string(l.node + 1) +
-                       " out of range");
+      throw ModelError(std::string(engine) + ": a timed load names node " +
+                       std::to_string(l.node + 1) + " out of range");
     }
-    timed_.push_back({l.t_start, l.t_end, l.rise_s, l.fall_s, l.omega_rad_s, l.node * dim_,
+    timed_.push_back({l.t_start,
+                      l.t_end,
+                      l.rise_s,
+                      l.fall_s,
+                      l.omega_rad_s,
+                      l.node * dim_,
                       {l.force.x(), l.force.y(), l.force.z()}});
   }
 }
@@ -45,7 +51,8 @@ std::vector<PackedString> PackStrings(const DynamicModel& model, bool& damped) {
   for (size_t k = 0; k < model.strings.size(); ++k) {
     const DynamicString s = model.strings[k];
     if (model.fixed[s.i] && model.fixed[s.j]) continue;  // moves nothing
-    out.push_back({s.i * dim, s.j * dim, s.stiffness, s.stiffness * s.rest_length, s.damping, static_cast<int>(k)});
+    out.push_back({s.i * dim, s.j * dim, s.stiffness, s.stiffness * s.rest_length, s.damping,
+                   static_cast<int>(k)});
     damped = damped || s.damping > 0;
   }
   return out;

@@ -86,8 +86,9 @@ std::vector<PackedString> PackStrings(const DynamicModel& model, bool& damped);
 // CAUTION: performance-sensitive (inlined into the engines' loops).
 // With Record, each string's geometry also goes to `record` (its rate only when Damped).
 template <int D, bool Damped, bool Record = false>
-inline double AccumulateStringForces(const std::vector<PackedString>& strings, const double* x, const double* v,
-                                     double* f, [[maybe_unused]] const StringGeometry* record = nullptr) {
+inline double AccumulateStringForces(const std::vector<PackedString>& strings, const double* x,
+                                     const double* v, double* f,
+                                     [[maybe_unused]] const StringGeometry* record = nullptr) {
   [[maybe_unused]] double power = 0;
   for (const PackedString& s : strings) {
     double dx[D];

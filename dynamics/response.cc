@@ -73,7 +73,8 @@ void Fft(std::vector<std::complex<double>>& data) {
   }
 }
 
-Spectrum AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt, const SpectrumOptions& options) {
+Spectrum AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt,
+                           const SpectrumOptions& options) {
   CheckSignal(signal, dt, 2);
   if (options.padding < 1) throw std::invalid_argument("spectrum: padding must be >= 1");
   const Eigen::Index n = signal.size();
@@ -84,7 +85,8 @@ Spectrum AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt, const Spect
   double gain = 0;
   for (Eigen::Index k = 0; k < n; ++k) {
     // Symmetric Hann: both ends of the record taper to zero.
-    const double w = options.hann ? 0.5 - 0.5 * std::cos(kTwoPi * k / static_cast<double>(n - 1)) : 1.0;
+    const double w =
+        options.hann ? 0.5 - 0.5 * std::cos(kTwoPi * k / static_cast<double>(n - 1)) : 1.0;
     data[k] = w * (signal(k) - mean);
     gain += w;
   }
@@ -100,7 +102,8 @@ Spectrum AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt, const Spect
   return s;
 }
 
-FrequencyEstimate DominantFrequency(const Eigen::VectorXd& signal, double dt, const SpectrumOptions& options) {
+FrequencyEstimate DominantFrequency(const Eigen::VectorXd& signal, double dt,
+                                    const SpectrumOptions& options) {
   const Spectrum s = AmplitudeSpectrum(signal, dt, options);
   const double nyquist = 0.5 / dt;
   const double max_hz = options.max_hz > 0 ? std::min(options.max_hz, nyquist) : nyquist;
@@ -110,8 +113,10 @@ FrequencyEstimate DominantFrequency(const Eigen::VectorXd& signal, double dt, co
     if (f <= options.min_hz || f > max_hz) continue;
     if (best < 0 || s.amplitude(k) > s.amplitude(best)) best = k;
   }
-  if (best < 0) throw std::invalid_argument("dominant frequency: the search band holds no frequency");
-  if (s.amplitude(best) == 0) throw std::invalid_argument("dominant frequency: the signal is constant");
+  if (best < 0)
+    throw std::invalid_argument("dominant frequency: the search band holds no frequency");
+  if (s.amplitude(best) == 0)
+    throw std::invalid_argument("dominant frequency: the signal is constant");
   const double record = static_cast<double>(signal.size()) * dt;
   FrequencyEstimate e = FromHz(s.frequency_hz(best));
   e.amplitude = s.amplitude(best);
@@ -122,7 +127,8 @@ FrequencyEstimate DominantFrequency(const Eigen::VectorXd& signal, double dt, co
     // Fit the centred record: with the mean left in, the constant dominates the explained sum
     // of squares and a small oscillation on a large offset loses its precision.
     const Eigen::VectorXd centred = signal.array() - signal.mean();
-    double lo = std::max(e.frequency_hz - half_width, 0.0), hi = std::min(e.frequency_hz + half_width, nyquist);
+    double lo = std::max(e.frequency_hz - half_width, 0.0),
+           hi = std::min(e.frequency_hz + half_width, nyquist);
     const double ratio = 0.5 * (std::sqrt(5.0) - 1);
     double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
     double fa = SinusoidFit(centred, dt, a).first, fb = SinusoidFit(centred, dt, b).first;
@@ -149,7 +155,8 @@ FrequencyEstimate DominantFrequency(const Eigen::VectorXd& signal, double dt, co
   return e;
 }
 
-FrequencyEstimate MeanPeriodFromCrossings(const Eigen::VectorXd& signal, double dt, const CrossingOptions& options) {
+FrequencyEstimate MeanPeriodFromCrossings(const Eigen::VectorXd& signal, double dt,
+                                          const CrossingOptions& options) {
   CheckSignal(signal, dt, 3);
   if (!(options.hysteresis >= 0)) throw std::invalid_argument("crossings: hysteresis must be >= 0");
   const Eigen::VectorXd y = signal.array() - signal.mean();
@@ -247,7 +254,8 @@ Eigen::Index SamplesWithin(Eigen::Index samples, double dt, double duration) {
   if (samples == 0) throw std::invalid_argument("deck frequency: no samples");
   if (!(duration > 0)) throw std::invalid_argument("deck frequency: duration must be > 0");
   if (!(dt > 0)) throw std::invalid_argument("deck frequency: dt must be > 0");
-  return std::min<Eigen::Index>(samples, static_cast<Eigen::Index>(std::floor(duration / dt * (1 + 1e-12))) + 1);
+  return std::min<Eigen::Index>(
+      samples, static_cast<Eigen::Index>(std::floor(duration / dt * (1 + 1e-12))) + 1);
 }
 
 Eigen::VectorXd DeckSignal(const Eigen::MatrixXd& deck_vertical, double dt, double duration) {

@@ -30,11 +30,11 @@ struct FrequencyEstimate {
 };
 
 struct SpectrumOptions {
-  int padding = 8;          // FFT length >= padding x samples (rounded up to a power of 2), >= 1
-  bool hann = true;         // Hann window for the peak search (lower leakage than rectangular)
-  bool refine = true;       // least-squares refinement; false returns the padded FFT grid peak
-  double min_hz = 0;        // search band [Hz]; frequencies at or below min_hz are skipped,
-  double max_hz = 0;        // and max_hz <= 0 means up to Nyquist 1/(2 dt)
+  int padding = 8;     // FFT length >= padding x samples (rounded up to a power of 2), >= 1
+  bool hann = true;    // Hann window for the peak search (lower leakage than rectangular)
+  bool refine = true;  // least-squares refinement; false returns the padded FFT grid peak
+  double min_hz = 0;   // search band [Hz]; frequencies at or below min_hz are skipped,
+  double max_hz = 0;   // and max_hz <= 0 means up to Nyquist 1/(2 dt)
 };
 
 struct Spectrum {
@@ -48,7 +48,8 @@ void Fft(std::vector<std::complex<double>>& data);
 
 // Amplitude spectrum of the mean-removed signal. Throws std::invalid_argument for fewer than
 // 2 samples, dt <= 0, padding < 1 or non-finite samples.
-Spectrum AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt, const SpectrumOptions& options = {});
+Spectrum AmplitudeSpectrum(const Eigen::VectorXd& signal, double dt,
+                           const SpectrumOptions& options = {});
 
 // Dominant frequency of `signal` (see the top). Throws std::invalid_argument as above, for an
 // empty search band, or when the mean-removed signal is zero.
@@ -98,8 +99,8 @@ FrequencyReading MeasureFrequency(const Eigen::VectorXd& signal, double dt,
 // position, the mean is removed anyway), row k at t = k dt; the rows with t <= duration [s]
 // are summed across the nodes and passed to DominantFrequency. Throws std::invalid_argument
 // for an empty matrix, duration <= 0, or as DominantFrequency.
-FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt, double duration = 1.0,
-                                const SpectrumOptions& options = {});
+FrequencyEstimate DeckFrequency(const Eigen::MatrixXd& deck_vertical, double dt,
+                                double duration = 1.0, const SpectrumOptions& options = {});
 // The signal DeckFrequency measures: the rows with t <= duration, summed across the nodes.
 // `simulate` also passes it to MeanPeriodFromCrossings, the second estimate in its summary:
 // where the motion is periodic the two agree, where strings go slack they part. Throws

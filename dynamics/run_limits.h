@@ -20,7 +20,8 @@ struct RunEstimate {
   double extra_bytes = 0;    // records x the caller's bytes per record (e.g. the VTK export)
   double total_bytes() const { return history_bytes + deck_bytes + extra_bytes; }
 };
-RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record = 0);
+RunEstimate EstimateRun(const DynamicModel& model, const DynamicsConfig& config,
+                        double extra_bytes_per_record = 0);
 
 // Throws ConfigError naming dynamics.duration (with dt and the limit key) when the run needs
 // more steps than config.limits.max_steps. Only the fixed-step integrators are checked here;
@@ -31,6 +32,7 @@ void CheckStepLimit(const DynamicsConfig& config);
 // CheckStepLimit, then a ConfigError naming dynamics.duration when the run writes or holds
 // more bytes than config.limits.max_output_bytes (EstimateRun, with `extra_bytes_per_record`
 // for outputs the caller writes per record).
-void CheckRunLimits(const DynamicModel& model, const DynamicsConfig& config, double extra_bytes_per_record = 0);
+void CheckRunLimits(const DynamicModel& model, const DynamicsConfig& config,
+                    double extra_bytes_per_record = 0);
 
 }  // namespace tbridge

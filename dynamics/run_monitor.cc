@@ -12,9 +12,13 @@
 
 namespace tbridge {
 
-RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, const DynamicsConfig& config,
-                       const Eigen::VectorXd& y0, BarForceProbe probe)
-    : model_(model), engine_(engine), config_(config), dim_(model.dim), c_(engine.coordinates()),
+RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine,
+                       const DynamicsConfig& config, const Eigen::VectorXd& y0, BarForceProbe probe)
+    : model_(model),
+      engine_(engine),
+      config_(config),
+      dim_(model.dim),
+      c_(engine.coordinates()),
       probe_(std::move(probe)) {
   const size_t n_s = model.strings.size();
   StringArrays& st = strings_;
@@ -30,7 +34,8 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
     st.c.push_back(s.damping);
     st.inv_area.push_back(area > 0 ? 1.0 / area : 0.0);
   }
-  for (const DynamicBar& b : model.bars) bars_.push_back({b.i * dim_, b.j * dim_, 1.0 / (b.length * b.length)});
+  for (const DynamicBar& b : model.bars)
+    bars_.push_back({b.i * dim_, b.j * dim_, 1.0 / (b.length * b.length)});
   for (const int a : model.deck_nodes) {
     deck_offsets_.push_back(a * dim_);
     for (int d = 0; d < 3; ++d) deck_rest_.push_back(model.positions(d, a));
@@ -48,7 +53,8 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
   loads_dot_x0_ = loads_.dot(x0_);
   has_loads_ = loads_.cwiseAbs().maxCoeff() > 0;
   for (const LoadStepConfig& l : config.loads) {
-    TimedLoadState s{(l.node - 1) * dim_, l.t_start, l.t_end, l.rise_s, l.fall_s, {0, 0, 0}, {0, 0, 0}};
+    TimedLoadState s{(l.node - 1) * dim_, l.t_start, l.t_end, l.rise_s, l.fall_s,
+                     {0, 0, 0},           {0, 0, 0}};
     for (int d = 0; d < dim_; ++d) {
       s.force[d] = l.force[d];
       s.last[d] = x0_(s.o + d);
@@ -96,7 +102,7 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine, con
 }
 
 void RunMonitor::Accept(long step, double t_old, double t, const double* y, double dissipated,
-                         bool strings_recorded) {
+                        bool strings_recorded) {
   // The state's sum finds a NaN or an infinity anywhere in it (they propagate through it), and
   // the work of the constant loads is W . (x - x0), when there are any: Eigen's reductions,
   // which run in vector registers.
@@ -130,16 +136,18 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   e.final_drift = drift;
   e.max_drift = std::max(e.max_drift, std::abs(drift));
   if (bar_ratio_sq_max_ > bar_guard_hi_ || bar_ratio_sq_min_ < bar_guard_lo_) {
-    const double error = std::max(std::sqrt(bar_ratio_sq_max_) - 1.0, 1.0 - std::sqrt(bar_ratio_sq_min_));
+    const double error =
+        std::max(std::sqrt(bar_ratio_sq_max_) - 1.0, 1.0 - std::sqrt(bar_ratio_sq_min_));
     std::ostringstream what;
-    what << "the bar-length error " << error << " exceeds guard.max_bar_length_error = "
-         << config_.guard.max_bar_length_error;
+    what << "the bar-length error " << error
+         << " exceeds guard.max_bar_length_error = " << config_.guard.max_bar_length_error;
     Fail(step, t, what.str());
   }
   if (drift > config_.guard.max_energy_growth) {
     std::ostringstream what;
-    what << "the energy grew by " << drift << " of its initial value (guard.max_energy_growth = "
-         << config_.guard.max_energy_growth << ")";
+    what << "the energy grew by " << drift
+         << " of its initial value (guard.max_energy_growth = " << config_.guard.max_energy_growth
+         << ")";
     Fail(step, t, what.str());
   }
 }
@@ -236,8 +244,8 @@ void RunMonitor::MeasureBars(const double* x) {
   bar_ratio_sq_max_ = hi;
 }
 
-void RunMonitor::Measure(double t, double load_time, const double* y, bool strings_recorded, double& kinetic,
-                         double& elastic) {
+void RunMonitor::Measure(double t, double load_time, const double* y, bool strings_recorded,
+                         double& kinetic, double& elastic) {
   const bool damped = engine_.damped();
   if (!strings_recorded) {
     if (dim_ == 2) {
@@ -251,7 +259,9 @@ void RunMonitor::Measure(double t, double load_time, const double* y, bool strin
   // The deck's peak displacement in each direction: the largest over the deck nodes, and the
   // first node with it only when that beats the peak so far (no branch per node).
   const size_t n_deck = deck_offsets_.size();
-  const auto displacement = [&](size_t n, int d) { return std::abs(y[deck_offsets_[n] + d] - deck_rest_[3 * n + d]); };
+  const auto displacement = [&](size_t n, int d) {
+    return std::abs(y[deck_offsets_[n] + d] - deck_rest_[3 * n + d]);
+  };
   for (int d = 0; d < dim_; ++d) {
     double largest = 0;
     for (size_t n = 0; n < n_deck; ++n) largest = std::max(largest, displacement(n, d));
@@ -266,7 +276,8 @@ void RunMonitor::Measure(double t, double load_time, const double* y, bool strin
   if (probe_) {
     probe_(load_time, y, lambda_);
     for (size_t k = 0; k < model_.bars.size(); ++k) {
-      const double force = lambda_(static_cast<Eigen::Index>(k)) * model_.bars[k].length;  // > 0: compression
+      const double force =
+          lambda_(static_cast<Eigen::Index>(k)) * model_.bars[k].length;  // > 0: compression
       double& peak = force >= 0 ? summary_.peak_bar_compression[k] : summary_.peak_bar_tension[k];
       peak = std::max(peak, std::abs(force));
     }
@@ -312,14 +323,16 @@ void RunMonitor::Finish() {
   }
   s.min_string_strain.resize(n_s);
   for (size_t k = 0; k < n_s; ++k) s.min_string_strain[k] = std::sqrt(min_ratio_sq_[k]) - 1.0;
-  s.max_bar_length_error = std::max(std::sqrt(bar_ratio_sq_max_) - 1.0, 1.0 - std::sqrt(bar_ratio_sq_min_));
+  s.max_bar_length_error =
+      std::max(std::sqrt(bar_ratio_sq_max_) - 1.0, 1.0 - std::sqrt(bar_ratio_sq_min_));
   if (max_stress_string_ >= 0) s.max_stress_string = model_.names.string_name[max_stress_string_];
   s.stress_exceeds_allowed = s.max_string_stress > s.allowed_stress;
 }
 
 void RunMonitor::Fail(long step, double t, const std::string& what) const {
   std::ostringstream msg;
-  msg << "the run blew up at step " << step << ", t = " << t << " s: " << what << ". Try a smaller dt";
+  msg << "the run blew up at step " << step << ", t = " << t << " s: " << what
+      << ". Try a smaller dt";
   // A safe dt from the highest linearised frequency: half RK4's limit 2 sqrt(2)/omega_max.
   double omega = 0;
   try {
@@ -329,8 +342,9 @@ void RunMonitor::Fail(long step, double t, const std::string& what) const {
   }
   const double safe = 0.5 * Rk4StepLimit(omega);
   if (omega > 0 && safe < config_.dt) {
-    msg << ": the highest linearised frequency " << omega << " rad/s makes RK4 stable only below " << 2 * safe
-        << " s, so dt = " << safe << " s is safe (or integrator \"sdirk3\" keeps this dt)";
+    msg << ": the highest linearised frequency " << omega << " rad/s makes RK4 stable only below "
+        << 2 * safe << " s, so dt = " << safe
+        << " s is safe (or integrator \"sdirk3\" keeps this dt)";
   } else {
     msg << " (e.g. dt = " << config_.dt / 4 << " s; the highest linearised frequency " << omega
         << " rad/s allows this dt, so the cause is the motion, not stability)";

@@ -38,7 +38,8 @@ class RunMonitor {
   // evaluation at y filled string_geometry(); otherwise the monitor computes the same from y.
   // Throws ModelError on a blow-up.
   // CAUTION: performance-sensitive
-  void Accept(long step, double t_old, double t, const double* y, double dissipated, bool strings_recorded = false);
+  void Accept(long step, double t_old, double t, const double* y, double dissipated,
+              bool strings_recorded = false);
 
   // The strings' geometry, by model string, for an engine evaluation to fill
   // (EngineOde::RecordStringsInNextEvaluation) and Accept to read. The strings the engines
@@ -68,15 +69,16 @@ class RunMonitor {
     double inv_rest_sq;  // 1 / l0^2 [1/m^2]
   };
   struct TimedLoadState {
-    int o;                  // coordinate offset of its node
+    int o;  // coordinate offset of its node
     double t_start, t_end, rise_s, fall_s;
-    double force[3];        // [N]
-    double last[3];         // node position at the previous accepted step [m]
+    double force[3];  // [N]
+    double last[3];   // node position at the previous accepted step [m]
   };
 
   [[noreturn]] void Fail(long step, double t, const std::string& what) const;
   // The state y at time t; the loads of `load_time` act on it.
-  void Measure(double t, double load_time, const double* y, bool strings_recorded, double& kinetic, double& elastic);
+  void Measure(double t, double load_time, const double* y, bool strings_recorded, double& kinetic,
+               double& elastic);
   // The strings' geometry at y, as the engines compute it, into geometry_.
   template <int Dim, bool Damped>
   void FillGeometry(const double* y);
@@ -94,11 +96,11 @@ class RunMonitor {
   int dim_, c_;
   StringArrays strings_;
   std::vector<PackedBar> bars_;
-  std::vector<int> deck_offsets_;   // per deck node: its coordinate offset
-  std::vector<double> deck_rest_;   // per deck node: x, y, z of the model's positions [m]
-  Eigen::VectorXd x0_, loads_;      // start positions [m], constant loads [N], packed
-  double loads_dot_x0_ = 0;         // loads . x0 [J]
-  bool has_loads_ = false;          // any constant load
+  std::vector<int> deck_offsets_;  // per deck node: its coordinate offset
+  std::vector<double> deck_rest_;  // per deck node: x, y, z of the model's positions [m]
+  Eigen::VectorXd x0_, loads_;     // start positions [m], constant loads [N], packed
+  double loads_dot_x0_ = 0;        // loads . x0 [J]
+  bool has_loads_ = false;         // any constant load
   std::vector<TimedLoadState> timed_;
   std::vector<double> len2_, inv_len_, rate_;  // geometry_'s arrays
   StringGeometry geometry_{};                  // see string_geometry()
@@ -108,8 +110,9 @@ class RunMonitor {
   std::vector<char> taut_at_start_;
   std::vector<double> min_ratio_sq_;
   std::vector<double> energy_, stress_;  // per string at the measured state: scratch [J], [Pa]
-  double bar_ratio_sq_min_ = 1, bar_ratio_sq_max_ = 1;  // extremes of (l / l0)^2 over bars and steps
-  double bar_guard_lo_ = 0, bar_guard_hi_ = 0;          // (1 -+ guard)^2
+  double bar_ratio_sq_min_ = 1,
+         bar_ratio_sq_max_ = 1;                 // extremes of (l / l0)^2 over bars and steps
+  double bar_guard_lo_ = 0, bar_guard_hi_ = 0;  // (1 -+ guard)^2
   int max_stress_string_ = -1;
   BarForceProbe probe_;
   Eigen::VectorXd lambda_;

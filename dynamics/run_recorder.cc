@@ -23,7 +23,8 @@ RunRecorder::RunRecorder(const DynamicModel& model, const DynamicsConfig& config
     row_.resize(n_cols);
     for (HistorySink* sink : sinks) sink->Begin(model, result.recorded_nodes);
   }
-  if (recording_ && !streaming_) result.history.resize(total_steps / config.record.every + 2, n_cols);
+  if (recording_ && !streaming_)
+    result.history.resize(total_steps / config.record.every + 2, n_cols);
   if (deck_) {
     // Mirror-odd weights about mid-span (halfway between the outermost nodes).
     const double lo = model.positions.row(0).minCoeff(), hi = model.positions.row(0).maxCoeff();
@@ -77,7 +78,8 @@ void RunRecorder::TakeDeck(const double* state) {
 }
 
 void RunRecorder::Finish(double duration) {
-  if (recording_ && !streaming_) result_.history.conservativeResize(history_rows_, result_.history.cols());
+  if (recording_ && !streaming_)
+    result_.history.conservativeResize(history_rows_, result_.history.cols());
   if (deck_) {
     // The samples with t <= duration, for the frequency and the summary alike.
     const Eigen::Index rows = SamplesWithin(deck_rows_, deck_spacing_, duration);
@@ -86,7 +88,8 @@ void RunRecorder::Finish(double duration) {
   }
 }
 
-void MeasureDeckFrequency(const DynamicModel& model, const SimulationResult& result, SimulationSummary& s) {
+void MeasureDeckFrequency(const DynamicModel& model, const SimulationResult& result,
+                          SimulationSummary& s) {
   if (model.deck_nodes.empty()) {
     s.frequency_note = "the model has no deck nodes";
     return;

@@ -89,15 +89,16 @@ class RunRecorder {
   bool recording_ = false, deck_ = false, streaming_ = false;
   int history_every_ = 1, deck_every_ = 1;
   int history_countdown_ = 1, deck_countdown_ = 1;  // steps to the next row, the next sample
-  double history_spacing_ = 0, deck_spacing_ = 0;  // [s]
-  long history_next_ = 1, deck_next_ = 1;          // next grid index of an adaptive run
+  double history_spacing_ = 0, deck_spacing_ = 0;   // [s]
+  long history_next_ = 1, deck_next_ = 1;           // next grid index of an adaptive run
   long history_rows_ = 0, deck_rows_ = 0;
-  Eigen::VectorXd row_;              // the row being taken, when streamed
-  std::vector<double> odd_sign_;     // per deck node
+  Eigen::VectorXd row_;           // the row being taken, when streamed
+  std::vector<double> odd_sign_;  // per deck node
 };
 
 // The deck frequency of a finished run into `summary` (frequency, crossing and antisymmetric
 // frequencies, or a note saying why there is none), from `result`'s deck signals.
-void MeasureDeckFrequency(const DynamicModel& model, const SimulationResult& result, SimulationSummary& summary);
+void MeasureDeckFrequency(const DynamicModel& model, const SimulationResult& result,
+                          SimulationSummary& summary);
 
 }  // namespace tbridge

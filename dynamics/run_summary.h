@@ -16,10 +16,10 @@
 namespace tbridge {
 
 struct SlackEvents {
-  int total = 0;                    // slack <-> taut transitions, all strings
-  std::vector<int> per_string;      // per model string
+  int total = 0;                // slack <-> taut transitions, all strings
+  std::vector<int> per_string;  // per model string
   int slack_at_start = 0, slack_at_end = 0;
-  int ever_slack = 0;               // strings slack at the start or after some accepted step
+  int ever_slack = 0;  // strings slack at the start or after some accepted step
 };
 
 // A reaction group's largest support reaction over a run [N]: horizontal, |(x, z)| (in plan),
@@ -35,7 +35,7 @@ struct ReactionPeak {
 struct EnergyBalance {
   double kinetic_start = 0, elastic_start = 0;  // [J]
   double kinetic_end = 0, elastic_end = 0;      // [J]
-  double external_work = 0;  // work done by the loads since t = 0 [J]
+  double external_work = 0;                     // work done by the loads since t = 0 [J]
   // By string damping [J]: with the integrator's own stages and weights (RK4, DOPRI5, SDIRK3),
   // so that the balance closes across slack transitions as well as the motion itself does.
   double dissipated = 0;
@@ -49,17 +49,17 @@ struct EnergyBalance {
 
 struct SimulationSummary {
   std::string integrator;
-  std::string engine;     // "class1" | "classk" (EngineFor)
-  int substeps = 1;       // RK4 sub-steps per step ("auto" beyond RK4's limit)
-  int steps = 0;          // accepted steps
-  int rejected = 0;       // dopri5 only
-  long evaluations = 0;   // right-hand side calls
-  double duration = 0;    // simulated [s]
+  std::string engine;    // "class1" | "classk" (EngineFor)
+  int substeps = 1;      // RK4 sub-steps per step ("auto" beyond RK4's limit)
+  int steps = 0;         // accepted steps
+  int rejected = 0;      // dopri5 only
+  long evaluations = 0;  // right-hand side calls
+  double duration = 0;   // simulated [s]
   double wall_seconds = 0;
   double max_string_stress = 0;  // tension / area over strings and steps [Pa]
   std::string max_stress_string;
-  double max_stress_time = 0;    // [s]
-  double allowed_stress = 0;     // [Pa]
+  double max_stress_time = 0;  // [s]
+  double allowed_stress = 0;   // [Pa]
   bool stress_exceeds_allowed = false;
   SlackEvents slack;
   double max_bar_length_error = 0;  // max |l - l0| / l0 over bars and steps
@@ -83,8 +83,8 @@ struct SimulationSummary {
   std::vector<ReactionPeak> peak_reactions;
   std::vector<PrestrainReport> prestrain;
   bool has_frequency = false;
-  FrequencyEstimate frequency;     // deck measurement of SPEC.md §9
-  std::string frequency_note;      // why there is none, when has_frequency is false
+  FrequencyEstimate frequency;  // deck measurement of SPEC.md §9
+  std::string frequency_note;   // why there is none, when has_frequency is false
   // Mean period from the crossings of the same deck signal (MeanPeriodFromCrossings), when
   // it has at least three crossings; empty otherwise.
   std::optional<FrequencyEstimate> crossing_frequency;

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <string>
 #include <stdexcept>
+#include <string>
 
 #include "core/error.h"
 #include "core/klu_factor.h"
@@ -45,7 +45,8 @@ Sdirk3::Sdirk3(const AccelerationCoupling& coupling, int size, const SdirkOption
   for (int a = 0; a < n_n; ++a) {
     for (const int q : coupling.depends_on[a]) {
       for (int d = 0; d < dim; ++d) {
-        for (int e = 0; e < dim; ++e) triplets.emplace_back(a * dim + d, q * dim + e, d == e && a == q ? 1.0 : 0.0);
+        for (int e = 0; e < dim; ++e)
+          triplets.emplace_back(a * dim + d, q * dim + e, d == e && a == q ? 1.0 : 0.0);
       }
     }
   }
@@ -72,12 +73,15 @@ Sdirk3::Sdirk3(const AccelerationCoupling& coupling, int size, const SdirkOption
       }
     }
   }
-  if (!lu_.Analyse(matrix_)) throw std::invalid_argument("sdirk3: KLU could not analyse the Newton matrix's pattern");
+  if (!lu_.Analyse(matrix_))
+    throw std::invalid_argument("sdirk3: KLU could not analyse the Newton matrix's pattern");
   counts_ = {static_cast<long>(matrix_.nonZeros()), lu_.FactorEntries(), lu_.EstimatedFlops(),
              colours * dim + 1};
 
-  for (Eigen::VectorXd* v : {&y0_, &dy_, &dy_pert_, &y_pert_, &stage_}) *v = Eigen::VectorXd::Zero(2 * c_);
-  for (Eigen::VectorXd* v : {&sx_, &sv_, &vel_, &vel_old_, &residual_, &delta_, &eps_}) *v = Eigen::VectorXd::Zero(c_);
+  for (Eigen::VectorXd* v : {&y0_, &dy_, &dy_pert_, &y_pert_, &stage_})
+    *v = Eigen::VectorXd::Zero(2 * c_);
+  for (Eigen::VectorXd* v : {&sx_, &sv_, &vel_, &vel_old_, &residual_, &delta_, &eps_})
+    *v = Eigen::VectorXd::Zero(c_);
   for (int i = 0; i < 3; ++i) {
     kx_[i] = Eigen::VectorXd::Zero(c_);
     kv_[i] = Eigen::VectorXd::Zero(c_);
@@ -149,7 +153,8 @@ bool Sdirk3::SolveStage(OdeSystem& system, int stage, double t_stage, double h, 
     vel_ += delta_;
     double norm = 0;
     for (int i = 0; i < c_; ++i) {
-      norm = std::max(norm, std::abs(delta_[i]) / (options_.abs_tol + options_.rel_tol * std::abs(vel_[i])));
+      norm = std::max(
+          norm, std::abs(delta_[i]) / (options_.abs_tol + options_.rel_tol * std::abs(vel_[i])));
     }
     if (!std::isfinite(norm)) return false;
     if (norm <= 1.0) return true;
@@ -180,8 +185,9 @@ void Sdirk3::Step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
 void Sdirk3::Split(OdeSystem& system, double t, double h, Eigen::VectorXd& y, int halvings_left) {
   if (Attempt(system, t, h, y)) return;
   if (halvings_left == 0) {
-    Fail(t, h, "Newton did not converge with a fresh Jacobian, even after halving the step " +
-                   std::to_string(options_.max_halvings) + " times,");
+    Fail(t, h,
+         "Newton did not converge with a fresh Jacobian, even after halving the step " +
+             std::to_string(options_.max_halvings) + " times,");
   }
   ++stats_.halvings;
   Split(system, t, 0.5 * h, y, halvings_left - 1);
@@ -229,7 +235,8 @@ bool Sdirk3::Attempt(OdeSystem& system, double t, double h, Eigen::VectorXd& y) 
   for (Eigen::Index i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i])) Fail(t, h, "the state is not finite");
   }
-  last_dissipated_ += h * (kB1 * stage_power_[0] + kB2 * stage_power_[1] + kGamma * stage_power_[2]);
+  last_dissipated_ +=
+      h * (kB1 * stage_power_[0] + kB2 * stage_power_[1] + kGamma * stage_power_[2]);
   ++stats_.steps;
   return true;
 }

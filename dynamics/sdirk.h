@@ -41,10 +41,10 @@ struct SdirkOptions {
   // 1e-15 m of rounding, times omega_max^2 ~ 1e10 s^-2, times h gamma ~ 1e-4 s).
   double abs_tol = 1e-8;
   double rel_tol = 1e-8;
-  int max_iterations = 30;      // per stage, then the step fails
-  int fast_iterations = 6;      // this many without converging triggers a refresh
-  double max_contraction = 0.5; // ||dV_k+1|| / ||dV_k|| above this triggers a refresh
-  int max_refreshes = 4;        // re-linearisations within one stage (slack kinks)
+  int max_iterations = 30;       // per stage, then the step fails
+  int fast_iterations = 6;       // this many without converging triggers a refresh
+  double max_contraction = 0.5;  // ||dV_k+1|| / ||dV_k|| above this triggers a refresh
+  int max_refreshes = 4;         // re-linearisations within one stage (slack kinks)
   // When Newton fails even with a fresh Jacobian (a slack kink inside the step can leave no
   // contraction), the step is done as two halves, recursively, at most this many times deep
   // (h / 2^k); only then does Step throw. Rare: the default step sizes rarely need it.
@@ -55,11 +55,11 @@ struct SdirkOptions {
 };
 
 struct SdirkStats {
-  long steps = 0;          // accepted steps, halves of split steps counted singly
-  long halvings = 0;       // steps split in two after Newton failed
+  long steps = 0;     // accepted steps, halves of split steps counted singly
+  long halvings = 0;  // steps split in two after Newton failed
   long newton_iterations = 0;
-  long jacobians = 0;     // Jacobian estimates (each costs colours x dim evaluations)
-  long evaluations = 0;   // right-hand-side calls, Jacobian ones included
+  long jacobians = 0;    // Jacobian estimates (each costs colours x dim evaluations)
+  long evaluations = 0;  // right-hand-side calls, Jacobian ones included
   int colours = 0;
 };
 
@@ -114,11 +114,11 @@ class Sdirk3 {
   };
   std::vector<std::vector<int>> group_columns_;  // coordinate columns per (colour, direction)
   std::vector<std::vector<Slot>> group_slots_;
-  std::vector<int> diagonal_;                    // value index of each diagonal entry
-  Eigen::SparseMatrix<double> matrix_;           // I - h gamma D, fixed pattern
-  KluFactor lu_;                                 // the sparse LU of I - h gamma D
-  double factor_h_ = 0;  // step the current factorisation was made for (0: none)
-  double stage_power_[3] = {0, 0, 0};  // DissipatedPower at each stage's last Newton iterate [W]
+  std::vector<int> diagonal_;           // value index of each diagonal entry
+  Eigen::SparseMatrix<double> matrix_;  // I - h gamma D, fixed pattern
+  KluFactor lu_;                        // the sparse LU of I - h gamma D
+  double factor_h_ = 0;                 // step the current factorisation was made for (0: none)
+  double stage_power_[3] = {0, 0, 0};   // DissipatedPower at each stage's last Newton iterate [W]
   double last_dissipated_ = 0;
   // Workspace: state-sized (2 c) and coordinate-sized (c) buffers.
   Eigen::VectorXd y0_, dy_, dy_pert_, y_pert_, stage_;

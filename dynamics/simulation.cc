@@ -37,11 +37,14 @@ constexpr long kProgressEvery = 1024;
 
 // The fixed-step loop: RK4 (with `choice.substeps` sub-steps per step) or SDIRK3 (`sdirk`).
 template <class System, class Ode>
-void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode, const IntegratorChoice& choice,
-                   Sdirk3* sdirk, long total_steps, Eigen::VectorXd& y, RunMonitor& monitor, RunRecorder& recorder,
+void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
+                   const IntegratorChoice& choice, Sdirk3* sdirk, long total_steps,
+                   Eigen::VectorXd& y, RunMonitor& monitor, RunRecorder& recorder,
                    ProgressReporter* progress) {
   Rk4Workspace ws(sdirk == nullptr ? system.state_size() : 0);
-  const auto step_end = [&](long step) { return step == total_steps ? config.duration : step * config.dt; };
+  const auto step_end = [&](long step) {
+    return step == total_steps ? config.duration : step * config.dt;
+  };
   const auto hold_loads = [&](long step) {
     if (system.has_timed_loads()) ode.HoldLoadsAt(0.5 * ((step - 1) * config.dt + step_end(step)));
   };
@@ -88,29 +91,34 @@ void RunFixedSteps(const DynamicsConfig& config, const System& system, Ode& ode,
   }
   SimulationSummary& s = monitor.summary();
   s.steps = static_cast<int>(total_steps);
-  s.evaluations = sdirk != nullptr ? sdirk->stats().evaluations : 4L * choice.substeps * total_steps;
+  s.evaluations =
+      sdirk != nullptr ? sdirk->stats().evaluations : 4L * choice.substeps * total_steps;
 }
 
 // The adaptive loop: DOPRI5 with dense output onto the recorder's grids.
 template <class Ode>
-void RunAdaptive(const DynamicsConfig& config, Ode& ode, int state_size, Eigen::VectorXd& y, RunMonitor& monitor,
-                 RunRecorder& recorder, ProgressReporter* progress) {
+void RunAdaptive(const DynamicsConfig& config, Ode& ode, int state_size, Eigen::VectorXd& y,
+                 RunMonitor& monitor, RunRecorder& recorder, ProgressReporter* progress) {
   Dopri5Options o;
   o.rtol = config.rtol;
   o.atol = config.atol;
   Dopri5 dp(o);
   Dopri5Workspace ws(state_size);
   Eigen::VectorXd out(state_size);
-  const auto interpolate = [&](double t_grid, Eigen::VectorXd& state) { dp.Interpolate(t_grid, ws, state); };
+  const auto interpolate = [&](double t_grid, Eigen::VectorXd& state) {
+    dp.Interpolate(t_grid, ws, state);
+  };
   double t = 0, h = config.dt;
   dp.Start(ode, t, y, ws);
   long step = 0;
   while (t < config.duration) {
     const double t_old = t;
     if (step >= config.limits.max_steps) {
-      throw ConfigError("dynamics.limits.max_steps", NumberText(static_cast<double>(config.limits.max_steps)),
-                        "dopri5 used them all before t = " + NumberText(t) + " s of dynamics.duration = " +
-                            NumberText(config.duration) + " s: raise the limit, or loosen dynamics.rtol and atol");
+      throw ConfigError("dynamics.limits.max_steps",
+                        NumberText(static_cast<double>(config.limits.max_steps)),
+                        "dopri5 used them all before t = " + NumberText(t) +
+                            " s of dynamics.duration = " + NumberText(config.duration) +
+                            " s: raise the limit, or loosen dynamics.rtol and atol");
     }
     dp.Step(ode, t, y, h, config.duration, ws);
     monitor.Accept(++step, t_old, t, y.data(), dp.last_dissipated());
@@ -128,7 +136,8 @@ void RunAdaptive(const DynamicsConfig& config, Ode& ode, int state_size, Eigen::
 template <class System, class Ode>
 SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& config,
                              const std::vector<PrestrainReport>& prestrain, const System& system,
-                             SimulationResult result, std::chrono::steady_clock::time_point wall_start,
+                             SimulationResult result,
+                             std::chrono::steady_clock::time_point wall_start,
                              const RunHooks& hooks) {
   Ode ode(system);
   Eigen::VectorXd y = InitialState(model, config);
@@ -136,7 +145,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   // its stages).
   RunMonitor::BarForceProbe probe;
   if (config.record.bar_forces) {
-    auto probe_ws = std::shared_ptr<decltype(MakeWorkspace(system))>(new auto(MakeWorkspace(system)));
+    auto probe_ws =
+        std::shared_ptr<decltype(MakeWorkspace(system))>(new auto(MakeWorkspace(system)));
     auto probe_dy = std::make_shared<Eigen::VectorXd>(system.state_size());
     probe = [&system, probe_ws, probe_dy](double t, const double* state, Eigen::VectorXd& lambda) {
       system.Derivative(t, state, probe_dy->data(), *probe_ws);
@@ -171,7 +181,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   } else {
     if (choice.kind == IntegratorKind::kSdirk3) make_sdirk();
     Sdirk3* implicit = choice.kind == IntegratorKind::kSdirk3 ? sdirk.get() : nullptr;
-    RunFixedSteps(config, system, ode, choice, implicit, total_steps, y, monitor, recorder, hooks.progress);
+    RunFixedSteps(config, system, ode, choice, implicit, total_steps, y, monitor, recorder,
+                  hooks.progress);
   }
   if (hooks.progress != nullptr) hooks.progress->Update(config.duration, config.duration);
   recorder.Finish(config.duration);
@@ -180,7 +191,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
   s.duration = config.duration;
   s.prestrain = prestrain;
   if (config.frequency.enabled) MeasureDeckFrequency(model, result, s);
-  s.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  s.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   result.summary = s;
   return result;
 }
@@ -189,7 +201,8 @@ SimulationResult RunScenario(const DynamicModel& model, const DynamicsConfig& co
 
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
                           const std::vector<PrestrainReport>& prestrain, const RunHooks& hooks) {
-  CheckRunLimits(model, config, hooks.extra_bytes_per_record ? hooks.extra_bytes_per_record(model) : 0.0);
+  CheckRunLimits(model, config,
+                 hooks.extra_bytes_per_record ? hooks.extra_bytes_per_record(model) : 0.0);
   const auto wall_start = std::chrono::steady_clock::now();
   const int dim = model.dim, n_n = model.num_nodes();
 
@@ -197,17 +210,22 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
   for (size_t k = 0; k < config.loads.size(); ++k) {
     const LoadStepConfig& l = config.loads[k];
     const std::string key = "dynamics.loads[" + std::to_string(k) + "]";
-    if (l.node > n_n) throw ConfigError(key + ".node", std::to_string(l.node), "must be in 1.." + std::to_string(n_n));
+    if (l.node > n_n)
+      throw ConfigError(key + ".node", std::to_string(l.node),
+                        "must be in 1.." + std::to_string(n_n));
     if (dim == 2 && l.force[2] != 0) {
       throw ConfigError(key + ".force", NumberText(l.force[2]), "z must be 0 for a planar bridge");
     }
-    timed.push_back({l.t_start, l.t_end, l.node - 1, Eigen::Vector3d(l.force[0], l.force[1], l.force[2]), l.rise_s,
-                     l.fall_s, 2.0 * std::numbers::pi * l.frequency_hz});
+    timed.push_back({l.t_start, l.t_end, l.node - 1,
+                     Eigen::Vector3d(l.force[0], l.force[1], l.force[2]), l.rise_s, l.fall_s,
+                     2.0 * std::numbers::pi * l.frequency_hz});
   }
   SimulationResult result;
   result.dim = dim;
   for (const int node : config.record.nodes) {
-    if (node > n_n) throw ConfigError("dynamics.record.nodes", std::to_string(node), "must be in 1.." + std::to_string(n_n));
+    if (node > n_n)
+      throw ConfigError("dynamics.record.nodes", std::to_string(node),
+                        "must be in 1.." + std::to_string(n_n));
     result.recorded_nodes.push_back(node - 1);
   }
 

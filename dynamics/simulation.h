@@ -45,11 +45,12 @@ struct RunHooks {
 // Runs `config` on `model` with the engine EngineFor picks. Throws ConfigError for initial
 // conditions, loads or an engine that do not fit the model, ModelError when the run blows up:
 // NaN/Inf in the state, a bar-length error above guard.max_bar_length_error, energy growth
-// above guard.max_energy_growth, or (class k) a singular constraint matrix. The message names the step and time and suggests a smaller dt.
-// `prestrain` reports are copied into the summary. Checks CheckRunLimits first; a dopri5 run
-// that needs more than limits.max_steps accepted steps stops with a ConfigError naming
-// dynamics.limits.max_steps.
+// above guard.max_energy_growth, or (class k) a singular constraint matrix. The message names the
+// step and time and suggests a smaller dt. `prestrain` reports are copied into the summary. Checks
+// CheckRunLimits first; a dopri5 run that needs more than limits.max_steps accepted steps stops
+// with a ConfigError naming dynamics.limits.max_steps.
 SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& config,
-                          const std::vector<PrestrainReport>& prestrain = {}, const RunHooks& hooks = {});
+                          const std::vector<PrestrainReport>& prestrain = {},
+                          const RunHooks& hooks = {});
 
 }  // namespace tbridge

@@ -8,7 +8,8 @@
 
 namespace tbridge {
 
-FrequencyBound HighestFrequency(OdeSystem& system, const Eigen::VectorXd& y, const FrequencyBoundOptions& options) {
+FrequencyBound HighestFrequency(OdeSystem& system, const Eigen::VectorXd& y,
+                                const FrequencyBoundOptions& options) {
   const Eigen::Index n = system.size(), c = n / 2;
   Eigen::VectorXd base = y, probe(n), f0(n), f1(n);
   base.tail(c).setZero();
@@ -16,7 +17,8 @@ FrequencyBound HighestFrequency(OdeSystem& system, const Eigen::VectorXd& y, con
   const double scale = std::max(1.0, base.head(c).cwiseAbs().maxCoeff());
   // A fixed, non-symmetric start so that no mode is missed by symmetry.
   Eigen::VectorXd w(c);
-  for (Eigen::Index i = 0; i < c; ++i) w[i] = 1.0 + 0.37 * std::sin(1.0 + 2.3 * static_cast<double>(i));
+  for (Eigen::Index i = 0; i < c; ++i)
+    w[i] = 1.0 + 0.37 * std::sin(1.0 + 2.3 * static_cast<double>(i));
   w.normalize();
   FrequencyBound out;
   double previous = 0;
@@ -29,7 +31,8 @@ FrequencyBound HighestFrequency(OdeSystem& system, const Eigen::VectorXd& y, con
     aw -= f0.tail(c);
     aw /= h;
     const double norm = aw.norm();
-    if (!std::isfinite(norm)) throw ModelError("highest frequency: the right-hand side is not finite");
+    if (!std::isfinite(norm))
+      throw ModelError("highest frequency: the right-hand side is not finite");
     out.iterations = k + 1;
     if (norm == 0) break;  // nothing is stiff (no strings): omega_max = 0
     out.omega_max = std::sqrt(norm);
@@ -43,6 +46,8 @@ FrequencyBound HighestFrequency(OdeSystem& system, const Eigen::VectorXd& y, con
   return out;
 }
 
-double Rk4StepLimit(double omega_max) { return omega_max > 0 ? 2.0 * std::numbers::sqrt2 / omega_max : 1e300; }
+double Rk4StepLimit(double omega_max) {
+  return omega_max > 0 ? 2.0 * std::numbers::sqrt2 / omega_max : 1e300;
+}
 
 }  // namespace tbridge

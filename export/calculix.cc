@@ -19,19 +19,23 @@ namespace {
 std::string Num(double v) { return CalculixNumber(v); }
 
 // One element (1-based `id`) in its own set, so that it carries its own table.
-void Spring(std::ostream& os, int id, int i, int j, const std::vector<std::pair<double, double>>& table) {
-  os << "*ELEMENT, TYPE=SPRINGA, ELSET=E" << id << "\n" << id << ", " << i + 1 << ", " << j + 1 << "\n";
+void Spring(std::ostream& os, int id, int i, int j,
+            const std::vector<std::pair<double, double>>& table) {
+  os << "*ELEMENT, TYPE=SPRINGA, ELSET=E" << id << "\n"
+     << id << ", " << i + 1 << ", " << j + 1 << "\n";
   os << "*SPRING, ELSET=E" << id << ", NONLINEAR\n";
   for (const auto& [elongation, force] : table) os << Num(force) << ", " << Num(elongation) << "\n";
 }
 
 void StaticStep(std::ostream& os, const std::string& label, const Eigen::Matrix3Xd& loads,
                 const std::set<std::pair<int, int>>& loaded) {
-  os << "**\n** tbridge step: " << label << "\n*STEP, NLGEOM, INC=10000\n*STATIC\n1., 1., 1e-8, 1.\n";
+  os << "**\n** tbridge step: " << label
+     << "\n*STEP, NLGEOM, INC=10000\n*STATIC\n1., 1., 1e-8, 1.\n";
   // Every DOF loaded in any step, zero included: a load absent from a step would keep its
   // previous value.
   os << "*CLOAD\n";
-  for (const auto& [v, a] : loaded) os << v + 1 << ", " << a + 1 << ", " << Num(loads(a, v)) << "\n";
+  for (const auto& [v, a] : loaded)
+    os << v + 1 << ", " << a + 1 << ", " << Num(loads(a, v)) << "\n";
   os << "*NODE PRINT, NSET=NODES\nU\n*NODE PRINT, NSET=SUPPORTS\nRF\n*END STEP\n";
 }
 
@@ -41,12 +45,14 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
   const Structure& s = fe.statics.structure;
   const int nn = s.num_nodes(), nb = s.num_bars(), ns = s.num_strings();
   const int dim = s.dim();
-  os << "** tbridge export: " << nn << " nodes, " << nb << " bars, " << ns << " strings; SI units (m, N, kg, s)\n";
-  os << "** bars " << (options.rigid_bars ? "near-rigid" : "elastic") << "; nodes " << nn + 1 << "-" << nn + nb
-     << " are the bars' midpoints, which carry mass only\n";
+  os << "** tbridge export: " << nn << " nodes, " << nb << " bars, " << ns
+     << " strings; SI units (m, N, kg, s)\n";
+  os << "** bars " << (options.rigid_bars ? "near-rigid" : "elastic") << "; nodes " << nn + 1 << "-"
+     << nn + nb << " are the bars' midpoints, which carry mass only\n";
   os << "*NODE, NSET=NALL\n";
   for (int v = 0; v < nn; ++v) {
-    os << v + 1 << ", " << Num(s.nodes(0, v)) << ", " << Num(s.nodes(1, v)) << ", " << Num(s.nodes(2, v)) << "\n";
+    os << v + 1 << ", " << Num(s.nodes(0, v)) << ", " << Num(s.nodes(1, v)) << ", "
+       << Num(s.nodes(2, v)) << "\n";
   }
   for (int b = 0; b < nb; ++b) {
     const Eigen::Vector3d mid = 0.5 * (s.nodes.col(s.bars[b].i) + s.nodes.col(s.bars[b].j));
@@ -62,7 +68,10 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
     const Member& m = s.strings[k];
     const double length = s.Length(m), stiffness = fe.statics.string_stiffness[k];
     const double slack = fe.statics.string_rest_length[k] - length;
-    Spring(os, k + 1, m.i, m.j, {{-length, 0.0}, {slack, 0.0}, {length, stiffness * (2 * length - fe.statics.string_rest_length[k])}});
+    Spring(os, k + 1, m.i, m.j,
+           {{-length, 0.0},
+            {slack, 0.0},
+            {length, stiffness * (2 * length - fe.statics.string_rest_length[k])}});
   }
   // Bars: their reference compression at the drawn length, linear about it: a pin-jointed bar of
   // axial stiffness E A / l, as tbridge has it. Not T3D2: CalculiX 2.20 expands a truss element
@@ -77,9 +86,12 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
   for (int b = 0; b < nb; ++b) {
     const Member& m = s.bars[b];
     const double length = s.Length(m);
-    const double stiffness = fe.youngs_modulus * fe.bar_area[b] / length * (options.rigid_bars ? kRigidBarFactor : 1.0);
+    const double stiffness =
+        fe.youngs_modulus * fe.bar_area[b] / length * (options.rigid_bars ? kRigidBarFactor : 1.0);
     const double force = -fe.reference.bar_compression[b];
-    Spring(os, ns + b + 1, m.i, m.j, {{-0.5 * length, force - 0.5 * length * stiffness}, {0.5 * length, force + 0.5 * length * stiffness}});
+    Spring(os, ns + b + 1, m.i, m.j,
+           {{-0.5 * length, force - 0.5 * length * stiffness},
+            {0.5 * length, force + 0.5 * length * stiffness}});
   }
 
   // Masses: node masses, and each bar's consistent mass through its midpoint.
@@ -96,14 +108,16 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
   for (int v = 0; v < nn + nb; ++v) {
     if (mass[v] <= 0 || (v < nn && s.fixed[v])) continue;
     ++id;
-    os << "*ELEMENT, TYPE=MASS, ELSET=E" << id << "\n" << id << ", " << v + 1 << "\n*MASS, ELSET=E" << id << "\n"
+    os << "*ELEMENT, TYPE=MASS, ELSET=E" << id << "\n"
+       << id << ", " << v + 1 << "\n*MASS, ELSET=E" << id << "\n"
        << Num(mass[v]) << "\n";
   }
   os << "*EQUATION\n";
   for (int b = 0; b < nb; ++b) {
     for (int a = 0; a < dim; ++a) {
-      os << "3\n" << nn + b + 1 << ", " << a + 1 << ", 1., " << s.bars[b].i + 1 << ", " << a + 1 << ", -0.5, "
-         << s.bars[b].j + 1 << ", " << a + 1 << ", -0.5\n";
+      os << "3\n"
+         << nn + b + 1 << ", " << a + 1 << ", 1., " << s.bars[b].i + 1 << ", " << a + 1
+         << ", -0.5, " << s.bars[b].j + 1 << ", " << a + 1 << ", -0.5\n";
     }
   }
   os << "*BOUNDARY\nSUPPORTS, 1, 3\n";
@@ -134,7 +148,8 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
   StaticStep(os, "modes", fe.modal.loads, loaded);
   // CalculiX's Lanczos basis (ARPACK) is about four times the modes asked, and may not exceed
   // the motions that keep the bar lengths (planar n = 3: 21 motions, at most 5 modes).
-  const int motions = static_cast<int>(std::count(s.fixed.begin(), s.fixed.end(), false)) * dim - nb;
+  const int motions =
+      static_cast<int>(std::count(s.fixed.begin(), s.fixed.end(), false)) * dim - nb;
   os << "**\n** tbridge step: frequency\n*STEP, PERTURBATION\n*FREQUENCY\n"
      << std::max(1, std::min(options.modes, motions / 4)) << "\n*END STEP\n";
 }

@@ -6,10 +6,14 @@
 
 namespace tbridge {
 
-bool IsExportFormat(const std::string& format) { return format == "calculix" || format == "opensees"; }
+bool IsExportFormat(const std::string& format) {
+  return format == "calculix" || format == "opensees";
+}
 
-void WriteExport(const Design& design, const std::string& format, const CalculixOptions& options, std::ostream& os) {
-  if (!IsExportFormat(format)) throw ConfigError("format", "'" + format + "'", std::string("expected ") + kExportFormats);
+void WriteExport(const Design& design, const std::string& format, const CalculixOptions& options,
+                 std::ostream& os) {
+  if (!IsExportFormat(format))
+    throw ConfigError("format", "'" + format + "'", std::string("expected ") + kExportFormats);
   const FeModel model = FeModelOf(design);
   if (format == "calculix") {
     WriteCalculix(model, options, os);

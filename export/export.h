@@ -17,6 +17,7 @@ bool IsExportFormat(const std::string& format);
 // Writes `design` in `format` (`options.modes` is CalculiX's). Throws ConfigError naming the
 // key "format" for an unknown format, before anything is written; ModelError when the
 // reference state does not stand.
-void WriteExport(const Design& design, const std::string& format, const CalculixOptions& options, std::ostream& os);
+void WriteExport(const Design& design, const std::string& format, const CalculixOptions& options,
+                 std::ostream& os);
 
 }  // namespace tbridge

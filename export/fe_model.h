@@ -22,9 +22,10 @@ struct FeLoadStep {
 };
 
 struct FeModel {
-  StaticModel statics;       // drawn geometry, supports, each string's k = E A / L0 and L0
-  StaticState reference;     // the drawn geometry in equilibrium: bar compressions, string tensions [N]
-  double youngs_modulus = 0; // the bars' E [Pa] (the strings' is in their stiffness)
+  StaticModel statics;  // drawn geometry, supports, each string's k = E A / L0 and L0
+  StaticState
+      reference;  // the drawn geometry in equilibrium: bar compressions, string tensions [N]
+  double youngs_modulus = 0;  // the bars' E [Pa] (the strings' is in their stiffness)
   std::vector<double> bar_area, string_area;  // [m^2]
   Eigen::Matrix3Xd reference_loads;           // 3 x n_n [N], the reference state's
   std::vector<FeLoadStep> cases;              // every case, a travelling one at every station

@@ -18,11 +18,13 @@ namespace {
 
 std::string Num(double v) { return OpenSeesNumber(v); }
 
-void Pattern(std::ostream& os, const std::string& tag, const Structure& s, const Eigen::Matrix3Xd& loads) {
+void Pattern(std::ostream& os, const std::string& tag, const Structure& s,
+             const Eigen::Matrix3Xd& loads) {
   os << "pattern Plain " << tag << " Linear {\n";
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (s.fixed[v] || loads.col(v).isZero(0)) continue;
-    os << "  load " << v + 1 << " " << Num(loads(0, v)) << " " << Num(loads(1, v)) << " " << Num(loads(2, v)) << "\n";
+    os << "  load " << v + 1 << " " << Num(loads(0, v)) << " " << Num(loads(1, v)) << " "
+       << Num(loads(2, v)) << "\n";
   }
   os << "}\n";
 }
@@ -77,10 +79,12 @@ void WriteOpenSeesRuns(const std::vector<OpenSeesRun>& runs, int num_nodes,
 void WriteOpenSees(const FeModel& fe, bool rigid_bars, std::ostream& os) {
   const Structure& s = fe.statics.structure;
   const int nn = s.num_nodes(), nb = s.num_bars(), ns = s.num_strings();
-  os << "# tbridge export: " << nn << " nodes, " << nb << " bars, " << ns << " strings; SI units (m, N, kg, s)\n";
+  os << "# tbridge export: " << nn << " nodes, " << nb << " bars, " << ns
+     << " strings; SI units (m, N, kg, s)\n";
   os << "proc tbridge_model {} {\nmodel BasicBuilder -ndm 3 -ndf 3\n";
   for (int v = 0; v < nn; ++v) {
-    os << "node " << v + 1 << " " << Num(s.nodes(0, v)) << " " << Num(s.nodes(1, v)) << " " << Num(s.nodes(2, v)) << "\n";
+    os << "node " << v + 1 << " " << Num(s.nodes(0, v)) << " " << Num(s.nodes(1, v)) << " "
+       << Num(s.nodes(2, v)) << "\n";
   }
   for (int v = 0; v < nn; ++v) {
     // A planar bridge moves in its own plane.
@@ -97,9 +101,10 @@ void WriteOpenSees(const FeModel& fe, bool rigid_bars, std::ostream& os) {
     const double modulus = fe.statics.string_stiffness[k] * length / fe.string_area[k];
     const int e = k + 1;
     os << "uniaxialMaterial Elastic " << 2 * e - 1 << " " << Num(modulus) << " 0.0 0.0\n";
-    os << "uniaxialMaterial InitStrainMaterial " << 2 * e << " " << 2 * e - 1 << " " << Num((length - rest) / length) << "\n";
-    os << "element corotTruss " << e << " " << m.i + 1 << " " << m.j + 1 << " " << Num(fe.string_area[k]) << " " << 2 * e
-       << "\n";
+    os << "uniaxialMaterial InitStrainMaterial " << 2 * e << " " << 2 * e - 1 << " "
+       << Num((length - rest) / length) << "\n";
+    os << "element corotTruss " << e << " " << m.i + 1 << " " << m.j + 1 << " "
+       << Num(fe.string_area[k]) << " " << 2 * e << "\n";
   }
   for (int b = 0; b < nb; ++b) {
     const Member& m = s.bars[b];
@@ -108,8 +113,9 @@ void WriteOpenSees(const FeModel& fe, bool rigid_bars, std::ostream& os) {
     os << "uniaxialMaterial Elastic " << 2 * e - 1 << " " << Num(modulus) << "\n";
     os << "uniaxialMaterial InitStrainMaterial " << 2 * e << " " << 2 * e - 1 << " "
        << Num(-fe.reference.bar_compression[b] / (modulus * fe.bar_area[b])) << "\n";
-    os << "element corotTruss " << e << " " << m.i + 1 << " " << m.j + 1 << " " << Num(fe.bar_area[b]) << " " << 2 * e
-       << " -rho " << Num(fe.modal.bars[b].mass / s.Length(m)) << " -cMass 1\n";
+    os << "element corotTruss " << e << " " << m.i + 1 << " " << m.j + 1 << " "
+       << Num(fe.bar_area[b]) << " " << 2 * e << " -rho "
+       << Num(fe.modal.bars[b].mass / s.Length(m)) << " -cMass 1\n";
   }
   os << "}\n# the reference state's loads\nproc reference {tag} {\n";
   Pattern(os, "$tag", s, fe.reference_loads);

@@ -97,7 +97,8 @@ py::array_t<double> MemberColumn(const Design& d, Field field) {
   const std::vector<const MemberSizing*> members = Members(d);
   py::array_t<double> out(static_cast<py::ssize_t>(members.size()));
   auto view = out.mutable_unchecked<1>();
-  for (size_t k = 0; k < members.size(); ++k) view(static_cast<py::ssize_t>(k)) = field(*members[k]);
+  for (size_t k = 0; k < members.size(); ++k)
+    view(static_cast<py::ssize_t>(k)) = field(*members[k]);
   return out;
 }
 
@@ -130,7 +131,8 @@ Modes ModesOf(const DynamicModel& model, int count) {
   out.omega_rad_s = py::array_t<double>(n);
   out.frequency_hz = py::array_t<double>(n);
   out.period_s = py::array_t<double>(n);
-  out.shapes = py::array_t<double>({n, static_cast<py::ssize_t>(model.num_nodes()), py::ssize_t{3}});
+  out.shapes =
+      py::array_t<double>({n, static_cast<py::ssize_t>(model.num_nodes()), py::ssize_t{3}});
   auto shapes = out.shapes.mutable_unchecked<3>();
   for (py::ssize_t k = 0; k < n; ++k) {
     const Mode& m = result.modes[k];
@@ -228,13 +230,17 @@ struct Run {
 
 PYBIND11_MODULE(tbridge, m) {
   using namespace tbridge;
-  m.doc() = "Minimum-mass tensegrity bridges: the library of the tbridge command-line tool (README.md, \"Python\").";
+  m.doc() =
+      "Minimum-mass tensegrity bridges: the library of the tbridge command-line tool (README.md, "
+      "\"Python\").";
   py::register_exception<ConfigError>(m, "ConfigError", PyExc_ValueError);
   py::register_exception<ModelError>(m, "ModelError", PyExc_RuntimeError);
 
-  py::class_<Design>(m, "Design", "A sized bridge, as tbridge design writes it. Arrays are owned copies.")
-      .def_property_readonly("nodes", [](const Design& d) { return Rows(d.topology.structure.nodes); },
-                             "node positions, n x 3 [m]")
+  py::class_<Design>(m, "Design",
+                     "A sized bridge, as tbridge design writes it. Arrays are owned copies.")
+      .def_property_readonly(
+          "nodes", [](const Design& d) { return Rows(d.topology.structure.nodes); },
+          "node positions, n x 3 [m]")
       .def_property_readonly(
           "member_ends",
           [](const Design& d) {
@@ -247,7 +253,8 @@ PYBIND11_MODULE(tbridge, m) {
             }
             return out;
           },
-          "each member's end nodes, 0-based rows of `nodes`; bars first, then strings, as in the JSON's members")
+          "each member's end nodes, 0-based rows of `nodes`; bars first, then strings, as in the "
+          "JSON's members")
       .def_property_readonly("member_names",
                              [](const Design& d) {
                                std::vector<std::string> out;
@@ -256,42 +263,68 @@ PYBIND11_MODULE(tbridge, m) {
                              })
       .def_property_readonly("num_bars", [](const Design& d) { return d.bars.size(); })
       .def_property(
-          "areas", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.area; }); },
+          "areas",
+          [](const Design& d) {
+            return MemberColumn(d, [](const MemberSizing& s) { return s.area; });
+          },
           [](Design& d, const std::vector<double>& areas) { d = WithAreas(d, areas); },
           "[m^2]. Assigning areas edits the design as an engineer edits its file (with_areas); "
           "tbridge.check(design) then checks it")
-      .def("with_areas", [](const Design& d, const std::vector<double>& areas) { return WithAreas(d, areas); },
-           py::arg("areas"),
-           "a new design with these member areas [m^2] (bars first, then strings): each member's radius, mass and "
-           "stiffness from its area, the rest lengths kept, and the reference state re-derived as built, as tbridge "
-           "check reads an edited design file (the design's as_built says what moved)")
-      .def_property_readonly("forces", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.force; }); },
-                             "design force: compression of a bar, tension of a string [N]")
+      .def(
+          "with_areas",
+          [](const Design& d, const std::vector<double>& areas) { return WithAreas(d, areas); },
+          py::arg("areas"),
+          "a new design with these member areas [m^2] (bars first, then strings): each member's "
+          "radius, mass and "
+          "stiffness from its area, the rest lengths kept, and the reference state re-derived as "
+          "built, as tbridge "
+          "check reads an edited design file (the design's as_built says what moved)")
       .def_property_readonly(
-          "rest_lengths", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.rest_length; }); },
+          "forces",
+          [](const Design& d) {
+            return MemberColumn(d, [](const MemberSizing& s) { return s.force; });
+          },
+          "design force: compression of a bar, tension of a string [N]")
+      .def_property_readonly(
+          "rest_lengths",
+          [](const Design& d) {
+            return MemberColumn(d, [](const MemberSizing& s) { return s.rest_length; });
+          },
           "[m]; a bar's is its length")
+      .def_property_readonly("utilisation",
+                             [](const Design& d) {
+                               return MemberColumn(
+                                   d, [](const MemberSizing& s) { return s.utilisation; });
+                             })
       .def_property_readonly(
-          "utilisation", [](const Design& d) { return MemberColumn(d, [](const MemberSizing& s) { return s.utilisation; }); })
-      .def_property_readonly("verdict", [](const Design& d) { return std::string(VerdictName(DesignVerdict(d).outcome)); },
-                             "PASS, FAIL or INCOMPLETE")
-      .def_property_readonly("verdict_summary", [](const Design& d) { return DesignVerdict(d).summary; })
+          "verdict",
+          [](const Design& d) { return std::string(VerdictName(DesignVerdict(d).outcome)); },
+          "PASS, FAIL or INCOMPLETE")
+      .def_property_readonly("verdict_summary",
+                             [](const Design& d) { return DesignVerdict(d).summary; })
       .def_property_readonly("cases",
                              [](const Design& d) {
                                std::vector<std::string> out;
                                for (const LoadCase& c : d.cases) out.push_back(c.name);
                                return out;
                              })
-      .def_property_readonly("structure_mass", [](const Design& d) { return d.mass.structure; }, "[kg]")
-      .def("to_json",
-           [](const Design& d) {
-             std::ostringstream os;
-             WriteDesignJson(d, os);
-             return os.str();
-           },
-           "the design file tbridge design writes, as text")
-      .def("summary", [](const Design& d) { return DesignSummary(d); }, "the summary tbridge design prints");
+      .def_property_readonly(
+          "structure_mass", [](const Design& d) { return d.mass.structure; }, "[kg]")
+      .def(
+          "to_json",
+          [](const Design& d) {
+            std::ostringstream os;
+            WriteDesignJson(d, os);
+            return os.str();
+          },
+          "the design file tbridge design writes, as text")
+      .def(
+          "summary", [](const Design& d) { return DesignSummary(d); },
+          "the summary tbridge design prints");
 
-  py::class_<Modes>(m, "Modes", "Natural frequencies and mass-normalised shapes (modes x nodes x 3), lowest first.")
+  py::class_<Modes>(
+      m, "Modes",
+      "Natural frequencies and mass-normalised shapes (modes x nodes x 3), lowest first.")
       .def_readonly("omega_rad_s", &Modes::omega_rad_s)
       .def_readonly("frequency_hz", &Modes::frequency_hz)
       .def_readonly("period_s", &Modes::period_s)
@@ -374,7 +407,8 @@ PYBIND11_MODULE(tbridge, m) {
       "bridge, a StructureDesign of a structure's members in groups; Ctrl-C stops a bridge's "
       "(KeyboardInterrupt)");
   m.def(
-      "load_design", [](const std::string& path) { return ReadDesign(ReadJsonFile(path)); }, py::arg("path"),
+      "load_design", [](const std::string& path) { return ReadDesign(ReadJsonFile(path)); },
+      py::arg("path"),
       "a design file written by tbridge design or check, read as tbridge check reads it");
   m.def(
       "check",
@@ -385,7 +419,9 @@ PYBIND11_MODULE(tbridge, m) {
           return out;
         });
       },
-      py::arg("design"), "the design with its checks run again, as tbridge check; Ctrl-C stops it (KeyboardInterrupt)");
+      py::arg("design"),
+      "the design with its checks run again, as tbridge check; Ctrl-C stops it "
+      "(KeyboardInterrupt)");
   m.def(
       "export",
       [](const Design& design, const std::string& format, bool rigid_bars, int modes) {
@@ -433,11 +469,13 @@ PYBIND11_MODULE(tbridge, m) {
         }
         const SimulationResult& result = scenario.simulation;
         Run out;
-        out.summary = py::module_::import("json").attr("loads")(SummaryJson(c, scenario.model, result).dump());
+        out.summary = py::module_::import("json").attr("loads")(
+            SummaryJson(c, scenario.model, result).dump());
         const auto records = static_cast<py::ssize_t>(history.times.size());
         const auto nodes = static_cast<py::ssize_t>(result.recorded_nodes.size());
         out.time = py::array_t<double>(records, history.times.data());
-        out.positions = py::array_t<double>({records, nodes, static_cast<py::ssize_t>(result.dim)}, history.rows.data());
+        out.positions = py::array_t<double>({records, nodes, static_cast<py::ssize_t>(result.dim)},
+                                            history.rows.data());
         out.recorded_nodes = py::array_t<int>(nodes, result.recorded_nodes.data());
         return out;
       },
@@ -459,15 +497,24 @@ PYBIND11_MODULE(tbridge, m) {
         return Rows(nodes);
       },
       py::arg("design"), py::arg("case"),
-      "the node positions (n x 3, m) under one load case of the design, solved as the static check solves it "
-      "(the nonlinear static problem from the reference state); `case` as the design file names it: \"NAME\", or "
+      "the node positions (n x 3, m) under one load case of the design, solved as the static check "
+      "solves it "
+      "(the nonlinear static problem from the reference state); `case` as the design file names "
+      "it: \"NAME\", or "
       "\"NAME at node N\" for a travelling case at the station of deck node N");
-  py::class_<SweepResult>(m, "Sweep", "The rows of a sweep and its choice, as tbridge sweep writes them.")
-      .def_readonly("rows", &SweepResult::rows, "one dict per candidate of the run, as sweep.json's \"rows\"")
+  py::class_<SweepResult>(m, "Sweep",
+                          "The rows of a sweep and its choice, as tbridge sweep writes them.")
+      .def_readonly("rows", &SweepResult::rows,
+                    "one dict per candidate of the run, as sweep.json's \"rows\"")
       .def_readonly("choice", &SweepResult::choice,
-                    "sweep.json's \"choice\" (the lightest feasible candidate and what decided it); None for a shard")
-      .def("to_json", [](const SweepResult& s) { return s.json_text; }, "the sweep.json tbridge sweep writes")
-      .def("to_csv", [](const SweepResult& s) { return s.csv_text; }, "the sweep.csv tbridge sweep writes");
+                    "sweep.json's \"choice\" (the lightest feasible candidate and what decided "
+                    "it); None for a shard")
+      .def(
+          "to_json", [](const SweepResult& s) { return s.json_text; },
+          "the sweep.json tbridge sweep writes")
+      .def(
+          "to_csv", [](const SweepResult& s) { return s.csv_text; },
+          "the sweep.csv tbridge sweep writes");
 
   m.def(
       "sweep",
@@ -478,7 +525,9 @@ PYBIND11_MODULE(tbridge, m) {
                 ? ParseSweepSpec(JsonOf(config))
                 : LoadSweepSpec(py::str(py::module_::import("os").attr("fspath")(config)));
         SweepRunOptions options;
-        options.threads = threads ? *threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        options.threads = threads
+                              ? *threads
+                              : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         if (options.threads < 1)
           throw ConfigError("threads", std::to_string(options.threads), "a whole number >= 1");
         std::optional<Shard> shard;

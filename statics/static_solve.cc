@@ -36,8 +36,9 @@ void AddForce(const DofMap& map, int v, const Eigen::Vector3d& force, Eigen::Vec
 }
 
 // Residual of equilibrium at the free coordinates and of the bar constraints.
-void Residual(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x, const Eigen::VectorXd& lambda,
-              const Eigen::Matrix3Xd& loads, Eigen::VectorXd& r, Eigen::VectorXd& g) {
+void Residual(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x,
+              const Eigen::VectorXd& lambda, const Eigen::Matrix3Xd& loads, Eigen::VectorXd& r,
+              Eigen::VectorXd& g) {
   const Structure& s = m.structure;
   r.setZero(map.count);
   for (int v = 0; v < s.num_nodes(); ++v) AddForce(map, v, loads.col(v), r);
@@ -76,7 +77,8 @@ void EmitNewtonEntries(const StaticModel& m, const DofMap& map, const Eigen::Mat
         if (map.first[ends[p]] < 0 || map.first[ends[q]] < 0) continue;
         const double sign = p == q ? 1.0 : -1.0;
         for (int a = 0; a < dim; ++a) {
-          for (int c = 0; c < dim; ++c) sink(map.first[ends[p]] + a, map.first[ends[q]] + c, sign * B(a, c));
+          for (int c = 0; c < dim; ++c)
+            sink(map.first[ends[p]] + a, map.first[ends[q]] + c, sign * B(a, c));
         }
       }
     }
@@ -116,8 +118,8 @@ void EmitNewtonEntries(const StaticModel& m, const DofMap& map, const Eigen::Mat
 }
 
 // The saddle-point matrix at (x, lambda), assembled afresh.
-Eigen::SparseMatrix<double> Jacobian(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x,
-                                     const Eigen::VectorXd& lambda) {
+Eigen::SparseMatrix<double> Jacobian(const StaticModel& m, const DofMap& map,
+                                     const Eigen::Matrix3Xd& x, const Eigen::VectorXd& lambda) {
   std::vector<Eigen::Triplet<double>> t;
   EmitNewtonEntries(m, map, x, lambda, [&t](int r, int c, double v) { t.emplace_back(r, c, v); });
   const int size = map.count + m.structure.num_bars();
@@ -131,7 +133,8 @@ Eigen::SparseMatrix<double> Jacobian(const StaticModel& m, const DofMap& map, co
 // default at n = 7 (the static check's hundreds of solves, five to six steps each).
 class NewtonMatrix {
  public:
-  NewtonMatrix(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x, const Eigen::VectorXd& lambda)
+  NewtonMatrix(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x,
+               const Eigen::VectorXd& lambda)
       : J_(Jacobian(m, map, x, lambda)) {
     J_.makeCompressed();
     EmitNewtonEntries(m, map, x, lambda, [this](int r, int c, double) {
@@ -140,8 +143,8 @@ class NewtonMatrix {
       slots_.push_back(static_cast<int>(std::lower_bound(begin, end, r) - J_.innerIndexPtr()));
     });
   }
-  const Eigen::SparseMatrix<double>& At(const StaticModel& m, const DofMap& map, const Eigen::Matrix3Xd& x,
-                                        const Eigen::VectorXd& lambda) {
+  const Eigen::SparseMatrix<double>& At(const StaticModel& m, const DofMap& map,
+                                        const Eigen::Matrix3Xd& x, const Eigen::VectorXd& lambda) {
     double* values = J_.valuePtr();
     std::fill(values, values + J_.nonZeros(), 0.0);
     size_t k = 0;
@@ -166,8 +169,8 @@ struct StaticWorkspace::Impl {
 StaticWorkspace::StaticWorkspace() : impl_(std::make_unique<Impl>()) {}
 StaticWorkspace::~StaticWorkspace() = default;
 
-StaticState StateAt(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const Eigen::VectorXd& bar_compression,
-                    const Eigen::Matrix3Xd& loads) {
+StaticState StateAt(const StaticModel& m, const Eigen::Matrix3Xd& nodes,
+                    const Eigen::VectorXd& bar_compression, const Eigen::Matrix3Xd& loads) {
   const Structure& s = m.structure;
   StaticState out;
   out.nodes = nodes;
@@ -203,13 +206,15 @@ namespace {
 // The multipliers of bar compressions C: lambda_b = C_b / (2 l_b).
 Eigen::VectorXd Multipliers(const Structure& s, const Eigen::VectorXd& bar_compression) {
   Eigen::VectorXd lambda(s.num_bars());
-  for (int b = 0; b < s.num_bars(); ++b) lambda[b] = bar_compression[b] / (2.0 * s.Length(s.bars[b]));
+  for (int b = 0; b < s.num_bars(); ++b)
+    lambda[b] = bar_compression[b] / (2.0 * s.Length(s.bars[b]));
   return lambda;
 }
 
 }  // namespace
 
-StaticTangent::StaticTangent(const StaticModel& model, const StaticState& state) : model_(model), state_(state) {
+StaticTangent::StaticTangent(const StaticModel& model, const StaticState& state)
+    : model_(model), state_(state) {
   const DofMap map = MapDofs(model.structure);
   first_ = map.first;
   dim_ = map.dim;
@@ -241,13 +246,15 @@ void StaticTangent::Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& disp
     const Eigen::Vector3d d = state_.nodes.col(e.j) - state_.nodes.col(e.i);
     const double len = d.norm();
     const bool taut = len > model_.string_rest_length[k];
-    force_change[nb + k] =
-        taut ? model_.string_stiffness[k] * d.dot(displacement.col(e.j) - displacement.col(e.i)) / len : 0.0;
+    force_change[nb + k] = taut ? model_.string_stiffness[k] *
+                                      d.dot(displacement.col(e.j) - displacement.col(e.i)) / len
+                                : 0.0;
   }
 }
 
-StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent, StaticWorkspace* workspace) {
+StaticResult SolveStatic(const StaticModel& m, const StaticState& start,
+                         const Eigen::Matrix3Xd& start_loads, const Eigen::Matrix3Xd& loads,
+                         const StaticTangent* tangent, StaticWorkspace* workspace) {
   const Structure& s = m.structure;
   const DofMap map = MapDofs(s);
   const int nb = s.num_bars();
@@ -257,8 +264,10 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
   // Tolerances: forces to 1e-10 of the largest load or member force (a few hundred rounding
   // steps of the sums at a node); bar lengths to 1e-12 relative.
   double force_scale = std::max(loads.cwiseAbs().maxCoeff(), start_loads.cwiseAbs().maxCoeff());
-  if (start.bar_compression.size()) force_scale = std::max(force_scale, start.bar_compression.cwiseAbs().maxCoeff());
-  if (start.string_tension.size()) force_scale = std::max(force_scale, start.string_tension.cwiseAbs().maxCoeff());
+  if (start.bar_compression.size())
+    force_scale = std::max(force_scale, start.bar_compression.cwiseAbs().maxCoeff());
+  if (start.string_tension.size())
+    force_scale = std::max(force_scale, start.string_tension.cwiseAbs().maxCoeff());
   force_scale = std::max(force_scale, 1e-300);
   double min_bar = 1e300;
   for (const Member& e : s.bars) min_bar = std::min(min_bar, s.Length(e));
@@ -280,7 +289,8 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
   auto converged = [&](const Eigen::VectorXd& rr, const Eigen::VectorXd& gg) {
     const double rmax = rr.size() ? rr.cwiseAbs().maxCoeff() : 0.0;
     double gmax = 0;
-    for (int b = 0; b < nb; ++b) gmax = std::max(gmax, std::abs(gg[b]) / std::pow(s.Length(s.bars[b]), 2));
+    for (int b = 0; b < nb; ++b)
+      gmax = std::max(gmax, std::abs(gg[b]) / std::pow(s.Length(s.bars[b]), 2));
     return rmax <= 1e-10 * force_scale && gmax <= 1e-12;
   };
   while (done < 1.0) {
@@ -312,11 +322,13 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
       // structure across a configuration.
       double largest = 0;
       for (int v = 0; v < s.num_nodes(); ++v) {
-        if (map.first[v] >= 0) largest = std::max(largest, step.segment(map.first[v], map.dim).norm());
+        if (map.first[v] >= 0)
+          largest = std::max(largest, step.segment(map.first[v], map.dim).norm());
       }
       const double scale = largest > 0.1 * min_bar ? 0.1 * min_bar / largest : 1.0;
       for (int v = 0; v < s.num_nodes(); ++v) {
-        if (map.first[v] >= 0) x.col(v).head(map.dim) += scale * step.segment(map.first[v], map.dim);
+        if (map.first[v] >= 0)
+          x.col(v).head(map.dim) += scale * step.segment(map.first[v], map.dim);
       }
       lambda += scale * step.tail(nb);
     }
@@ -330,8 +342,10 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start, const E
     lambda = lambda0;
     dt *= 0.5;
     if (dt < 1e-4) {
-      out.message = "Newton did not converge below a load step of 1e-4 of the load (at " + std::to_string(done) +
-                    " of it): the structure has no nearby equilibrium (a mechanism, or strings slack)";
+      out.message =
+          "Newton did not converge below a load step of 1e-4 of the load (at " +
+          std::to_string(done) +
+          " of it): the structure has no nearby equilibrium (a mechanism, or strings slack)";
       break;
     }
   }

@@ -31,10 +31,10 @@ struct StaticModel {
 };
 
 struct StaticState {
-  Eigen::Matrix3Xd nodes;             // positions [m]
-  Eigen::VectorXd bar_compression;    // [N], per bar (negative: tension)
-  Eigen::VectorXd string_tension;     // [N], per string (0 when slack)
-  Eigen::Matrix3Xd reactions;         // [N], zero at free nodes; balance the applied loads
+  Eigen::Matrix3Xd nodes;           // positions [m]
+  Eigen::VectorXd bar_compression;  // [N], per bar (negative: tension)
+  Eigen::VectorXd string_tension;   // [N], per string (0 when slack)
+  Eigen::Matrix3Xd reactions;       // [N], zero at free nodes; balance the applied loads
 };
 
 struct StaticResult {
@@ -62,7 +62,8 @@ class StaticTangent {
   bool ok() const { return ok_; }
   // The changes under `dloads` (3 x n_n [N]): node displacements (3 x n_n [m], zero at fixed
   // nodes) and member forces [dC_bars; dT_strings] [N]; the outputs are sized on first use.
-  void Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& displacement, Eigen::VectorXd& force_change);
+  void Solve(const Eigen::Matrix3Xd& dloads, Eigen::Matrix3Xd& displacement,
+             Eigen::VectorXd& force_change);
 
  private:
   friend StaticResult SolveStatic(const StaticModel&, const StaticState&, const Eigen::Matrix3Xd&,
@@ -72,7 +73,7 @@ class StaticTangent {
   std::vector<int> first_;  // per node, its first free coordinate or -1 (fixed)
   int dim_ = 3, free_ = 0;
   bool ok_ = false;
-  KluFactor lu_;  // of the Newton matrix at `state`
+  KluFactor lu_;                // of the Newton matrix at `state`
   Eigen::VectorXd rhs_, step_;  // the solves' workspace
 };
 
@@ -101,8 +102,9 @@ class StaticWorkspace {
 // `tangent`, when given, is a StaticTangent of this model at `start`: its factorisation serves
 // the Newton steps taken from `start` (the same matrix, not factorised again). `workspace`,
 // when given, is shared with the other solves of this model (the same result, less work).
-StaticResult SolveStatic(const StaticModel& model, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-                         const Eigen::Matrix3Xd& loads, const StaticTangent* tangent = nullptr,
+StaticResult SolveStatic(const StaticModel& model, const StaticState& start,
+                         const Eigen::Matrix3Xd& start_loads, const Eigen::Matrix3Xd& loads,
+                         const StaticTangent* tangent = nullptr,
                          StaticWorkspace* workspace = nullptr);
 
 // A series of static solves of one model whose loads change a little from one to the next (a
@@ -114,8 +116,8 @@ StaticResult SolveStatic(const StaticModel& model, const StaticState& start, con
 // `start`, `start_loads` and `tangent` must outlive it.
 class StaticSeries {
  public:
-  StaticSeries(const StaticModel& model, const StaticState& start, const Eigen::Matrix3Xd& start_loads,
-               const StaticTangent* tangent = nullptr)
+  StaticSeries(const StaticModel& model, const StaticState& start,
+               const Eigen::Matrix3Xd& start_loads, const StaticTangent* tangent = nullptr)
       : model_(model), start_(start), start_loads_(start_loads), tangent_(tangent) {}
   // Equilibrium under `loads` (as SolveStatic's), from the last solve's where it converged.
   StaticResult Solve(const Eigen::Matrix3Xd& loads);
@@ -134,7 +136,7 @@ class StaticSeries {
 
 // The force every member exerts on the nodes of `nodes` with the given bar compressions,
 // string tensions from the model (slack = 0), and the reactions that balance `loads`.
-StaticState StateAt(const StaticModel& model, const Eigen::Matrix3Xd& nodes, const Eigen::VectorXd& bar_compression,
-                    const Eigen::Matrix3Xd& loads);
+StaticState StateAt(const StaticModel& model, const Eigen::Matrix3Xd& nodes,
+                    const Eigen::VectorXd& bar_compression, const Eigen::Matrix3Xd& loads);
 
 }  // namespace tbridge

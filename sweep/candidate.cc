@@ -68,7 +68,8 @@ void ReadDynamicCheck(const DynamicCheck& check, size_t num_bars, CandidateRow& 
   row.dynamic_runs = runs;
   row.slack_taut_strings = static_cast<int>(check.slack_strings.size());
   if (!*row.dynamic_check_done) {
-    const std::string why = "dynamic check not complete: " + (check.done ? check.NotDone() : std::string("not run"));
+    const std::string why =
+        "dynamic check not complete: " + (check.done ? check.NotDone() : std::string("not run"));
     row.note = row.note.empty() ? why : row.note + "; " + why;
   }
 }
@@ -133,8 +134,9 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     // As tbridge design: an unstable candidate is no design (its note says why).
     Design design = sw.verified ? DesignAndVerify(config) : RunDesign(config);
     RequireStable(design);
-    row.first_design = design.resizing.structure_mass_kg.empty() ? design.mass.structure
-                                                                 : design.resizing.structure_mass_kg.front();
+    row.first_design = design.resizing.structure_mass_kg.empty()
+                           ? design.mass.structure
+                           : design.resizing.structure_mass_kg.front();
     row.designs = std::max(1, design.resizing.iterations);
     if (sw.verified) {
       const Verdict verdict = DesignVerdict(design);
@@ -152,14 +154,16 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     }
     row.allowed_stress = StringMaterial(design.config).DesignStress();
     const bool prestrained = candidate.deck_prestrain < 1.0;
-    // keep_area's rest lengths go to the models (dynamics.prestrain), as tbridge simulate takes them.
+    // keep_area's rest lengths go to the models (dynamics.prestrain), as tbridge simulate takes
+    // them.
     std::vector<StringPrestrain> prestrain;
     if (prestrained && sw.prestrain_sizing == "grow_area") {
       row.deck_string_area_factor = GrowDeckStrings(design, candidate.deck_prestrain);
       row.prestress = DeckStress(design);
     } else if (prestrained) {
       prestrain.push_back({"deck", candidate.deck_prestrain});
-      row.prestress = StringMaterial(design.config).youngs_modulus * (1 / candidate.deck_prestrain - 1);
+      row.prestress =
+          StringMaterial(design.config).youngs_modulus * (1 / candidate.deck_prestrain - 1);
     } else {
       row.prestress = DeckStress(design);
     }
@@ -177,14 +181,16 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     if (sw.NeedsModes()) {
       // The frequency of the model the dynamic check runs on.
       row.first_frequency_rad_s =
-          LowestFrequency(BuildDynamicModel(design, DynamicCheckModelOptions(design, prestrain))).omega_rad_s;
+          LowestFrequency(BuildDynamicModel(design, DynamicCheckModelOptions(design, prestrain)))
+              .omega_rad_s;
     }
     if (sw.NeedsDynamicCheck()) {
       // A verified design carries its own check of this bridge; a changed or unverified one is
       // checked here, by the same check.
       const bool own = sw.verified && !prestrained;
-      ReadDynamicCheck(own ? design.dynamics : CheckDynamics(design, std::nullopt, nullptr, prestrain),
-                       design.bars.size(), row);
+      ReadDynamicCheck(
+          own ? design.dynamics : CheckDynamics(design, std::nullopt, nullptr, prestrain),
+          design.bars.size(), row);
     }
   } catch (const ModelError& e) {
     row.ok = false;
@@ -200,24 +206,29 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   check(sw.verified, row.verified.value_or(false), kVerifiedDesign);
   check(sw.constraints.Dynamic(), row.dynamic_check_done.value_or(false), kDynamicCheckDone);
   check(con.min_first_frequency_rad_s.has_value(),
-        row.first_frequency_rad_s && *row.first_frequency_rad_s >= con.min_first_frequency_rad_s.value_or(0),
+        row.first_frequency_rad_s &&
+            *row.first_frequency_rad_s >= con.min_first_frequency_rad_s.value_or(0),
         kMinFirstFrequency);
   check(con.max_deck_displacement.has_value(),
-        row.peak_deck_displacement && *row.peak_deck_displacement <= con.max_deck_displacement.value_or(0),
+        row.peak_deck_displacement &&
+            *row.peak_deck_displacement <= con.max_deck_displacement.value_or(0),
         kMaxDeckDisplacement);
   check(con.span_over_displacement.has_value(),
-        row.peak_deck_displacement && *row.peak_deck_displacement * con.span_over_displacement.value_or(0) <= span,
+        row.peak_deck_displacement &&
+            *row.peak_deck_displacement * con.span_over_displacement.value_or(0) <= span,
         kSpanOverDisplacement);
-  check(con.no_slack_under_service, row.slack_taut_strings && *row.slack_taut_strings == 0, kNoSlack);
+  check(con.no_slack_under_service, row.slack_taut_strings && *row.slack_taut_strings == 0,
+        kNoSlack);
   check(con.max_dynamic_stress_ratio.has_value(),
         row.dynamic_string_utilisation &&
             *row.dynamic_string_utilisation <= con.max_dynamic_stress_ratio.value_or(0),
         kMaxDynamicStress);
-  check(con.bar_capacity_during_motion, row.dynamic_bar_utilisation && *row.dynamic_bar_utilisation <= 1.0,
-        kBarCapacity);
+  check(con.bar_capacity_during_motion,
+        row.dynamic_bar_utilisation && *row.dynamic_bar_utilisation <= 1.0, kBarCapacity);
   // 1e-8 relative: the design state sits at sigma_w up to the solver's force tolerance
   // (design.tolerance, 1e-10 by default, seen as 2e-10 relative in the deck strings).
-  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-8), kPrestressAllowed);
+  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-8),
+        kPrestressAllowed);
   row.feasible = row.violated.empty();
   return row;
 }

@@ -34,7 +34,7 @@ inline constexpr const char* kPrestressAllowed = "prestress_within_allowed";
 
 struct CandidateRow {
   Candidate candidate;
-  bool ok = true;    // false: the design or a run failed; `note` says why
+  bool ok = true;  // false: the design or a run failed; `note` says why
   std::string note;
   // Masses [kg]: the design's parts after any deck-string growth (MassBreakdown).
   double bars = 0, strings = 0, deck_strings = 0, deck_beams = 0, structure = 0, total = 0;
@@ -45,7 +45,7 @@ struct CandidateRow {
   int designs = 1;
   std::optional<bool> verified;
   std::optional<double> utilisation_max;
-  double objective = 0;   // total + joint_mass [kg]
+  double objective = 0;  // total + joint_mass [kg]
   int free_nodes = 0;
   double deck_string_area_factor = 1;  // deck-string area / design area (grow_area)
   double prestress = 0;                // stress of the deck strings at the design length [Pa]

@@ -12,7 +12,8 @@ FirstFrequency LowestFrequency(const DynamicModel& model, const FirstFrequencyOp
   modal.tolerance = options.tolerance;
   modal.highest = false;  // the frequency constraint needs only the lowest mode
   const ModalResult modes = ComputeModes(model, modal);
-  if (modes.modes.empty()) throw ModelError("first frequency: the model has no free degree of freedom");
+  if (modes.modes.empty())
+    throw ModelError("first frequency: the model has no free degree of freedom");
   FirstFrequency out;
   out.omega_rad_s = modes.modes.front().omega_rad_s;
   out.method = modes.solver;

@@ -26,6 +26,7 @@ struct FirstFrequency {
 // Throws ModelError when the model is inconsistent (see Linearise), has no free degree of
 // freedom, its shifted constrained stiffness is singular (a mechanism the bar constraints do
 // not remove) or the eigensolver does not converge.
-FirstFrequency LowestFrequency(const DynamicModel& model, const FirstFrequencyOptions& options = {});
+FirstFrequency LowestFrequency(const DynamicModel& model,
+                               const FirstFrequencyOptions& options = {});
 
 }  // namespace tbridge

@@ -32,8 +32,9 @@ std::string Joined(const std::vector<std::string>& items) {
 
 std::string Describe(const CandidateRow& r) {
   std::ostringstream s;
-  s << "n = " << r.candidate.n << ", p = " << r.candidate.p << ", beta = " << Fixed(r.candidate.beta_deg)
-    << " deg, deck prestrain " << Fixed(r.candidate.deck_prestrain);
+  s << "n = " << r.candidate.n << ", p = " << r.candidate.p
+    << ", beta = " << Fixed(r.candidate.beta_deg) << " deg, deck prestrain "
+    << Fixed(r.candidate.deck_prestrain);
   return s.str();
 }
 
@@ -54,7 +55,8 @@ std::optional<T> GetOpt(const nlohmann::json& j, const char* key) {
 std::string CsvText(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string out = "\"";
-  for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  for (const char c : s)
+    out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
   return out + "\"";
 }
 
@@ -90,27 +92,29 @@ SweepChoice Choose(const std::vector<CandidateRow>& rows) {
   std::ostringstream why;
   if (next_lighter) {
     c.binding = FirstViolation(*next_lighter);
-    why << "lightest feasible (" << Describe(*best) << ", " << Fixed(best->objective) << " kg); " << lighter
-        << " lighter candidate(s) are infeasible, the next lighter (" << Describe(*next_lighter) << ", "
-        << Fixed(next_lighter->objective) << " kg) violates " << Joined(next_lighter->violated.empty()
-                                                                          ? std::vector<std::string>{"failed"}
-                                                                          : next_lighter->violated);
+    why << "lightest feasible (" << Describe(*best) << ", " << Fixed(best->objective) << " kg); "
+        << lighter << " lighter candidate(s) are infeasible, the next lighter ("
+        << Describe(*next_lighter) << ", " << Fixed(next_lighter->objective) << " kg) violates "
+        << Joined(next_lighter->violated.empty() ? std::vector<std::string>{"failed"}
+                                                 : next_lighter->violated);
   } else {
     const CandidateRow* lighter_members = nullptr;
     int max_n = 0;
     for (const CandidateRow& r : rows) {
       max_n = std::max(max_n, r.candidate.n);
-      if (r.ok && r.total < best->total && (!lighter_members || r.total < lighter_members->total)) lighter_members = &r;
+      if (r.ok && r.total < best->total && (!lighter_members || r.total < lighter_members->total))
+        lighter_members = &r;
     }
     if (lighter_members && best->joint_mass > 0) {
       c.binding = "joint_mass";
       why << "objective minimum (" << Describe(*best) << ", " << Fixed(best->objective)
-          << " kg): lighter members exist (" << Describe(*lighter_members) << ", " << Fixed(lighter_members->total)
-          << " kg without joints) but their joint mass " << Fixed(lighter_members->joint_mass) << " kg outweighs it";
+          << " kg): lighter members exist (" << Describe(*lighter_members) << ", "
+          << Fixed(lighter_members->total) << " kg without joints) but their joint mass "
+          << Fixed(lighter_members->joint_mass) << " kg outweighs it";
     } else if (best->candidate.n == max_n) {
       c.binding = "mass (monotone: largest n in grid)";
-      why << "objective minimum at the largest n of the grid (" << Describe(*best) << ", " << Fixed(best->objective)
-          << " kg): mass still falls with n, a larger n would be lighter";
+      why << "objective minimum at the largest n of the grid (" << Describe(*best) << ", "
+          << Fixed(best->objective) << " kg): mass still falls with n, a larger n would be lighter";
     } else {
       c.binding = "mass";
       why << "objective minimum (" << Describe(*best) << ", " << Fixed(best->objective) << " kg)";
@@ -134,11 +138,13 @@ Shard ParseShard(const std::string& text, const std::string& option) {
   };
   if (slash == std::string::npos) throw OptionError(option, "'" + text + "'", allowed);
   Shard s{number(text.substr(0, slash)), number(text.substr(slash + 1))};
-  if (s.count < 1 || s.index < 1 || s.index > s.count) throw OptionError(option, "'" + text + "'", allowed);
+  if (s.count < 1 || s.index < 1 || s.index > s.count)
+    throw OptionError(option, "'" + text + "'", allowed);
   return s;
 }
 
-std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions& options, SweepStats* stats) {
+std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions& options,
+                                   SweepStats* stats) {
   std::vector<Candidate> mine;
   for (const Candidate& c : EnumerateCandidates(spec.sweep)) {
     if (options.shard.Has(c.index)) mine.push_back(c);
@@ -185,7 +191,8 @@ std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions&
       }
     }
   };
-  const int threads = std::max(1, std::min<int>(options.threads, static_cast<int>(std::max<size_t>(todo.size(), 1))));
+  const int threads = std::max(
+      1, std::min<int>(options.threads, static_cast<int>(std::max<size_t>(todo.size(), 1))));
   std::vector<std::thread> pool;
   for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
   worker();
@@ -290,36 +297,42 @@ std::string SweepFingerprint(const SweepSpec& spec) {
 
 std::string SweepCsv(const std::vector<CandidateRow>& rows) {
   std::ostringstream out;
-  out << "index,n,p,beta_deg,deck_prestrain,ok,bars_kg,strings_kg,deck_strings_kg,deck_beams_kg,structure_kg,"
+  out << "index,n,p,beta_deg,deck_prestrain,ok,bars_kg,strings_kg,deck_strings_kg,deck_beams_kg,"
+         "structure_kg,"
          "total_kg,joint_mass_kg,objective_kg,first_design_kg,designs,verified,utilisation_max,"
          "deck_string_area_factor,prestress_pa,first_frequency_rad_s,"
-         "dynamic_check_done,peak_deck_displacement_m,dynamic_string_utilisation,dynamic_bar_utilisation,slack_taut_strings,"
+         "dynamic_check_done,peak_deck_displacement_m,dynamic_string_utilisation,dynamic_bar_"
+         "utilisation,slack_taut_strings,"
          "dynamic_runs,feasible,violated,note\n";
   auto opt = [](const std::optional<double>& v) { return v ? Fixed(*v) : std::string(); };
   for (const CandidateRow& r : rows) {
     const Candidate& c = r.candidate;
-    out << c.index << "," << c.n << "," << c.p << "," << Fixed(c.beta_deg) << "," << Fixed(c.deck_prestrain) << ","
-        << (r.ok ? 1 : 0) << "," << Fixed(r.bars) << "," << Fixed(r.strings) << "," << Fixed(r.deck_strings) << ","
-        << Fixed(r.deck_beams) << "," << Fixed(r.structure) << "," << Fixed(r.total) << "," << Fixed(r.joint_mass)
-        << "," << Fixed(r.objective) << "," << Fixed(r.first_design) << "," << r.designs << ","
+    out << c.index << "," << c.n << "," << c.p << "," << Fixed(c.beta_deg) << ","
+        << Fixed(c.deck_prestrain) << "," << (r.ok ? 1 : 0) << "," << Fixed(r.bars) << ","
+        << Fixed(r.strings) << "," << Fixed(r.deck_strings) << "," << Fixed(r.deck_beams) << ","
+        << Fixed(r.structure) << "," << Fixed(r.total) << "," << Fixed(r.joint_mass) << ","
+        << Fixed(r.objective) << "," << Fixed(r.first_design) << "," << r.designs << ","
         << (r.verified ? (*r.verified ? "1" : "0") : "") << "," << opt(r.utilisation_max) << ","
         << Fixed(r.deck_string_area_factor) << "," << Fixed(r.prestress) << ","
         << opt(r.first_frequency_rad_s) << ","
-        << (r.dynamic_check_done ? (*r.dynamic_check_done ? "1" : "0") : "") << "," << opt(r.peak_deck_displacement)
-        << "," << opt(r.dynamic_string_utilisation) << "," << opt(r.dynamic_bar_utilisation) << ","
+        << (r.dynamic_check_done ? (*r.dynamic_check_done ? "1" : "0") : "") << ","
+        << opt(r.peak_deck_displacement) << "," << opt(r.dynamic_string_utilisation) << ","
+        << opt(r.dynamic_bar_utilisation) << ","
         << (r.slack_taut_strings ? std::to_string(*r.slack_taut_strings) : std::string()) << ","
-        << CsvText(r.dynamic_runs.value_or("")) << "," << (r.feasible ? 1 : 0) << "," << Joined(r.violated) << ","
-        << CsvText(r.note) << "\n";
+        << CsvText(r.dynamic_runs.value_or("")) << "," << (r.feasible ? 1 : 0) << ","
+        << Joined(r.violated) << "," << CsvText(r.note) << "\n";
   }
   return out.str();
 }
 
-std::string SweepJson(const SweepSpec& spec, const std::vector<CandidateRow>& rows, const std::optional<Shard>& shard) {
+std::string SweepJson(const SweepSpec& spec, const std::vector<CandidateRow>& rows,
+                      const std::optional<Shard>& shard) {
   nlohmann::json j;
   j["config"] = ToJson(spec);
   j["fingerprint"] = SweepFingerprint(spec);
   j["candidates"] = spec.sweep.size();
-  j["shard"] = shard ? nlohmann::json{{"index", shard->index}, {"count", shard->count}} : nlohmann::json(nullptr);
+  j["shard"] = shard ? nlohmann::json{{"index", shard->index}, {"count", shard->count}}
+                     : nlohmann::json(nullptr);
   nlohmann::json list = nlohmann::json::array();
   for (const CandidateRow& r : rows) list.push_back(RowToJson(r));
   j["rows"] = list;

@@ -20,11 +20,11 @@ namespace tbridge {
 
 struct SweepChoice {
   bool found = false;
-  int index = -1;       // chosen candidate
+  int index = -1;  // chosen candidate
   // What decided: a constraint name (candidate.h), "joint_mass", "mass (monotone: largest n
   // in grid)", "mass", or "none feasible".
   std::string binding;
-  std::string reason;   // one sentence
+  std::string reason;  // one sentence
 };
 
 // The lightest feasible candidate (objective = total + joint mass; ties: lower index), and
@@ -59,7 +59,8 @@ struct SweepStats {
 
 // Rows of the candidates of options.shard, in candidate order. Exceptions other than
 // ModelError (which makes a failed row) stop the sweep and are rethrown.
-std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions& options, SweepStats* stats = nullptr);
+std::vector<CandidateRow> RunSweep(const SweepSpec& spec, const SweepRunOptions& options,
+                                   SweepStats* stats = nullptr);
 
 // One row as JSON (exact doubles) and back; RowFromJson throws ConfigError on a malformed row.
 nlohmann::json RowToJson(const CandidateRow& row);
@@ -72,6 +73,7 @@ std::string SweepFingerprint(const SweepSpec& spec);
 std::string SweepCsv(const std::vector<CandidateRow>& rows);
 // sweep.json: config, fingerprint, candidates, shard (null for the whole grid), rows and,
 // for the whole grid, the choice.
-std::string SweepJson(const SweepSpec& spec, const std::vector<CandidateRow>& rows, const std::optional<Shard>& shard);
+std::string SweepJson(const SweepSpec& spec, const std::vector<CandidateRow>& rows,
+                      const std::optional<Shard>& shard);
 
 }  // namespace tbridge

@@ -20,7 +20,8 @@ void CheckGridList(const std::vector<T>& values, const std::string& path) {
       if (values[a] == values[b]) {
         std::ostringstream v;
         v << values[a];
-        throw ConfigError(path + "[" + std::to_string(a) + "]", v.str(), "each value may appear only once");
+        throw ConfigError(path + "[" + std::to_string(a) + "]", v.str(),
+                          "each value may appear only once");
       }
     }
   }
@@ -35,17 +36,22 @@ struct Replaced {
 };
 constexpr Replaced kReplacedRunKeys[] = {
     {"duration",
-     "loads.travelling_speed_m_s (the walking load crosses the span at it; the paper's travelling load, "
+     "loads.travelling_speed_m_s (the walking load crosses the span at it; the paper's travelling "
+     "load, "
      "loads.cases \"paper_travelling\", stands 0.25 s on each station, eqs 50-51)"},
     {"dt", "loads.dynamic_dt_s"},
-    {"integrator", "loads.dynamic_method (the check runs RK4 or the modal run, never SDIRK3, which reads peaks low)"},
+    {"integrator",
+     "loads.dynamic_method (the check runs RK4 or the modal run, never SDIRK3, which reads peaks "
+     "low)"},
     {"load_factor", "loads.travelling_load_n (the walking load) and loads.gamma_q (its factor)"},
     {"string_mass", nullptr,
-     "the check's model shares each string's mass among the bars it meets (eq 27), dynamics.string_mass's default "
+     "the check's model shares each string's mass among the bars it meets (eq 27), "
+     "dynamics.string_mass's default "
      "\"bars\""},
     {"damping_c", nullptr, "the check's runs are undamped, which reads the peaks high"},
     {"deck_inertia", nullptr,
-     "the check carries the deck's and payload's mass at the deck nodes, except under the paper's switches "
+     "the check carries the deck's and payload's mass at the deck nodes, except under the paper's "
+     "switches "
      "(loads.cases [\"paper\"]), whose model has none"},
 };
 
@@ -57,18 +63,22 @@ void RefuseReplacedKeys(const nlohmann::json& sweep) {
     if (run.is_object()) {
       for (const Replaced& r : kReplacedRunKeys) {
         if (run.contains(r.key)) {
-          throw ConfigError(std::string("sweep.travelling_load.") + r.key, Show(run[r.key]),
-                            std::string("the sweep's own run was replaced by the design's dynamic check; ") +
-                                (r.by != nullptr ? std::string("set ") + r.by : std::string("nothing replaces it: ") + r.why));
+          throw ConfigError(
+              std::string("sweep.travelling_load.") + r.key, Show(run[r.key]),
+              std::string("the sweep's own run was replaced by the design's dynamic check; ") +
+                  (r.by != nullptr ? std::string("set ") + r.by
+                                   : std::string("nothing replaces it: ") + r.why));
         }
       }
     }
-    throw ConfigError("sweep.travelling_load", Show(run),
-                      "the sweep's own run was replaced by the design's dynamic check, whose runs the loads "
-                      "section sets (loads.cases, loads.travelling_load_n, loads.travelling_speed_m_s, "
-                      "loads.dynamic_dt_s, loads.dynamic_method)");
+    throw ConfigError(
+        "sweep.travelling_load", Show(run),
+        "the sweep's own run was replaced by the design's dynamic check, whose runs the loads "
+        "section sets (loads.cases, loads.travelling_load_n, loads.travelling_speed_m_s, "
+        "loads.dynamic_dt_s, loads.dynamic_method)");
   }
-  if (sweep.contains("report") && sweep["report"].is_object() && sweep["report"].contains("travelling_load")) {
+  if (sweep.contains("report") && sweep["report"].is_object() &&
+      sweep["report"].contains("travelling_load")) {
     throw ConfigError("sweep.report.travelling_load", Show(sweep["report"]["travelling_load"]),
                       "replaced by sweep.report.dynamic_check (the design's dynamic check)");
   }
@@ -96,11 +106,13 @@ std::string SweepSectionText() {
 
 SweepSpec ParseSweepSpec(const nlohmann::json& root) {
   if (!root.is_object()) throw ConfigError("(root)", Show(root), "must be a JSON object");
-  if (!root.contains("sweep")) throw ConfigError("sweep", "(missing)", "required section of a sweep config");
+  if (!root.contains("sweep"))
+    throw ConfigError("sweep", "(missing)", "required section of a sweep config");
   if (root.contains("dynamics")) {
-    throw ConfigError("dynamics", "(section)",
-                      "not allowed in a sweep config: the design's dynamic check runs the loads section's "
-                      "dynamic loads (loads.cases)");
+    throw ConfigError(
+        "dynamics", "(section)",
+        "not allowed in a sweep config: the design's dynamic check runs the loads section's "
+        "dynamic loads (loads.cases)");
   }
   const nlohmann::json& bridge = root.contains("bridge") ? root["bridge"] : nlohmann::json();
   SweepSpec spec;
@@ -119,7 +131,8 @@ SweepSpec ParseSweepSpec(const nlohmann::json& root) {
   }
   spec.base = ParseConfig(base);
   if (spec.base.structure) {
-    throw ConfigError("structure", "(custom scene)", "a sweep designs bridges: give a \"bridge\" section instead");
+    throw ConfigError("structure", "(custom scene)",
+                      "a sweep designs bridges: give a \"bridge\" section instead");
   }
   CheckSweepRules(spec.sweep, spec.base.bridge);
   // With "auto" each candidate searches its own angle (verify/angle_search.h): a list of angles

@@ -31,13 +31,13 @@ struct SweepConstraints {
   std::optional<double> min_first_frequency_rad_s;  // [rad/s], > 0
   std::optional<double> max_deck_displacement;      // peak |dy| of a deck node in a run [m], > 0
   std::optional<double> span_over_displacement;     // span / that peak must be >= this [-], > 0
-  bool no_slack_under_service = true;               // no string that must stay taut goes slack in a run
-  std::optional<double> max_dynamic_stress_ratio;   // strings' dynamic utilisation <= this [-], > 0
-  bool bar_capacity_during_motion = true;           // bars' dynamic utilisation <= 1
-  bool prestress_within_allowed = false;            // prestrained strings' stress <= sigma_w
+  bool no_slack_under_service = true;  // no string that must stay taut goes slack in a run
+  std::optional<double> max_dynamic_stress_ratio;  // strings' dynamic utilisation <= this [-], > 0
+  bool bar_capacity_during_motion = true;          // bars' dynamic utilisation <= 1
+  bool prestress_within_allowed = false;           // prestrained strings' stress <= sigma_w
   bool Dynamic() const {
-    return max_deck_displacement || span_over_displacement || no_slack_under_service || max_dynamic_stress_ratio ||
-           bar_capacity_during_motion;
+    return max_deck_displacement || span_over_displacement || no_slack_under_service ||
+           max_dynamic_stress_ratio || bar_capacity_during_motion;
   }
 };
 
@@ -48,8 +48,8 @@ struct SweepReport {
 };
 
 struct SweepConfig {
-  std::vector<int> n;                // complexities, each in [1, kMaxComplexity]; non-empty
-  std::vector<int> p{1};             // bars per module, each in [1, kMaxBarsPerModule]
+  std::vector<int> n;     // complexities, each in [1, kMaxComplexity]; non-empty
+  std::vector<int> p{1};  // bars per module, each in [1, kMaxBarsPerModule]
   std::vector<double>
       beta_deg;  // aspect angles [deg], each in [1, 90); parse default: bridge.beta_deg
   // Rest / stretched length of the deck strings; 1.0 = the design state (prestressed at

@@ -35,30 +35,33 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
               "lowest linearised frequency (dynamics/modal.h, bar lengths held) >= this"},
       c.min_first_frequency_rad_s, Range::Positive(), Absent::kNull);
   v.OptionalNumber(
-      KeyInfo{
-          "max_deck_displacement", "m",
-          "peak vertical displacement of any deck node from the run's start, over the dynamic "
-          "check's runs, <= this"},
+      KeyInfo{"max_deck_displacement", "m",
+              "peak vertical displacement of any deck node from the run's start, over the dynamic "
+              "check's runs, <= this"},
       c.max_deck_displacement, Range::Positive(), Absent::kNull);
   v.OptionalNumber(
       KeyInfo{"span_over_displacement", "–", "span / that peak >= this (e.g. 1000 for L/1000)"},
       c.span_over_displacement, Range::Positive(), Absent::kNull);
-  v.Bool(KeyInfo{"no_slack_under_service", "–",
-                 "no string that must stay taut (the deck chain; the 3D bridge's transverse strings) goes "
-                 "slack (s < L0) in any of the dynamic check's runs; other strings may"},
-         c.no_slack_under_service);
+  v.Bool(
+      KeyInfo{
+          "no_slack_under_service", "–",
+          "no string that must stay taut (the deck chain; the 3D bridge's transverse strings) goes "
+          "slack (s < L0) in any of the dynamic check's runs; other strings may"},
+      c.no_slack_under_service);
   v.OptionalNumber(
-      KeyInfo{"max_dynamic_stress_ratio", "–",
-              "every string's dynamic utilisation (the dynamic check's factored demand over A·sigma_w; "
-              "with the paper's switches, every factor 1: its peak stress / sigma_w) <= this. "
-              "The paper's design works every string at sigma_w, so any load on top of it gives > 1; "
-              "yield is at `yield_safety_factor`"},
+      KeyInfo{
+          "max_dynamic_stress_ratio", "–",
+          "every string's dynamic utilisation (the dynamic check's factored demand over A·sigma_w; "
+          "with the paper's switches, every factor 1: its peak stress / sigma_w) <= this. "
+          "The paper's design works every string at sigma_w, so any load on top of it gives > 1; "
+          "yield is at `yield_safety_factor`"},
       c.max_dynamic_stress_ratio, Range::Positive(), Absent::kNull);
-  v.Bool(KeyInfo{"bar_capacity_during_motion", "–",
-                 "every bar's dynamic utilisation <= 1: the dynamic check's factored demand over the "
-                 "design's bar resistance (`design.bar_resistance`: the column curve, or the paper's "
-                 "Euler load)"},
-         c.bar_capacity_during_motion);
+  v.Bool(
+      KeyInfo{"bar_capacity_during_motion", "–",
+              "every bar's dynamic utilisation <= 1: the dynamic check's factored demand over the "
+              "design's bar resistance (`design.bar_resistance`: the column curve, or the paper's "
+              "Euler load)"},
+      c.bar_capacity_during_motion);
   v.Bool(
       KeyInfo{"prestress_within_allowed", "–",
               "deck-string stress at the design length <= sigma_w (only `keep_area` can break it)"},
@@ -69,9 +72,10 @@ template <class R, class V>
 void DescribeFields(R& r, V& v) requires std::is_same_v<std::remove_const_t<R>, SweepReport> {
   v.Bool(KeyInfo{"first_frequency", "–", "compute the first frequency without the constraint"},
          r.first_frequency);
-  v.Bool(KeyInfo{"dynamic_check", "–",
-                 "run the design's dynamic check (and report its peaks) without a dynamic constraint"},
-         r.dynamic_check);
+  v.Bool(
+      KeyInfo{"dynamic_check", "–",
+              "run the design's dynamic check (and report its peaks) without a dynamic constraint"},
+      r.dynamic_check);
 }
 
 template <class S, class V>
@@ -93,14 +97,16 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
           "`keep_area`: A0 kept, L0 = r·s (Table 6's experiment); the stress E·(1/r − 1) may "
           "exceed sigma_w. The design itself is unchanged; only the candidate's copy is"},
       s.prestrain_sizing, {"grow_area", "keep_area"});
-  v.Bool(KeyInfo{"verified", "–",
-                 "each candidate is the verified design, as `tbridge design` writes it: its static check "
-                 "of every case, its dynamic check and the resizing of what fails, so its mass carries "
-                 "its dynamic premium over the first design (`mass_kg.first_design`); a candidate whose "
-                 "verification does not pass is infeasible (`verified_design`). A deck prestrain r < 1 "
-                 "changes the deck strings after the verification: the dynamic check is run again on "
-                 "the changed bridge, and the constraints read it. false: the minimum-mass design alone"},
-         s.verified);
+  v.Bool(
+      KeyInfo{
+          "verified", "–",
+          "each candidate is the verified design, as `tbridge design` writes it: its static check "
+          "of every case, its dynamic check and the resizing of what fails, so its mass carries "
+          "its dynamic premium over the first design (`mass_kg.first_design`); a candidate whose "
+          "verification does not pass is infeasible (`verified_design`). A deck prestrain r < 1 "
+          "changes the deck strings after the verification: the dynamic check is run again on "
+          "the changed bridge, and the constraints read it. false: the minimum-mass design alone"},
+      s.verified);
   v.Section("joint_mass", s.joint_mass);
   v.Section("constraints", s.constraints);
   v.Section("report", s.report);

@@ -79,7 +79,8 @@ struct CollectKeys {
     Add(key, "cplex", "");
   }
   void Text(const KeyInfo& key, const std::string&) { Add(key, "", ""); }
-  void Choices(const KeyInfo& key, const std::vector<std::string>&, const std::vector<std::string>&) {
+  void Choices(const KeyInfo& key, const std::vector<std::string>&,
+               const std::vector<std::string>&) {
     Add(key, {"cplex"}, "[0]");
   }
   void OptionalNumber(const KeyInfo& key, const std::optional<double>&, Range range, Absent) {
@@ -134,7 +135,9 @@ struct SetKey {
   void Bool(const KeyInfo&, bool&) {}
   void Choice(const KeyInfo& key, std::string& f, const std::vector<std::string>&) { Put(key, f); }
   void Text(const KeyInfo& key, std::string& f) { Put(key, f); }
-  void Choices(const KeyInfo& key, std::vector<std::string>& f, const std::vector<std::string>&) { Put(key, f); }
+  void Choices(const KeyInfo& key, std::vector<std::string>& f, const std::vector<std::string>&) {
+    Put(key, f);
+  }
   void OptionalNumber(const KeyInfo& key, std::optional<double>& f, Range, Absent) {
     if (prefix + key.name == target) f = value.get<double>();
   }

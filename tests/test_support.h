@@ -23,7 +23,8 @@ inline bool HaveSolvers(std::initializer_list<const char*> names) {
   return true;
 }
 
-// The paper's planar bridge (SPEC §1): L = 12 m, F = 12000 N, beta = 10 deg, solver as given ("auto": the direct solve).
+// The paper's planar bridge (SPEC §1): L = 12 m, F = 12000 N, beta = 10 deg, solver as given
+// ("auto": the direct solve).
 inline Config PaperConfig(int n, const std::string& solver = "auto") {
   Config c;
   ApplyPaperSwitches(c);
@@ -45,8 +46,8 @@ inline nlohmann::json WithPaperSwitches(nlohmann::json root) {
 }
 
 // A "sweep" section run as the paper's outer loop: its designs as the minimum-mass problem
-// gives them (not verified), the paper's dynamic check (its travelling load, no deck inertia), and no constraint
-// the section does not name. Keys the section sets are kept.
+// gives them (not verified), the paper's dynamic check (its travelling load, no deck inertia), and
+// no constraint the section does not name. Keys the section sets are kept.
 inline nlohmann::json PaperSweep(nlohmann::json sweep) {
   sweep.emplace("verified", false);
   sweep["constraints"].emplace("no_slack_under_service", false);

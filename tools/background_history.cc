@@ -17,7 +17,8 @@ void BackgroundHistory::Begin(const DynamicModel& model, const std::vector<int>&
   if (!threaded_) return;
   // Not zeroed: a page of the ring is touched when a row first reaches it, so a short run
   // pays for the rows it records, not for the whole ring (zeroing it took 1 ms of a 3 ms run).
-  ring_ = std::make_unique_for_overwrite<double[]>(static_cast<size_t>(capacity_) * static_cast<size_t>(width_));
+  ring_ = std::make_unique_for_overwrite<double[]>(static_cast<size_t>(capacity_) *
+                                                   static_cast<size_t>(width_));
   writer_ = std::thread(&BackgroundHistory::Write, this);
 }
 

@@ -25,7 +25,8 @@ class BackgroundHistory : public HistorySink {
   // costs less than handing them over. Measured in-run, best of interleaved runs, with the CSV
   // buffered and FormatG12: the MOTES prism's 73 values a row 7.6 ms inline against 8.6 ms
   // threaded; the paper's n = 6 bridge's 257 values 139 ms inline against 132 ms threaded.
-  explicit BackgroundHistory(std::vector<HistorySink*> sinks, bool always = false, int capacity = 1024);
+  explicit BackgroundHistory(std::vector<HistorySink*> sinks, bool always = false,
+                             int capacity = 1024);
   static constexpr int kThreadedWidth = 128;
   // Stops the writer without the rows still queued (a failed run writes nothing anyway).
   ~BackgroundHistory() override;
@@ -38,14 +39,14 @@ class BackgroundHistory : public HistorySink {
   void Finish();
 
  private:
-  void Write();  // the writer thread
+  void Write();           // the writer thread
   void Stop(bool drain);  // drain: write the queued rows first
 
   std::vector<HistorySink*> sinks_;
   bool always_, threaded_ = false;
-  int capacity_, width_ = 0;     // rows; doubles a row (t, then the coordinates)
+  int capacity_, width_ = 0;        // rows; doubles a row (t, then the coordinates)
   std::unique_ptr<double[]> ring_;  // capacity_ x width_
-  long head_ = 0, tail_ = 0;     // rows queued so far, rows written so far
+  long head_ = 0, tail_ = 0;        // rows queued so far, rows written so far
   bool done_ = false, drain_ = true, writer_waiting_ = false, run_waiting_ = false;
   std::exception_ptr error_;
   std::mutex mutex_;

@@ -85,8 +85,8 @@ int RunCheckCommand(const std::vector<std::string>& args) {
   return DesignVerdict(design).pass ? kExitOk : kExitNotOk;
 }
 
-const CommandRegistrar kRegisterCheck("check", "the static and dynamic checks of a written design, run again",
-                                      &RunCheckCommand);
+const CommandRegistrar kRegisterCheck(
+    "check", "the static and dynamic checks of a written design, run again", &RunCheckCommand);
 
 }  // namespace
 

@@ -85,9 +85,10 @@ int RunDesignCommand(const std::vector<std::string>& args) {
   if (parsed.Flag("--progress")) {
     // Where the run's time went (wall time: not in OUT.json, which is the same from run to run).
     const Resizing::Times& t = design.resizing.time_s;
-    std::cerr << "time by part [s]: first design " << t.first_design << ", sizing " << t.sizing << ", static check "
-              << t.static_check << ", dynamic check " << t.dynamic_check << ", comfort check " << t.comfort_check
-              << " (" << design.resizing.iterations << " designs)\n";
+    std::cerr << "time by part [s]: first design " << t.first_design << ", sizing " << t.sizing
+              << ", static check " << t.static_check << ", dynamic check " << t.dynamic_check
+              << ", comfort check " << t.comfort_check << " (" << design.resizing.iterations
+              << " designs)\n";
   }
   ReportWarnings(PlausibilityWarnings(design), parsed.Flag("--strict"));
   outputs.Commit();

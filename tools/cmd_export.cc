@@ -25,7 +25,10 @@ const CommandSpec& ExportSpec() {
       {"DESIGN.json"},
       {{{"-f", "--format"}, "FORMAT", "calculix (an .inp deck) or opensees (a Tcl script)", true},
        {{"-o", "--output"}, "FILE", "where to write it", true},
-       {{"--rigid-bars"}, "", "bars 1e6 times stiffer than E A / l, as tbridge's rigid bars", false},
+       {{"--rigid-bars"},
+        "",
+        "bars 1e6 times stiffer than E A / l, as tbridge's rigid bars",
+        false},
        {{"-m", "--modes"}, "K", "calculix: eigenmodes asked of *FREQUENCY (default 10)", false}},
       "Reads DESIGN.json, a design written by tbridge design or check, as tbridge check reads\n"
       "it, and writes the bridge for an FE program: nodes, supports, strings that carry no\n"
@@ -46,11 +49,13 @@ int RunExportCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string format = parsed.Required("-f");
-  if (!IsExportFormat(format)) throw OptionError("--format", "'" + format + "'", std::string("expected ") + kExportFormats);
+  if (!IsExportFormat(format))
+    throw OptionError("--format", "'" + format + "'", std::string("expected ") + kExportFormats);
   CalculixOptions options;
   options.rigid_bars = parsed.Flag("--rigid-bars");
   options.modes = ParseWholeNumber(parsed, "-m", "--modes", options.modes, 1);
-  if (parsed.Value("-m") && format != "calculix") throw UsageError("--modes: only the calculix format computes modes");
+  if (parsed.Value("-m") && format != "calculix")
+    throw UsageError("--modes: only the calculix format computes modes");
   const std::string out_path = parsed.Required("-o");
   const nlohmann::json file = ReadJsonFile(parsed.positionals[0]);
   if (file.is_object() && file.value("kind", "") == "structure") {
@@ -79,7 +84,8 @@ int RunExportCommand(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-const CommandRegistrar kRegisterExport("export", "a written design as a CalculiX or OpenSees input file",
+const CommandRegistrar kRegisterExport("export",
+                                       "a written design as a CalculiX or OpenSees input file",
                                        &RunExportCommand);
 
 }  // namespace

@@ -21,7 +21,8 @@ const CommandSpec& KeysSpec() {
       {},
       {},
       "Prints the Markdown key tables (key, unit, default, allowed, what it controls) of the\n"
-      "config sections bridge, material, design, loads, dynamics, structure and sweep, each after its\n"
+      "config sections bridge, material, design, loads, dynamics, structure and sweep, each after "
+      "its\n"
       "heading and rules, as configs/README.md has them (the README keeps paragraphs of its own\n"
       "between a heading and its rules)."};
   return spec;
@@ -43,8 +44,9 @@ int RunKeysCommand(const std::vector<std::string>& args) {
   return 0;
 }
 
-const CommandRegistrar kRegisterKeys("keys", "the config key tables of configs/README.md, from their one description",
-                                     &RunKeysCommand);
+const CommandRegistrar kRegisterKeys(
+    "keys", "the config key tables of configs/README.md, from their one description",
+    &RunKeysCommand);
 
 }  // namespace
 

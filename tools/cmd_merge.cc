@@ -57,7 +57,8 @@ int RunMergeCommand(const std::vector<std::string>& args) {
   for (const std::string& dir : dirs) {
     const std::string path = dir + "/sweep.json";
     const nlohmann::json j = ReadJsonFile(path);
-    if (!j.is_object() || !j.contains("config") || !j.contains("rows") || !j.contains("fingerprint")) {
+    if (!j.is_object() || !j.contains("config") || !j.contains("rows") ||
+        !j.contains("fingerprint")) {
       throw ConfigError(path, "(file)", "must be the sweep.json of `tbridge sweep`");
     }
     if (!sweep) {
@@ -66,8 +67,10 @@ int RunMergeCommand(const std::vector<std::string>& args) {
       first = path;
       rows.assign(sweep->sweep.size(), std::nullopt);
     }
-    if (j["fingerprint"] != fingerprint || SweepFingerprint(ParseSweepSpec(j["config"])) != fingerprint) {
-      throw ConfigError(path, j["fingerprint"].dump(), "comes from another sweep config than " + first);
+    if (j["fingerprint"] != fingerprint ||
+        SweepFingerprint(ParseSweepSpec(j["config"])) != fingerprint) {
+      throw ConfigError(path, j["fingerprint"].dump(),
+                        "comes from another sweep config than " + first);
     }
     for (const nlohmann::json& r : j["rows"]) {
       CandidateRow row = RowFromJson(r);
@@ -75,7 +78,8 @@ int RunMergeCommand(const std::vector<std::string>& args) {
       if (index < 0 || index >= static_cast<int>(rows.size())) {
         throw ConfigError(path, std::to_string(index), "candidate index out of the grid");
       }
-      if (rows[index]) throw ConfigError(path, std::to_string(index), "candidate already given by another shard");
+      if (rows[index])
+        throw ConfigError(path, std::to_string(index), "candidate already given by another shard");
       rows[index] = std::move(row);
     }
   }
@@ -102,7 +106,8 @@ int RunMergeCommand(const std::vector<std::string>& args) {
   return 0;
 }
 
-const CommandRegistrar kRegisterMerge("merge", "join the shards of a sweep into one table", &RunMergeCommand);
+const CommandRegistrar kRegisterMerge("merge", "join the shards of a sweep into one table",
+                                      &RunMergeCommand);
 
 }  // namespace
 

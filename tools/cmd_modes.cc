@@ -38,13 +38,19 @@ const CommandSpec& ModesSpec() {
       "modes",
       {"CONFIG.json"},
       {{{"-o", "--output"}, "OUT.json", "where to write the modes, a JSON file", true},
-       {{"-m", "--modes"}, "K",
-        "modes to compute, lowest first (0 = all; default all up to 600 free DOFs, else the lowest 20)", false},
+       {{"-m", "--modes"},
+        "K",
+        "modes to compute, lowest first (0 = all; default all up to 600 free DOFs, else the lowest "
+        "20)",
+        false},
        {{"-k", "--count"}, "K", "mode shapes to write, lowest first (default 6; 0 = none)", false},
        {{"-q", "--quiet"}, "", "do not print the frequency table", false},
-       {{"-M", "--mass"}, "MODEL",
-        "a bridge's mass model: design (default: the deck, the superimposed dead load and the payload), "
-        "crowd (the comfort check's: the traffic class's pedestrians in place of the payload) or empty "
+       {{"-M", "--mass"},
+        "MODEL",
+        "a bridge's mass model: design (default: the deck, the superimposed dead load and the "
+        "payload), "
+        "crowd (the comfort check's: the traffic class's pedestrians in place of the payload) or "
+        "empty "
         "(neither)",
         false},
        ProgressOption(),
@@ -55,7 +61,8 @@ const CommandSpec& ModesSpec() {
       "lengths held, to OUT.json (a structure out of equilibrium is linearised where it stands\n"
       "and its force imbalance reported as equilibrium_residual_N):\n"
       "omega [rad/s], f [Hz], T [s], the symmetry about mid-span, the deck motion each mode is\n"
-      "(vertical, lateral, longitudinal, torsional, or local when the deck hardly moves: the shape\n"
+      "(vertical, lateral, longitudinal, torsional, or local when the deck hardly moves: the "
+      "shape\n"
       "projected on the deck's section motions), the shapes of the first K\n"
       "modes and the largest stable RK4 step (from the highest mode, computed in any case).\n"
       "Every mode is computed densely up to 600 free DOFs (planar n <= 7); larger models get\n"
@@ -78,7 +85,8 @@ ModalOptions ModalOptionsOf(const ParsedArgs& parsed, const DynamicModel& model)
 // Symmetry of every mode, or nothing when the structure is not mirror-symmetric about
 // mid-span (then some node has no partner and MirrorNodes throws). The mirror map is found
 // once for all modes.
-std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model, const ModalResult& modes) {
+std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model,
+                                                      const ModalResult& modes) {
   std::vector<std::optional<SymmetryReport>> out(modes.modes.size());
   std::vector<int> mirror;
   try {
@@ -86,20 +94,24 @@ std::vector<std::optional<SymmetryReport>> Symmetries(const DynamicModel& model,
   } catch (const ModelError&) {
     return out;
   }
-  for (size_t k = 0; k < modes.modes.size(); ++k) out[k] = ClassifySymmetry(mirror, modes.modes[k].shape);
+  for (size_t k = 0; k < modes.modes.size(); ++k)
+    out[k] = ClassifySymmetry(mirror, modes.modes[k].shape);
   return out;
 }
 
 // The deck motion of every mode of a model with deck nodes (a designed bridge); nothing for a
 // custom structure.
-std::vector<std::optional<DeckMotionReport>> Motions(const DynamicModel& model, const ModalResult& modes) {
+std::vector<std::optional<DeckMotionReport>> Motions(const DynamicModel& model,
+                                                     const ModalResult& modes) {
   std::vector<std::optional<DeckMotionReport>> out(modes.modes.size());
   if (model.deck_nodes.empty()) return out;
-  for (size_t k = 0; k < modes.modes.size(); ++k) out[k] = ProjectOnDeckMotions(model, modes.modes[k].shape);
+  for (size_t k = 0; k < modes.modes.size(); ++k)
+    out[k] = ProjectOnDeckMotions(model, modes.modes[k].shape);
   return out;
 }
 
-nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, const ModalResult& result,
+nlohmann::json ModesToJson(const Config& config, const DynamicModel& model,
+                           const ModalResult& result,
                            const std::vector<std::optional<SymmetryReport>>& symmetry,
                            const std::vector<std::optional<DeckMotionReport>>& motion, int shapes,
                            const std::string& mass_model) {
@@ -108,14 +120,10 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
   for (size_t k = 0; k < result.modes.size(); ++k) {
     const Mode& m = result.modes[k];
     stable = stable && m.omega_squared > 0;
-    nlohmann::json entry = {{"index", k + 1},
-                            {"omega_rad_s", m.omega_rad_s},
-                            {"frequency_hz", m.frequency_hz},
-                            {"period_s", m.period_s},
-                            {"symmetry", nullptr},
-                            {"symmetry_correlation", nullptr},
-                            {"motion", nullptr},
-                            {"motion_share", nullptr}};
+    nlohmann::json entry = {
+        {"index", k + 1},         {"omega_rad_s", m.omega_rad_s}, {"frequency_hz", m.frequency_hz},
+        {"period_s", m.period_s}, {"symmetry", nullptr},          {"symmetry_correlation", nullptr},
+        {"motion", nullptr},      {"motion_share", nullptr}};
     if (motion[k]) {
       entry["motion"] = DeckMotionName(motion[k]->motion);
       const int which = static_cast<int>(motion[k]->motion);
@@ -149,7 +157,8 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
   // modes near zero first).
   out["stable"] = stable;
   out["all_modes"] = result.all_modes;
-  out["rk4_stable_dt_s"] = result.modes.empty() ? nlohmann::json(nullptr) : nlohmann::json(Rk4StableStep(result));
+  out["rk4_stable_dt_s"] =
+      result.modes.empty() ? nlohmann::json(nullptr) : nlohmann::json(Rk4StableStep(result));
   out["modes"] = modes;
   out["mode_shapes"] = shape_list;
   out["units"] = {{"omega_rad_s", "rad/s"},
@@ -161,18 +170,20 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model, cons
   return out;
 }
 
-std::string ModesTable(const ModalResult& result, const std::vector<std::optional<SymmetryReport>>& symmetry,
+std::string ModesTable(const ModalResult& result,
+                       const std::vector<std::optional<SymmetryReport>>& symmetry,
                        const std::vector<std::optional<DeckMotionReport>>& motion, int max_rows) {
   std::ostringstream out;
   if (!result.all_modes) out << "lowest " << result.modes.size() << " of ";
-  out << result.total_modes << " modes (" << result.free_dofs << " free DOFs, " << result.constraints
-      << " bar lengths held)\n";
+  out << result.total_modes << " modes (" << result.free_dofs << " free DOFs, "
+      << result.constraints << " bar lengths held)\n";
   out << "  mode   omega [rad/s]      f [Hz]       T [s]  symmetry       motion\n";
   char line[160];
   for (size_t k = 0; k < result.modes.size() && static_cast<int>(k) < max_rows; ++k) {
     const Mode& m = result.modes[k];
-    std::snprintf(line, sizeof line, "%6zu %15.4g %11.4g %11.4g  %-13s  %s\n", k + 1, m.omega_rad_s, m.frequency_hz,
-                  m.period_s, symmetry[k] ? SymmetryName(symmetry[k]->symmetry) : "-",
+    std::snprintf(line, sizeof line, "%6zu %15.4g %11.4g %11.4g  %-13s  %s\n", k + 1, m.omega_rad_s,
+                  m.frequency_hz, m.period_s,
+                  symmetry[k] ? SymmetryName(symmetry[k]->symmetry) : "-",
                   motion[k] ? DeckMotionName(motion[k]->motion) : "-");
     out << line;
   }
@@ -203,7 +214,8 @@ int RunModesCommand(const std::vector<std::string>& args) {
     throw UsageError("--mass expects design, crowd or empty, got '" + mass_model + "'");
   }
   if (mass_model != "design" && config.structure) {
-    throw UsageError("--mass " + mass_model + " needs a bridge config (a custom structure gives its own masses)");
+    throw UsageError("--mass " + mass_model +
+                     " needs a bridge config (a custom structure gives its own masses)");
   }
   // The verified bridge tbridge design writes, so that the modes are those of the bridge the
   // other commands analyse; or the custom structure.
@@ -216,15 +228,19 @@ int RunModesCommand(const std::vector<std::string>& args) {
   if (design) ReportWarnings(PlausibilityWarnings(*design), parsed.Flag("--strict"));
   const auto symmetry = Symmetries(model, result);
   const auto motion = Motions(model, result);
-  json << ModesToJson(config, model, result, symmetry, motion, shapes, config.structure ? "structure" : mass_model).dump(2)
+  json << ModesToJson(config, model, result, symmetry, motion, shapes,
+                      config.structure ? "structure" : mass_model)
+              .dump(2)
        << "\n";
   outputs.Commit();
-  if (!parsed.Flag("-q")) std::cout << ModesTable(result, symmetry, motion, 20) << "wrote " << out_path << "\n";
+  if (!parsed.Flag("-q"))
+    std::cout << ModesTable(result, symmetry, motion, 20) << "wrote " << out_path << "\n";
   return 0;
 }
 
-const CommandRegistrar kRegisterModes("modes", "linearised natural frequencies and mode shapes of a design or structure",
-                                      &RunModesCommand);
+const CommandRegistrar kRegisterModes(
+    "modes", "linearised natural frequencies and mode shapes of a design or structure",
+    &RunModesCommand);
 
 }  // namespace
 

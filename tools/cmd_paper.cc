@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "app/paper_tables.h"
 #include "core/error.h"
 #include "core/progress.h"
-#include "app/paper_tables.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 
@@ -25,11 +25,17 @@ const CommandSpec& PaperSpec() {
   static const CommandSpec spec{
       "paper",
       {},
-      {{{"--tables"}, "LIST", "comma-separated tables to run, e.g. 1,2,5; 7 = the 3D runs of "
-                               "Sect. 7.3 (default: 1-7)", false},
+      {{{"--tables"},
+        "LIST",
+        "comma-separated tables to run, e.g. 1,2,5; 7 = the 3D runs of "
+        "Sect. 7.3 (default: 1-7)",
+        false},
        {{"--json"}, "FILE", "also write the reproduced tables as JSON", false},
-       {{"--configs"}, "DIR", "folder with paper_*.json and reference/ (default: ./configs, "
-                              "else the source tree's configs/)", false},
+       {{"--configs"},
+        "DIR",
+        "folder with paper_*.json and reference/ (default: ./configs, "
+        "else the source tree's configs/)",
+        false},
        ProgressOption()},
       "Designs the paper's bridges and runs its dynamic cases from the shipped configs, then\n"
       "prints every number of Tables 1-6 beside the printed value with its error and tolerance,\n"
@@ -89,8 +95,8 @@ int RunPaper(const std::vector<std::string>& args) {
       // Tables 1-4 are held to an absolute tolerance (half a unit of the printed digit), so
       // their column is the absolute error; Tables 5-6 to a relative one.
       std::printf("\nTable %d%s\n%-48s %14s %14s %10s %9s\n", table,
-                  c.relative ? " (relative tolerance)" : " (absolute tolerance)", "item", "computed", "paper",
-                  c.relative ? "rel.err" : "abs.err", "status");
+                  c.relative ? " (relative tolerance)" : " (absolute tolerance)", "item",
+                  "computed", "paper", c.relative ? "rel.err" : "abs.err", "status");
     }
     const bool ok = c.pass;
     failed += ok ? 0 : 1;
@@ -103,14 +109,19 @@ int RunPaper(const std::vector<std::string>& args) {
     }
   }
   if (r.json.contains("section7_3")) {
-    std::printf("\nSect. 7.3: the 3D bridge (the paper shows figures only)\n%-11s %12s %12s %12s %14s %9s %6s\n",
-                "run", "peak x [mm]", "peak y [mm]", "peak z [mm]", "max stress/allowed", "engine", "slack");
+    std::printf(
+        "\nSect. 7.3: the 3D bridge (the paper shows figures only)\n%-11s %12s %12s %12s %14s %9s "
+        "%6s\n",
+        "run", "peak x [mm]", "peak y [mm]", "peak z [mm]", "max stress/allowed", "engine",
+        "slack");
     for (const auto& row : r.json["section7_3"]) {
       const auto& peak = row["peak_displacement_m"];
-      std::printf("%-11s %12.4f %12.4f %12.4f %14.2f %9s %6d\n", row["run"].get<std::string>().c_str(),
-                  1e3 * peak["x"].get<double>(), 1e3 * peak["y"].get<double>(), 1e3 * peak["z"].get<double>(),
-                  row["max_string_stress_pa"].get<double>() / row["allowed_stress_pa"].get<double>(),
-                  row["engine"].get<std::string>().c_str(), row["slack_transitions"].get<int>());
+      std::printf(
+          "%-11s %12.4f %12.4f %12.4f %14.2f %9s %6d\n", row["run"].get<std::string>().c_str(),
+          1e3 * peak["x"].get<double>(), 1e3 * peak["y"].get<double>(),
+          1e3 * peak["z"].get<double>(),
+          row["max_string_stress_pa"].get<double>() / row["allowed_stress_pa"].get<double>(),
+          row["engine"].get<std::string>().c_str(), row["slack_transitions"].get<int>());
     }
   }
   std::printf("\n%zu values compared, %d out of tolerance, %d dynamic runs\n", r.checks.size(),
@@ -122,7 +133,8 @@ int RunPaper(const std::vector<std::string>& args) {
   return failed == 0 ? kExitOk : kExitNotOk;
 }
 
-const CommandRegistrar kRegisterPaper("paper", "reproduce the paper's Tables 1-6 beside the printed values",
+const CommandRegistrar kRegisterPaper("paper",
+                                      "reproduce the paper's Tables 1-6 beside the printed values",
                                       &RunPaper);
 
 }  // namespace

@@ -1,8 +1,8 @@
-// `tbridge simulate CONFIG.json|DESIGN.json -o OUTDIR [--vtk DIR] [--quiet] [--progress] [--strict]`: a
-// dynamic scenario (the config's "dynamics" section) of the designed bridge or of the config's
-// custom "structure", or of a written design file (its config's "dynamics" section, the
-// design as written or, edited, as built). Writes OUTDIR/summary.json and, when nodes are recorded and
-// record.csv is on, OUTDIR/history.csv, plus the VTK series with --vtk: all in one
+// `tbridge simulate CONFIG.json|DESIGN.json -o OUTDIR [--vtk DIR] [--quiet] [--progress]
+// [--strict]`: a dynamic scenario (the config's "dynamics" section) of the designed bridge or of
+// the config's custom "structure", or of a written design file (its config's "dynamics" section,
+// the design as written or, edited, as built). Writes OUTDIR/summary.json and, when nodes are
+// recorded and record.csv is on, OUTDIR/history.csv, plus the VTK series with --vtk: all in one
 // OutputTransaction, so a failed run changes nothing and a successful one removes its own
 // stale files (an old history.csv, an earlier version's run.pvd and run_<k>.vtp).
 
@@ -10,12 +10,14 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/scenario.h"
+#include "app/simulation_report.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -23,11 +25,9 @@
 #include "design/design_reader.h"
 #include "design/plausibility.h"
 #include "dynamics/model.h"
-#include "app/scenario.h"
-#include "app/simulation_report.h"
 #include "tools/background_history.h"
-#include "tools/fast_g12.h"
 #include "tools/commands.h"
+#include "tools/fast_g12.h"
 #include "tools/output.h"
 #include "tools/vtk_export.h"
 
@@ -41,12 +41,16 @@ const CommandSpec& SimulateSpec() {
       {"CONFIG.json|DESIGN.json"},
       {{{"-o", "--output"}, "OUTDIR", "directory for summary.json and history.csv", true},
        {{"-q", "--quiet"}, "", "do not print the summary", false},
-       {{"--vtk"}, "DIR", "also write a ParaView time series (DIR/run.xdmf + its data DIR/run.bin)", false},
+       {{"--vtk"},
+        "DIR",
+        "also write a ParaView time series (DIR/run.xdmf + its data DIR/run.bin)",
+        false},
        ProgressOption(),
        StrictOption()},
       "Designs the bridge of CONFIG.json (or takes its custom \"structure\"), builds its dynamic\n"
       "model and runs the scenario of its \"dynamics\" section (keys in configs/README.md). Given\n"
-      "DESIGN.json, a file written by tbridge design or check, it runs the \"dynamics\" section of\n"
+      "DESIGN.json, a file written by tbridge design or check, it runs the \"dynamics\" section "
+      "of\n"
       "the design's own config on that design as written (edited members: as built, as tbridge\n"
       "check reads them). Writes OUTDIR/summary.json (the resolved\n"
       "config, frequency, stresses, slack events, bar-length error, energy balance) and\n"
@@ -142,10 +146,12 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   // A design file (written by tbridge design or check: config, nodes and members) or a config.
   const nlohmann::json input = ReadJsonFile(parsed.positionals[0]);
   std::optional<Design> written;
-  if (input.is_object() && input.contains("members") && input.contains("config")) written = ReadDesign(input);
+  if (input.is_object() && input.contains("members") && input.contains("config"))
+    written = ReadDesign(input);
   const Config config = written ? written->config : ParseConfig(input);
   const auto vtk_dir = parsed.Value("--vtk");
-  const bool csv = config.dynamics && config.dynamics->record.csv && !config.dynamics->record.nodes.empty();
+  const bool csv =
+      config.dynamics && config.dynamics->record.csv && !config.dynamics->record.nodes.empty();
 
   // Every output staged before the run, so a location that cannot be written fails at once;
   // nothing in OUTDIR or DIR changes before Commit().
@@ -182,7 +188,8 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     vtk_history = std::make_unique<VtkHistory>(*xdmf_out, *bin_out);
     hooks.history.push_back(vtk_history.get());
   }
-  if (vtk_dir) hooks.extra_bytes_per_record = [](const DynamicModel& m) { return VtkBytesPerSample(m); };
+  if (vtk_dir)
+    hooks.extra_bytes_per_record = [](const DynamicModel& m) { return VtkBytesPerSample(m); };
   // Without the CSV and VTK the rows have nowhere to go: dropped, not held in memory.
   DiscardHistory discard;
   if (hooks.history.empty()) hooks.history.push_back(&discard);
@@ -199,8 +206,8 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     warnings = PlausibilityWarnings(design);
     if (parsed.Flag("--strict")) ReportWarnings(warnings, true);
   };
-  const ScenarioResult scenario =
-      written ? RunDesignScenario(*written, hooks, check_design) : RunSimulateScenario(config, hooks, check_design);
+  const ScenarioResult scenario = written ? RunDesignScenario(*written, hooks, check_design)
+                                          : RunSimulateScenario(config, hooks, check_design);
   if (background) background->Finish();
   if (csv_history) csv_history->Flush();
   progress.Finish();
@@ -217,7 +224,8 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
     if (s.substeps > 1) std::cout << " x " << s.substeps << " sub-steps";
     std::cout << ", " << s.engine << ", " << s.wall_seconds << " s)\n";
     if (s.has_frequency) {
-      std::cout << "deck frequency: T = " << s.frequency.period_s << " s, f = " << s.frequency.frequency_hz
+      std::cout << "deck frequency: T = " << s.frequency.period_s
+                << " s, f = " << s.frequency.frequency_hz
                 << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
     } else if (!s.frequency_note.empty()) {
       std::cout << s.frequency_note << "\n";  // "no deck frequency: ..." and why
@@ -230,15 +238,16 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
       std::cout << "\n";
     }
     if (s.allowed_stress > 0) {  // a structure without string areas has no stress to report
-      std::cout << "max string stress " << s.max_string_stress << " Pa (allowed " << s.allowed_stress << ")"
-                << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "") << "\n";
+      std::cout << "max string stress " << s.max_string_stress << " Pa (allowed "
+                << s.allowed_stress << ")" << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "")
+                << "\n";
     }
-    std::cout << "slack transitions " << s.slack.total << ", max bar-length error " << s.max_bar_length_error
-              << ", energy drift " << s.energy.max_drift << "\n";
+    std::cout << "slack transitions " << s.slack.total << ", max bar-length error "
+              << s.max_bar_length_error << ", energy drift " << s.energy.max_drift << "\n";
     for (const PrestrainReport& p : s.prestrain) {
-      std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress << " Pa"
-                << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ") << p.allowed_stress
-                << " Pa\n";
+      std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress
+                << " Pa" << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ")
+                << p.allowed_stress << " Pa\n";
     }
     std::cout << "wrote " << out_dir << "/summary.json" << (csv ? " and history.csv" : "") << "\n";
   }

@@ -4,7 +4,6 @@
 // candidates in flight; --resume reuses the stored ones of the same config (fingerprint).
 // OUTDIR/sweep.csv and sweep.json are written at the end.
 
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -47,14 +46,16 @@ const CommandSpec& SweepSpecOfCommand() {
 int ParseThreads(const ParsedArgs& parsed) {
   const std::optional<std::string> text = parsed.Value("-j");
   if (!text) return std::max(1u, std::thread::hardware_concurrency());
-  if (!text->empty() && text->size() <= 4 && text->find_first_not_of("0123456789") == std::string::npos) {
+  if (!text->empty() && text->size() <= 4 &&
+      text->find_first_not_of("0123456789") == std::string::npos) {
     const int k = std::stoi(*text);
     if (k >= 1 && k <= 1024) return k;
   }
   throw UsageError("--threads expects a whole number in [1, 1024], got '" + *text + "'");
 }
 
-std::optional<CandidateRow> ReadStoredRow(const std::string& path, const std::string& fingerprint, int index) {
+std::optional<CandidateRow> ReadStoredRow(const std::string& path, const std::string& fingerprint,
+                                          int index) {
   std::ifstream in(path);
   if (!in) return std::nullopt;
   std::stringstream text;
@@ -110,25 +111,28 @@ int RunSweepCommand(const std::vector<std::string>& args) {
   const auto start = std::chrono::steady_clock::now();
   SweepStats stats;
   const std::vector<CandidateRow> rows = RunSweep(sweep, options, &stats);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.Finish();
   csv_out << SweepCsv(rows);
   json_out << SweepJson(sweep, rows, shard);
   outputs.Commit();
 
   if (!parsed.Flag("-q")) {
-    std::cout << "candidates " << rows.size() << (shard ? " (shard " + std::to_string(shard->index) + "/" +
-                                                              std::to_string(shard->count) + ")"
-                                                        : std::string())
+    std::cout << "candidates " << rows.size()
+              << (shard ? " (shard " + std::to_string(shard->index) + "/" +
+                              std::to_string(shard->count) + ")"
+                        : std::string())
               << ": evaluated " << stats.evaluated << ", reused " << stats.reused << ", " << threads
               << " thread(s), " << wall << " s\n";
     if (!shard) {
       const SweepChoice c = Choose(rows);
       if (c.found) {
         const CandidateRow& r = rows[c.index];
-        std::cout << "chosen: index " << c.index << ", n = " << r.candidate.n << ", p = " << r.candidate.p
-                  << ", beta = " << r.candidate.beta_deg << " deg, deck prestrain " << r.candidate.deck_prestrain
-                  << ", objective " << r.objective << " kg\n";
+        std::cout << "chosen: index " << c.index << ", n = " << r.candidate.n
+                  << ", p = " << r.candidate.p << ", beta = " << r.candidate.beta_deg
+                  << " deg, deck prestrain " << r.candidate.deck_prestrain << ", objective "
+                  << r.objective << " kg\n";
       }
       std::cout << "decided by: " << c.binding << "\n" << c.reason << "\n";
     }
@@ -137,8 +141,9 @@ int RunSweepCommand(const std::vector<std::string>& args) {
   return 0;
 }
 
-const CommandRegistrar kRegisterSweep("sweep", "outer loop over n, p, beta and prestrain; choice and trade-off table",
-                                      &RunSweepCommand);
+const CommandRegistrar kRegisterSweep(
+    "sweep", "outer loop over n, p, beta and prestrain; choice and trade-off table",
+    &RunSweepCommand);
 
 }  // namespace
 

@@ -37,7 +37,8 @@ enum ExitCode : int {
 inline constexpr const char* kExitCodesHelp =
     "exit codes: 0 ok, 1 a check of the command failed (paper: a value out of tolerance),\n"
     "            2 bad input (config, command line, limits, warnings under --strict),\n"
-    "            3 no design found or the model failed, 4 other error (output not writable, internal)\n";
+    "            3 no design found or the model failed, 4 other error (output not writable, "
+    "internal)\n";
 
 // Entry point of a command: `args` excludes the program and the command name.
 using CommandFn = int (*)(const std::vector<std::string>& args);

@@ -48,7 +48,8 @@ inline char* Fallback(char* p, char* end, double v) {
 constexpr std::array<std::uint32_t, 10000> MakeFourDigits() {
   std::array<std::uint32_t, 10000> t{};
   for (std::uint32_t n = 0; n < 10000; ++n) {
-    t[n] = (0x30u + n / 1000) | ((0x30u + n / 100 % 10) << 8) | ((0x30u + n / 10 % 10) << 16) | ((0x30u + n % 10) << 24);
+    t[n] = (0x30u + n / 1000) | ((0x30u + n / 100 % 10) << 8) | ((0x30u + n / 10 % 10) << 16) |
+           ((0x30u + n % 10) << 24);
   }
   return t;
 }
@@ -70,7 +71,8 @@ inline char* FormatG12(char* p, char* end, double v) {
   int e = e2 >= 0 ? (e2 * 78913) >> 18 : -((-e2 * 78913 + (1 << 18) - 1) >> 18);
   if (a >= d::Pow10(e + 1)) ++e;
   // m = a 10^(11 - e) in [1e11, 1e12): division by an exact power where there is one.
-  const double m = 11 - e >= 0 ? a * d::Pow10(11 - e) : (e - 11 <= 22 ? a / d::Pow10(e - 11) : a * d::Pow10(11 - e));
+  const double m = 11 - e >= 0 ? a * d::Pow10(11 - e)
+                               : (e - 11 <= 22 ? a / d::Pow10(e - 11) : a * d::Pow10(11 - e));
   // m < 2^63: the signed conversion (one instruction; the unsigned one branches) is floor.
   const std::uint64_t whole_m = static_cast<std::uint64_t>(static_cast<std::int64_t>(m));
   const double frac = m - static_cast<double>(whole_m);
@@ -80,7 +82,8 @@ inline char* FormatG12(char* p, char* end, double v) {
     digits /= 10;
     ++e;
   }
-  if (digits < 100000000000ULL) return d::Fallback(p, end, v);  // e one too high: leave it to to_chars
+  if (digits < 100000000000ULL)
+    return d::Fallback(p, end, v);  // e one too high: leave it to to_chars
   // Three groups of four digits.
   const std::uint32_t low8 = static_cast<std::uint32_t>(digits % 100000000);
   const std::uint32_t g0 = d::kFourDigits[digits / 100000000];
@@ -101,7 +104,8 @@ inline char* FormatG12(char* p, char* end, double v) {
   // The layouts of positions and times near 1 are put together in registers and stored whole:
   // small stores read back as one wide load stall the load.
   if (e == 0) {  // d.ddddddddddd
-    const std::uint64_t head = (g0 & 0xFF) | (std::uint64_t{'.'} << 8) | (static_cast<std::uint64_t>(g0 >> 8) << 16);
+    const std::uint64_t head =
+        (g0 & 0xFF) | (std::uint64_t{'.'} << 8) | (static_cast<std::uint64_t>(g0 >> 8) << 16);
     std::memcpy(p, &head, 8);
     std::memcpy(p + 5, &g1, 4);
     std::memcpy(p + 9, &g2, 4);

@@ -1,7 +1,5 @@
 #include "tools/output.h"
 
-#include "core/json_reader.h"
-
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -16,6 +14,8 @@
 #include <iostream>
 #include <set>
 #include <system_error>
+
+#include "core/json_reader.h"
 
 namespace tbridge::cli {
 
@@ -41,12 +41,18 @@ fs::path FollowLinks(const std::string& path) {
 
 const char* KindOf(fs::file_type type) {
   switch (type) {
-    case fs::file_type::directory: return "a directory";
-    case fs::file_type::fifo: return "a FIFO (named pipe)";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::socket: return "a socket";
-    default: return "not a regular file";
+    case fs::file_type::directory:
+      return "a directory";
+    case fs::file_type::fifo:
+      return "a FIFO (named pipe)";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
   }
 }
 
@@ -103,7 +109,8 @@ void InstallInterruptCleanup() {
   struct sigaction action {};
   action.sa_handler = RemoveStagedAndDie;
   sigemptyset(&action.sa_mask);
-  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP})
+    ::sigaction(signal_number, &action, nullptr);
 }
 
 struct OutputTransaction::Staged {
@@ -166,7 +173,8 @@ std::ostream& OutputTransaction::Stage(const std::string& path) {
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
     if (!fs::create_directory(*it, ec) && ec) {
-      throw OutputError("cannot create directory '" + it->string() + "' for '" + path + "': " + ec.message());
+      throw OutputError("cannot create directory '" + it->string() + "' for '" + path +
+                        "': " + ec.message());
     }
     created_dirs_.push_back(it->string());
     Register(g_dirs, kDirSlots, created_dirs_.back().c_str());
@@ -195,7 +203,8 @@ std::ostream& OutputTransaction::Stage(const std::string& path) {
   staged->temp = pattern;
   staged_.push_back(std::move(staged));  // from here on the destructor removes the temporary
   Register(g_files, kFileSlots, staged_.back()->temp.c_str());
-  if (chmod_error != 0) throw OutputError("cannot set the mode of '" + pattern + "': " + Reason(chmod_error));
+  if (chmod_error != 0)
+    throw OutputError("cannot set the mode of '" + pattern + "': " + Reason(chmod_error));
   Staged& s = *staged_.back();
   s.stream.open(s.temp, std::ios::binary | std::ios::trunc);
   if (!s.stream) throw OutputError("cannot open '" + s.temp + "' for '" + path + "'");
@@ -224,7 +233,8 @@ void OutputTransaction::Commit() {
     s->stream.flush();
     const bool ok = static_cast<bool>(s->stream);
     s->stream.close();
-    if (!ok || s->stream.fail()) throw OutputError("cannot write '" + s->target + "': write failed (disk full?)");
+    if (!ok || s->stream.fail())
+      throw OutputError("cannot write '" + s->target + "': write failed (disk full?)");
     const std::string folder = fs::path(s->temp).parent_path().string();
     const bool each = staged_.size() <= kSyncEachUpTo;
     if (!each && !folders.insert(folder).second) continue;
@@ -263,13 +273,15 @@ void OutputTransaction::Commit() {
           name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) {
         continue;
       }
-      const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+      const std::string middle =
+          name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
       if (middle.find_first_not_of("0123456789") != std::string::npos) continue;
       if (written.count(e.path().lexically_normal()) != 0) continue;
       const fs::file_status status = e.symlink_status(ec);
       if (!fs::is_regular_file(status) && !fs::is_symlink(status)) continue;
       if (::unlink(e.path().c_str()) != 0) {
-        throw OutputError("cannot remove the stale output '" + e.path().string() + "': " + Reason(errno));
+        throw OutputError("cannot remove the stale output '" + e.path().string() +
+                          "': " + Reason(errno));
       }
     }
   }
@@ -304,9 +316,7 @@ const OptionSpec* FindOption(const CommandSpec& spec, const std::string& name) {
   return nullptr;
 }
 
-std::string Hint(const CommandSpec& spec) {
-  return " (see 'tbridge " + spec.name + " --help')";
-}
+std::string Hint(const CommandSpec& spec) { return " (see 'tbridge " + spec.name + " --help')"; }
 
 std::string OptionUsage(const OptionSpec& o) {
   return o.names.front() + (o.value_name.empty() ? "" : " " + o.value_name);
@@ -314,8 +324,8 @@ std::string OptionUsage(const OptionSpec& o) {
 
 }  // namespace
 
-int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name, int fallback,
-                     int minimum) {
+int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name,
+                     const std::string& long_name, int fallback, int minimum) {
   const std::optional<std::string> text = parsed.Value(name);
   if (!text) return fallback;
   try {
@@ -324,7 +334,8 @@ int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const st
     if (used == text->size() && count >= minimum) return count;
   } catch (const std::exception&) {
   }
-  throw UsageError(long_name + " expects a whole number >= " + std::to_string(minimum) + ", got '" + *text + "'");
+  throw UsageError(long_name + " expects a whole number >= " + std::to_string(minimum) + ", got '" +
+                   *text + "'");
 }
 
 ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& spec) {
@@ -358,7 +369,8 @@ ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& sp
     const OptionSpec* option = FindOption(spec, name);
     if (option == nullptr) {
       std::vector<std::string> names;
-      for (const OptionSpec& o : spec.options) names.insert(names.end(), o.names.begin(), o.names.end());
+      for (const OptionSpec& o : spec.options)
+        names.insert(names.end(), o.names.begin(), o.names.end());
       const std::string nearest = NearestKey(name, names);
       throw UsageError("unknown option '" + Printable(name) + "'" +
                        (nearest.empty() ? "" : ", did you mean '" + nearest + "'?") + Hint(spec));
@@ -377,7 +389,8 @@ ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& sp
     } else if (k + 1 < args.size()) {
       out.values[canonical] = args[++k];
     } else {
-      throw UsageError("option '" + name + "' needs a value (" + option->value_name + ")" + Hint(spec));
+      throw UsageError("option '" + name + "' needs a value (" + option->value_name + ")" +
+                       Hint(spec));
     }
     if (out.values[canonical].empty()) {
       throw UsageError("option '" + name + "' has an empty value" + Hint(spec));
@@ -393,8 +406,8 @@ ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& sp
     for (const std::string& p : spec.positionals) expected += (expected.empty() ? "" : " ") + p;
     std::string got;
     for (const std::string& p : out.positionals) got += (got.empty() ? "'" : "', '") + p;
-    throw UsageError("expected " + std::to_string(spec.positionals.size()) +
-                     " argument(s) " + (expected.empty() ? "(none)" : expected) + ", got " +
+    throw UsageError("expected " + std::to_string(spec.positionals.size()) + " argument(s) " +
+                     (expected.empty() ? "(none)" : expected) + ", got " +
                      std::to_string(out.positionals.size()) +
                      (got.empty() ? "" : " (" + got + "')") + Hint(spec));
   }
@@ -426,18 +439,23 @@ std::string Usage(const CommandSpec& spec) {
       s += "  " + left[k] + std::string(width - left[k].size() + 2, ' ') + spec.options[k].help +
            "\n";
     }
-    s += "  -h, --help" + std::string(width > 10 ? width - 10 + 2 : 2, ' ') +
-         "show this help\n";
+    s += "  -h, --help" + std::string(width > 10 ? width - 10 + 2 : 2, ' ') + "show this help\n";
   }
   return s;
 }
 
 OptionSpec ProgressOption() {
-  return {{"--progress"}, "", "progress line with an ETA on stderr even when it is not a terminal", false};
+  return {{"--progress"},
+          "",
+          "progress line with an ETA on stderr even when it is not a terminal",
+          false};
 }
 
 OptionSpec StrictOption() {
-  return {{"--strict"}, "", "treat plausibility warnings as errors (exit 2; thresholds in configs/README.md)", false};
+  return {{"--strict"},
+          "",
+          "treat plausibility warnings as errors (exit 2; thresholds in configs/README.md)",
+          false};
 }
 
 void ReportWarnings(const std::vector<std::string>& warnings, bool strict) {

@@ -6,8 +6,8 @@
 #include <list>
 #include <map>
 #include <memory>
-#include <ostream>
 #include <optional>
+#include <ostream>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -74,7 +74,8 @@ class OutputTransaction {
   void RemoveAtCommit(const std::string& path);
   // Commit() removes every file or link in folder `dir` named prefix + digits + suffix that
   // was not staged (e.g. "run_", ".vtp": the samples of a longer earlier run).
-  void RemoveStaleAtCommit(const std::string& dir, const std::string& prefix, const std::string& suffix);
+  void RemoveStaleAtCommit(const std::string& dir, const std::string& prefix,
+                           const std::string& suffix);
   // Flushes every staged file to disk, renames each over its target, then removes the stale
   // ones. Throws OutputError naming the path when a write fails; until the first rename
   // nothing has changed. Call at most once.
@@ -117,7 +118,7 @@ struct CommandSpec {
   std::string name;                      // "design"
   std::vector<std::string> positionals;  // names of the required positional arguments
   std::vector<OptionSpec> options;
-  std::string summary;                   // one paragraph shown by --help
+  std::string summary;  // one paragraph shown by --help
 };
 
 struct ParsedArgs {
@@ -134,13 +135,13 @@ struct ParsedArgs {
 
 // The whole number >= `minimum` given to option `name` (canonical name; `long_name` for the
 // message), or `fallback` when absent; UsageError naming the option otherwise.
-int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name, const std::string& long_name, int fallback,
-                     int minimum = 0);
+int ParseWholeNumber(const ParsedArgs& parsed, const std::string& name,
+                     const std::string& long_name, int fallback, int minimum = 0);
 
 // Parses `args` against `spec`. Throws UsageError naming the offending argument for an
 // unknown option, a repeated option, a missing option value, a missing required option, or
-// a wrong number of positionals. With -h/--help only `help` is set and nothing else is checked. "--" ends the
-// options.
+// a wrong number of positionals. With -h/--help only `help` is set and nothing else is checked.
+// "--" ends the options.
 ParsedArgs ParseArgs(const std::vector<std::string>& args, const CommandSpec& spec);
 
 // "usage: tbridge design CONFIG.json -o OUT.json [--quiet]" plus the options and summary.

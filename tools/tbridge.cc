@@ -86,13 +86,17 @@ void PrintUsage(std::ostream& os) {
     os << "  " << c.name << std::string(width - c.name.size() + 2, ' ') << c.help << "\n";
   }
   os << "\nlooking at results:\n"
-        "  tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png   a simulate run (shapes, deck histories)\n"
-        "  tools/plot_sweep.py mass|premium|frequency|feasible OUTDIR -o FIG.png   a sweep's trade-offs\n"
+        "  tools/plot_dynamics.py snapshots|deck OUTDIR -o FIG.png   a simulate run (shapes, deck "
+        "histories)\n"
+        "  tools/plot_sweep.py mass|premium|frequency|feasible OUTDIR -o FIG.png   a sweep's "
+        "trade-offs\n"
         "  tools/plot_sweep.py bridge DESIGN.json -o FIG.png          a design\n"
         "  tbridge simulate CONFIG.json -o OUTDIR --vtk DIR            DIR/run.pvd for ParaView\n"
-        "\nA failed run leaves its output files and folders as they were. Progress (--progress or a\n"
+        "\nA failed run leaves its output files and folders as they were. Progress (--progress or "
+        "a\n"
         "terminal) and warnings go to stderr; --strict makes warnings errors.\n\n"
-     << kExitCodesHelp << "\ntbridge --version   the version, git revision and design solvers built in\n"
+     << kExitCodesHelp
+     << "\ntbridge --version   the version, git revision and design solvers built in\n"
      << "design.solver values this build accepts: " << SolverList() << "\n";
 }
 
@@ -126,8 +130,8 @@ int Dispatch(const std::vector<std::string>& argv) {
     }
     const std::string nearest = NearestKey(argv[0], list);
     return Fail("unknown command '" + tbridge::Printable(argv[0]) + "'" +
-                    (nearest.empty() ? "" : ", did you mean '" + nearest + "'?") + " (commands: " + names +
-                    "; see 'tbridge --help')",
+                    (nearest.empty() ? "" : ", did you mean '" + nearest + "'?") +
+                    " (commands: " + names + "; see 'tbridge --help')",
                 kExitBadInput);
   }
   const std::vector<std::string> args(argv.begin() + 1, argv.end());

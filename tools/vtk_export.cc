@@ -11,11 +11,13 @@ namespace tbridge::cli {
 namespace {
 
 // run.xdmf declares its arrays little-endian 4-byte integers and 8-byte floats, as written.
-static_assert(std::endian::native == std::endian::little && sizeof(int) == 4 && sizeof(double) == 8);
+static_assert(std::endian::native == std::endian::little && sizeof(int) == 4 &&
+              sizeof(double) == 8);
 
 template <class T>
 void WriteRaw(std::ostream& out, const std::vector<T>& values) {
-  out.write(reinterpret_cast<const char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(T)));
+  out.write(reinterpret_cast<const char*>(values.data()),
+            static_cast<std::streamsize>(values.size() * sizeof(T)));
 }
 
 }  // namespace
@@ -40,14 +42,16 @@ void VtkHistory::Begin(const DynamicModel& model, const std::vector<int>& record
   model_ = &model;
   recorded_ = recorded_nodes;
   positions_ = model.positions;
-  const size_t nodes = static_cast<size_t>(model.num_nodes()), members = model.bars.size() + model.strings.size();
+  const size_t nodes = static_cast<size_t>(model.num_nodes()),
+               members = model.bars.size() + model.strings.size();
   points_.resize(3 * nodes);
   displacement_.resize(3 * nodes);
   tension_.assign(members, 0.0);
   slack_.assign(members, 0);
   // The constant head of run.bin: connectivity, then member types.
   std::vector<int> connectivity, types;
-  for (const DynamicBar& b : model.bars) connectivity.insert(connectivity.end(), {b.i, b.j}), types.push_back(0);
+  for (const DynamicBar& b : model.bars)
+    connectivity.insert(connectivity.end(), {b.i, b.j}), types.push_back(0);
   for (size_t k = 0; k < model.strings.size(); ++k) {
     connectivity.insert(connectivity.end(), {model.strings[k].i, model.strings[k].j});
     types.push_back(model.names.string_group[k] == "deck" ? 2 : 1);
@@ -90,10 +94,14 @@ void VtkHistory::Row(double t, const double* coordinates) {
   WriteRaw(bin_, slack_);
   offset_ = slack_at + 4LL * static_cast<long long>(slack_.size());
 
-  const std::string members = std::to_string(tension_.size()), node_rows = std::to_string(nodes) + " 3";
+  const std::string members = std::to_string(tension_.size()),
+                    node_rows = std::to_string(nodes) + " 3";
   char head[160];
-  std::snprintf(head, sizeof head, "<Grid Name=\"sample %ld\" GridType=\"Uniform\">\n<Time Value=\"%.12g\"/>\n", samples_++, t);
-  xml_ << head << "<Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"" << members << "\">";
+  std::snprintf(head, sizeof head,
+                "<Grid Name=\"sample %ld\" GridType=\"Uniform\">\n<Time Value=\"%.12g\"/>\n",
+                samples_++, t);
+  xml_ << head << "<Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\""
+       << members << "\">";
   Item((members + " 2").c_str(), false, 0);
   xml_ << "</Topology>\n<Geometry GeometryType=\"XYZ\">";
   Item(node_rows.c_str(), true, points_at);
@@ -110,7 +118,8 @@ void VtkHistory::Row(double t, const double* coordinates) {
 
 void VtkHistory::Finish() {
   if (samples_ == 0) {
-    throw ConfigError("dynamics.record.nodes", "[]", "the VTK export needs recorded nodes: list every free node");
+    throw ConfigError("dynamics.record.nodes", "[]",
+                      "the VTK export needs recorded nodes: list every free node");
   }
   xml_ << "</Grid>\n</Domain>\n</Xdmf>\n";
 }

@@ -27,8 +27,8 @@
 namespace tbridge {
 
 struct TrussCaseResponse {
-  Eigen::VectorXd u;        // free degrees of freedom [m]
-  Eigen::VectorXd forces;   // per member [N], tension > 0
+  Eigen::VectorXd u;       // free degrees of freedom [m]
+  Eigen::VectorXd forces;  // per member [N], tension > 0
   // Derivatives in the sizing's variables (TrussModel::num_variables: the group areas, then the
   // self-stress amplitudes), when asked:
   Eigen::MatrixXd du;       // num_free x variables: du / dA_g [m/m^2], du / ds [m/N]

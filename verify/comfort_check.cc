@@ -53,8 +53,8 @@ int NthOf(const DeckModes& modes, DeckMotion motion, int rank) {
 }
 
 // Step 2 for one relevant mode, then its response (RespondAt).
-ComfortMode Assess(const Design& d, const ComfortCheck& check, const Mode& mode, const DeckMotionReport& motion,
-                   double empty_hz) {
+ComfortMode Assess(const Design& d, const ComfortCheck& check, const Mode& mode,
+                   const DeckMotionReport& motion, double empty_hz) {
   ComfortMode m;
   m.direction = DeckMotionName(motion.motion);
   m.share = motion.share[static_cast<int>(motion.motion)];
@@ -75,7 +75,8 @@ LoadAxis LoadAxisOf(const std::string& direction) {
   return LoadAxis::kVertical;
 }
 
-void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, double crowd_hz, double empty_hz) {
+void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, double crowd_hz,
+               double empty_hz) {
   const ComfortConfig& c = d.config.comfort;
   const LoadAxis axis = LoadAxisOf(m.direction);
   m.frequency_hz = crowd_hz;
@@ -132,8 +133,8 @@ DynamicModel ComfortModel(const Design& d, bool crowded) {
   options.deck_inertia = true;
   // The pedestrians stand where the payload would, spread over the deck: their weight as a
   // share of it.
-  const double crowd_weight_n = TrafficDensity(c.traffic_class) * DeckArea(d) * c.pedestrian_mass_kg *
-                                d.config.design.gravity;
+  const double crowd_weight_n = TrafficDensity(c.traffic_class) * DeckArea(d) *
+                                c.pedestrian_mass_kg * d.config.design.gravity;
   options.payload_share = crowded ? crowd_weight_n / d.config.bridge.payload : 0.0;
   return BuildDynamicModel(d, options);
 }
@@ -148,7 +149,9 @@ DeckModes ComputeDeckModes(const DynamicModel& model, double above_hz) {
   for (;;) {
     out.modal = ComputeModes(model, options);
     const std::vector<Mode>& modes = out.modal.modes;
-    if (options.count == 0 || out.modal.all_modes || modes.empty() || modes.back().frequency_hz > above_hz) break;
+    if (options.count == 0 || out.modal.all_modes || modes.empty() ||
+        modes.back().frequency_hz > above_hz)
+      break;
     options.count *= 2;
   }
   for (const Mode& m : out.modal.modes) out.motions.push_back(ProjectOnDeckMotions(model, m.shape));
@@ -226,7 +229,8 @@ ComfortAnalysis AnalyseComfort(const Design& d) {
   if (!crowded.modal.all_modes && !crowded.modal.modes.empty() &&
       crowded.modal.modes.back().frequency_hz < c.vertical_trigger_hz) {
     out.note += std::string(out.note.empty() ? "" : "; ") + "the lowest " +
-                std::to_string(crowded.modal.modes.size()) + " modes were found, all below the trigger";
+                std::to_string(crowded.modal.modes.size()) +
+                " modes were found, all below the trigger";
   }
   return analysis;
 }

@@ -57,12 +57,13 @@ LoadAxis LoadAxisOf(const std::string& direction);
 // `crowd_hz` and `empty_hz`: its range, load model, psi, modal force, acceleration, limit,
 // comfort class and pass. The check calls it at the mode's own frequencies, the sizing's comfort
 // correction at shifted ones.
-void RespondAt(ComfortMode& mode, const ComfortCheck& check, const Design& design, double crowd_hz, double empty_hz);
+void RespondAt(ComfortMode& mode, const ComfortCheck& check, const Design& design, double crowd_hz,
+               double empty_hz);
 
 // The crowd load of one mode with pressure p [N/m²]: p times each deck node's deck area along
 // the motion's axis, in the sign of the mode's shape there (3 x n_n [N]).
-Eigen::Matrix3Xd CrowdModeLoad(const Design& design, const Mode& mode, const DeckMotionReport& motion,
-                               double pressure_n_m2);
+Eigen::Matrix3Xd CrowdModeLoad(const Design& design, const Mode& mode,
+                               const DeckMotionReport& motion, double pressure_n_m2);
 
 // Steps 1-4. Not done (and saying why in its note) with the paper's switches, with
 // comfort.check false, or when the modes cannot be found.

@@ -30,7 +30,8 @@ struct LoadRun {
   bool walking = false;  // the walking load: the one a modal run may take
 };
 
-LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, double station_force, double gamma) {
+LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, double station_force,
+                double gamma) {
   LoadRun run;
   run.record.name = name;
   run.record.load = std::move(load);
@@ -60,25 +61,31 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
   const double gamma_g_q = paper ? 1.0 : l.gamma_q;
   std::vector<LoadRun> runs;
   const auto& cases = l.cases;
-  const auto asked = [&cases](const char* name) { return std::find(cases.begin(), cases.end(), name) != cases.end(); };
+  const auto asked = [&cases](const char* name) {
+    return std::find(cases.begin(), cases.end(), name) != cases.end();
+  };
   if (paper || asked("paper_travelling")) {
     const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
-    runs.push_back(MakeRun("paper_travelling",
-                           Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
-                           PaperTravellingScenario(d, paper_duration, l.dynamic_dt_s, IntegratorKind::kRk4, d.deck.station_load),
-                           d.deck.station_load, gamma_g_q));
+    runs.push_back(
+        MakeRun("paper_travelling",
+                Describe("f = ", d.deck.station_load, " N per station for 0.25 s (eqs 50-51)"),
+                PaperTravellingScenario(d, paper_duration, l.dynamic_dt_s, IntegratorKind::kRk4,
+                                        d.deck.station_load),
+                d.deck.station_load, gamma_g_q));
   }
   if (asked("travelling") && l.travelling_load_n > 0) {
-    runs.push_back(MakeRun("moving_load",
-                           Describe("Q_t = ", l.travelling_load_n, " N") +
-                               Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
-                           MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s),
-                           l.travelling_load_n, gamma_g_q));
+    runs.push_back(
+        MakeRun("moving_load",
+                Describe("Q_t = ", l.travelling_load_n, " N") +
+                    Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
+                MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s),
+                l.travelling_load_n, gamma_g_q));
     runs.back().walking = true;
   }
   if (asked("wind") && d.topology.planes == 2 && l.wind_n_per_m > 0) {
     runs.push_back(MakeRun("wind_gust",
-                           Describe("W = ", l.wind_n_per_m, " N/m") + Describe(" rising over ", l.wind_rise_s, " s, then held"),
+                           Describe("W = ", l.wind_n_per_m, " N/m") +
+                               Describe(" rising over ", l.wind_rise_s, " s, then held"),
                            WindGustScenario(d, l.wind_rise_s, l.dynamic_dt_s), 0.0, l.gamma_w));
   }
   return runs;
@@ -91,8 +98,9 @@ bool WithinBudget(double members, double max_member_steps, const char* why_dt, L
   if (steps * members <= max_member_steps) return true;
   std::ostringstream os;
   if (!run.record.note.empty()) os << run.record.note << "; ";
-  os << "skipped: " << steps << " RK4 steps of " << members << " members at dt = " << run.scenario.dt << " s"
-     << why_dt << " exceed the " << max_member_steps << " member-steps the check allows";
+  os << "skipped: " << steps << " RK4 steps of " << members
+     << " members at dt = " << run.scenario.dt << " s" << why_dt << " exceed the "
+     << max_member_steps << " member-steps the check allows";
   run.record.note = os.str();
   return false;
 }
@@ -102,8 +110,8 @@ bool WithinBudget(double members, double max_member_steps, const char* why_dt, L
 // paper's stations still fall on step boundaries; a run that still blows up (a motion far
 // from the linearised one) is tried at a quarter of the step, twice. Fills the record's run
 // fields, or its note when skipped or failed.
-bool Run(const DynamicModel& model, double stable_dt, double members, double max_member_steps, LoadRun& run,
-         SimulationSummary& summary, ProgressReporter* progress) {
+bool Run(const DynamicModel& model, double stable_dt, double members, double max_member_steps,
+         LoadRun& run, SimulationSummary& summary, ProgressReporter* progress) {
   DynamicRun& r = run.record;
   if (run.scenario.dt > stable_dt) run.scenario.dt /= std::ceil(run.scenario.dt / stable_dt);
   for (int attempt = 0;; ++attempt) {
@@ -116,8 +124,8 @@ bool Run(const DynamicModel& model, double stable_dt, double members, double max
       break;
     } catch (const ModelError& e) {
       if (attempt == 2) {
-        r.note = "not done: the run failed at every step tried down to " + std::to_string(run.scenario.dt) + " s (" +
-                 e.what() + ")";
+        r.note = "not done: the run failed at every step tried down to " +
+                 std::to_string(run.scenario.dt) + " s (" + e.what() + ")";
         return false;
       }
       run.scenario.dt /= 4;
@@ -127,7 +135,8 @@ bool Run(const DynamicModel& model, double stable_dt, double members, double max
   r.dt = run.scenario.dt;
   r.duration = run.scenario.duration;
   r.steps = summary.steps;
-  r.integrator = summary.substeps > 1 ? summary.integrator + "x" + std::to_string(summary.substeps) : summary.integrator;
+  r.integrator = summary.substeps > 1 ? summary.integrator + "x" + std::to_string(summary.substeps)
+                                      : summary.integrator;
   r.peak_deck_displacement = summary.peak_deck_displacement[1];
   return true;
 }
@@ -146,7 +155,8 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const St
   const StaticState start = ReferenceState(statics, d);
   const int nb = d.topology.structure.num_bars(), ns = d.topology.structure.num_strings();
   Eigen::VectorXd peak = Eigen::VectorXd::Zero(nb + ns);
-  for (const Eigen::Matrix3Xd& loads : {Eigen::Matrix3Xd(model.loads + d.actions.base[kWind]), model.loads}) {
+  for (const Eigen::Matrix3Xd& loads :
+       {Eigen::Matrix3Xd(model.loads + d.actions.base[kWind]), model.loads}) {
     const StaticResult r = SolveStatic(statics, start, d.loads, loads);
     if (!r.converged) continue;
     peak.head(nb) = peak.head(nb).cwiseMax(r.state.bar_compression);
@@ -157,13 +167,17 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const St
 
 // Whether `run` is tried by modal superposition first: the walking load, where the config
 // asks for it.
-bool Modal(const LoadRun& run, const LoadsConfig& l) { return run.walking && l.dynamic_method == "modal"; }
+bool Modal(const LoadRun& run, const LoadsConfig& l) {
+  return run.walking && l.dynamic_method == "modal";
+}
 
 // The walking load by modal superposition (verify/modal_run.h), into the summary the
 // nonlinear run would give; false, with the reason in the run's note, where it is not done.
 bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& statics, LoadRun& run,
-              const StationResponses& stations, const StaticState& standing, SimulationSummary& summary) {
-  const ModalRunResult r = RunModalMovingLoad(model, statics, standing, stations, ModalRunOptionsOf(d));
+              const StationResponses& stations, const StaticState& standing,
+              SimulationSummary& summary) {
+  const ModalRunResult r =
+      RunModalMovingLoad(model, statics, standing, stations, ModalRunOptionsOf(d));
   if (!r.done) {
     run.record.note = "modal run not done (" + r.note + "): the nonlinear run instead";
     return false;
@@ -186,7 +200,8 @@ bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& sta
 
 }  // namespace
 
-ModelOptions DynamicCheckModelOptions(const Design& d, const std::vector<StringPrestrain>& prestrain) {
+ModelOptions DynamicCheckModelOptions(const Design& d,
+                                      const std::vector<StringPrestrain>& prestrain) {
   // The model a run of this design gets (tbridge simulate with the defaults): the design
   // loads, permanent and payload, with the deck's inertia (not with the paper's switches).
   ModelOptions options;
@@ -206,7 +221,8 @@ DynamicCheck DynamicCheckNotRun(const Design& d, const std::string& why) {
   return out;
 }
 
-DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, ProgressReporter* progress,
+DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
+                           ProgressReporter* progress,
                            const std::vector<StringPrestrain>& prestrain) {
   const double max_member_steps = max_steps ? *max_steps : d.config.loads.dynamic_max_member_steps;
   DynamicCheck out;
@@ -223,7 +239,10 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
   const double members = static_cast<double>(d.bars.size() + d.strings.size());
   bool any = false;
   for (LoadRun& run : runs) {
-    any = Modal(run, l) || WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)", run) || any;
+    any = Modal(run, l) ||
+          WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)",
+                       run) ||
+          any;
   }
   if (!any) {
     for (LoadRun& run : runs) out.runs.push_back(std::move(run.record));
@@ -257,7 +276,8 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
     bool converged = false;
     const auto solve_stations = [&]() {
       if (stations || run.station_force == 0) return;
-      stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration, standing, converged);
+      stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration,
+                                    standing, converged);
     };
     bool done = false;
     const bool modal = Modal(run, l);
@@ -266,11 +286,14 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
       if (converged) {
         done = RunModal(d, model, statics, run, *stations, standing, summary);
       } else {
-        run.record.note = "modal run not done (a static solve at a station did not converge): the nonlinear run instead";
+        run.record.note =
+            "modal run not done (a static solve at a station did not converge): the nonlinear run "
+            "instead";
       }
     }
     // A nonlinear run skipped before (over the budget at its asked step) has its note.
-    if (!done && (modal ? WithinBudget(members, max_member_steps, "", run) : run.record.note.empty())) {
+    if (!done &&
+        (modal ? WithinBudget(members, max_member_steps, "", run) : run.record.note.empty())) {
       if (stable_dt == 0) stable_dt = Rk4StableStep(model, run.scenario);
       done = Run(model, stable_dt, members, max_member_steps, run, summary, progress);
     }
@@ -281,18 +304,21 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
       }
       const std::string label = "dynamic: " + run.record.name;
       solve_stations();
-      const Eigen::VectorXd static_peak = StaticPeaks(d, model, statics, stations ? &*stations : nullptr);
+      const Eigen::VectorXd static_peak =
+          StaticPeaks(d, model, statics, stations ? &*stations : nullptr);
       std::map<std::string, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {
         const bool bar = j < nb;
         const MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
         const std::string& group = bar ? s.bars[j].group : s.strings[j - nb].group;
-        const double peak = bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
+        const double peak =
+            bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
         // The prestress as it is, gamma_G on the permanent load's share of the reference
         // force (sup where it adds to the force, inf where it relieves it), gamma on what the
         // standing payload and the run add.
         const double permanent = m.reference_force - prestress[j];
-        const double demand = prestress[j] + (permanent > 0 ? gamma_g_sup : gamma_g_inf) * permanent +
+        const double demand = prestress[j] +
+                              (permanent > 0 ? gamma_g_sup : gamma_g_inf) * permanent +
                               run.gamma * std::max(peak - m.reference_force, 0.0);
         MemberFinding& f = out.members[j];
         if (bar) {
@@ -303,7 +329,8 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps, Pro
           const double strain = summary.min_string_strain[j - nb];
           if (strain < 0 && MustStayTaut(d, j - nb)) {
             RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);
-            if (std::find(out.slack_strings.begin(), out.slack_strings.end(), j - nb) == out.slack_strings.end()) {
+            if (std::find(out.slack_strings.begin(), out.slack_strings.end(), j - nb) ==
+                out.slack_strings.end()) {
               out.slack_strings.push_back(j - nb);
             }
           }

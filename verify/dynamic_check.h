@@ -32,8 +32,8 @@
 #include <optional>
 
 #include "core/progress.h"
-#include "dynamics/model.h"
 #include "design/design.h"
+#include "dynamics/model.h"
 
 namespace tbridge {
 
@@ -41,19 +41,21 @@ namespace tbridge {
 // mode "dynamic" or "slack", case "dynamic: <run>"). Skips a nonlinear run, saying why in its
 // note, when it would take more than `max_member_steps` member-steps: the check is then not run
 // (CheckStatus::kNotRun). A run over that at its asked step is skipped before anything is
-// built for it (no dynamic model, no static counterpart). With no dynamic load among the cases it is done with no run.
-// Changes nothing in `design`. `progress` (optional) is told each run's simulated time against
-// its duration, as stage "dynamic check: <run>".
-// `max_member_steps`: loads.dynamic_max_member_steps of the design's config where not given.
-// `prestrain`: strings whose rest length is set apart from the design (dynamics.prestrain, the
-// sweep's keep_area), in the dynamic model and the static solves alike.
-// The options of the dynamic model the check runs on: the members' weight where the design
-// counts it, the deck's and payload's inertia except under the paper's switches, and
-// `prestrain` (as CheckDynamics's).
-ModelOptions DynamicCheckModelOptions(const Design& design, const std::vector<StringPrestrain>& prestrain = {});
+// built for it (no dynamic model, no static counterpart). With no dynamic load among the cases it
+// is done with no run. Changes nothing in `design`. `progress` (optional) is told each run's
+// simulated time against its duration, as stage "dynamic check: <run>". `max_member_steps`:
+// loads.dynamic_max_member_steps of the design's config where not given. `prestrain`: strings whose
+// rest length is set apart from the design (dynamics.prestrain, the sweep's keep_area), in the
+// dynamic model and the static solves alike. The options of the dynamic model the check runs on:
+// the members' weight where the design counts it, the deck's and payload's inertia except under the
+// paper's switches, and `prestrain` (as CheckDynamics's).
+ModelOptions DynamicCheckModelOptions(const Design& design,
+                                      const std::vector<StringPrestrain>& prestrain = {});
 
-DynamicCheck CheckDynamics(const Design& design, std::optional<double> max_member_steps = std::nullopt,
-                           ProgressReporter* progress = nullptr, const std::vector<StringPrestrain>& prestrain = {});
+DynamicCheck CheckDynamics(const Design& design,
+                           std::optional<double> max_member_steps = std::nullopt,
+                           ProgressReporter* progress = nullptr,
+                           const std::vector<StringPrestrain>& prestrain = {});
 
 // The check not carried out on `design`: each run it would do, not done, with `why` as its
 // note, and every member without a finding. The sizing's record of a design it does not run

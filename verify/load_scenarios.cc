@@ -21,7 +21,8 @@ DynamicsConfig PeaksOnly(double duration_s, double dt_s, IntegratorKind integrat
 }
 
 void RequireStations(const Design& design, const char* what) {
-  if (design.actions.station_nodes.empty()) throw ModelError(std::string(what) + ": the bridge has no deck stations");
+  if (design.actions.station_nodes.empty())
+    throw ModelError(std::string(what) + ": the bridge has no deck stations");
 }
 
 }  // namespace
@@ -43,7 +44,8 @@ DynamicsConfig PaperTravellingScenario(const Design& design, double duration_s, 
   return run;
 }
 
-DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double speed_m_s, double dt_s) {
+DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double speed_m_s,
+                                  double dt_s) {
   RequireStations(design, "moving load");
   const Actions& a = design.actions;
   const double span = design.config.bridge.span;
@@ -82,7 +84,8 @@ DynamicsConfig WindGustScenario(const Design& design, double rise_s, double dt_s
     l.force = {wind(0, v), wind(1, v), wind(2, v)};
     run.loads.push_back(l);
   }
-  if (run.loads.empty()) throw ModelError("wind gust: the bridge has no wind action (a planar bridge)");
+  if (run.loads.empty())
+    throw ModelError("wind gust: the bridge has no wind action (a planar bridge)");
   return run;
 }
 

@@ -22,7 +22,8 @@ DynamicsConfig PaperTravellingScenario(const Design& design, double duration_s, 
 // to the one at x = span (t = span / v). Between two deck points it is shared by the lever
 // rule, so each station node carries a ramp up from the previous point and down to the next
 // (LoadStepConfig rise_s / fall_s); the planes share it equally. RK4 at `dt_s`.
-DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double speed_m_s, double dt_s);
+DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double speed_m_s,
+                                  double dt_s);
 
 // The characteristic wind across the deck (the design's kWind action), rising linearly from
 // zero over `rise_s`, then holding for as long again. RK4 at `dt_s`. Throws ModelError when

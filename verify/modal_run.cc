@@ -25,7 +25,8 @@ ModalResult ModesBelow(const DynamicModel& model, double cutoff_hz) {
   options.count = 24;
   for (;;) {
     ModalResult r = ComputeModes(model, options);
-    const bool enough = r.all_modes || (!r.modes.empty() && r.modes.back().frequency_hz > cutoff_hz);
+    const bool enough =
+        r.all_modes || (!r.modes.empty() && r.modes.back().frequency_hz > cutoff_hz);
     if (enough) {
       size_t keep = 1;
       while (keep < r.modes.size() && r.modes[keep].frequency_hz <= cutoff_hz) ++keep;
@@ -38,10 +39,10 @@ ModalResult ModesBelow(const DynamicModel& model, double cutoff_hz) {
 
 // The modal basis restricted to what the run reads.
 struct ModalBasis {
-  Eigen::VectorXd omega;      // per mode [rad/s]
-  Eigen::MatrixXd member;     // modes x members: force change per unit modal coordinate [N]
-  Eigen::MatrixXd deck;       // modes x deck nodes: vertical displacement per unit coordinate
-  Eigen::MatrixXd station;    // modes x stations: phi_i . P_k [N per unit coordinate]
+  Eigen::VectorXd omega;    // per mode [rad/s]
+  Eigen::MatrixXd member;   // modes x members: force change per unit modal coordinate [N]
+  Eigen::MatrixXd deck;     // modes x deck nodes: vertical displacement per unit coordinate
+  Eigen::MatrixXd station;  // modes x stations: phi_i . P_k [N per unit coordinate]
 };
 
 }  // namespace
@@ -50,12 +51,14 @@ ModalRunOptions ModalRunOptionsOf(const Design& d) {
   ModalRunOptions options;
   options.cutoff_hz = d.config.loads.dynamic_modal_cutoff_hz;
   options.max_nonlinearity = d.config.loads.dynamic_modal_max_nonlinearity;
-  for (int q = 0; q < d.topology.structure.num_strings(); ++q) options.may_go_slack.push_back(!MustStayTaut(d, q));
+  for (int q = 0; q < d.topology.structure.num_strings(); ++q)
+    options.may_go_slack.push_back(!MustStayTaut(d, q));
   return options;
 }
 
-StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, const StaticModel& statics,
-                                    double force_n, double duration_s, StaticState& standing, bool& converged) {
+StationResponses MovingLoadStations(const Design& d, const DynamicModel& model,
+                                    const StaticModel& statics, double force_n, double duration_s,
+                                    StaticState& standing, bool& converged) {
   const StaticState start = ReferenceState(statics, d);
   StationResponses out;
   const int n_deck = static_cast<int>(model.deck_nodes.size());
@@ -83,7 +86,8 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   // symmetric bridge only the stations up to mid-span are solved: the response at the others
   // is the mirror image of their images' (MidSpanMirror).
   const int stations = static_cast<int>(d.actions.station_nodes.size());
-  const std::optional<StationMirror> mirror = MidSpanMirror(statics, start, model.loads, d.actions, d.config.bridge.span);
+  const std::optional<StationMirror> mirror =
+      MidSpanMirror(statics, start, model.loads, d.actions, d.config.bridge.span);
   std::vector<int> solved;
   for (int k = 0; k < stations; ++k) {
     if (!mirror || mirror->station_image[static_cast<size_t>(k)] >= k) solved.push_back(k);
@@ -145,14 +149,18 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, 
   return out;
 }
 
-ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& statics, const StaticState& standing,
-                                  const StationResponses& stations, const ModalRunOptions& options) {
+ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& statics,
+                                  const StaticState& standing, const StationResponses& stations,
+                                  const ModalRunOptions& options) {
   ModalRunResult out;
-  const int nb = static_cast<int>(model.bars.size()), ns = static_cast<int>(model.strings.size()), nm = nb + ns;
+  const int nb = static_cast<int>(model.bars.size()), ns = static_cast<int>(model.strings.size()),
+            nm = nb + ns;
   const int count = static_cast<int>(stations.forces.size());
   const int n_deck = static_cast<int>(model.deck_nodes.size());
   if (stations.standing_forces.size() != nm || static_cast<int>(stations.time_s.size()) != count ||
-      static_cast<int>(stations.load_nodes.size()) != count || static_cast<int>(stations.load_forces.size()) != count || static_cast<int>(stations.deck_y.size()) != count ||
+      static_cast<int>(stations.load_nodes.size()) != count ||
+      static_cast<int>(stations.load_forces.size()) != count ||
+      static_cast<int>(stations.deck_y.size()) != count ||
       stations.standing_deck_y.size() != n_deck) {
     throw ModelError("modal run: station responses sized unlike the model");
   }
@@ -161,18 +169,23 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
     return out;
   };
   if (model.mass_damping_per_s != 0 ||
-      std::any_of(model.strings.damping.begin(), model.strings.damping.end(), [](double c) { return c != 0; })) {
+      std::any_of(model.strings.damping.begin(), model.strings.damping.end(),
+                  [](double c) { return c != 0; })) {
     return not_done("the model is damped (the modal run is of the undamped model)");
   }
   // A string that must stay taut and is slack at the start or at a station is a finding the
   // nonlinear run measures (its strain). One that may go slack does so in the quasi-static
   // response exactly; the excess sees it taut, which the nonlinearity measure below bounds.
-  const auto may_slack = [&](int q) { return q < static_cast<int>(options.may_go_slack.size()) && options.may_go_slack[q]; };
+  const auto may_slack = [&](int q) {
+    return q < static_cast<int>(options.may_go_slack.size()) && options.may_go_slack[q];
+  };
   for (int q = 0; q < ns; ++q) {
     if (may_slack(q)) continue;
     bool slack = stations.standing_forces[nb + q] <= 0;
     for (int k = 0; k < count && !slack; ++k) slack = stations.forces[k][nb + q] <= 0;
-    if (slack) return not_done("string " + model.names.string_name[q] + ", which must stay taut, is slack at a station");
+    if (slack)
+      return not_done("string " + model.names.string_name[q] +
+                      ", which must stay taut, is slack at a station");
   }
 
   StaticTangent tangent(statics, standing);
@@ -194,12 +207,14 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
     for (int k = 0; k < count; ++k) {
       station_load.setZero();
       for (size_t a = 0; a < stations.load_nodes[k].size(); ++a) {
-        station_load.col(stations.load_nodes[k][a]) = stations.load_forces[k].col(static_cast<Eigen::Index>(a));
+        station_load.col(stations.load_nodes[k][a]) =
+            stations.load_forces[k].col(static_cast<Eigen::Index>(a));
       }
       tangent.Solve(station_load, displacement, force_change);
       for (int n = 0; n < n_deck; ++n) {
         const double nonlinear = deck_change_at[k][n];
-        difference = std::max(difference, std::abs(displacement(1, model.deck_nodes[n]) - nonlinear));
+        difference =
+            std::max(difference, std::abs(displacement(1, model.deck_nodes[n]) - nonlinear));
         largest = std::max(largest, std::abs(nonlinear));
       }
     }
@@ -207,14 +222,16 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
   }
   if (out.nonlinearity > options.max_nonlinearity) {
     std::ostringstream os;
-    os << "the bridge is not linear enough over the load: its linear deck response differs from the nonlinear one by "
+    os << "the bridge is not linear enough over the load: its linear deck response differs from "
+          "the nonlinear one by "
        << out.nonlinearity << " of the largest, over " << options.max_nonlinearity;
     return not_done(os.str());
   }
   const ModalResult modes = ModesBelow(model, options.cutoff_hz);
   const int m = static_cast<int>(modes.modes.size());
   for (const Mode& mode : modes.modes) {
-    if (mode.omega_squared <= 0) return not_done("the linearised model has a mode of zero or negative stiffness");
+    if (mode.omega_squared <= 0)
+      return not_done("the linearised model has a mode of zero or negative stiffness");
   }
   const LinearisedSystem lin = Linearise(model);
 
@@ -250,7 +267,8 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
     for (int k = 0; k < count; ++k) {
       double work = 0;
       for (size_t a = 0; a < stations.load_nodes[k].size(); ++a) {
-        work += mode.shape.col(stations.load_nodes[k][a]).dot(stations.load_forces[k].col(static_cast<Eigen::Index>(a)));
+        work += mode.shape.col(stations.load_nodes[k][a])
+                    .dot(stations.load_forces[k].col(static_cast<Eigen::Index>(a)));
       }
       basis.station(i, k) = work;
     }
@@ -264,8 +282,10 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
   // The march. Segment s runs from station s - 1 to station s (station -1: the start at the
   // first support; station `count`: the end at the second), the load shared between the two.
   const Eigen::ArrayXd omega = basis.omega.array(), omega_sq = omega.square();
-  Eigen::ArrayXd e = Eigen::ArrayXd::Zero(m), v = Eigen::ArrayXd::Zero(m), slope = Eigen::ArrayXd::Zero(m);
-  Eigen::ArrayXd c(m), s(m), e_next(m), next_slope(m);  // the march's workspace: it allocates nothing
+  Eigen::ArrayXd e = Eigen::ArrayXd::Zero(m), v = Eigen::ArrayXd::Zero(m),
+                 slope = Eigen::ArrayXd::Zero(m);
+  Eigen::ArrayXd c(m), s(m), e_next(m),
+      next_slope(m);  // the march's workspace: it allocates nothing
   Eigen::VectorXd force(nm), deck(n_deck), excess_force(nm), excess_deck(n_deck);
   Eigen::VectorXd peak = Eigen::VectorXd::Constant(nm, -std::numeric_limits<double>::infinity());
   Eigen::VectorXd low = Eigen::VectorXd::Constant(nm, std::numeric_limits<double>::infinity());
@@ -284,7 +304,9 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
   const Eigen::Vector3d no_load = Eigen::Vector3d::Zero();
   Eigen::VectorXd start_y(n_deck);
   for (int n = 0; n < n_deck; ++n) start_y[n] = model.positions(1, model.deck_nodes[n]);
-  const auto time_of = [&](int k) { return k < 0 ? 0.0 : k >= count ? stations.duration_s : stations.time_s[k]; };
+  const auto time_of = [&](int k) {
+    return k < 0 ? 0.0 : k >= count ? stations.duration_s : stations.time_s[k];
+  };
   const auto evaluate = [&](int before, double share_after) {
     // QS: the standing response plus each station's change, by its share.
     force = stations.standing_forces;
@@ -340,7 +362,8 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
 
   for (int q = 0; q < ns; ++q) {
     if (low[nb + q] <= 0 && !may_slack(q)) {
-      return not_done("string " + model.names.string_name[q] + ", which must stay taut, goes slack in the response");
+      return not_done("string " + model.names.string_name[q] +
+                      ", which must stay taut, goes slack in the response");
     }
   }
   out.peak_bar_compression.resize(nb);
@@ -349,7 +372,8 @@ ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& 
   out.min_string_strain.resize(ns);
   for (int q = 0; q < ns; ++q) {
     out.peak_string_tension[q] = std::max(peak[nb + q], 0.0);
-    out.min_string_strain[q] = low[nb + q] / (model.strings.stiffness[q] * model.strings.rest_length[q]);
+    out.min_string_strain[q] =
+        low[nb + q] / (model.strings.stiffness[q] * model.strings.rest_length[q]);
   }
   out.peak_deck_displacement_m = deck_peak;
   out.done = true;

@@ -41,18 +41,18 @@ namespace tbridge {
 // The quasi-static responses the run interpolates: at rest under the standing loads, and with
 // the point load at each station in turn (nonlinear static solves).
 struct StationResponses {
-  Eigen::VectorXd standing_forces;                 // [C_bars; T_strings] [N]
-  Eigen::VectorXd standing_deck_y;                 // vertical position of each deck node [m]
-  std::vector<Eigen::VectorXd> forces;             // per station [N]
-  std::vector<Eigen::VectorXd> deck_y;             // per station [m]
+  Eigen::VectorXd standing_forces;      // [C_bars; T_strings] [N]
+  Eigen::VectorXd standing_deck_y;      // vertical position of each deck node [m]
+  std::vector<Eigen::VectorXd> forces;  // per station [N]
+  std::vector<Eigen::VectorXd> deck_y;  // per station [m]
   // Per reaction group of the model (its abutments): the reaction standing and per station [N].
   std::vector<Eigen::Vector3d> standing_reactions;
   std::vector<std::vector<Eigen::Vector3d>> reactions;
   // Per station: the point load alone, at the nodes it loads (their forces, 3 x nodes [N]).
   std::vector<std::vector<int>> load_nodes;
   std::vector<Eigen::Matrix3Xd> load_forces;
-  std::vector<double> time_s;                      // per station: when the load stands there [s]
-  double duration_s = 0;                           // span / speed [s]
+  std::vector<double> time_s;  // per station: when the load stands there [s]
+  double duration_s = 0;       // span / speed [s]
 };
 
 // The static responses of `force_n` crossing the deck of `d` in `duration_s` (stations in
@@ -62,8 +62,9 @@ struct StationResponses {
 // reference state. One station's loads at a time per lane (O(n_n) memory for the loads
 // whatever the number of stations). `standing` gets the state at rest; `converged` is false
 // when a solve did not converge (its station then keeps the standing response).
-StationResponses MovingLoadStations(const Design& d, const DynamicModel& model, const StaticModel& statics,
-                                    double force_n, double duration_s, StaticState& standing, bool& converged);
+StationResponses MovingLoadStations(const Design& d, const DynamicModel& model,
+                                    const StaticModel& statics, double force_n, double duration_s,
+                                    StaticState& standing, bool& converged);
 
 struct ModalRunOptions {
   double cutoff_hz = 0;  // the modes kept: those at or below this frequency (> 0)
@@ -98,7 +99,8 @@ ModalRunOptions ModalRunOptionsOf(const Design& d);
 // Runs the walking load on `model` (at rest at its positions under model.loads) with the
 // static responses `stations` of `statics` about `standing` (the same bridge, the same
 // standing loads). Throws ModelError only for inconsistent sizes.
-ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& statics, const StaticState& standing,
-                                  const StationResponses& stations, const ModalRunOptions& options);
+ModalRunResult RunModalMovingLoad(const DynamicModel& model, const StaticModel& statics,
+                                  const StaticState& standing, const StationResponses& stations,
+                                  const ModalRunOptions& options);
 
 }  // namespace tbridge

@@ -36,7 +36,8 @@ class Measures {
 
   // Of member forces [C; T] and node positions `nodes` under a case of limit state `state`,
   // into `out` (size()).
-  void Of(LimitState state, const Eigen::VectorXd& forces, const Eigen::Matrix3Xd& nodes, Eigen::VectorXd& out) const {
+  void Of(LimitState state, const Eigen::VectorXd& forces, const Eigen::Matrix3Xd& nodes,
+          Eigen::VectorXd& out) const {
     const int nb = static_cast<int>(d_.bars.size());
     out.setConstant(size(), -std::numeric_limits<double>::infinity());
     if (state == LimitState::kUltimate) {
@@ -60,7 +61,8 @@ class Measures {
     }
     const Structure& s = d_.topology.structure;
     double deflection = 0;
-    for (int v : d_.topology.deck_nodes) deflection = std::max(deflection, std::abs(nodes(1, v) - s.nodes(1, v)));
+    for (int v : d_.topology.deck_nodes)
+      deflection = std::max(deflection, std::abs(nodes(1, v) - s.nodes(1, v)));
     out[size() - 1] = deflection / limit_m_;
   }
 
@@ -77,8 +79,8 @@ class Measures {
 // `visit(c, k, measures)` sees each family c at each station k, station by station, in
 // O(members + nodes) memory.
 template <class Visit>
-void LinearStations(const Design& d, const std::vector<int>& families, StaticTangent& tangent, const StaticState& start,
-                    const Measures& measures, Visit visit) {
+void LinearStations(const Design& d, const std::vector<int>& families, StaticTangent& tangent,
+                    const StaticState& start, const Measures& measures, Visit visit) {
   const int stations = static_cast<int>(d.actions.station_nodes.size());
   const Structure& s = d.topology.structure;
   Eigen::VectorXd start_forces(s.num_bars() + s.num_strings());
@@ -109,8 +111,9 @@ void LinearStations(const Design& d, const std::vector<int>& families, StaticTan
 // Which stations of each travelling family are solved nonlinearly (selected[f][k]): the
 // linear pass's largest measure of each member and of the deflection over every family and
 // station, and the stations where a measure comes within `margin` of it or of its limit 1.
-std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector<int>& families, StaticTangent& tangent,
-                                              const StaticState& start, double margin) {
+std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector<int>& families,
+                                              StaticTangent& tangent, const StaticState& start,
+                                              double margin) {
   const int stations = static_cast<int>(d.actions.station_nodes.size());
   std::vector<std::vector<char>> selected(families.size(), std::vector<char>(stations, 0));
   // The linear pass measures members and deflections, not reactions: with an abutment capacity
@@ -122,15 +125,17 @@ std::vector<std::vector<char>> SelectStations(const Design& d, const std::vector
     return selected;
   }
   const Measures measures(d);
-  Eigen::VectorXd largest = Eigen::VectorXd::Constant(measures.size(), -std::numeric_limits<double>::infinity());
+  Eigen::VectorXd largest =
+      Eigen::VectorXd::Constant(measures.size(), -std::numeric_limits<double>::infinity());
   LinearStations(d, families, tangent, start, measures,
                  [&largest](int, int, const Eigen::VectorXd& m) { largest = largest.cwiseMax(m); });
-  LinearStations(d, families, tangent, start, measures, [&](int f, int k, const Eigen::VectorXd& m) {
-    for (int i = 0; i < m.size() && !selected[f][k]; ++i) {
-      if (m[i] == -std::numeric_limits<double>::infinity()) continue;
-      selected[f][k] = m[i] >= largest[i] - margin * std::abs(largest[i]) || m[i] >= 1 - margin;
-    }
-  });
+  LinearStations(
+      d, families, tangent, start, measures, [&](int f, int k, const Eigen::VectorXd& m) {
+        for (int i = 0; i < m.size() && !selected[f][k]; ++i) {
+          if (m[i] == -std::numeric_limits<double>::infinity()) continue;
+          selected[f][k] = m[i] >= largest[i] - margin * std::abs(largest[i]) || m[i] >= 1 - margin;
+        }
+      });
   return selected;
 }
 
@@ -213,7 +218,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   // so only one station of each mirrored pair is solved.
   std::optional<StationMirror> mirror;
   std::vector<int> case_image;
-  if (!families.empty()) mirror = MidSpanMirror(model, start, d.loads, d.actions, d.config.bridge.span);
+  if (!families.empty())
+    mirror = MidSpanMirror(model, start, d.loads, d.actions, d.config.bridge.span);
   if (mirror) case_image = CaseImages(mirror->mirror, d.actions, d.cases);
 
   // The solves in their order (case by case, station by station), in two lanes: each case's
@@ -230,13 +236,15 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   int solves = 0;  // for the progress
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const std::vector<int>& st = stations_of[c];
-    const bool paired = mirror && !case_image.empty() && case_image[c] == static_cast<int>(c) && !st.empty() && st.front() >= 0;
+    const bool paired = mirror && !case_image.empty() && case_image[c] == static_cast<int>(c) &&
+                        !st.empty() && st.front() >= 0;
     // Per station of the case, its job (to find the image's).
     std::vector<int> job_at(static_cast<size_t>(out.stations), -1);
     std::vector<size_t> solved;  // indexes into st
     for (size_t i = 0; i < st.size(); ++i) {
       const int image = paired ? mirror->station_image[static_cast<size_t>(st[i])] : -1;
-      if (image < 0 || image >= st[i] || !selected[static_cast<size_t>(family_of[c])][static_cast<size_t>(image)]) {
+      if (image < 0 || image >= st[i] ||
+          !selected[static_cast<size_t>(family_of[c])][static_cast<size_t>(image)]) {
         solved.push_back(i);
       }
     }
@@ -252,7 +260,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
         ++next;
       } else {
         job.lane = -1;
-        job.image_of = job_at[static_cast<size_t>(mirror->station_image[static_cast<size_t>(st[i])])];
+        job.image_of =
+            job_at[static_cast<size_t>(mirror->station_image[static_cast<size_t>(st[i])])];
       }
       if (st[i] >= 0) job_at[static_cast<size_t>(st[i])] = static_cast<int>(jobs.size());
       jobs.push_back(job);
@@ -295,7 +304,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     if (j < 0) continue;
     solved[i].result = mirror->mirror.Of(solved[static_cast<size_t>(j)].result);
     solved[i].load_abs_sum = solved[static_cast<size_t>(j)].load_abs_sum;
-    solved[i].load_total = mirror->mirror.flip.cwiseProduct(solved[static_cast<size_t>(j)].load_total);
+    solved[i].load_total =
+        mirror->mirror.flip.cwiseProduct(solved[static_cast<size_t>(j)].load_total);
     ++out.mirrored;
   }
 
@@ -312,7 +322,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     r.message = result.message;
     r.slack_strings = result.slack_strings;
     r.reactions = result.state.reactions;
-    r.balance = (r.reactions.rowwise().sum() + solved[i].load_total).norm() / std::max(solved[i].load_abs_sum, 1e-300);
+    r.balance = (r.reactions.rowwise().sum() + solved[i].load_total).norm() /
+                std::max(solved[i].load_abs_sum, 1e-300);
     for (int v : d.topology.deck_nodes) {
       const double dy = std::abs(result.state.nodes(1, v) - s.nodes(1, v));
       if (dy > r.deflection_m) r.deflection_m = dy, r.deflection_node = v;
@@ -320,7 +331,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     out.all_converged = out.all_converged && r.converged;
     if (r.converged) {
       for (int j = 0; j < nb + static_cast<int>(d.strings.size()); ++j) {
-        const double force = j < nb ? result.state.bar_compression[j] : result.state.string_tension[j - nb];
+        const double force =
+            j < nb ? result.state.bar_compression[j] : result.state.string_tension[j - nb];
         out.force_min[j] = std::min(out.force_min[j], force);
         if (lc.state == LimitState::kUltimate) out.force_max[j] = std::max(out.force_max[j], force);
       }
@@ -335,7 +347,9 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
       }
       for (size_t k = 0; k < d.strings.size(); ++k) {
         const MemberSizing& m = d.strings[k];
-        if (m.area > 0) RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w, r.label, "yield");
+        if (m.area > 0)
+          RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w,
+                       r.label, "yield");
       }
     }
     if (r.converged && lc.state == LimitState::kServiceability) {
@@ -432,12 +446,15 @@ CaseAt CaseOfLabel(const Design& d, const std::string& label, const std::string&
   std::string allowed;
   for (size_t c = 0; c < d.cases.size(); ++c) {
     const LoadCase& lc = d.cases[c];
-    const int stations = lc.station_load != 0 ? static_cast<int>(d.actions.station_nodes.size()) : 0;
+    const int stations =
+        lc.station_load != 0 ? static_cast<int>(d.actions.station_nodes.size()) : 0;
     for (int k = stations > 0 ? 0 : -1; k < stations; ++k) {
-      const std::string name = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), k});
+      const std::string name =
+          CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), k});
       if (name == label) return CaseAt{static_cast<int>(c), k};
     }
-    allowed += (allowed.empty() ? "" : ", ") + lc.name + (stations > 0 ? " at node N (a station's first deck node)" : "");
+    allowed += (allowed.empty() ? "" : ", ") + lc.name +
+               (stations > 0 ? " at node N (a station's first deck node)" : "");
   }
   for (size_t k = 1; k < states.size(); ++k)
     allowed += "; each also followed by \"" + states[k].suffix.substr(1) + "\"";
@@ -451,7 +468,8 @@ Eigen::Matrix3Xd SolveCaseNodes(const Design& design, const CaseAt& at) {
           : design;
   const StaticModel model = StaticModelOf(d);
   const StaticState start = ReferenceState(model, d);
-  const StaticResult result = SolveStatic(model, start, d.loads, d.actions.Loads(d.cases.at(at.case_index), at.station));
+  const StaticResult result =
+      SolveStatic(model, start, d.loads, d.actions.Loads(d.cases.at(at.case_index), at.station));
   if (!result.converged) {
     throw ModelError(CaseLabel(d.cases, d.actions, MemberExtreme{0, at.case_index, at.station}) +
                      ": no static equilibrium found (" + result.message + ")");

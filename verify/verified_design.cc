@@ -1035,7 +1035,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, const S
   // The structure's mass of the last design that passed (NaN: none yet; a plain double, as GCC 12
   // read an optional reset inside the loop as used uninitialised).
   double last_passing_kg = std::numeric_limits<double>::quiet_NaN();
-  CarriedRows carried;                    // the last sizing's active rows
+  CarriedRows carried;  // the last sizing's active rows
   // The piece below a binding comfort row's mode, tried once: the modes held there, the last
   // sizing of the trial, and the first run while it runs.
   bool tried_below = false;

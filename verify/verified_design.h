@@ -6,10 +6,10 @@
 // fixed point, the prestress and the rest lengths are recomputed with the new sizes. A member
 // that fails in yield grows by its utilisation, one that buckles by its square root (Euler's
 // load grows with A^2); a slack string that must stay taut (MustStayTaut) or a deflection
-// past its limit stiffens every string by the deflection's excess (at least 10 %). Floors only rise, so no member shrinks while it
-// fails. The loop ends when the verdict passes or after `design.max_sizings` designs, saying why not.
-// With the paper's switches (loads.cases ["paper"]) the design is the paper's: it is checked
-// and reported, not resized.
+// past its limit stiffens every string by the deflection's excess (at least 10 %). Floors only
+// rise, so no member shrinks while it fails. The loop ends when the verdict passes or after
+// `design.max_sizings` designs, saying why not. With the paper's switches (loads.cases ["paper"])
+// the design is the paper's: it is checked and reported, not resized.
 #pragma once
 
 #include <string>
@@ -37,7 +37,8 @@ void CheckAgain(Design& design, ProgressReporter* progress = nullptr);
 // (`group_of`, per member [bars; strings]: its mirror images) the largest of theirs. `mended`
 // gets how many failed. Empty where a member fails otherwise (a taut string gone slack), which
 // no area mends. The verified sizing mends so a design whose mass has settled while it fails.
-std::vector<double> MendedAreas(const Design& design, const std::vector<int>& group_of, int* mended);
+std::vector<double> MendedAreas(const Design& design, const std::vector<int>& group_of,
+                                int* mended);
 
 // Sizes to start a verified design from, in place of its equilibrium design's: another
 // design's of the same bridge drawn otherwise (the angle's search starts each angle from the

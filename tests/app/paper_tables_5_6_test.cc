@@ -15,7 +15,8 @@ namespace tbridge {
 namespace {
 
 const PaperReproduction& Tables56() {
-  static const PaperReproduction r = ReproducePaper(std::string(TBRIDGE_SOURCE_DIR) + "/configs", {5, 6});
+  static const PaperReproduction r =
+      ReproducePaper(std::string(TBRIDGE_SOURCE_DIR) + "/configs", {5, 6});
   return r;
 }
 
@@ -60,7 +61,8 @@ TEST_CASE("Tables 5 and 6 reproduce within SPEC §9's tolerances", "[paper][tabl
       const double omega = row.at("omega_rad_s"), paper = row.at("paper_omega_rad_s");
       const bool design_state = row.at("prestrain").is_string();
       INFO("n = " << n << ", delta " << row.at("delta").dump() << ", prestrain "
-                  << row.at("prestrain").dump() << ": omega " << omega << " rad/s, paper " << paper);
+                  << row.at("prestrain").dump() << ": omega " << omega << " rad/s, paper "
+                  << paper);
       if (design_state) {
         // SPEC §9: the p1 column is the design state, identical to Table 5 (and its bound).
         CHECK(std::abs(omega / paper - 1.0) <= (n == 1 ? 0.08 : 0.10));
@@ -83,7 +85,8 @@ TEST_CASE("Tables 5 and 6 reproduce within SPEC §9's tolerances", "[paper][tabl
     for (size_t r = 0; r + 2 < rows.size(); r += 3) {
       INFO("row starting " << rows[r].dump());
       CHECK(rows[r].at("omega_rad_s").get<double>() < rows[r + 1].at("omega_rad_s").get<double>());
-      CHECK(rows[r + 1].at("omega_rad_s").get<double>() < rows[r + 2].at("omega_rad_s").get<double>());
+      CHECK(rows[r + 1].at("omega_rad_s").get<double>() <
+            rows[r + 2].at("omega_rad_s").get<double>());
     }
   }
 
@@ -94,17 +97,23 @@ TEST_CASE("Tables 5 and 6 reproduce within SPEC §9's tolerances", "[paper][tabl
     // that took a prestrained run's frequency (over twice as high) or another class's misses
     // them; only n = 3's classes 2 and 3, 9 % apart, are close enough for one of them to pass
     // in the other's place (67.7 rad/s against 64.0), so a swap fails but a duplicate may not.
-    const std::map<std::pair<int, int>, double> independent = {
-        {{1, 0}, 2 * M_PI / 0.1178}, {{2, 0}, 48.4}, {{2, 1}, 53.7}, {{3, 0}, 51.3}, {{3, 1}, 64.0}, {{3, 2}, 70.0}};
+    const std::map<std::pair<int, int>, double> independent = {{{1, 0}, 2 * M_PI / 0.1178},
+                                                               {{2, 0}, 48.4},
+                                                               {{2, 1}, 53.7},
+                                                               {{3, 0}, 51.3},
+                                                               {{3, 1}, 64.0},
+                                                               {{3, 2}, 70.0}};
     std::set<std::pair<int, int>> seen5, seen6;
     for (const char* table : {"table5", "table6"}) {
       for (const auto& row : Tables56().json.at(table)) {
         if (row.contains("prestrain") && !row.at("prestrain").is_string()) continue;
         const int n = row.at("n");
         const std::vector<double> delta = row.at("delta");
-        const int cls = static_cast<int>(std::max_element(delta.begin(), delta.end()) - delta.begin());
+        const int cls =
+            static_cast<int>(std::max_element(delta.begin(), delta.end()) - delta.begin());
         const double omega = row.at("omega_rad_s"), truth = independent.at({n, cls});
-        INFO(table << ", n = " << n << ", class " << cls + 1 << ": omega " << omega << " rad/s, independent " << truth);
+        INFO(table << ", n = " << n << ", class " << cls + 1 << ": omega " << omega
+                   << " rad/s, independent " << truth);
         if (n == 1) {
           // Periodic motion: 1e-3 relative, the quadrature printed to 4 digits (4e-4) plus the
           // spectral estimate's resolution over a 1 s record of 8.5 periods.

@@ -172,7 +172,8 @@ TEST_CASE("wrong types are rejected") {
 
   json solver_number = GoodConfig();
   solver_number["design"]["solver"] = 3;
-  ExpectRejected(solver_number, "design.solver", "3", "one of \"auto\", \"direct\", \"ipopt\", \"nlopt\"");
+  ExpectRejected(solver_number, "design.solver", "3",
+                 "one of \"auto\", \"direct\", \"ipopt\", \"nlopt\"");
 
   json section_number = GoodConfig();
   section_number["material"] = 5;
@@ -251,9 +252,9 @@ TEST_CASE("safety factors below 1 are rejected") {
 
 TEST_CASE("NaN and infinite numbers are rejected") {
   // JSON text cannot spell NaN or Infinity, but a json value built in code can hold them.
-  for (double bad : {std::numeric_limits<double>::quiet_NaN(),
-                     std::numeric_limits<double>::infinity(),
-                     -std::numeric_limits<double>::infinity()}) {
+  for (double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()}) {
     json c = GoodConfig();
     c["bridge"]["span"] = bad;
     // nlohmann shows a non-finite number as null.

@@ -32,7 +32,8 @@ Eigen::SparseMatrix<double> SaddlePoint(int n, int m, unsigned seed) {
   return a;
 }
 
-TEST_CASE("the KLU factor solves as the dense LU does: plain and transposed and refactorised", "[klu]") {
+TEST_CASE("the KLU factor solves as the dense LU does: plain and transposed and refactorised",
+          "[klu]") {
   const int n = 40, m = 12;
   KluFactor lu;
   const Eigen::SparseMatrix<double> first = SaddlePoint(n, m, 1);
@@ -64,7 +65,8 @@ TEST_CASE("the KLU factor solves as the dense LU does: plain and transposed and 
   }
 }
 
-TEST_CASE("the KLU factor refactorises a matrix whose rows differ in scale by 1e13 to rounding", "[klu]") {
+TEST_CASE("the KLU factor refactorises a matrix whose rows differ in scale by 1e13 to rounding",
+          "[klu]") {
   // The static solve's Newton matrix: stiffness rows of ~1e13 beside constraint rows of ~1,
   // whose pivot ratio reads about 1e-13 with any pivots. The later factorisations keep the
   // first's pivots (the ratio stays within a thousandth of what fresh pivots gave); each must
@@ -104,8 +106,8 @@ TEST_CASE("the KLU factor refactorises a matrix whose rows differ in scale by 1e
 
 TEST_CASE("the KLU factor reports a singular matrix", "[klu]") {
   // A constraint row that repeats another: the matrix is singular.
-  std::vector<Eigen::Triplet<double>> t = {{0, 0, 2.0}, {1, 1, 3.0}, {2, 0, 1.0}, {0, 2, 1.0},
-                                           {3, 0, 1.0}, {0, 3, 1.0}};
+  std::vector<Eigen::Triplet<double>> t = {{0, 0, 2.0}, {1, 1, 3.0}, {2, 0, 1.0},
+                                           {0, 2, 1.0}, {3, 0, 1.0}, {0, 3, 1.0}};
   Eigen::SparseMatrix<double> a(4, 4);
   a.setFromTriplets(t.begin(), t.end());
   KluFactor lu;

@@ -29,7 +29,8 @@ void ExpectKeyNamed(const json& loads, const std::string& key) {
 
 TEST_CASE("a good loads section parses") {
   // The control: without it the rejections below could come from the rest of the file.
-  const Config c = ParseConfig(WithLoads(json::parse(R"({"cases": ["permanent", "payload"], "gamma_q": 1.2})")));
+  const Config c =
+      ParseConfig(WithLoads(json::parse(R"({"cases": ["permanent", "payload"], "gamma_q": 1.2})")));
   CHECK(c.loads.cases.size() == 2);
   CHECK(c.loads.gamma_q == 1.2);  // copied from the text, never computed: exact
 }

@@ -24,11 +24,13 @@ void Sleep(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms));
 
 TEST_CASE("progress line: fraction, bar, elapsed time and ETA") {
   // 45 % of a 30-character bar is 13.5 characters: 13 filled, 17 open.
-  CHECK(ProgressReporter::Line("simulate", 0.45, 3, 4) ==
-        "simulate  45% [" + std::string(13, '#') + std::string(17, '.') + "] elapsed 0:00:03  ETA 0:00:04");
+  CHECK(ProgressReporter::Line("simulate", 0.45, 3, 4) == "simulate  45% [" + std::string(13, '#') +
+                                                              std::string(17, '.') +
+                                                              "] elapsed 0:00:03  ETA 0:00:04");
   // An unknown total shows only the elapsed time; an unknown rate an ETA of "?".
   CHECK(ProgressReporter::Line("design", -1, 2, -1) == "design elapsed 0:00:02");
-  CHECK(ProgressReporter::Line("x", 0, 0, -1) == "x   0% [" + std::string(30, '.') + "] elapsed 0:00:00  ETA ?");
+  CHECK(ProgressReporter::Line("x", 0, 0, -1) ==
+        "x   0% [" + std::string(30, '.') + "] elapsed 0:00:00  ETA ?");
   CHECK(ClockText(3725) == "1:02:05");  // 1 h, 2 min, 5 s
   CHECK(ClockText(-5) == "0:00:00");
 }

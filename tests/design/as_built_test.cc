@@ -27,7 +27,8 @@ std::vector<double> AreasOf(const Design& d) {
 
 }  // namespace
 
-TEST_CASE("as built: a heavier bar moves the reference state as the design's tangent says", "[design]") {
+TEST_CASE("as built: a heavier bar moves the reference state as the design's tangent says",
+          "[design]") {
   Config config;  // the default bridge, self-weight on
   config.bridge.n = 2;
   const Design d = RunDesign(config);
@@ -68,17 +69,21 @@ TEST_CASE("as built: a heavier bar moves the reference state as the design's tan
   const Structure& s = e.topology.structure;
   for (size_t k = 0; k < e.strings.size(); ++k) {
     const MemberSizing& m = e.strings[k];
-    CHECK(m.reference_force == Approx(StringTension(m.stiffness, m.rest_length, s.Length(s.strings[k]))).epsilon(1e-9));
+    CHECK(m.reference_force ==
+          Approx(StringTension(m.stiffness, m.rest_length, s.Length(s.strings[k]))).epsilon(1e-9));
     CHECK(m.rest_length == d.strings[k].rest_length);
   }
   for (size_t k = 0; k < e.bars.size(); ++k) {
-    CHECK(s.Length(s.bars[k]) == Approx(d.topology.structure.Length(d.topology.structure.bars[k])).epsilon(1e-12));
+    CHECK(s.Length(s.bars[k]) ==
+          Approx(d.topology.structure.Length(d.topology.structure.bars[k])).epsilon(1e-12));
   }
-  const Eigen::VectorXd residual = EquilibriumResidual(BuildEquilibrium(s), e.reference_forces, e.loads);
+  const Eigen::VectorXd residual =
+      EquilibriumResidual(BuildEquilibrium(s), e.reference_forces, e.loads);
   CHECK(residual.cwiseAbs().maxCoeff() <= 1e-10 * e.reference_forces.cwiseAbs().maxCoeff());
 }
 
-TEST_CASE("as built: unchanged areas re-derive nothing and bad areas are refused naming the key", "[design]") {
+TEST_CASE("as built: unchanged areas re-derive nothing and bad areas are refused naming the key",
+          "[design]") {
   Config config;
   config.bridge.n = 1;
   const Design d = RunDesign(config);

@@ -56,10 +56,12 @@ TEST_CASE("column-curve sizing gives the least area that carries the force") {
   // 0.1 % less area loses at least 0.1 % of resistance (it grows at least like A): not enough.
   CHECK(BarResistance(0.999 * b.area, length, rule, steel.youngs_modulus).buckling < force);
   // Independently of the bisection: chi of that area's slenderness by hand, times A f_y / gamma.
-  const double n_cr = std::numbers::pi * steel.youngs_modulus * b.area * b.area / (4.0 * length * length);
+  const double n_cr =
+      std::numbers::pi * steel.youngs_modulus * b.area * b.area / (4.0 * length * length);
   const double lambda = std::sqrt(b.area * steel.yield_stress / n_cr);
   CHECK(lambda > 1.0);  // really on the slender branch
-  CHECK(HandChi(lambda, kCurveC) * b.area * steel.yield_stress / 1.1 == Approx(force).epsilon(1e-12));
+  CHECK(HandChi(lambda, kCurveC) * b.area * steel.yield_stress / 1.1 ==
+        Approx(force).epsilon(1e-12));
 }
 
 }  // namespace

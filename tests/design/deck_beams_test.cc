@@ -2,14 +2,15 @@
 // thickness t, simply supported over one section l, with its weight, the superimposed dead
 // load and the payload per metre along it and the travelling load at its middle.
 
-#include <catch2/catch.hpp>
+#include "design/deck_beams.h"
+
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
-#include "design/deck_beams.h"
 #include "design/design.h"
 #include "design/design_reader.h"
 #include "design/design_report.h"
@@ -27,8 +28,8 @@ struct HandBeam {
 HandBeam SolveByHand(const Config& c, double t) {
   const double l = c.bridge.span / std::pow(2.0, c.bridge.n), w = c.bridge.deck_width;
   const double own = c.material.density * c.design.gravity * w * t;  // [N/m]
-  const double g = own + c.loads.superimposed_dead_n_per_m;           // G on the beam [N/m]
-  const double q = c.bridge.payload / c.bridge.span;                   // [N/m]
+  const double g = own + c.loads.superimposed_dead_n_per_m;          // G on the beam [N/m]
+  const double q = c.bridge.payload / c.bridge.span;                 // [N/m]
   const double Q = c.loads.travelling_load_n;
   const double gs = c.loads.gamma_g_sup, gq = c.loads.gamma_q;
   // Ultimate: the unfavourable-G cases govern (gamma_g_inf < gamma_g_sup).
@@ -41,12 +42,14 @@ HandBeam SolveByHand(const Config& c, double t) {
   // Serviceability: G + Q_full, or G + Q_t at the middle.
   const double ei = c.material.youngs_modulus * w * t * t * t / 12.0;
   const double sag_payload = 5.0 * (g + q) * std::pow(l, 4) / (384.0 * ei);
-  const double sag_travelling = 5.0 * g * std::pow(l, 4) / (384.0 * ei) + Q * l * l * l / (48.0 * ei);
+  const double sag_travelling =
+      5.0 * g * std::pow(l, 4) / (384.0 * ei) + Q * l * l * l / (48.0 * ei);
   h.sag_m = std::max(sag_payload, sag_travelling);
   return h;
 }
 
-TEST_CASE("deck beams: utilisation and sag of one section against the hand calculation", "[design][deck]") {
+TEST_CASE("deck beams: utilisation and sag of one section against the hand calculation",
+          "[design][deck]") {
   for (const double dead : {0.0, 2000.0}) {
     Config c;  // the engineering defaults: n = 2, 12 m, steel
     c.loads.superimposed_dead_n_per_m = dead;
@@ -70,7 +73,8 @@ TEST_CASE("deck beams: utilisation and sag of one section against the hand calcu
   }
 }
 
-TEST_CASE("deck beams: the paper's eq 7 deck is fully stressed under the paper's load", "[design][deck]") {
+TEST_CASE("deck beams: the paper's eq 7 deck is fully stressed under the paper's load",
+          "[design][deck]") {
   // Eq 7 solves sigma_d = 3/4 f_d l^2 / (w t^2) for the paper's f_d (payload and the beams'
   // own weight) in closed form; the check's bending stress M / (w t^2 / 6) is the same law
   // reached through M = f_d l^2 / 8. Agreement to 1e-12 (the quadratic's rounding).
@@ -88,7 +92,8 @@ TEST_CASE("deck beams: the paper's eq 7 deck is fully stressed under the paper's
   }
 }
 
-TEST_CASE("deck beams: a design file with another deck is refused, naming the thickness", "[design][deck]") {
+TEST_CASE("deck beams: a design file with another deck is refused, naming the thickness",
+          "[design][deck]") {
   // The members' reference forces carry the deck's weight: a deck of another thickness is
   // another design, which tbridge check cannot take as written.
   Config c;
@@ -96,7 +101,8 @@ TEST_CASE("deck beams: a design file with another deck is refused, naming the th
   std::ostringstream os;
   WriteDesignJson(designed, os);
   nlohmann::json file = nlohmann::json::parse(os.str());
-  const Deck thinner = DeckOfThickness(c.bridge, c.material, c.design, 0.9 * designed.deck.thickness);
+  const Deck thinner =
+      DeckOfThickness(c.bridge, c.material, c.design, 0.9 * designed.deck.thickness);
   file["deck"]["thickness"] = thinner.thickness;
   file["deck"]["section_mass"] = thinner.section_mass;
   file["deck"]["beams_mass"] = thinner.beams_mass;

@@ -198,14 +198,16 @@ TEST_CASE("dense QP: a warm start, right or wrong, reaches the minimiser of a co
       REQUIRE(sol.solved);
       // 1e-9, as the cold solve against the enumeration: rounding on O(1) data.
       CHECK((sol.p - expected).norm() <= 1e-9 * (1 + expected.norm()));
-      CHECK((sol.row_multiplier - cold.row_multiplier).norm() <= 1e-8 * (1 + cold.row_multiplier.norm()));
+      CHECK((sol.row_multiplier - cold.row_multiplier).norm() <=
+            1e-8 * (1 + cold.row_multiplier.norm()));
       ++compared;
     }
   }
   CHECK(compared >= 100);
 }
 
-TEST_CASE("dense QP: a constraint its active ones imply is met within 1e-8, and not beyond", "[qp]") {
+TEST_CASE("dense QP: a constraint its active ones imply is met within 1e-8, and not beyond",
+          "[qp]") {
   // p_0 >= 1 (a row) and p_0 <= 1 - delta (the upper bound): the bound lies in the row's span,
   // and no multiplier can give way. Violated by rounding's order (delta = 1e-10) it is met and
   // left out; by 1e-3 the program is infeasible and says so.
@@ -254,7 +256,8 @@ TEST_CASE("dense QP: each failure has its own status", "[qp]") {
   CHECK(std::string(DenseQpStatusName(sol.status)) == "infeasible");
 }
 
-TEST_CASE("dense QP: rows nearly parallel to active ones hold at the minimiser to rounding", "[qp]") {
+TEST_CASE("dense QP: rows nearly parallel to active ones hold at the minimiser to rounding",
+          "[qp]") {
   // Rows in pairs 1e-9 apart, as the sizing's rows of one member at neighbouring stations: a
   // candidate's part off the active span is then of order 1e-9 of it, and the primal step
   // length -slack / (z . nt) read that product's rounding (1e-14 |z| |nt|) as its value,
@@ -289,7 +292,8 @@ TEST_CASE("dense QP: rows nearly parallel to active ones hold at the minimiser t
     CHECK(sol.row_multiplier.minCoeff() >= 0.0);
     // Stationarity to 1e-6 of the terms' scale: a pair's multipliers may be large and of
     // opposite trend (their difference carries 1e-9 of the normal), their sum is what counts.
-    const Eigen::VectorXd residual = qp.G * sol.p + qp.a - qp.C.transpose() * sol.row_multiplier - sol.bound_multiplier;
+    const Eigen::VectorXd residual =
+        qp.G * sol.p + qp.a - qp.C.transpose() * sol.row_multiplier - sol.bound_multiplier;
     const double scale = 1 + qp.a.norm() + (qp.C.transpose() * sol.row_multiplier).norm();
     CHECK(residual.norm() <= 1e-6 * scale);
   }

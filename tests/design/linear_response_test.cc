@@ -46,7 +46,8 @@ TEST_CASE("the linear response is the nonlinear static solve's tangent", "[desig
     Eigen::VectorXd nonlinear(dx.size());
     nonlinear.head(nb) = r.state.bar_compression;
     nonlinear.tail(s.num_strings()) = r.state.string_tension;
-    error[t] = ((nonlinear - d.reference_forces) / eps[t] - dx).cwiseAbs().maxCoeff() / dx.cwiseAbs().maxCoeff();
+    error[t] = ((nonlinear - d.reference_forces) / eps[t] - dx).cwiseAbs().maxCoeff() /
+               dx.cwiseAbs().maxCoeff();
     INFO("eps " << eps[t] << ": relative error " << error[t]);
     CHECK(error[t] < 1e-2);
   }
@@ -75,7 +76,8 @@ TEST_CASE("the response's sensitivities agree with central differences", "[desig
   const Eigen::VectorXd prestress = PrestressForces(d);
   directions[1].forces = prestress / prestress.cwiseAbs().maxCoeff();
   directions[1].stiffness = Eigen::VectorXd::Zero(ns);
-  for (int q = 0; q < ns; ++q) directions[1].stiffness[q] = directions[1].forces[nb + q] / d.strings[q].length;
+  for (int q = 0; q < ns; ++q)
+    directions[1].stiffness[q] = directions[1].forces[nb + q] / d.strings[q].length;
 
   for (size_t t = 0; t < directions.size(); ++t) {
     const LinearResponse::Direction& dp = directions[t];
@@ -101,7 +103,8 @@ TEST_CASE("the response's sensitivities agree with central differences", "[desig
     // The displacements (the multiplier rows are scaled by a stiffness that moves with k;
     // the force changes below carry them unscaled).
     const int n = lin.num_free_dofs();
-    CHECK((du - fd_u).topRows(n).cwiseAbs().maxCoeff() <= 1e-5 * du.topRows(n).cwiseAbs().maxCoeff());
+    CHECK((du - fd_u).topRows(n).cwiseAbs().maxCoeff() <=
+          1e-5 * du.topRows(n).cwiseAbs().maxCoeff());
     CHECK((dx - fd_x).cwiseAbs().maxCoeff() <= 1e-5 * dx.cwiseAbs().maxCoeff());
 
     // The adjoint form the sizing's Jacobian uses (one solve per member and deck node read)
@@ -110,17 +113,22 @@ TEST_CASE("the response's sensitivities agree with central differences", "[desig
     std::vector<int> members(nb + ns);
     for (int j = 0; j < nb + ns; ++j) members[j] = j;
     const std::vector<int>& nodes = d.topology.deck_nodes;
-    Eigen::MatrixXd by_adjoint = -lin.Adjoint(members, nodes).transpose() * lin.StiffnessAction(u, dp);
+    Eigen::MatrixXd by_adjoint =
+        -lin.Adjoint(members, nodes).transpose() * lin.StiffnessAction(u, dp);
     const Eigen::MatrixXd stretch = lin.StringStretches(u);
     for (int q = 0; q < ns; ++q) by_adjoint.row(nb + q) += dp.stiffness[q] * stretch.row(q);
-    const double force_gap = (by_adjoint.topRows(nb + ns) - dx).cwiseAbs().maxCoeff() / dx.cwiseAbs().maxCoeff();
+    const double force_gap =
+        (by_adjoint.topRows(nb + ns) - dx).cwiseAbs().maxCoeff() / dx.cwiseAbs().maxCoeff();
     double vertical_gap = 0, vertical_scale = 0;
     for (size_t v = 0; v < nodes.size(); ++v) {
       const Eigen::RowVectorXd direct = lin.Vertical(du, nodes[v]);
-      vertical_gap = std::max(vertical_gap, (by_adjoint.row(nb + ns + static_cast<Eigen::Index>(v)) - direct).cwiseAbs().maxCoeff());
+      vertical_gap = std::max(
+          vertical_gap,
+          (by_adjoint.row(nb + ns + static_cast<Eigen::Index>(v)) - direct).cwiseAbs().maxCoeff());
       vertical_scale = std::max(vertical_scale, direct.cwiseAbs().maxCoeff());
     }
-    INFO("adjoint against direct: forces " << force_gap << ", verticals " << vertical_gap / vertical_scale);
+    INFO("adjoint against direct: forces " << force_gap << ", verticals "
+                                           << vertical_gap / vertical_scale);
     REQUIRE(vertical_scale > 0);
     // 1e-12 of the largest entry: the same linear system, its solves taken in the other
     // order, so only rounding through the factorisation separates them (measured 2e-15; the

@@ -34,7 +34,8 @@ Config CableConfig() {
 // By hand: k_e f_uk / 1.5 = 0.9e9 < f_k = 1.2e9, over gamma_R = 0.9: 1e9 Pa.
 constexpr double kCableStressPa = 1e9;
 
-TEST_CASE("cable strings are sized, weighed and stiffened as the hand calculation says", "[design][material]") {
+TEST_CASE("cable strings are sized, weighed and stiffened as the hand calculation says",
+          "[design][material]") {
   const Config c = CableConfig();
   REQUIRE(StringMaterial(c).DesignStress() == Approx(kCableStressPa).epsilon(1e-15));
   const Design d = RunDesign(c);
@@ -47,7 +48,8 @@ TEST_CASE("cable strings are sized, weighed and stiffened as the hand calculatio
       ++yielding;
     }
     CHECK(m.mass == Approx(8000.0 * m.area * m.length).epsilon(1e-12));
-    CHECK(m.rest_length == Approx(m.length / (1 + m.reference_force / m.area / 1.5e11)).epsilon(1e-12));
+    CHECK(m.rest_length ==
+          Approx(m.length / (1 + m.reference_force / m.area / 1.5e11)).epsilon(1e-12));
     CHECK(m.stiffness == Approx(1.5e11 * m.area / m.rest_length).epsilon(1e-12));
   }
   CHECK(yielding > 0);  // the hand calculation was met, not only the floors
@@ -63,12 +65,14 @@ TEST_CASE("cable strings are sized, weighed and stiffened as the hand calculatio
   std::ostringstream out;
   WriteDesignJson(d, out);
   const nlohmann::json file = nlohmann::json::parse(out.str());
-  CHECK(file["materials"]["strings"]["design_stress"].get<double>() == Approx(kCableStressPa).epsilon(1e-15));
+  CHECK(file["materials"]["strings"]["design_stress"].get<double>() ==
+        Approx(kCableStressPa).epsilon(1e-15));
   CHECK(file["materials"]["strings"]["tension_clause"] == "EN 1993-1-11 6.3.2");
   CHECK(file["materials"]["bars"]["density"].get<double>() == 7000.0);
 }
 
-TEST_CASE("without material.strings and material.bars every member is of material", "[design][material]") {
+TEST_CASE("without material.strings and material.bars every member is of material",
+          "[design][material]") {
   const Config c = LoadConfig(TBRIDGE_SOURCE_DIR "/configs/paper_n1.json");
   for (const MemberMaterial& m : {StringMaterial(c), BarMaterial(c)}) {
     CHECK(m.density == c.material.density);
@@ -90,9 +94,12 @@ TEST_CASE("a cable's keys are checked against each other", "[design][material][c
     }
     return std::string("accepted");
   };
-  CHECK(refusal({{"end_efficiency", 0.9}}).find("material.strings.end_efficiency") != std::string::npos);
-  CHECK(refusal({{"breaking_stress", 5e8}}).find("material.strings.breaking_stress") != std::string::npos);
-  CHECK(refusal({{"youngs_modulus", 150}}).find("material.strings.youngs_modulus") != std::string::npos);
+  CHECK(refusal({{"end_efficiency", 0.9}}).find("material.strings.end_efficiency") !=
+        std::string::npos);
+  CHECK(refusal({{"breaking_stress", 5e8}}).find("material.strings.breaking_stress") !=
+        std::string::npos);
+  CHECK(refusal({{"youngs_modulus", 150}}).find("material.strings.youngs_modulus") !=
+        std::string::npos);
   CHECK(refusal({{"modulus", 1.5e11}}).find("material.strings.modulus") != std::string::npos);
   CHECK(refusal({{"breaking_stress", 1.5e9}, {"yield_stress", 1.2e9}}) == "accepted");
 }

@@ -20,8 +20,8 @@ constexpr double kPi = std::numbers::pi;
 TEST_CASE("Equilibrium residual is below 1e-9 of the largest load", "[design][equilibrium]") {
   for (int n = 1; n <= 8; ++n) {
     const Design d = RunDesign(test::PaperConfig(n));
-    const Eigen::VectorXd r = EquilibriumResidual(BuildEquilibrium(d.topology.structure),
-                                                  MemberForces(d), d.loads);
+    const Eigen::VectorXd r =
+        EquilibriumResidual(BuildEquilibrium(d.topology.structure), MemberForces(d), d.loads);
     INFO("n = " << n << ": max residual " << r.cwiseAbs().maxCoeff() << " N");
     // The acceptance bound: 1e-9 of the largest node load.
     CHECK(r.cwiseAbs().maxCoeff() <= 1e-9 * d.deck.node_load);
@@ -55,7 +55,8 @@ TEST_CASE("The design's reactions balance the applied loads", "[design][equilibr
       force += f;
       moment += s.nodes.col(v).cross(f);
     }
-    INFO("n = " << config.bridge.n << ": net force " << force.transpose() << " N, net moment " << moment.transpose());
+    INFO("n = " << config.bridge.n << ": net force " << force.transpose() << " N, net moment "
+                << moment.transpose());
     CHECK(force.norm() <= 1e-9 * total);
     CHECK(moment.norm() <= 1e-9 * total * config.bridge.span);
     // A symmetric bridge: each support carries half of what the 2^n - 1 loaded deck nodes do.

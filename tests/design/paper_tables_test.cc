@@ -96,7 +96,8 @@ TEST_CASE("Mass breakdown matches SPEC §4 reference values", "[paper][mass]") {
     int n;
     double eq49, deck_beams;
   };
-  for (const Ref& ref : {Ref{1, 252.433, 5263.50}, Ref{2, 176.199, 1795.26}, Ref{3, 132.357, 720.27}}) {
+  for (const Ref& ref :
+       {Ref{1, 252.433, 5263.50}, Ref{2, 176.199, 1795.26}, Ref{3, 132.357, 720.27}}) {
     const Design& d = test::PaperDesign(ref.n);
     INFO("n = " << ref.n);
     CHECK(std::abs(d.mass.bars + d.mass.strings - ref.eq49) <= 0.0005);
@@ -109,8 +110,8 @@ TEST_CASE("Mass breakdown matches the members and the deck beams' stress", "[pap
   for (int n = 1; n <= 3; ++n) {
     const Design& d = test::PaperDesign(n);
     const test::MemberMasses members = test::MassFromMembers(d);
-    INFO("n = " << n << ": from the members, bars " << members.bars << ", strings " << members.strings
-                << ", deck strings " << members.deck_strings << " kg");
+    INFO("n = " << n << ": from the members, bars " << members.bars << ", strings "
+                << members.strings << ", deck strings " << members.deck_strings << " kg");
     // rho pi r^2 |x_j - x_i| per member, from the node coordinates: the same numbers by another
     // route, equal to round-off (1e-12 relative over at most 22 members).
     CHECK(d.mass.bars == Approx(members.bars).epsilon(1e-12));
@@ -118,11 +119,13 @@ TEST_CASE("Mass breakdown matches the members and the deck beams' stress", "[pap
     CHECK(d.mass.deck_strings == Approx(members.deck_strings).epsilon(1e-12));
     // The deck chain at SPEC §4's minimum radius, 10 mm, spans the whole deck: rho pi r^2 L.
     CHECK(members.deck_strings ==
-          Approx(d.config.material.density * M_PI * 0.01 * 0.01 * d.config.bridge.span).epsilon(1e-12));
+          Approx(d.config.material.density * M_PI * 0.01 * 0.01 * d.config.bridge.span)
+              .epsilon(1e-12));
     // The reported deck beams work at sigma_w under Navier's formula (eqs 4-6): the defining
     // condition that eq 7 solves, so a wrong root or a dropped term would fail it. 1e-12:
     // round-off of the quadratic's closed-form root.
-    CHECK(test::DeckBeamStress(d, d.mass.deck_beams) == Approx(test::WorkingStress(d)).epsilon(1e-12));
+    CHECK(test::DeckBeamStress(d, d.mass.deck_beams) ==
+          Approx(test::WorkingStress(d)).epsilon(1e-12));
     // The structure and the whole bridge from these independent parts.
     const double structure = members.bars + members.strings + members.deck_strings;
     CHECK(d.mass.structure == Approx(structure).epsilon(1e-12));
@@ -134,7 +137,7 @@ TEST_CASE("Structure plus deck mass falls monotonically with n (SPEC §6)", "[pa
   // SPEC §6 prints eq. 49 + deck beams in whole kg: tolerance 0.5 kg. Its n = 2 entry (1972)
   // is left out: SPEC §4's own parts give 176.199 + 1795.26 = 1971.46 kg, which the mass
   // breakdown test checks to 0.005 kg.
-  const std::map<int, double> printed{{1, 5516}, {3, 853}, {4, 434}, {5, 255},
+  const std::map<int, double> printed{{1, 5516}, {3, 853}, {4, 434},  {5, 255},
                                       {6, 173},  {8, 114}, {10, 100}, {12, 96}};
   double previous = 1e300;
   for (const auto& [n, kg] : printed) {

@@ -1,9 +1,9 @@
 // The footbridge comfort guides' constants (design/pedestrian_loads.h) at the points the
 // guides tabulate: Sétra 2006 and HiVoSS 2008, typed here from their tables and figures.
+#include "design/pedestrian_loads.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
-
-#include "design/pedestrian_loads.h"
 
 namespace tbridge {
 
@@ -48,7 +48,8 @@ TEST_CASE("psi(f) at the corners of Sétra's figures, and half-way up each flank
   }
   // The largest over a band: the plateau when the band crosses it, else the higher end.
   CHECK(PsiOver(LoadAxis::kVertical, 1, 1.5, 2.5) == 1.0);
-  CHECK(PsiOver(LoadAxis::kVertical, 2, 2.6, 3.05) == Approx(Psi(LoadAxis::kVertical, 2, 3.05)).margin(1e-15));
+  CHECK(PsiOver(LoadAxis::kVertical, 2, 2.6, 3.05) ==
+        Approx(Psi(LoadAxis::kVertical, 2, 3.05)).margin(1e-15));
   CHECK(PsiOver(LoadAxis::kVertical, 1, 2.6, 3.0) == 0.0);
 }
 
@@ -70,7 +71,8 @@ TEST_CASE("the equivalent pedestrian numbers at the guide's worked values", "[co
   CHECK(LockInPedestrians(0.004, 1.0, 1e4) == Approx(3.3510322).epsilon(1e-7));
 }
 
-TEST_CASE("classes, ranges, load cases, comfort levels and damping as the guide tabulates them", "[comfort]") {
+TEST_CASE("classes, ranges, load cases, comfort levels and damping as the guide tabulates them",
+          "[comfort]") {
   CHECK(TrafficDensity("I") == 1.0);
   CHECK(TrafficDensity("II") == 0.8);
   CHECK(TrafficDensity("III") == 0.5);

@@ -40,9 +40,11 @@ TEST_CASE("a density below water's warns naming the key and t/m^3") {
             ParseConfig(json::parse(R"({"bridge": {"n": 3}, "material": {"density": 1000}})")))
             .empty());
   // A member kind's own density is read the same way, under its own key.
-  const std::string strings = OnlyWarning(R"({"bridge": {"n": 3}, "material": {"strings": {"density": 500}}})");
+  const std::string strings =
+      OnlyWarning(R"({"bridge": {"n": 3}, "material": {"strings": {"density": 500}}})");
   CHECK_THAT(strings, Catch::Contains("material.strings.density = 500 kg/m^3"));
-  const std::string bars = OnlyWarning(R"({"bridge": {"n": 3}, "material": {"bars": {"density": 500}}})");
+  const std::string bars =
+      OnlyWarning(R"({"bridge": {"n": 3}, "material": {"bars": {"density": 500}}})");
   CHECK_THAT(bars, Catch::Contains("material.bars.density = 500 kg/m^3"));
 }
 

@@ -1,6 +1,8 @@
 // The design's self-stress form against the full minimum-mass problem it replaces: the sparse
 // equilibrium basis against a dense rank count, the optimum against the full NLP with both
 // solvers, and every derivative an adapter sees against finite differences.
+#include "design/reduced_min_mass.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -11,7 +13,6 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/min_mass.h"
-#include "design/reduced_min_mass.h"
 #include "design/solvers.h"
 #include "test_support.h"
 
@@ -35,7 +36,9 @@ Config Variant(int n, int p, int planes) {
 std::vector<Case> Topologies(int max_n) {
   std::vector<Case> cases;
   for (int n = 1; n <= max_n; ++n) {
-    for (int p = 1; p <= 3; ++p) cases.push_back({"p = " + std::to_string(p) + ", n = " + std::to_string(n), Variant(n, p, 1)});
+    for (int p = 1; p <= 3; ++p)
+      cases.push_back(
+          {"p = " + std::to_string(p) + ", n = " + std::to_string(n), Variant(n, p, 1)});
     cases.push_back({"3D, n = " + std::to_string(n), Variant(n, 1, 2)});
   }
   return cases;
@@ -46,7 +49,8 @@ EquilibriumBasis BasisOf(const DesignInputs& in) {
   return FactorEquilibrium(eq, FreeLoads(eq, in.loads));
 }
 
-TEST_CASE("Sparse equilibrium basis: rank, self-stresses and particular solution", "[design][self-stress]") {
+TEST_CASE("Sparse equilibrium basis: rank, self-stresses and particular solution",
+          "[design][self-stress]") {
   for (const Case& c : Topologies(5)) {
     INFO(c.label);
     const DesignInputs in = PrepareDesign(c.config);
@@ -63,7 +67,8 @@ TEST_CASE("Sparse equilibrium basis: rank, self-stresses and particular solution
     CHECK((eq.A * N).cwiseAbs().maxCoeff() <= 1e-12);
     // The particular solution balances the loads to rounding of its largest force.
     const double scale = basis.particular.cwiseAbs().maxCoeff();
-    CHECK((eq.A * basis.particular + FreeLoads(eq, in.loads)).cwiseAbs().maxCoeff() <= 1e-12 * scale);
+    CHECK((eq.A * basis.particular + FreeLoads(eq, in.loads)).cwiseAbs().maxCoeff() <=
+          1e-12 * scale);
   }
 }
 
@@ -82,12 +87,14 @@ TEST_CASE("A self-stress basis too large to form is counted and not formed",
   // n <= 5); past the entry limit the count stays and the design takes the full problem.
   const DesignInputs in = PrepareDesign(Variant(2, 1, 2));
   const EquilibriumSystem eq = BuildEquilibrium(in.topology.structure);
-  const EquilibriumBasis counted = FactorEquilibrium(eq, FreeLoads(eq, in.loads), /*max_basis_entries=*/0.0);
+  const EquilibriumBasis counted =
+      FactorEquilibrium(eq, FreeLoads(eq, in.loads), /*max_basis_entries=*/0.0);
   CHECK_FALSE(counted.basis_formed);
   CHECK(counted.self_stress_states() == 26);
   CHECK(counted.self_stress.cols() == 0);
   const double scale = counted.particular.cwiseAbs().maxCoeff();
-  CHECK((eq.A * counted.particular + FreeLoads(eq, in.loads)).cwiseAbs().maxCoeff() <= 1e-12 * scale);
+  CHECK((eq.A * counted.particular + FreeLoads(eq, in.loads)).cwiseAbs().maxCoeff() <=
+        1e-12 * scale);
   CHECK_THROWS_AS(ReducedMinMassProblem(in.topology.structure, counted, in.settings), ModelError);
 
   REQUIRE(test::HaveSolvers({"ipopt"}));  // tagged [ipopt]: ctest leaves it out of a build without
@@ -95,12 +102,13 @@ TEST_CASE("A self-stress basis too large to form is counted and not formed",
   CHECK(d.self_stress_states == (1 << 11) - 6);
   CHECK(d.solver_form == "full");
   // Equilibrium to 1e-9 of the largest node load, as every design.
-  const Eigen::VectorXd r = EquilibriumResidual(BuildEquilibrium(d.topology.structure), MemberForces(d), d.loads);
+  const Eigen::VectorXd r =
+      EquilibriumResidual(BuildEquilibrium(d.topology.structure), MemberForces(d), d.loads);
   CHECK(r.cwiseAbs().maxCoeff() <= 1e-9 * d.deck.node_load);
 }
 
 struct Optimum {
-  double mass = 0;        // structure mass [kg]
+  double mass = 0;         // structure mass [kg]
   Eigen::VectorXd forces;  // [C; T] in N
   std::string status;
 };
@@ -137,11 +145,13 @@ Optimum SolveReduced(const DesignInputs& in, const std::string& solver) {
   return {reduced.Objective(x) * reduced.MassScale(), reduced.MemberForces(x, 0), out.status};
 }
 
-TEST_CASE("The self-stress form and the full NLP find the same optimum", "[design][self-stress][solvers]") {
+TEST_CASE("The self-stress form and the full NLP find the same optimum",
+          "[design][self-stress][solvers]") {
   for (const Case& c : Topologies(6)) {
     const DesignInputs in = PrepareDesign(c.config);
     const bool planar = c.config.bridge.planes == 1;
-    const int full_variables = 2 * in.topology.structure.num_bars() + in.topology.structure.num_strings();
+    const int full_variables =
+        2 * in.topology.structure.num_bars() + in.topology.structure.num_strings();
     for (const std::string solver : {"ipopt", "nlopt"}) {
       // SLSQP's dense quadratic subproblems cost (variables)^3 per iteration: the full problem
       // goes to NLopt up to 600 variables (planar p = 1 up to n = 6, 3D up to n = 4); beyond,
@@ -157,8 +167,9 @@ TEST_CASE("The self-stress form and the full NLP find the same optimum", "[desig
       // The direct solve (planar) or the product's own self-stress NLP (3D: the same as below).
       const Optimum reduced = SolveReduced(in, planar ? "direct" : solver);
       const Optimum reduced_nlp = planar ? SolveReduced(in, solver) : reduced;
-      INFO("full " << full.mass << " kg (" << full.status << "), reduced " << reduced.mass << " kg, reduced "
-                   << solver << " " << reduced_nlp.mass << " kg (" << reduced_nlp.status << ")");
+      INFO("full " << full.mass << " kg (" << full.status << "), reduced " << reduced.mass
+                   << " kg, reduced " << solver << " " << reduced_nlp.mass << " kg ("
+                   << reduced_nlp.status << ")");
       // The acceptance bound, 1e-9 relative: both forms are solved to 1e-12, so only the
       // solvers' tolerance separates them.
       if (planar) CHECK(reduced.mass == Approx(full.mass).epsilon(1e-9));
@@ -181,11 +192,13 @@ Eigen::MatrixXd DenseJacobian(const NlpProblem& p, const Eigen::VectorXd& x) {
   std::vector<double> values(p.JacobianPattern().size());
   p.JacobianValues(x, values.data());
   Eigen::MatrixXd j = Eigen::MatrixXd::Zero(p.num_constraints(), p.num_variables());
-  for (size_t k = 0; k < values.size(); ++k) j(p.JacobianPattern()[k].first, p.JacobianPattern()[k].second) += values[k];
+  for (size_t k = 0; k < values.size(); ++k)
+    j(p.JacobianPattern()[k].first, p.JacobianPattern()[k].second) += values[k];
   return j;
 }
 
-void CheckDerivatives(const NlpProblem& p, const Eigen::VectorXd& x, const Eigen::VectorXd& lambda) {
+void CheckDerivatives(const NlpProblem& p, const Eigen::VectorXd& x,
+                      const Eigen::VectorXd& lambda) {
   const int n = p.num_variables(), m = p.num_constraints();
   const double h = 1e-6;
   Eigen::VectorXd grad(n), g_plus(m), g_minus(m);
@@ -218,13 +231,17 @@ void CheckDerivatives(const NlpProblem& p, const Eigen::VectorXd& x, const Eigen
     p.Constraints(plus, g_plus);
     p.Constraints(minus, g_minus);
     const Eigen::VectorXd fd_col = (g_plus - g_minus) / (2 * h);
-    CHECK((fd_col - jac.col(i)).cwiseAbs().maxCoeff() <= 1e-7 * (1 + jac.col(i).cwiseAbs().maxCoeff()));
-    const Eigen::VectorXd fd_hess = (lagrangian_gradient(plus) - lagrangian_gradient(minus)) / (2 * h);
-    CHECK((fd_hess - hess.col(i)).cwiseAbs().maxCoeff() <= 1e-7 * (1 + hess.col(i).cwiseAbs().maxCoeff()));
+    CHECK((fd_col - jac.col(i)).cwiseAbs().maxCoeff() <=
+          1e-7 * (1 + jac.col(i).cwiseAbs().maxCoeff()));
+    const Eigen::VectorXd fd_hess =
+        (lagrangian_gradient(plus) - lagrangian_gradient(minus)) / (2 * h);
+    CHECK((fd_hess - hess.col(i)).cwiseAbs().maxCoeff() <=
+          1e-7 * (1 + hess.col(i).cwiseAbs().maxCoeff()));
   }
 }
 
-TEST_CASE("Derivatives of both problem forms against finite differences", "[design][self-stress][derivatives]") {
+TEST_CASE("Derivatives of both problem forms against finite differences",
+          "[design][self-stress][derivatives]") {
   // The 3D bridge has bars in its self-stresses (buckling rows, a nonzero Hessian); a second,
   // duplicated load case gives the reduced form string envelopes. Random x and multipliers.
   const DesignInputs in = PrepareDesign(Variant(2, 1, 2));
@@ -238,7 +255,8 @@ TEST_CASE("Derivatives of both problem forms against finite differences", "[desi
   REQUIRE(reduced.num_active_bars() > 0);
   std::srand(7);
   for (const NlpProblem* p : std::vector<const NlpProblem*>{&full, &reduced, &reduced2}) {
-    const Eigen::VectorXd x = Eigen::VectorXd::Random(p->num_variables()).cwiseAbs() + Eigen::VectorXd::Constant(p->num_variables(), 0.5);
+    const Eigen::VectorXd x = Eigen::VectorXd::Random(p->num_variables()).cwiseAbs() +
+                              Eigen::VectorXd::Constant(p->num_variables(), 0.5);
     const Eigen::VectorXd lambda = Eigen::VectorXd::Random(p->num_constraints());
     CheckDerivatives(*p, x, lambda);
   }
@@ -258,14 +276,17 @@ TEST_CASE("A load case that only repeats another changes nothing", "[design][sel
   SolverOptions options;
   options.tolerance = 1e-12;
   options.max_iterations = 3000;
-  const std::string solver = BuiltInIterativeSolvers().empty() ? "" : BuiltInIterativeSolvers().front();
+  const std::string solver =
+      BuiltInIterativeSolvers().empty() ? "" : BuiltInIterativeSolvers().front();
   if (solver.empty()) return;  // a build with neither Ipopt nor NLopt
   REQUIRE(SolveNlp(solver, one, options, x1).success);
   REQUIRE(SolveNlp(solver, two, options, x2).success);
-  CHECK(two.Objective(x2) * two.MassScale() == Approx(one.Objective(x1) * one.MassScale()).epsilon(1e-9));
+  CHECK(two.Objective(x2) * two.MassScale() ==
+        Approx(one.Objective(x1) * one.MassScale()).epsilon(1e-9));
 }
 
-TEST_CASE("design.solver: direct where it applies, a named error where it does not", "[design][self-stress]") {
+TEST_CASE("design.solver: direct where it applies, a named error where it does not",
+          "[design][self-stress]") {
   Config planar = test::PaperConfig(3, "direct");
   const Design d = RunDesign(planar);
   CHECK(d.solver.solver == "direct");

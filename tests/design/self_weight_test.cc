@@ -4,8 +4,8 @@
 // the design's forces are those of that load alone, and the bar is sized by the paper's
 // closed forms (yield, Euler), which the hand solution can write down.
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
@@ -52,7 +52,8 @@ HandBridge SolveByHand(const Config& c, double deck_beam_mass) {
     const double cable_area = h.cable_force / sigma_w;
     const double yield_area = h.bar_force * c.design.yield_safety_factor / c.material.yield_stress;
     const double euler_area =
-        2.0 * bar_length * std::sqrt(c.design.buckling_safety_factor * h.bar_force / (std::numbers::pi * E));
+        2.0 * bar_length *
+        std::sqrt(c.design.buckling_safety_factor * h.bar_force / (std::numbers::pi * E));
     h.cable_mass = rho * cable_area * cable_length;
     h.bar_mass = rho * std::max(yield_area, euler_area) * bar_length;
     const double total = h.bar_mass + 2.0 * (h.cable_mass + h.deck_mass);

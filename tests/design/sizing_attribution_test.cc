@@ -4,8 +4,8 @@
 
 #include "design/sizing_attribution.h"
 
-#include <catch2/catch.hpp>
 #include <Eigen/QR>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 
@@ -40,7 +40,8 @@ Eigen::VectorXd BruteForceNnls(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
   return best;
 }
 
-TEST_CASE("non-negative least squares finds what enumerating the active sets finds", "[design][attribution]") {
+TEST_CASE("non-negative least squares finds what enumerating the active sets finds",
+          "[design][attribution]") {
   std::srand(7);
   for (int trial = 0; trial < 40; ++trial) {
     // Tall, square and wide problems, as the multipliers' are (variables x active rows).
@@ -72,7 +73,8 @@ struct Optimum {
 Optimum Solve(Design d, double limit, const Eigen::VectorXd* start) {
   d.config.loads.deflection_limit = limit;
   const SizingProblem problem(d, SizingCorrections{});
-  Eigen::VectorXd x = start ? *start : problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
+  Eigen::VectorXd x =
+      start ? *start : problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
   SolverOptions options;
   options.tolerance = 1e-12;
   options.max_iterations = 3000;
@@ -80,7 +82,8 @@ Optimum Solve(Design d, double limit, const Eigen::VectorXd* start) {
   return {problem.Objective(x), x};
 }
 
-TEST_CASE("the sizing's multipliers are the optimum's sensitivity to its limits", "[design][attribution]") {
+TEST_CASE("the sizing's multipliers are the optimum's sensitivity to its limits",
+          "[design][attribution]") {
   const Design d = SmallDesign();
   const double limit = d.config.loads.deflection_limit;
   const Optimum at = Solve(d, limit, nullptr);
@@ -108,11 +111,13 @@ TEST_CASE("the sizing's multipliers are the optimum's sensitivity to its limits"
   double lambda_deflection = 0;
   for (int r = 0; r < posed.num_constraints(); ++r) {
     const SizingRow::Kind k = posed.rows()[r].kind;
-    if (k == SizingRow::kDeflectionDown || k == SizingRow::kDeflectionUp) lambda_deflection += a.multipliers[r];
+    if (k == SizingRow::kDeflectionDown || k == SizingRow::kDeflectionUp)
+      lambda_deflection += a.multipliers[r];
   }
   REQUIRE(lambda_deflection > 0);  // the default bridge's deflection limit binds
   const double eps = 1e-3;
-  const Optimum looser = Solve(d, limit / (1 + eps), &at.x), tighter = Solve(d, limit / (1 - eps), &at.x);
+  const Optimum looser = Solve(d, limit / (1 + eps), &at.x),
+                tighter = Solve(d, limit / (1 - eps), &at.x);
   const double measured = (tighter.mass_scaled - looser.mass_scaled) / (2 * eps);
   CHECK(measured == Approx((1 - 1e-4) * lambda_deflection).epsilon(0.02));
 }

@@ -44,12 +44,14 @@ int CountKind(const SizingProblem& problem, SizingRow::Kind kind) {
 
 void CheckJacobian(const Design& d) {
   SizingCorrections corrections;
-  corrections.demand_factor.assign(d.bars.size() + d.strings.size(), 1.3);  // kappa enters every row
+  corrections.demand_factor.assign(d.bars.size() + d.strings.size(),
+                                   1.3);  // kappa enters every row
   corrections.deflection_factor = 1.2;
   corrections.horizontal_reaction_factor = 1.1;
   corrections.vertical_reaction_factor = 1.05;
   const SizingProblem problem(d, corrections);
-  const Eigen::VectorXd x = problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
+  const Eigen::VectorXd x =
+      problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
   const int n = problem.num_variables(), m = problem.num_constraints();
   REQUIRE(n >= 2);
   std::vector<double> values(problem.JacobianPattern().size());
@@ -178,7 +180,8 @@ TEST_CASE("the sizing problem's Hessian is the reciprocal diagonal, in Ipopt's s
   CHECK(h.cwiseAbs().maxCoeff() == 0.0);
 }
 
-TEST_CASE("the sizing's prestress: every self-stress that gives mirror images one force", "[design]") {
+TEST_CASE("the sizing's prestress: every self-stress that gives mirror images one force",
+          "[design]") {
   // Counted by a second algorithm: those self-stresses are x = G y with A G y = 0 (G the
   // members' group indicator), so there are groups - rank(A G) of them (dense QR). The planar
   // bridge has one state (the deck chain's), symmetric; the 3D bridge 10, 26, 58, 122 and
@@ -195,8 +198,8 @@ TEST_CASE("the sizing's prestress: every self-stress that gives mirror images on
     Eigen::MatrixXd AG = Eigen::MatrixXd::Zero(A.rows(), groups);
     for (int j = 0; j < A.cols(); ++j) AG.col(group[j]) += A.col(j);
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(AG);
-    INFO("planes " << config.bridge.planes << ", n = " << config.bridge.n << ": " << groups << " groups, "
-                   << EquilibriumSolver(eq).states() << " states, "
+    INFO("planes " << config.bridge.planes << ", n = " << config.bridge.n << ": " << groups
+                   << " groups, " << EquilibriumSolver(eq).states() << " states, "
                    << SizingProblem::SymmetricStates(d) << " symmetric");
     CHECK(SizingProblem::SymmetricStates(d) == groups - static_cast<int>(qr.rank()));
     if (config.bridge.planes == 1) CHECK(SizingProblem::SymmetricStates(d) == 1);
@@ -205,7 +208,8 @@ TEST_CASE("the sizing's prestress: every self-stress that gives mirror images on
   Design large;
   large.config = ThreeD(6);
   large.topology = PrepareDesign(large.config).topology;
-  REQUIRE(EquilibriumSolver(BuildEquilibrium(large.topology.structure)).states() > SizingProblem::kMaxSoughtStates);
+  REQUIRE(EquilibriumSolver(BuildEquilibrium(large.topology.structure)).states() >
+          SizingProblem::kMaxSoughtStates);
   CHECK(SizingProblem::SymmetricStates(large) == -1);
   // The prestress of each variable gives the members of a group one force (to rounding of the
   // orthonormal basis: 1e-9 of the largest).
@@ -230,7 +234,8 @@ TEST_CASE("the sizing's prestress: every self-stress that gives mirror images on
   }
 }
 
-TEST_CASE("the sizing's mirror images share an area, and its stations are the load cases'", "[design]") {
+TEST_CASE("the sizing's mirror images share an area, and its stations are the load cases'",
+          "[design]") {
   const Design d = SmallDesign();
   const SizingProblem problem(d, {});
   const Structure& s = d.topology.structure;
@@ -242,12 +247,13 @@ TEST_CASE("the sizing's mirror images share an area, and its stations are the lo
     const double xi = span - s.nodes(0, m.i), xj = span - s.nodes(0, m.j);
     for (int k = 0; k < nb + s.num_strings(); ++k) {
       const Member& o = k < nb ? s.bars[k] : s.strings[k - nb];
-      const bool same_ends = (std::abs(s.nodes(0, o.i) - xi) < 1e-9 && std::abs(s.nodes(0, o.j) - xj) < 1e-9 &&
-                              std::abs(s.nodes(1, o.i) - s.nodes(1, m.i)) < 1e-9 &&
-                              std::abs(s.nodes(1, o.j) - s.nodes(1, m.j)) < 1e-9) ||
-                             (std::abs(s.nodes(0, o.j) - xi) < 1e-9 && std::abs(s.nodes(0, o.i) - xj) < 1e-9 &&
-                              std::abs(s.nodes(1, o.j) - s.nodes(1, m.i)) < 1e-9 &&
-                              std::abs(s.nodes(1, o.i) - s.nodes(1, m.j)) < 1e-9);
+      const bool same_ends =
+          (std::abs(s.nodes(0, o.i) - xi) < 1e-9 && std::abs(s.nodes(0, o.j) - xj) < 1e-9 &&
+           std::abs(s.nodes(1, o.i) - s.nodes(1, m.i)) < 1e-9 &&
+           std::abs(s.nodes(1, o.j) - s.nodes(1, m.j)) < 1e-9) ||
+          (std::abs(s.nodes(0, o.j) - xi) < 1e-9 && std::abs(s.nodes(0, o.i) - xj) < 1e-9 &&
+           std::abs(s.nodes(1, o.j) - s.nodes(1, m.i)) < 1e-9 &&
+           std::abs(s.nodes(1, o.i) - s.nodes(1, m.j)) < 1e-9);
       if (same_ends && (k < nb) == (j < nb)) {
         INFO("member " << j << " and its image " << k);
         CHECK(problem.group_of()[j] == problem.group_of()[k]);
@@ -256,11 +262,13 @@ TEST_CASE("the sizing's mirror images share an area, and its stations are the lo
   }
   // One combination per case, and one per station of each travelling family.
   size_t expected = 0;
-  for (const LoadCase& c : d.cases) expected += c.station_load != 0 ? d.actions.station_nodes.size() : 1;
+  for (const LoadCase& c : d.cases)
+    expected += c.station_load != 0 ? d.actions.station_nodes.size() : 1;
   CHECK(problem.combinations().size() == expected);
 }
 
-TEST_CASE("the sizing poses no constant row and its strength rows hold where their margins do", "[design]") {
+TEST_CASE("the sizing poses no constant row and its strength rows hold where their margins do",
+          "[design]") {
   for (const int planes : {1, 2}) {
     Config config = planes == 1 ? Config{} : ThreeD(1);
     config.bridge.n = planes == 1 ? 6 : 1;  // n = 6: a string that no self-stress reaches
@@ -269,17 +277,22 @@ TEST_CASE("the sizing poses no constant row and its strength rows hold where the
     corrections.demand_factor.assign(d.bars.size() + d.strings.size(), 1.3);
     const SizingProblem problem(d, corrections);
     const int n = problem.num_variables(), m = problem.num_constraints();
-    const Eigen::VectorXd x0 = problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
+    const Eigen::VectorXd x0 =
+        problem.VariablesOf(MemberAreas(d), problem.AlphaOf(d.reference_forces));
     std::vector<double> values(problem.JacobianPattern().size());
     problem.JacobianValues(x0, values.data());
     // A row that no variable moves is a fact of the model, not a constraint: violated, no
     // sizing mends it. Each row reads its own member's area, its stiffness or a self-stress.
     for (int r = 0; r < m; ++r) {
       double largest = 0;
-      for (int v = 0; v < n; ++v) largest = std::max(largest, std::abs(values[static_cast<size_t>(r) * n + v]));
+      for (int v = 0; v < n; ++v)
+        largest = std::max(largest, std::abs(values[static_cast<size_t>(r) * n + v]));
       const SizingRow& row = problem.rows()[r];
-      INFO("planes " << planes << ", row " << r << " (" << SizingRowKindName(row.kind) << ") of member or node "
-                     << row.member << (row.combination >= 0 ? " in " + problem.combinations()[row.combination].label : ""));
+      INFO("planes " << planes << ", row " << r << " (" << SizingRowKindName(row.kind)
+                     << ") of member or node " << row.member
+                     << (row.combination >= 0
+                             ? " in " + problem.combinations()[row.combination].label
+                             : ""));
       CHECK(largest > 0);
     }
     // The posed rows and the margins: the same sign on every row, at the start and with the
@@ -305,14 +318,17 @@ TEST_CASE("the sizing poses no constant row and its strength rows hold where the
   }
 }
 
-TEST_CASE("the sizing's mirror-image rows are one function of the variables and keep the feasible set", "[design]") {
+TEST_CASE(
+    "the sizing's mirror-image rows are one function of the variables and keep the feasible set",
+    "[design]") {
   for (const int planes : {1, 2}) {
     // Planar at n = 2 (mirror about mid-span; the payload on the left the image of the right's);
     // 3D at n = 1, whose wind breaks the mirror between the planes but not the one about mid-span.
     // With abutment capacities: a support row's image is the other abutment's.
     const Design d = RunDesign(WithCapacities(planes == 1 ? SmallDesign().config : ThreeD(1)));
     const int nm = static_cast<int>(d.bars.size() + d.strings.size());
-    // Corrections that differ between a member and its images, as the moving load's run leaves them.
+    // Corrections that differ between a member and its images, as the moving load's run leaves
+    // them.
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     SizingCorrections own;
@@ -354,9 +370,11 @@ TEST_CASE("the sizing's mirror-image rows are one function of the variables and 
     }
     for (int r = 0; r < m; ++r) {
       const int f = first[static_cast<size_t>(r)];
-      INFO("row " << r << " (" << SizingRowKindName(merged.rows()[r].kind) << "), its orbit's first " << f);
+      INFO("row " << r << " (" << SizingRowKindName(merged.rows()[r].kind)
+                  << "), its orbit's first " << f);
       CHECK(std::abs(g_merged[r] - g_merged[f]) <= 1e-9 * std::max(1.0, std::abs(g_merged[f])));
-      if (r == f && g_merged[f] < 1) CHECK(std::abs(tightest[f] - g_merged[f]) <= 1e-9 * std::max(1.0, std::abs(g_merged[f])));
+      if (r == f && g_merged[f] < 1)
+        CHECK(std::abs(tightest[f] - g_merged[f]) <= 1e-9 * std::max(1.0, std::abs(g_merged[f])));
     }
     // Their gradients too: a row and its image, posed together, give one Jacobian row (to 1e-9
     // of its largest entry, as the values).
@@ -377,7 +395,8 @@ TEST_CASE("the sizing's mirror-image rows are one function of the variables and 
     Eigen::MatrixXd jac;
     REQUIRE(posed.DenseJacobian(x, jac));
     for (const auto& [f, r] : pairs) {
-      const Eigen::RowVectorXd a = jac.row(index[static_cast<size_t>(f)]), b = jac.row(index[static_cast<size_t>(r)]);
+      const Eigen::RowVectorXd a = jac.row(index[static_cast<size_t>(f)]),
+                               b = jac.row(index[static_cast<size_t>(r)]);
       INFO("rows " << f << " and " << r << " ("
                    << SizingRowKindName(posed.rows()[index[static_cast<size_t>(f)]].kind)
                    << "): " << a << " / " << b);

@@ -125,8 +125,9 @@ TEST_CASE("SQP: a row that no point meets is reported, not chased", "[sqp]") {
   // min x1 + x2 s.t. 1 - x1 - x2 - (x1 x2)^-1 >= 0 with x >= 0.01: the row is at most
   // 1 - 2 sqrt(p) - 1/p < 0 for every product p, so no point meets it. The solver stops
   // unsuccessful once its steps change nothing, well before its evaluation limit.
-  const SmallProgram program(Eigen::Vector2d(1, 1), 2, 1,
-                             [](const auto& x, auto g) { g[0] = 1 - x[0] - x[1] - 1 / (x[0] * x[1]); });
+  const SmallProgram program(Eigen::Vector2d(1, 1), 2, 1, [](const auto& x, auto g) {
+    g[0] = 1 - x[0] - x[1] - 1 / (x[0] * x[1]);
+  });
   Eigen::VectorXd x = Eigen::Vector2d(1, 1);
   const SolverOutcome out = Solve(program, x, 1e-6);  // at most 3 000 evaluations
   INFO(out.status << " after " << out.iterations << ": " << out.message);
@@ -136,8 +137,8 @@ TEST_CASE("SQP: a row that no point meets is reported, not chased", "[sqp]") {
 
 TEST_CASE("SQP: the verified sizing problem solved as SLSQP solves it, or lighter",
           "[sqp][nlopt]") {
-  REQUIRE(SolverBuiltIn("nlopt"));      // the second algorithm is NLopt's (tagged [nlopt])
-  Config config;                        // the engineering defaults at n = 3: every case and station
+  REQUIRE(SolverBuiltIn("nlopt"));  // the second algorithm is NLopt's (tagged [nlopt])
+  Config config;                    // the engineering defaults at n = 3: every case and station
   config.bridge.n = 3;
   const Design d = RunDesign(config);
   SizingCorrections corrections;

@@ -11,8 +11,8 @@
 #include "design/design.h"
 #include "design/equilibrium.h"
 #include "design/stability.h"
-#include "test_support.h"
 #include "design/topology.h"
+#include "test_support.h"
 
 namespace tbridge {
 namespace {
@@ -339,7 +339,8 @@ TEST_CASE("Stability fails without the prestress floors", "[stability]") {
   CHECK(CheckStability(RunDesign(test::PaperConfig(2))).positive_definite);
 }
 
-TEST_CASE("Sparse stability verdict: guyed mast against its closed form", "[stability][closed-form]") {
+TEST_CASE("Sparse stability verdict: guyed mast against its closed form",
+          "[stability][closed-form]") {
   const double a = 3.0, l = 4.0, len = 5.0, T = 1000.0, k = 2.0e5;
   Eigen::VectorXd forces(3);
   forces << 2 * T * l / len, T, T;
@@ -348,7 +349,8 @@ TEST_CASE("Sparse stability verdict: guyed mast against its closed form", "[stab
   const StabilityVerdict planar = AssessStability(GuyedMast(true, a, l), forces, {k, k}, true);
   CHECK(planar.stable);
   CHECK(planar.reduced_dofs == 1);
-  CHECK(planar.min_pivot == Approx(2 * k * a * a / (len * len) - 2 * T * a * a / std::pow(len, 3)).epsilon(1e-12));
+  CHECK(planar.min_pivot ==
+        Approx(2 * k * a * a / (len * len) - 2 * T * a * a / std::pow(len, 3)).epsilon(1e-12));
   // Scaling every force by c: 2 k a^2/len^2 - c 2 T a^2/len^3 = 0 at c = k len / T = 1000
   // (relative 1e-10: a 1 x 1 generalised eigenproblem, rounding only).
   REQUIRE(planar.critical_load_factor.has_value());
@@ -374,7 +376,8 @@ TEST_CASE("Sparse LDL^T inertia agrees with the dense eigenvalues", "[stability]
   // eigenvalues, counted here by a second algorithm (one dense QR null space for all bars,
   // then a symmetric eigensolver), on stable and unstable designs of every class.
   std::vector<std::pair<std::string, Config>> cases;
-  for (int n = 1; n <= 4; ++n) cases.push_back({"planar n = " + std::to_string(n), test::PaperConfig(n)});
+  for (int n = 1; n <= 4; ++n)
+    cases.push_back({"planar n = " + std::to_string(n), test::PaperConfig(n)});
   cases.push_back({"p = 2", MultiBarConfig(2, 2)});
   cases.push_back({"p = 3", MultiBarConfig(2, 3)});
   cases.push_back({"3D", Bridge3DConfig()});
@@ -392,8 +395,8 @@ TEST_CASE("Sparse LDL^T inertia agrees with the dense eigenvalues", "[stability]
     // Negative eigenvalues, with the same 1e-10 relative zero band as the verdict.
     const double band = 1e-10 * dense.eigenvalues.cwiseAbs().maxCoeff();
     const int negative = static_cast<int>((dense.eigenvalues.array() < -band).count());
-    INFO(label << ": dense smallest eigenvalue " << dense.min_eigenvalue << " N/m, sparse smallest pivot "
-               << sparse.min_pivot << " N/m");
+    INFO(label << ": dense smallest eigenvalue " << dense.min_eigenvalue
+               << " N/m, sparse smallest pivot " << sparse.min_pivot << " N/m");
     CHECK(sparse.reduced_dofs == dense.reduced_dofs);
     CHECK(sparse.stable == dense.positive_definite);
     CHECK(sparse.negative_pivots == negative);
@@ -411,7 +414,8 @@ TEST_CASE("Critical load factor: K_m + c K_g turns singular there and not before
     REQUIRE(d.stability.critical_load_factor_computed);
     REQUIRE(d.stability.critical_load_factor.has_value());
     const double c = *d.stability.critical_load_factor;
-    INFO("n = " << config.bridge.n << ", planes " << config.bridge.planes << ": critical factor " << c);
+    INFO("n = " << config.bridge.n << ", planes " << config.bridge.planes << ": critical factor "
+                << c);
     CHECK(c > 1);  // a stable design with positive definite K_m
     std::vector<double> k(d.strings.size());
     for (size_t i = 0; i < k.size(); ++i) k[i] = d.strings[i].stiffness;

@@ -1,9 +1,9 @@
 // The p = 1 planar topology (SPEC §2): counts, numbering and geometry.
+#include "design/topology.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-
-#include "design/topology.h"
 
 namespace tbridge {
 namespace {

@@ -27,7 +27,8 @@ DynamicsConfig Pushed(double dt, IntegratorKind integrator, int record_every) {
   return c;
 }
 
-TEST_CASE("auto beyond RK4's limit runs RK4 sub-steps, as RK4 at the finer step does", "[dynamics]") {
+TEST_CASE("auto beyond RK4's limit runs RK4 sub-steps, as RK4 at the finer step does",
+          "[dynamics]") {
   // n = 3: RK4's limit 2.8e-4 s (SPEC.md §9), 0.9 of it 2.5e-4 s, so dt = 1e-3 s takes
   // ceil(3.9) = 4 sub-steps of 2.5e-4 s.
   const DynamicModel m = BuildDynamicModel(test::PaperDesign(3));
@@ -42,10 +43,14 @@ TEST_CASE("auto beyond RK4's limit runs RK4 sub-steps, as RK4 at the finer step 
   // in its last bit.
   CHECK((automatic.history - fine.history).cwiseAbs().maxCoeff() <= 1e-12);
   const Eigen::Index coordinates = fine.history.cols() - 1;  // after the time column
-  CHECK((fine.history.bottomRows(1) - fine.history.topRows(1)).rightCols(coordinates).cwiseAbs().maxCoeff() > 1e-5);  // it moves [m]
+  CHECK((fine.history.bottomRows(1) - fine.history.topRows(1))
+            .rightCols(coordinates)
+            .cwiseAbs()
+            .maxCoeff() > 1e-5);  // it moves [m]
 }
 
-TEST_CASE("auto takes RK4 sub-steps up to the estimated cost of an SDIRK3 step, and SDIRK3 beyond", "[dynamics]") {
+TEST_CASE("auto takes RK4 sub-steps up to the estimated cost of an SDIRK3 step, and SDIRK3 beyond",
+          "[dynamics]") {
   // The threshold k comes from the model's counts alone; a dt that needs k sub-steps runs
   // RK4, one that needs k + 1 runs SDIRK3.
   const DynamicModel m = BuildDynamicModel(test::PaperDesign(3));
@@ -59,10 +64,12 @@ TEST_CASE("auto takes RK4 sub-steps up to the estimated cost of an SDIRK3 step, 
   CHECK(k <= 29);
   const double stable = Rk4StableStep(m, Pushed(1e-3, IntegratorKind::kAuto, 1));
   // Just below k steps of the stable step: k sub-steps (1e-9 relative: clear of ceil's edge).
-  const SimulationSummary at_k = Simulate(m, Pushed(k * stable * (1 - 1e-9), IntegratorKind::kAuto, 1)).summary;
+  const SimulationSummary at_k =
+      Simulate(m, Pushed(k * stable * (1 - 1e-9), IntegratorKind::kAuto, 1)).summary;
   CHECK(at_k.integrator == "rk4");
   CHECK(at_k.substeps == k);
-  const SimulationSummary beyond = Simulate(m, Pushed((k + 0.5) * stable, IntegratorKind::kAuto, 1)).summary;
+  const SimulationSummary beyond =
+      Simulate(m, Pushed((k + 0.5) * stable, IntegratorKind::kAuto, 1)).summary;
   CHECK(beyond.integrator == "sdirk3");
   CHECK(beyond.substeps == 1);
 }

@@ -3,11 +3,9 @@
 //
 // Eigen's run-time allocation check must be switched on before any Eigen header is seen.
 #define EIGEN_RUNTIME_NO_MALLOC
-#include <Eigen/Core>
-
-#include "bridge/design_model.h"
 #include "dynamics/class1.h"
 
+#include <Eigen/Core>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -18,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -25,8 +24,8 @@
 #include "dynamics/integrators.h"
 #include "dynamics/model.h"
 #include "dynamics/response.h"
-#include "dynamics/simulation.h"
 #include "dynamics/rk4_support.h"
+#include "dynamics/simulation.h"
 #include "test_support.h"
 
 // Heap allocation counters for the no-allocation test. operator new is replaced for the whole
@@ -90,7 +89,9 @@ DynamicsConfig Scenario(double duration, double dt, int bar_class, double delta)
 }
 
 // Positions part of a state, as a vector.
-Eigen::VectorXd Positions(const Class1System& s, const Eigen::VectorXd& y) { return y.head(s.coordinates()); }
+Eigen::VectorXd Positions(const Class1System& s, const Eigen::VectorXd& y) {
+  return y.head(s.coordinates());
+}
 
 using test::RunRk4;
 
@@ -105,7 +106,9 @@ TEST_CASE("the model takes the design's members and eq. 27 string masses") {
     CHECK(m.strings[k].rest_length == d.strings[k].rest_length);
     CHECK(m.strings[k].stiffness == d.strings[k].stiffness);
     // rho A L0, exactly as SPEC.md §8 defines it (rounding only).
-    CHECK(m.strings[k].mass == Approx(d.config.material.density * d.strings[k].area * d.strings[k].rest_length).epsilon(1e-14));
+    CHECK(m.strings[k].mass ==
+          Approx(d.config.material.density * d.strings[k].area * d.strings[k].rest_length)
+              .epsilon(1e-14));
   }
   // Lumping at nodes moves the same string mass; "off" leaves the bars alone.
   ModelOptions nodes;
@@ -124,7 +127,8 @@ TEST_CASE("prestrain sets rest lengths, recomputes k and flags the implied stres
   for (size_t k = 0; k < m.strings.size(); ++k) {
     if (m.names.string_group[k] != "deck") continue;
     CHECK(m.strings[k].rest_length == Approx(0.95 * d.strings[k].length).epsilon(1e-15));
-    CHECK(m.strings[k].stiffness == Approx(m.youngs_modulus * d.strings[k].area / m.strings[k].rest_length).epsilon(1e-15));
+    CHECK(m.strings[k].stiffness ==
+          Approx(m.youngs_modulus * d.strings[k].area / m.strings[k].rest_length).epsilon(1e-15));
   }
   const auto reports = ReportPrestrain(m, d, o);
   REQUIRE(reports.size() == 1);
@@ -165,7 +169,9 @@ TEST_CASE("RK4 converges at order 4 on a smooth motion without slack") {
   const Eigen::VectorXd y0 = InitialState(m, c);
   const double t_end = 0.1;
   const double h = 4e-4;  // omega_max h = 0.9 (omega_max = 2286 rad/s, SPEC.md §9)
-  auto run = [&](double dt) { return Positions(system, RunRk4(system, y0, dt, std::lround(t_end / dt))); };
+  auto run = [&](double dt) {
+    return Positions(system, RunRk4(system, y0, dt, std::lround(t_end / dt)));
+  };
   const Eigen::VectorXd reference = run(h / 32);
   const double e1 = (run(h) - reference).cwiseAbs().maxCoeff();
   const double e2 = (run(h / 2) - reference).cwiseAbs().maxCoeff();
@@ -278,7 +284,8 @@ TEST_CASE("string damping dissipates energy and the balance still closes") {
   const EnergyBalance& e = r.summary.energy;
   const double start = e.kinetic_start + e.elastic_start;
   const double end = e.kinetic_end + e.elastic_end - e.external_work;
-  INFO("mechanical energy " << start << " -> " << end << " J, dissipated " << e.dissipated << " J, drift " << e.max_drift);
+  INFO("mechanical energy " << start << " -> " << end << " J, dissipated " << e.dissipated
+                            << " J, drift " << e.max_drift);
   CHECK(end < start - 0.5 * (start - end));  // mechanical energy falls ...
   CHECK(e.dissipated > 0);                   // ... into the dampers
   // The dissipation is integrated with RK4's own stages, so the balance carries RK4's error,
@@ -306,7 +313,8 @@ TEST_CASE("DOPRI5 agrees with a fine RK4") {
   dp.Start(ode, t, y, ws);
   while (t < 0.1) dp.Step(ode, t, y, h, 0.1, ws);
   const double diff = (Positions(system, y) - Positions(system, rk4)).cwiseAbs().maxCoeff();
-  INFO("max difference " << diff << " m after " << dp.accepted() << " steps, " << dp.rejected() << " rejected");
+  INFO("max difference " << diff << " m after " << dp.accepted() << " steps, " << dp.rejected()
+                         << " rejected");
   // Both errors are ~ 1e-12 m (RK4 at omega_max dt = 5e-3; DOPRI5 at rtol 1e-10 of positions
   // ~ 10 m, accumulated); 1e-9 m is 1e-6 of the 1 mm motion.
   CHECK(diff < 1e-9);
@@ -354,7 +362,8 @@ TEST_CASE("the RK4 step allocates nothing") {
   ModelOptions damped_options;
   damped_options.damping = 10;
   const DynamicModel damped = BuildDynamicModel(test::PaperDesign(3), damped_options);
-  for (const auto& [model, options] : {std::pair{&m, Class1Options{}}, std::pair{&m, stab}, std::pair{&damped, stab}}) {
+  for (const auto& [model, options] :
+       {std::pair{&m, Class1Options{}}, std::pair{&m, stab}, std::pair{&damped, stab}}) {
     const Class1System system(*model, options, {TimedLoad{0, 1, 2, Eigen::Vector3d(0, -100, 0)}});
     Class1Ode ode(system);
     Rk4Workspace ws(system.state_size());
@@ -414,7 +423,8 @@ TEST_CASE("a whole run's steps allocate nothing: integrator, engine, monitor and
     const long short_run = RunAllocations(m, c);
     c.duration = 0.1;
     const long long_run = RunAllocations(m, c);
-    INFO(NameOf(engine) << ": " << short_run << " allocations for 100 steps, " << long_run << " for 10000");
+    INFO(NameOf(engine) << ": " << short_run << " allocations for 100 steps, " << long_run
+                        << " for 10000");
     CHECK(long_run == short_run);
   }
 }
@@ -500,20 +510,28 @@ std::string DynamicsErrorOf(const std::string& text) {
 }
 
 TEST_CASE("bad dynamics configs name the key, the value and what is allowed") {
-  CHECK_THAT(DynamicsErrorOf(R"({"dt": -1})"), Catch::Contains("dynamics.dt") && Catch::Contains("-1"));
+  CHECK_THAT(DynamicsErrorOf(R"({"dt": -1})"),
+             Catch::Contains("dynamics.dt") && Catch::Contains("-1"));
   CHECK_THAT(DynamicsErrorOf(R"({"time_step": 1e-5})"), Catch::Contains("dynamics.time_step"));
-  CHECK_THAT(DynamicsErrorOf(R"({"integrator": "euler"})"), Catch::Contains("rk4") && Catch::Contains("dopri5"));
+  CHECK_THAT(DynamicsErrorOf(R"({"integrator": "euler"})"),
+             Catch::Contains("rk4") && Catch::Contains("dopri5"));
   CHECK_THAT(DynamicsErrorOf(R"({"string_mass": true})"), Catch::Contains("dynamics.string_mass"));
-  CHECK_THAT(DynamicsErrorOf(R"({"stabilisation": {"omega": 5}})"), Catch::Contains("dynamics.stabilisation.omega"));
+  CHECK_THAT(DynamicsErrorOf(R"({"stabilisation": {"omega": 5}})"),
+             Catch::Contains("dynamics.stabilisation.omega"));
   CHECK_THAT(DynamicsErrorOf(R"({"prestrain": [{"group": "deck", "ratio": 0}]})"),
              Catch::Contains("dynamics.prestrain[0].ratio"));
-  CHECK_THAT(DynamicsErrorOf(R"({"prestrain": [{"group": "deck", "ratio": 0.9}, {"group": "deck", "ratio": 0.95}]})"),
-             Catch::Contains("dynamics.prestrain[1].group"));
-  CHECK_THAT(DynamicsErrorOf(R"({"loads": [{"t_start": 0.5, "t_end": 0.2, "node": 1, "force": [0, -1, 0]}]})"),
+  CHECK_THAT(
+      DynamicsErrorOf(
+          R"({"prestrain": [{"group": "deck", "ratio": 0.9}, {"group": "deck", "ratio": 0.95}]})"),
+      Catch::Contains("dynamics.prestrain[1].group"));
+  CHECK_THAT(DynamicsErrorOf(
+                 R"({"loads": [{"t_start": 0.5, "t_end": 0.2, "node": 1, "force": [0, -1, 0]}]})"),
              Catch::Contains("dynamics.loads[0].t_end"));
-  CHECK_THAT(DynamicsErrorOf(R"({"loads": [{"t_start": 0, "t_end": 1, "node": 1, "force": [0, -1]}]})"),
-             Catch::Contains("dynamics.loads[0].force"));
-  CHECK_THAT(DynamicsErrorOf(R"({"record": {"nodes": [0]}})"), Catch::Contains("dynamics.record.nodes"));
+  CHECK_THAT(
+      DynamicsErrorOf(R"({"loads": [{"t_start": 0, "t_end": 1, "node": 1, "force": [0, -1]}]})"),
+      Catch::Contains("dynamics.loads[0].force"));
+  CHECK_THAT(DynamicsErrorOf(R"({"record": {"nodes": [0]}})"),
+             Catch::Contains("dynamics.record.nodes"));
   CHECK_THAT(DynamicsErrorOf(R"({"dt": 2, "duration": 1})"), Catch::Contains("dynamics.dt"));
   CHECK_THAT(DynamicsErrorOf(R"({"initial": {"node": 1}})"), Catch::Contains("dynamics.initial"));
   CHECK_THAT(DynamicsErrorOf(R"({"damping_c": "none"})"), Catch::Contains("dynamics.damping_c"));

@@ -1,6 +1,5 @@
 // The class-k engine (Lagrange multipliers for shared bar nodes) against the class-1 closed
 // form, closed-form frequencies, conservation laws, symmetry and statics.
-#include "bridge/design_model.h"
 #include "dynamics/classk.h"
 
 #include <suitesparse/SuiteSparse_config.h>
@@ -16,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/structure.h"
 #include "design/design.h"
@@ -23,8 +23,8 @@
 #include "dynamics/integrators.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
-#include "dynamics/simulation.h"
 #include "dynamics/rk4_support.h"
+#include "dynamics/simulation.h"
 
 namespace tbridge {
 namespace {
@@ -95,8 +95,10 @@ TEST_CASE("class-1 and class-k engines give the same trajectory on a class-1 bri
   RunRk4(ode1, y0, dt, 100000, [&](long step, double t, const Eigen::VectorXd& y1) {
     Rk4Step(odek, t - dt, dt, yk, wsk);
     if (step % 100 != 0) return;
-    worst = std::max(worst, (yk.head(k.coordinates()) - y1.head(k.coordinates())).cwiseAbs().maxCoeff());
-    largest = std::max(largest, (y1.head(k.coordinates()) - y0.head(k.coordinates())).cwiseAbs().maxCoeff());
+    worst = std::max(worst,
+                     (yk.head(k.coordinates()) - y1.head(k.coordinates())).cwiseAbs().maxCoeff());
+    largest = std::max(largest,
+                       (y1.head(k.coordinates()) - y0.head(k.coordinates())).cwiseAbs().maxCoeff());
   });
   INFO("max position difference " << worst << " m, largest displacement " << largest << " m");
   // The two engines do the same arithmetic in a different order: round-off only (about
@@ -105,13 +107,15 @@ TEST_CASE("class-1 and class-k engines give the same trajectory on a class-1 bri
   CHECK(largest > 1e-3);  // the run does move
 }
 
-
 // The paper's 3D bridge with the dynamics section of configs/paper_3d_<name>.json.
 const Config& Paper3d(const std::string& name) {
   static std::map<std::string, Config> cache;
   auto it = cache.find(name);
   if (it == cache.end()) {
-    it = cache.emplace(name, LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_3d_" + name + ".json")).first;
+    it = cache
+             .emplace(name, LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_3d_" +
+                                       name + ".json"))
+             .first;
   }
   return it->second;
 }
@@ -129,7 +133,8 @@ int MirrorNode(const DynamicModel& model, int a) {
 }
 
 // Kinetic + elastic energy + potential of the constant loads, -W . (x - x0) [J].
-double MechanicalEnergy(const DynamicModel& model, const ClassKSystem& system, const Eigen::VectorXd& y) {
+double MechanicalEnergy(const DynamicModel& model, const ClassKSystem& system,
+                        const Eigen::VectorXd& y) {
   const int dim = model.dim;
   double e = system.KineticEnergy(y.data());
   for (const DynamicString& s : model.strings) {
@@ -149,10 +154,11 @@ TEST_CASE("the paper's 3D runs hold every bar length to 1e-9") {
     REQUIRE(model.tensegrity_class == 2);
     const SimulationResult r = Simulate(model, dc);
     const SimulationSummary& s = r.summary;
-    INFO(name << ": engine " << s.engine << ", bar-length error " << s.max_bar_length_error << ", peak deck displacement x "
-              << s.peak_deck_displacement[0] << " y " << s.peak_deck_displacement[1] << " z "
-              << s.peak_deck_displacement[2] << " m, max string stress " << s.max_string_stress << " Pa of "
-              << s.allowed_stress << ", slack transitions " << s.slack.total);
+    INFO(name << ": engine " << s.engine << ", bar-length error " << s.max_bar_length_error
+              << ", peak deck displacement x " << s.peak_deck_displacement[0] << " y "
+              << s.peak_deck_displacement[1] << " z " << s.peak_deck_displacement[2]
+              << " m, max string stress " << s.max_string_stress << " Pa of " << s.allowed_stress
+              << ", slack transitions " << s.slack.total);
     CHECK(s.engine == "classk");
     // The acceptance bound; Baumgarte stabilisation keeps it near 1e-14 at this dt.
     CHECK(s.max_bar_length_error <= 1e-9);
@@ -169,8 +175,9 @@ TEST_CASE("a damped class-k run loses energy at every step") {
   const ClassKSystem system(model);
   ClassKOde ode(system);
   Eigen::VectorXd y0 = system.RestState();
-  for (const int node : {2, 5, 8, 11}) y0(system.coordinates() + 3 * (node - 1) + 2) = 0.05;  // [m/s] in z
-  const double dt = 2e-5;  // the paper configs' step
+  for (const int node : {2, 5, 8, 11})
+    y0(system.coordinates() + 3 * (node - 1) + 2) = 0.05;  // [m/s] in z
+  const double dt = 2e-5;                                  // the paper configs' step
   // Measured above the energy at rest (the prestress stores ~280 J, the throw adds ~0.08 J).
   const double rest = MechanicalEnergy(model, system, system.RestState());
   const double initial = MechanicalEnergy(model, system, y0) - rest;
@@ -181,7 +188,8 @@ TEST_CASE("a damped class-k run loses energy at every step") {
     worst_rise = std::max(worst_rise, e - previous);
     previous = e;
   });
-  INFO("energy above rest " << initial << " J -> " << previous << " J, largest step change " << worst_rise << " J");
+  INFO("energy above rest " << initial << " J -> " << previous << " J, largest step change "
+                            << worst_rise << " J");
   // No step may gain energy beyond the round-off of the energy sum (~1e-13 J: 1e-16 of the
   // 280 J stored at rest, over 50 strings).
   CHECK(worst_rise <= 1e-11);
@@ -218,8 +226,8 @@ TEST_CASE("the travelling load's response mirrors when its schedule is mirrored"
       }
     }
   }
-  INFO("mirror mismatch " << mismatch << " m, in-run asymmetry " << asymmetry << " m, largest displacement "
-                          << largest << " m");
+  INFO("mirror mismatch " << mismatch << " m, in-run asymmetry " << asymmetry
+                          << " m, largest displacement " << largest << " m");
   // Round-off: the design comes out mirror-symmetric to round-off (5e-12 of the motion seen);
   // 1e-9 leaves room for an optimiser that is symmetric only to its tolerance.
   CHECK(mismatch <= 1e-9 * largest);
@@ -239,7 +247,8 @@ Eigen::Vector3d SupportReactions(const DynamicModel& model, const Eigen::VectorX
   }
   for (size_t k = 0; k < model.bars.size(); ++k) {
     const DynamicBar& b = model.bars[k];
-    const Eigen::Vector3d push = lambda(static_cast<Eigen::Index>(k)) * (model.positions.col(b.j) - model.positions.col(b.i));
+    const Eigen::Vector3d push = lambda(static_cast<Eigen::Index>(k)) *
+                                 (model.positions.col(b.j) - model.positions.col(b.i));
     member.col(b.i) -= push;
     member.col(b.j) += push;
   }
@@ -251,7 +260,8 @@ Eigen::Vector3d SupportReactions(const DynamicModel& model, const Eigen::VectorX
 }
 
 TEST_CASE("at rest the support reactions carry the applied load") {
-  for (const auto& [n, p, planes] : {std::tuple{2, 1, 2}, std::tuple{2, 2, 1}, std::tuple{2, 3, 1}}) {
+  for (const auto& [n, p, planes] :
+       {std::tuple{2, 1, 2}, std::tuple{2, 2, 1}, std::tuple{2, 3, 1}}) {
     const DynamicModel model = BuildDynamicModel(DesignOf(n, p, planes));
     const ClassKSystem system(model);
     ClassKWorkspace ws(system);
@@ -262,8 +272,9 @@ TEST_CASE("at rest the support reactions carry the applied load") {
     system.BarForceDensities(ws, lambda);
     const Eigen::Vector3d reaction = SupportReactions(model, lambda);
     const Eigen::Vector3d applied = model.loads.rowwise().sum();
-    INFO("n " << n << " p " << p << " planes " << planes << ": reactions " << reaction.transpose() << " N, applied "
-              << applied.transpose() << " N, largest acceleration " << dy.tail(system.coordinates()).cwiseAbs().maxCoeff());
+    INFO("n " << n << " p " << p << " planes " << planes << ": reactions " << reaction.transpose()
+              << " N, applied " << applied.transpose() << " N, largest acceleration "
+              << dy.tail(system.coordinates()).cwiseAbs().maxCoeff());
     // Equilibrium holds to the design optimiser's residual (~1e-8 N per node).
     CHECK((reaction + applied).norm() <= 1e-9 * applied.norm());
     // At rest: each node's unbalanced force is at most what the design's solve leaves,
@@ -273,8 +284,10 @@ TEST_CASE("at rest the support reactions carry the applied load") {
     double lightest_bar_kg = std::numeric_limits<double>::infinity();
     for (const DynamicBar& b : model.bars) lightest_bar_kg = std::min(lightest_bar_kg, b.mass);
     const Design& design = DesignOf(n, p, planes);
-    const double residual_n = design.config.design.tolerance * design.reference_forces.cwiseAbs().maxCoeff();
-    CHECK(dy.tail(system.coordinates()).cwiseAbs().maxCoeff() <= 8.0 * residual_n / lightest_bar_kg);  // [m/s^2]
+    const double residual_n =
+        design.config.design.tolerance * design.reference_forces.cwiseAbs().maxCoeff();
+    CHECK(dy.tail(system.coordinates()).cwiseAbs().maxCoeff() <=
+          8.0 * residual_n / lightest_bar_kg);  // [m/s^2]
     if (planes == 2) {
       // Independently: six deck nodes at f = F_tot / (2^n 2) = 3701.43 N (docs/topology.md).
       CHECK(reaction.y() == Approx(6 * 3701.4338721644413).epsilon(1e-12));
@@ -338,8 +351,10 @@ TEST_CASE("two hinged bars swing at the closed-form double-pendulum frequencies"
       last_t = t;
     });
     REQUIRE(crossings.size() >= 5);
-    const double period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-    INFO(crossings.size() << " crossings, period " << period << " s, closed form " << 2 * std::numbers::pi / w_slow);
+    const double period =
+        (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+    INFO(crossings.size() << " crossings, period " << period << " s, closed form "
+                          << 2 * std::numbers::pi / w_slow);
     // Linear interpolation of a sine's zero crossing errs by ~(omega dt)^3/6 dt = 5e-12 s;
     // the amplitude (1e-4 rad) shifts the period by ~1e-9 relative.
     CHECK(2 * std::numbers::pi / period == Approx(w_slow).epsilon(1e-7));
@@ -359,12 +374,17 @@ TEST_CASE("planar p = 2 and p = 3 bridges stay at rest and have stable modes") {
       const Eigen::VectorXd y0 = system.RestState();
       const double span = model.positions.row(0).maxCoeff() - model.positions.row(0).minCoeff();
       double drift = 0;
-      RunRk4(ode, y0, dt, std::lround(std::ceil(0.2 / dt)), [&](long, double, const Eigen::VectorXd& y) {
-        drift = std::max(drift, (y.head(system.coordinates()) - y0.head(system.coordinates())).cwiseAbs().maxCoeff());
-      });
+      RunRk4(ode, y0, dt, std::lround(std::ceil(0.2 / dt)),
+             [&](long, double, const Eigen::VectorXd& y) {
+               drift =
+                   std::max(drift, (y.head(system.coordinates()) - y0.head(system.coordinates()))
+                                       .cwiseAbs()
+                                       .maxCoeff());
+             });
       INFO("p = " << p << ", n = " << n << ": " << modes.modes.size() << " modes, lowest "
-                  << modes.modes.front().frequency_hz << " Hz, highest " << modes.modes.back().frequency_hz
-                  << " Hz; drift at rest " << drift << " m over 0.2 s (dt " << dt << " s)");
+                  << modes.modes.front().frequency_hz << " Hz, highest "
+                  << modes.modes.back().frequency_hz << " Hz; drift at rest " << drift
+                  << " m over 0.2 s (dt " << dt << " s)");
       CHECK(modes.modes.front().omega_squared > 0);  // no mechanism, no instability
       // The acceptance bound; the design's equilibrium residual (~1e-9 m/s^2 here) moves a
       // node ~1e-11 m in 0.2 s.
@@ -375,8 +395,9 @@ TEST_CASE("planar p = 2 and p = 3 bridges stay at rest and have stable modes") {
 
 TEST_CASE("a p = 2 bridge's modal and time-history frequencies agree") {
   DynamicsConfig run;
-  run.duration = 20.0;  // ~40 cycles of the lowest mode near 12 rad/s: with 7 the estimate is off by 1e-4
-  run.dt = 1e-4;       // 7x below the RK4 limit of p = 2, n = 2
+  run.duration =
+      20.0;       // ~40 cycles of the lowest mode near 12 rad/s: with 7 the estimate is off by 1e-4
+  run.dt = 1e-4;  // 7x below the RK4 limit of p = 2, n = 2
   run.perturbation.bar_class = 1;
   run.perturbation.delta = 1e-4;  // [m]: strings stay taut, the motion is linear
   run.frequency.enabled = true;
@@ -402,9 +423,18 @@ TEST_CASE("a p = 2 bridge's modal and time-history frequencies agree") {
 
 // Counts CHOLMOD's allocations through SuiteSparse's memory hooks.
 long g_cholmod_allocations = 0;
-void* CountingMalloc(size_t size) { ++g_cholmod_allocations; return std::malloc(size); }
-void* CountingCalloc(size_t n, size_t size) { ++g_cholmod_allocations; return std::calloc(n, size); }
-void* CountingRealloc(void* p, size_t size) { ++g_cholmod_allocations; return std::realloc(p, size); }
+void* CountingMalloc(size_t size) {
+  ++g_cholmod_allocations;
+  return std::malloc(size);
+}
+void* CountingCalloc(size_t n, size_t size) {
+  ++g_cholmod_allocations;
+  return std::calloc(n, size);
+}
+void* CountingRealloc(void* p, size_t size) {
+  ++g_cholmod_allocations;
+  return std::realloc(p, size);
+}
 
 TEST_CASE("after the workspace's warm-up CHOLMOD allocates nothing per step") {
   const DynamicModel model = BuildDynamicModel(DesignOf(2, 1, 2));

@@ -16,14 +16,16 @@ namespace {
 // below) translates vertically. Horizontal translation and rotation are antisymmetric.
 double SymmetricOmega(const DynamicModel& model) {
   for (const Mode& m : ComputeModes(model).modes) {
-    if (ClassifySymmetry(model.positions, m.shape).symmetry == ModeSymmetry::kSymmetric) return m.omega_rad_s;
+    if (ClassifySymmetry(model.positions, m.shape).symmetry == ModeSymmetry::kSymmetric)
+      return m.omega_rad_s;
   }
   FAIL("no symmetric mode");
   return 0;
 }
 
-TEST_CASE("n = 1 with deck inertia: the vertical mode against its one-degree-of-freedom closed form",
-          "[dynamics][modal][inertia]") {
+TEST_CASE(
+    "n = 1 with deck inertia: the vertical mode against its one-degree-of-freedom closed form",
+    "[dynamics][modal][inertia]") {
   Config config;  // the engineering defaults: the run carries the permanent load and the payload
   config.bridge.n = 1;
   const Design d = RunDesign(config);
@@ -53,12 +55,14 @@ TEST_CASE("n = 1 with deck inertia: the vertical mode against its one-degree-of-
   }
   const double bare_mass = d.bars[0].mass + string_mass_on_bar;
   // At the deck node: the deck beam m_d and the payload over its section, F l_d / (L g).
-  const double deck_mass =
-      d.deck.section_mass + d.config.bridge.payload / d.config.bridge.span * d.deck.section_length / d.config.design.gravity;
+  const double deck_mass = d.deck.section_mass + d.config.bridge.payload / d.config.bridge.span *
+                                                     d.deck.section_length /
+                                                     d.config.design.gravity;
 
   // 1e-9: the modal solve linearises the same model exactly; the residue is the eigensolver's
   // and the rounding of the stiffness sums.
-  CHECK(SymmetricOmega(model) == Approx(std::sqrt(stiffness / (bare_mass + deck_mass))).epsilon(1e-9));
+  CHECK(SymmetricOmega(model) ==
+        Approx(std::sqrt(stiffness / (bare_mass + deck_mass))).epsilon(1e-9));
   CHECK(SymmetricOmega(bare) == Approx(std::sqrt(stiffness / bare_mass)).epsilon(1e-9));
   // The deck and payload are the heavier part by far (600 kg against tens of kg of members).
   CHECK(deck_mass > 3 * bare_mass);

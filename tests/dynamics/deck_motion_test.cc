@@ -1,11 +1,12 @@
 // The projection of mode shapes on the deck's motions (dynamics/deck_motion.h) on a hand-built
 // symmetric structure whose modes are known in closed form.
+#include "dynamics/deck_motion.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 #include <string>
 
-#include "dynamics/deck_motion.h"
 #include "dynamics/modal.h"
 
 namespace tbridge {
@@ -56,7 +57,8 @@ DynamicModel TwoPlaneDeck() {
 
 }  // namespace
 
-TEST_CASE("deck motions of a hand-built two-plane deck: names, frequencies and modal masses", "[comfort][modal]") {
+TEST_CASE("deck motions of a hand-built two-plane deck: names, frequencies and modal masses",
+          "[comfort][modal]") {
   const DynamicModel model = TwoPlaneDeck();
   const ModalResult modes = ComputeModes(model);
   REQUIRE(modes.modes.size() == 6);
@@ -85,11 +87,13 @@ TEST_CASE("deck motions of a hand-built two-plane deck: names, frequencies and m
     // scaled to a largest displacement of 1 the modal mass is the two nodes' 2 m.
     CHECK(1.0 / (r.peak_displacement * r.peak_displacement) == Approx(2 * kMass).epsilon(1e-9));
   }
-  CHECK(found == std::map<std::string, int>{{"vertical", 1}, {"torsional", 1}, {"lateral", 1}, {"longitudinal", 1}});
+  CHECK(found == std::map<std::string, int>{
+                     {"vertical", 1}, {"torsional", 1}, {"lateral", 1}, {"longitudinal", 1}});
   CHECK(local == 2);  // the planes moving against each other along x and along z
 }
 
-TEST_CASE("deck motions: a planar deck has vertical and longitudinal modes only", "[comfort][modal]") {
+TEST_CASE("deck motions: a planar deck has vertical and longitudinal modes only",
+          "[comfort][modal]") {
   // The same deck cut to its first plane, in 2D: one node on a taut string pair (vertical:
   // 2T/a per node, longitudinal: 2k), held by nothing across.
   DynamicModel m;
@@ -110,8 +114,10 @@ TEST_CASE("deck motions: a planar deck has vertical and longitudinal modes only"
   }
   const ModalResult modes = ComputeModes(m);
   REQUIRE(modes.modes.size() == 2);
-  CHECK(std::string(DeckMotionName(ProjectOnDeckMotions(m, modes.modes[0].shape).motion)) == "vertical");
-  CHECK(std::string(DeckMotionName(ProjectOnDeckMotions(m, modes.modes[1].shape).motion)) == "longitudinal");
+  CHECK(std::string(DeckMotionName(ProjectOnDeckMotions(m, modes.modes[0].shape).motion)) ==
+        "vertical");
+  CHECK(std::string(DeckMotionName(ProjectOnDeckMotions(m, modes.modes[1].shape).motion)) ==
+        "longitudinal");
   // 2T/a / m and 2k / m, to the eigensolver's accuracy.
   CHECK(modes.modes[0].omega_squared == Approx(2 * kT / kMass).epsilon(1e-9));
   CHECK(modes.modes[1].omega_squared == Approx(2 * kK / kMass).epsilon(1e-9));

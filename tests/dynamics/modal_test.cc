@@ -1,5 +1,4 @@
 // Linearised modes (dynamics/modal.h) against closed forms and SPEC.md §9.
-#include "bridge/design_model.h"
 #include "dynamics/modal.h"
 
 #include <Eigen/Dense>
@@ -13,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "design/design.h"
@@ -50,7 +50,8 @@ Eigen::VectorXd FreeForce(const DynamicModel& model, const Eigen::Matrix3Xd& pos
   }
   for (size_t k = 0; k < model.bars.size(); ++k) {
     const DynamicBar& b = model.bars[k];
-    const Eigen::Vector3d push = sys.bar_force_density(k) * (positions.col(b.j) - positions.col(b.i));
+    const Eigen::Vector3d push =
+        sys.bar_force_density(k) * (positions.col(b.j) - positions.col(b.i));
     f.col(b.i) -= push;
     f.col(b.j) += push;
   }
@@ -78,12 +79,14 @@ void CheckPrinted(double computed, const std::string& printed) {
   const size_t dot = printed.find('.');
   const int decimals = dot == std::string::npos ? 0 : static_cast<int>(printed.size() - dot - 1);
   INFO("computed " << std::setprecision(10) << computed << " rad/s, printed " << printed);
-  CHECK(std::abs(computed - std::stod(printed)) <= 0.5 * std::pow(10.0, -decimals) + 1e-6 * std::abs(computed));
+  CHECK(std::abs(computed - std::stod(printed)) <=
+        0.5 * std::pow(10.0, -decimals) + 1e-6 * std::abs(computed));
 }
 
 TEST_CASE("Linearised frequencies of the designed bridges match SPEC 9", "[dynamics][modal]") {
-  const std::map<int, std::vector<std::string>> lowest = {
-      {1, {"100.8", "663.7", "2286"}}, {2, {"81.7", "82.7", "229.3"}}, {3, {"77.2", "81.7", "166.9"}}};
+  const std::map<int, std::vector<std::string>> lowest = {{1, {"100.8", "663.7", "2286"}},
+                                                          {2, {"81.7", "82.7", "229.3"}},
+                                                          {3, {"77.2", "81.7", "166.9"}}};
   const std::map<int, std::string> highest = {{1, "2286"}, {2, "5087"}, {3, "10019"}};
   for (const auto& [n, expected] : lowest) {
     const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(n)));
@@ -104,8 +107,8 @@ TEST_CASE("Further n = 3 linearised frequencies match SPEC 9", "[dynamics][modal
   const ModalResult r = ComputeModes(ModelOf(test::PaperDesign(3)));
   const std::vector<std::string> expected = {"77.2", "81.7", "166.9", "173.8", "253.9"};
   for (size_t k = 0; k < expected.size(); ++k) CheckPrinted(r.modes[k].omega_rad_s, expected[k]);
-  CHECK(r.free_dofs == 28);    // 14 free nodes x 2
-  CHECK(r.constraints == 7);   // one per bar
+  CHECK(r.free_dofs == 28);   // 14 free nodes x 2
+  CHECK(r.constraints == 7);  // one per bar
   CHECK(r.modes.size() == 21u);
 }
 
@@ -149,8 +152,9 @@ TEST_CASE("The lowest n = 2 mode is antisymmetric, the next symmetric", "[dynami
   CHECK(second.symmetry == ModeSymmetry::kSymmetric);
   CHECK(std::string(SymmetryName(first.symmetry)) == "antisymmetric");
   const ModalResult r1 = ComputeModes(ModelOf(test::PaperDesign(1)));
-  CHECK(ClassifySymmetry(test::PaperDesign(1).topology.structure.nodes, r1.modes[0].shape).symmetry ==
-        ModeSymmetry::kSymmetric);
+  CHECK(
+      ClassifySymmetry(test::PaperDesign(1).topology.structure.nodes, r1.modes[0].shape).symmetry ==
+      ModeSymmetry::kSymmetric);
 }
 
 // A node between two fixed points on a line, held by two equal taut strings: axial
@@ -173,7 +177,8 @@ TEST_CASE("String-mass oscillator matches its closed forms", "[dynamics][modal]"
   CHECK(r.modes[0].omega_rad_s == Approx(std::sqrt(2 * q / mass)).epsilon(1e-12));
   CHECK(r.modes[1].omega_rad_s == Approx(std::sqrt(2 * q / mass)).epsilon(1e-12));
   CHECK(r.modes[2].omega_rad_s == Approx(std::sqrt(2 * k / mass)).epsilon(1e-12));
-  CHECK(r.modes[2].period_s == Approx(2 * std::numbers::pi / std::sqrt(2 * k / mass)).epsilon(1e-12));
+  CHECK(r.modes[2].period_s ==
+        Approx(2 * std::numbers::pi / std::sqrt(2 * k / mass)).epsilon(1e-12));
   CHECK(std::abs(r.modes[2].shape(0, 1)) == Approx(1 / std::sqrt(mass)).epsilon(1e-12));
 }
 
@@ -295,7 +300,8 @@ TEST_CASE("Modal analysis rejects bad models", "[dynamics][modal]") {
   CHECK_THROWS_AS(Rk4StableStep(ModalResult{}), ModelError);
 }
 
-TEST_CASE("One check of a model: modal analysis and both engines refuse a bad member alike", "[dynamics][modal]") {
+TEST_CASE("One check of a model: modal analysis and both engines refuse a bad member alike",
+          "[dynamics][modal]") {
   // A string to a node that does not exist, a bar of zero length, a string column left short:
   // each reader names the same fault, from CheckModel, prefixed by itself.
   DynamicModel far = ModelOf(test::PaperDesign(1));
@@ -305,12 +311,15 @@ TEST_CASE("One check of a model: modal analysis and both engines refuse a bad me
   DynamicModel ragged = ModelOf(test::PaperDesign(1));
   ragged.strings.area.pop_back();
   const std::vector<std::pair<const DynamicModel*, std::string>> cases = {
-      {&far, "must join two distinct nodes of 1.."}, {&flat, "needs mass >= 0 and length > 0"},
+      {&far, "must join two distinct nodes of 1.."},
+      {&flat, "needs mass >= 0 and length > 0"},
       {&ragged, "the string columns or names differ in length"}};
   for (const auto& [model, fault] : cases) {
     INFO(fault);
-    CHECK_THROWS_WITH(ComputeModes(*model), Catch::StartsWith("modal analysis: ") && Catch::Contains(fault));
-    CHECK_THROWS_WITH(Class1System(*model), Catch::StartsWith("class-1 dynamics: ") && Catch::Contains(fault));
+    CHECK_THROWS_WITH(ComputeModes(*model),
+                      Catch::StartsWith("modal analysis: ") && Catch::Contains(fault));
+    CHECK_THROWS_WITH(Class1System(*model),
+                      Catch::StartsWith("class-1 dynamics: ") && Catch::Contains(fault));
     CHECK_THROWS_WITH(ClassKSystem(*model), Catch::Contains(fault));
   }
 }
@@ -322,7 +331,8 @@ const std::vector<std::pair<std::string, DynamicModel>>& ClassKModels() {
     for (const auto& [n, p] : {std::pair{2, 2}, std::pair{4, 2}, std::pair{2, 3}}) {
       Config c = test::PaperConfig(n);
       c.bridge.p = p;
-      out.emplace_back("planar n = " + std::to_string(n) + ", p = " + std::to_string(p), ModelOf(RunDesign(c)));
+      out.emplace_back("planar n = " + std::to_string(n) + ", p = " + std::to_string(p),
+                       ModelOf(RunDesign(c)));
     }
     const Config three_d = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/paper_3d.json");
     out.emplace_back("3D, planes = 2", ModelOf(RunDesign(three_d)));
@@ -352,8 +362,8 @@ void CheckSparseAgainstDense(const DynamicModel& m, int count) {
   const Eigen::MatrixXd overlap = phi_sparse.transpose() * sys.mass * phi_dense;
   for (int k = 0; k < count; ++k) {
     const double w2 = dense.modes[k].omega_squared;
-    INFO("mode " << k + 1 << ": sparse " << sparse.modes[k].omega_rad_s << ", dense " << dense.modes[k].omega_rad_s
-                 << " rad/s");
+    INFO("mode " << k + 1 << ": sparse " << sparse.modes[k].omega_rad_s << ", dense "
+                 << dense.modes[k].omega_rad_s << " rad/s");
     // 1e-8 relative: both are converged eigenvalues of the same pencil (Lanczos residual
     // 1e-10 of the shifted-inverse eigenvalue; the dense solve's error is round-off times
     // omega_max^2, below 1e-10 of omega_min^2 up to n = 6).
@@ -364,14 +374,16 @@ void CheckSparseAgainstDense(const DynamicModel& m, int count) {
     // to the square of the shapes' 1e-5-or-better angular error, hence 1e-8.
     double captured = 0;
     for (size_t j = 0; j < dense.modes.size(); ++j) {
-      if (std::abs(dense.modes[j].omega_squared - w2) <= 1e-6 * std::abs(w2)) captured += overlap(k, j) * overlap(k, j);
+      if (std::abs(dense.modes[j].omega_squared - w2) <= 1e-6 * std::abs(w2))
+        captured += overlap(k, j) * overlap(k, j);
     }
     CHECK(captured >= 1 - 1e-8);
     CHECK(captured <= 1 + 1e-8);
   }
   // The highest mode (for the RK4 step) by the Cholesky-mode Lanczos to a Ritz residual of
   // 1e-6 (ModalOptions::highest_tolerance), which bounds the error of omega^2 and so of omega.
-  CHECK(std::abs(sparse.highest_omega_rad_s - dense.highest_omega_rad_s) <= 1e-6 * dense.highest_omega_rad_s);
+  CHECK(std::abs(sparse.highest_omega_rad_s - dense.highest_omega_rad_s) <=
+        1e-6 * dense.highest_omega_rad_s);
   CHECK(Rk4StableStep(sparse) == Approx(Rk4StableStep(dense)).epsilon(1e-6));
 }
 
@@ -406,7 +418,8 @@ std::vector<double> MinimalCoordinateFrequencies(const Design& d, double* gradie
   const int nb = st.num_bars();
   std::vector<int> bar_of(st.num_nodes(), -1);
   for (int k = 0; k < nb; ++k) bar_of[st.bars[k].i] = bar_of[st.bars[k].j] = k;
-  for (int v = 0; v < st.num_nodes(); ++v) REQUIRE((bar_of[v] >= 0) != st.fixed[v]);  // class 1, pinned supports
+  for (int v = 0; v < st.num_nodes(); ++v)
+    REQUIRE((bar_of[v] >= 0) != st.fixed[v]);  // class 1, pinned supports
   // Coordinates q = (x, y, theta) per bar; node i at c - l/2 e, node j at c + l/2 e.
   Eigen::VectorXd q0(3 * nb);
   std::vector<double> half(nb);
@@ -467,7 +480,8 @@ std::vector<double> MinimalCoordinateFrequencies(const Design& d, double* gradie
     }
     mass.segment<3>(3 * k) << m, m, m * half[k] * half[k] / 3;  // m l^2 / 12 with l = 2 half
   }
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, Eigen::MatrixXd(mass.asDiagonal()));
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(
+      K, Eigen::MatrixXd(mass.asDiagonal()));
   REQUIRE(eig.info() == Eigen::Success);
   std::vector<double> omega;
   for (int k = 0; k < 3 * nb; ++k) omega.push_back(std::sqrt(eig.eigenvalues()(k)));
@@ -518,7 +532,8 @@ TEST_CASE("The n = 3 frequencies match a minimal-coordinate model", "[dynamics][
   CHECK_FALSE(most.all_modes);
 }
 
-TEST_CASE("Bar force densities by bar group match one global least-squares solve", "[dynamics][modal]") {
+TEST_CASE("Bar force densities by bar group match one global least-squares solve",
+          "[dynamics][modal]") {
   for (const auto& [name, m] : ClassKModels()) {
     INFO(name);
     const LinearisedSystem sys = Linearise(m);
@@ -528,7 +543,8 @@ TEST_CASE("Bar force densities by bar group match one global least-squares solve
     const Eigen::MatrixXd gt = Eigen::MatrixXd(sys.constraints).transpose();
     const Eigen::VectorXd global = gt.completeOrthogonalDecomposition().solve(-f);
     // Same minimum-norm solution; round-off of two QRs of a well-conditioned G^T.
-    CHECK((global - sys.bar_force_density).cwiseAbs().maxCoeff() <= 1e-9 * global.cwiseAbs().maxCoeff());
+    CHECK((global - sys.bar_force_density).cwiseAbs().maxCoeff() <=
+          1e-9 * global.cwiseAbs().maxCoeff());
     CHECK(sys.equilibrium_residual < 1e-6);  // N, as for the planar designs above
   }
 }

@@ -18,7 +18,8 @@ namespace {
 double LowestSymmetricOmega(const DynamicModel& model) {
   const ModalResult modes = ComputeModes(model);
   for (const Mode& m : modes.modes) {
-    if (ClassifySymmetry(model.positions, m.shape).symmetry == ModeSymmetry::kSymmetric) return m.omega_rad_s;
+    if (ClassifySymmetry(model.positions, m.shape).symmetry == ModeSymmetry::kSymmetric)
+      return m.omega_rad_s;
   }
   FAIL("no symmetric mode");
   return 0;
@@ -37,7 +38,7 @@ TEST_CASE("Modal and small-amplitude time-history frequencies agree", "[dynamics
     run.perturbation.bar_class = bar_class;
     run.perturbation.delta = 1e-4;  // [m]: strings stay taut, the motion is linear
     run.frequency.enabled = true;
-    run.frequency.every = 10;       // deck sampled every 1e-3 s
+    run.frequency.every = 10;  // deck sampled every 1e-3 s
     const DynamicModel model = BuildDynamicModel(design, ModelOptionsOf(run));
     const SimulationResult result = Simulate(model, run);
     REQUIRE(result.summary.has_frequency);
@@ -63,7 +64,8 @@ namespace {
 // of the mode's squared displacement): the one a mirror-odd vertical push of the deck excites.
 double LowestAntisymmetricDeckOmega(const DynamicModel& model) {
   for (const Mode& m : ComputeModes(model).modes) {
-    if (ClassifySymmetry(model.positions, m.shape).symmetry != ModeSymmetry::kAntisymmetric) continue;
+    if (ClassifySymmetry(model.positions, m.shape).symmetry != ModeSymmetry::kAntisymmetric)
+      continue;
     double deck = 0;
     for (int v : model.deck_nodes) deck += m.shape(1, v) * m.shape(1, v);
     if (deck > 0.01 * m.shape.squaredNorm()) return m.omega_rad_s;
@@ -72,7 +74,8 @@ double LowestAntisymmetricDeckOmega(const DynamicModel& model) {
   return 0;
 }
 
-TEST_CASE("The antisymmetric deck frequency of a run is the modal antisymmetric one", "[dynamics][modal][slow]") {
+TEST_CASE("The antisymmetric deck frequency of a run is the modal antisymmetric one",
+          "[dynamics][modal][slow]") {
   const Design design = RunDesign(test::PaperConfig(3));
   DynamicsConfig run;
   run.duration = 2.0;
@@ -94,7 +97,8 @@ TEST_CASE("The antisymmetric deck frequency of a run is the modal antisymmetric 
   const SimulationSummary s = Simulate(model, run).summary;
   REQUIRE(s.antisymmetric_frequency.has_value());
   const double modal = LowestAntisymmetricDeckOmega(model);
-  INFO("time history " << s.antisymmetric_frequency->omega_rad_s << " rad/s, modal " << modal << " rad/s");
+  INFO("time history " << s.antisymmetric_frequency->omega_rad_s << " rad/s, modal " << modal
+                       << " rad/s");
   // 1e-3: the spectral peak of ~26 cycles of a linear motion; the README prints 81.7 rad/s.
   CHECK(s.antisymmetric_frequency->omega_rad_s == Approx(modal).epsilon(1e-3));
   // The summed signal cannot see this motion: what it finds is not the antisymmetric mode.

@@ -52,7 +52,8 @@ TEST_CASE("MOTES peer: the damped prism follows MOTES's own trajectory") {
 }
 
 TEST_CASE("MOTES peer: the class-k D-bar follows MOTES's trajectory without its projection") {
-  const double gap = GapToMotes("tbridge_motes_exact_dbar.json", "motes_dbar_noprojection_positions.csv", 4);
+  const double gap =
+      GapToMotes("tbridge_motes_exact_dbar.json", "motes_dbar_noprojection_positions.csv", 4);
   INFO("largest position gap to MOTES " << gap << " m");
   CHECK(gap < kPeerTolerance);
 }
@@ -71,9 +72,10 @@ SimulationSummary Prism(double damping, IntegratorKind integrator) {
 TEST_CASE("energy balance: the damped prism closes as tightly as the undamped one, across slack") {
   const SimulationSummary damped = Prism(10.0, IntegratorKind::kRk4);
   const SimulationSummary free = Prism(0.0, IntegratorKind::kRk4);
-  INFO("damped: drift " << damped.energy.max_drift << ", " << damped.slack.total << " slack transitions, "
-                        << damped.energy.dissipated << " J dissipated; undamped: drift " << free.energy.max_drift
-                        << ", " << free.slack.total << " transitions");
+  INFO("damped: drift " << damped.energy.max_drift << ", " << damped.slack.total
+                        << " slack transitions, " << damped.energy.dissipated
+                        << " J dissipated; undamped: drift " << free.energy.max_drift << ", "
+                        << free.slack.total << " transitions");
   // The scene must cross slack kinks for the test to mean anything: all 27 strings, 66 times.
   REQUIRE(damped.slack.ever_slack == 27);
   REQUIRE(damped.slack.total >= 60);
@@ -90,7 +92,8 @@ TEST_CASE("energy balance: the damped prism closes as tightly as the undamped on
 
 TEST_CASE("energy balance: DOPRI5 integrates dissipation with its own stages too") {
   const SimulationSummary damped = Prism(10.0, IntegratorKind::kDopri5);
-  INFO("drift " << damped.energy.max_drift << " after " << damped.slack.total << " slack transitions");
+  INFO("drift " << damped.energy.max_drift << " after " << damped.slack.total
+                << " slack transitions");
   REQUIRE(damped.slack.total >= 60);
   // Seen 8.2e-4 at rtol 1e-6 (the undamped prism: 2.0e-4, its own error across 936 kinks); with
   // the trapezoidal rule on the accepted states it was 3.2e-2, since DOPRI5's steps are long

@@ -24,7 +24,8 @@ Eigen::VectorXd Signal(const std::vector<Tone>& tones, double dt, int samples, d
   for (int k = 0; k < samples; ++k) {
     const double t = k * dt;
     for (const Tone& tone : tones) {
-      y(k) += tone.amplitude * std::sin(tone.omega * t + tone.phase) * std::exp(-tone.zeta * tone.omega * t);
+      y(k) += tone.amplitude * std::sin(tone.omega * t + tone.phase) *
+              std::exp(-tone.zeta * tone.omega * t);
     }
   }
   return y;

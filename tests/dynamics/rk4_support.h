@@ -22,7 +22,8 @@ Eigen::VectorXd RunRk4(OdeSystem& ode, Eigen::VectorXd y, double dt, long steps,
 }
 
 // The same on a class-1 system, final state only.
-inline Eigen::VectorXd RunRk4(const Class1System& system, Eigen::VectorXd y, double dt, long steps) {
+inline Eigen::VectorXd RunRk4(const Class1System& system, Eigen::VectorXd y, double dt,
+                              long steps) {
   Class1Ode ode(system);
   return RunRk4(ode, std::move(y), dt, steps, [](long, double, const Eigen::VectorXd&) {});
 }

@@ -2,9 +2,11 @@
 // accepted state (the next RK4 step's first stage) or, without it, from the state itself:
 // two paths that must give one summary.
 
-#include <catch2/catch.hpp>
+#include "dynamics/run_monitor.h"
+
 #include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
 
@@ -12,7 +14,6 @@
 #include "dynamics/class1.h"
 #include "dynamics/initial_state.h"
 #include "dynamics/integrator_policy.h"
-#include "dynamics/run_monitor.h"
 #include "dynamics/simulation.h"
 #include "dynamics/structure_model.h"
 
@@ -20,7 +21,9 @@ namespace tbridge {
 namespace {
 
 // The largest relative difference between a and b, over all entries.
-double Gap(double a, double b) { return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-300}); }
+double Gap(double a, double b) {
+  return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-300});
+}
 
 void CheckOneSummary(const std::string& label, double damping, const std::vector<int>& pinned) {
   INFO(label);
@@ -58,8 +61,10 @@ void CheckOneSummary(const std::string& label, double damping, const std::vector
     worst = std::max({worst, Gap(a.peak_string_tension[k], b.peak_string_tension[k]),
                       Gap(a.min_string_strain[k], b.min_string_strain[k])});
   }
-  worst = std::max({worst, Gap(a.max_string_stress, b.max_string_stress), Gap(a.energy.elastic_end, b.energy.elastic_end),
-                    Gap(a.energy.max_drift, b.energy.max_drift), Gap(a.max_bar_length_error, b.max_bar_length_error)});
+  worst = std::max({worst, Gap(a.max_string_stress, b.max_string_stress),
+                    Gap(a.energy.elastic_end, b.energy.elastic_end),
+                    Gap(a.energy.max_drift, b.energy.max_drift),
+                    Gap(a.max_bar_length_error, b.max_bar_length_error)});
   CHECK(worst <= tol);
   CHECK(a.slack.per_string == b.slack.per_string);  // counts: exactly
   CHECK(a.slack.total == b.slack.total);
@@ -68,7 +73,9 @@ void CheckOneSummary(const std::string& label, double damping, const std::vector
   CHECK(a.max_stress_time == b.max_stress_time);
 }
 
-TEST_CASE("run monitor: an engine's recorded string geometry gives the summary of the monitor's own pass") {
+TEST_CASE(
+    "run monitor: an engine's recorded string geometry gives the summary of the monitor's own "
+    "pass") {
   CheckOneSummary("damped MOTES prism", 10.0, {});
   CheckOneSummary("undamped", 0.0, {});
   // Nodes 1 and 7 pinned: string 1-7 moves nothing, so no engine evaluates it; the monitor
@@ -92,7 +99,8 @@ TEST_CASE("run monitor: the summary is the one recomputed from the run's every-s
   config.duration = 2.0;
   config.record.every = 1;
   config.record.nodes.clear();
-  for (int a = 1; a <= static_cast<int>(c.structure->nodes.size()); ++a) config.record.nodes.push_back(a);
+  for (int a = 1; a <= static_cast<int>(c.structure->nodes.size()); ++a)
+    config.record.nodes.push_back(a);
   const DynamicModel model = BuildStructureModel(*c.structure, ModelOptionsOf(config));
   const SimulationResult result = Simulate(model, config);
   const SimulationSummary& s = result.summary;
@@ -169,7 +177,8 @@ TEST_CASE("run monitor: the summary is the one recomputed from the run's every-s
     INFO("axis " << d);
     CHECK(s.peak_deck_displacement[d] == Approx(deck_peak[d]).epsilon(tol));
     const int a = s.peak_deck_node[d];
-    REQUIRE(std::find(model.deck_nodes.begin(), model.deck_nodes.end(), a) != model.deck_nodes.end());
+    REQUIRE(std::find(model.deck_nodes.begin(), model.deck_nodes.end(), a) !=
+            model.deck_nodes.end());
     const Eigen::Index row = std::lround(s.peak_deck_time[d] / config.dt);
     CHECK(std::abs(x(row, a, d) - model.positions(d, a)) == Approx(deck_peak[d]).epsilon(tol));
   }

@@ -1,12 +1,12 @@
 // The implicit SDIRK3 integrator: its Jacobian pattern and colouring, its order, agreement
 // with RK4, and steps far beyond RK4's stability limit on a stiff bridge.
 
-#include "bridge/design_model.h"
 #include "dynamics/sdirk.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "design/design.h"
@@ -15,9 +15,9 @@
 #include "dynamics/integrators.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
+#include "dynamics/rk4_support.h"
 #include "dynamics/simulation.h"
 #include "test_support.h"
-#include "dynamics/rk4_support.h"
 
 namespace tbridge {
 namespace {
@@ -30,8 +30,8 @@ Eigen::VectorXd Perturbed(const DynamicModel& m, double delta) {
   return InitialState(m, c);
 }
 
-Eigen::VectorXd RunSdirk(const DynamicModel& m, const Class1System& system, Eigen::VectorXd y, double dt,
-                         long steps, SdirkStats* stats = nullptr) {
+Eigen::VectorXd RunSdirk(const DynamicModel& m, const Class1System& system, Eigen::VectorXd y,
+                         double dt, long steps, SdirkStats* stats = nullptr) {
   Class1Ode ode(system);
   Sdirk3 sdirk(CouplingOf(m), system.state_size());
   for (long k = 0; k < steps; ++k) sdirk.Step(ode, k * dt, dt, y);
@@ -116,8 +116,9 @@ TEST_CASE("SDIRK3 steps 10x past RK4's stability limit on n = 6 and stays bounde
   SdirkStats stats;
   const Eigen::VectorXd y = RunSdirk(m, system, y0, dt, 2000, &stats);
   const double moved = (y - y0).head(system.coordinates()).cwiseAbs().maxCoeff();
-  INFO("largest motion " << moved << " m; " << stats.jacobians << " Jacobians, " << stats.newton_iterations
-                         << " Newton iterations in " << stats.steps << " steps");
+  INFO("largest motion " << moved << " m; " << stats.jacobians << " Jacobians, "
+                         << stats.newton_iterations << " Newton iterations in " << stats.steps
+                         << " steps");
   // A 1 mm perturbation of a stable equilibrium cannot move any node by more than a few mm.
   CHECK(moved < 5e-3);
   // The Jacobian is reused across steps: far fewer estimates than steps.
@@ -143,21 +144,28 @@ TEST_CASE("where Newton fails across a slack kink, SDIRK3 halves the step and ca
   Class1Ode ode(system);
   Sdirk3 strict(CouplingOf(m), system.state_size(), no_split);
   Eigen::VectorXd y = y0;
-  CHECK_THROWS_AS([&] { for (long k = 0; k < steps; ++k) strict.Step(ode, k * dt, dt, y); }(), ModelError);
+  CHECK_THROWS_AS(
+      [&] {
+        for (long k = 0; k < steps; ++k) strict.Step(ode, k * dt, dt, y);
+      }(),
+      ModelError);
 
   SdirkStats stats;
   const Eigen::VectorXd split = RunSdirk(m, system, y0, dt, steps, &stats);
   const Eigen::VectorXd rk4 = RunRk4(system, y0, 2.5e-6, 20000);
   const double error = (split - rk4).head(system.coordinates()).cwiseAbs().maxCoeff();
   const double moved = (rk4 - y0).head(system.coordinates()).cwiseAbs().maxCoeff();
-  INFO(stats.halvings << " halvings; position error " << error << " m of a " << moved << " m motion");
+  INFO(stats.halvings << " halvings; position error " << error << " m of a " << moved
+                      << " m motion");
   CHECK(stats.halvings > 0);
   CHECK(stats.steps > steps);  // the halves count as steps
   // Against SDIRK3 at half the step, which needs no split: the split run is as close to the
   // fine RK4 run (measured 0.027 m against 0.029 m). 1.5x leaves room for the sensitivity of
   // slack bouncing (the n = 2 test above); a split that lost the motion would be far off.
-  const double half_step_error =
-      (RunSdirk(m, system, y0, 0.5 * dt, 2 * steps) - rk4).head(system.coordinates()).cwiseAbs().maxCoeff();
+  const double half_step_error = (RunSdirk(m, system, y0, 0.5 * dt, 2 * steps) - rk4)
+                                     .head(system.coordinates())
+                                     .cwiseAbs()
+                                     .maxCoeff();
   CHECK(error < 1.5 * half_step_error);
   CHECK(error < 0.15 * moved);
 }

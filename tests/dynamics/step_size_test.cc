@@ -1,19 +1,18 @@
 // The highest linearised frequency by power iteration against the dense modal analysis.
 
-#include "bridge/design_model.h"
 #include "dynamics/step_size.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "dynamics/integrators.h"
-#include "dynamics/workspace.h"
-
+#include "bridge/design_model.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "dynamics/class1.h"
+#include "dynamics/integrators.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
+#include "dynamics/workspace.h"
 
 namespace tbridge {
 namespace {
@@ -29,7 +28,8 @@ TEST_CASE("power iteration finds the modal analysis's highest frequency") {
     const ModalResult modes = ComputeModes(m);
     const double dense = Rk4StableStep(modes);
     INFO("n = " << n << ": omega_max " << bound.omega_max << " rad/s after " << bound.iterations
-                << " iterations; RK4 limits " << Rk4StepLimit(bound.omega_max) << " and " << dense << " s");
+                << " iterations; RK4 limits " << Rk4StepLimit(bound.omega_max) << " and " << dense
+                << " s");
     CHECK(bound.converged);
     // The two differ only by the forward-difference error of the Jacobian product (~1e-7
     // relative) and the power iteration's stopping rule (1e-4): 1e-3 covers both.

@@ -18,7 +18,8 @@
 namespace tbridge {
 namespace {
 
-DynamicsConfig Run(double duration, double dt, double delta, IntegratorKind integrator = IntegratorKind::kRk4) {
+DynamicsConfig Run(double duration, double dt, double delta,
+                   IntegratorKind integrator = IntegratorKind::kRk4) {
   DynamicsConfig c;
   c.duration = duration;
   c.dt = dt;
@@ -38,8 +39,9 @@ double Rk4Limit(const DynamicModel& model) {
 
 void Describe(const std::string& what, const SimulationSummary& s) {
   UNSCOPED_INFO(what << ": " << s.steps << " steps, bar-length error " << s.max_bar_length_error
-                     << ", energy drift " << s.energy.max_drift << " (final " << s.energy.final_drift
-                     << "), slack transitions " << s.slack.total << ", wall " << s.wall_seconds << " s");
+                     << ", energy drift " << s.energy.max_drift << " (final "
+                     << s.energy.final_drift << "), slack transitions " << s.slack.total
+                     << ", wall " << s.wall_seconds << " s");
 }
 
 TEST_CASE("1e6 RK4 steps: bar lengths and energy stay bounded", "[stress]") {
@@ -151,7 +153,7 @@ TEST_CASE("n = 12: design and a short run with the automatic integrator", "[stre
   // At rest only the design's equilibrium residual and Newton's tolerance move anything:
   // measured 1.3e-6 relative; a hundredth of the default guard bounds it.
   CHECK(s.max_bar_length_error < 1e-5);
-  CHECK(s.slack.total == 0);             // nothing moved enough to slacken a string
+  CHECK(s.slack.total == 0);  // nothing moved enough to slacken a string
 }
 
 TEST_CASE("a step too large stops with the step, the time and a safe dt", "[stress]") {

@@ -1,8 +1,8 @@
 // The nonlinear static solve on structures small enough to solve by hand: large deflections,
 // a string going slack and a rigid bar that rotates, each against its closed form.
 
-#include <catch2/catch.hpp>
 #include <Eigen/Core>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
@@ -82,7 +82,8 @@ TEST_CASE("a string in line with the load goes slack where its closed form says"
     double p, d;  // load [N], deflection by the closed form [m]
     int slack;
   };
-  for (const Case& c : {Case{3000, 3000 / (k1 + k2), 0}, Case{10000, 10000 / k1 - (1 - rest1), 1}}) {
+  for (const Case& c :
+       {Case{3000, 3000 / (k1 + k2), 0}, Case{10000, 10000 / k1 - (1 - rest1), 1}}) {
     const StaticResult r = SolveStatic(m, start, Down(m, 2, 0), Down(m, 2, c.p));
     INFO("P = " << c.p << " N: " << r.message << "; node 2 at y = " << r.state.nodes(1, 2));
     REQUIRE(r.converged);
@@ -122,7 +123,8 @@ TEST_CASE("a boom held by a string rotates to its moment balance", "[statics]") 
   StaticModel m = Planar(xy, {true, false, true});
   m.structure.bars.push_back({0, 1, "boom"});
   AddString(m, 1, 2, k, rest);
-  const StaticState start = StateAt(m, m.structure.nodes, Eigen::VectorXd::Constant(1, b0.compression), Down(m, 1, b0.load));
+  const StaticState start = StateAt(
+      m, m.structure.nodes, Eigen::VectorXd::Constant(1, b0.compression), Down(m, 1, b0.load));
   const StaticResult r = SolveStatic(m, start, Down(m, 1, b0.load), Down(m, 1, b1.load));
   INFO(r.message << "; B at (" << r.state.nodes(0, 1) << ", " << r.state.nodes(1, 1) << ")");
   REQUIRE(r.converged);
@@ -132,7 +134,8 @@ TEST_CASE("a boom held by a string rotates to its moment balance", "[statics]") 
   CHECK(r.state.bar_compression[0] == Approx(b1.compression).epsilon(1e-8));
   CHECK(r.state.string_tension[0] == Approx(b1.tension).epsilon(1e-8));
   // The pin takes the bar's push along the bar, the anchor the string's pull.
-  const Eigen::Vector2d reaction_a = b1.compression * b1.b, reaction_c = b1.tension * (c - b1.b).normalized();
+  const Eigen::Vector2d reaction_a = b1.compression * b1.b,
+                        reaction_c = b1.tension * (c - b1.b).normalized();
   CHECK((r.state.reactions.col(0).head<2>() - reaction_a).norm() <= 1e-8 * b1.compression);
   CHECK((r.state.reactions.col(2).head<2>() - reaction_c).norm() <= 1e-8 * b1.tension);
 }

@@ -4,13 +4,13 @@
 
 #include "statics/static_solve.h"
 
-#include <catch2/catch.hpp>
 #include <Eigen/Dense>
+#include <catch2/catch.hpp>
 #include <vector>
 
 #include "core/config.h"
-#include "test_support.h"
 #include "design/static_model.h"
+#include "test_support.h"
 #include "verify/static_check.h"
 
 namespace tbridge {
@@ -21,8 +21,8 @@ namespace {
 // Equilibrium of each free node: strings' tangent stiffness k u u^T + (T/s)(I - u u^T), bars'
 // geometric term (P/l)(I - u u^T) with their force P u on the far end (compression pushes the
 // ends apart) and dP u; each bar keeps its length, u . (dx_j - dx_i) = 0.
-Eigen::Matrix3Xd LinearResponse(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const Eigen::VectorXd& P,
-                                const Eigen::Matrix3Xd& rhs) {
+Eigen::Matrix3Xd LinearResponse(const StaticModel& m, const Eigen::Matrix3Xd& nodes,
+                                const Eigen::VectorXd& P, const Eigen::Matrix3Xd& rhs) {
   const Structure& s = m.structure;
   const int dim = s.dim(), nb = s.num_bars();
   std::vector<int> first(s.num_nodes(), -1);
@@ -38,7 +38,8 @@ Eigen::Matrix3Xd LinearResponse(const StaticModel& m, const Eigen::Matrix3Xd& no
     for (int p = 0; p < 2; ++p) {
       for (int q = 0; q < 2; ++q) {
         if (first[ends[p]] < 0 || first[ends[q]] < 0) continue;
-        K.block(first[ends[p]], first[ends[q]], dim, dim) += (p == q ? 1.0 : -1.0) * B.topLeftCorner(dim, dim);
+        K.block(first[ends[p]], first[ends[q]], dim, dim) +=
+            (p == q ? 1.0 : -1.0) * B.topLeftCorner(dim, dim);
       }
     }
   };
@@ -49,7 +50,8 @@ Eigen::Matrix3Xd LinearResponse(const StaticModel& m, const Eigen::Matrix3Xd& no
     const double len = d.norm(), t = m.string_stiffness[k] * (len - m.string_rest_length[k]);
     REQUIRE(t > 0);  // every string taut: no slack switch within a small load
     const Eigen::Vector3d u = d / len;
-    add_pair(e.i, e.j, m.string_stiffness[k] * u * u.transpose() + t / len * (I - u * u.transpose()));
+    add_pair(e.i, e.j,
+             m.string_stiffness[k] * u * u.transpose() + t / len * (I - u * u.transpose()));
   }
   const double k_ref = K.diagonal().cwiseAbs().maxCoeff();
   for (int a = 0; a < nb; ++a) {
@@ -63,8 +65,10 @@ Eigen::Matrix3Xd LinearResponse(const StaticModel& m, const Eigen::Matrix3Xd& no
     // one scale (unscaled, its constraint part is 1e-8 of the stiffness, below the rank
     // threshold of a pivoting LU).
     const Eigen::VectorXd w = k_ref * u.head(dim);
-    if (first[e.j] >= 0) K.block(first[e.j], n + a, dim, 1) -= w, K.block(n + a, first[e.j], 1, dim) += w.transpose();
-    if (first[e.i] >= 0) K.block(first[e.i], n + a, dim, 1) += w, K.block(n + a, first[e.i], 1, dim) -= w.transpose();
+    if (first[e.j] >= 0)
+      K.block(first[e.j], n + a, dim, 1) -= w, K.block(n + a, first[e.j], 1, dim) += w.transpose();
+    if (first[e.i] >= 0)
+      K.block(first[e.i], n + a, dim, 1) += w, K.block(n + a, first[e.i], 1, dim) -= w.transpose();
   }
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (first[v] >= 0) b.segment(first[v], dim) = rhs.col(v).head(dim);
@@ -79,8 +83,8 @@ Eigen::Matrix3Xd LinearResponse(const StaticModel& m, const Eigen::Matrix3Xd& no
 }
 
 // Net force of loads and members on every node (the out-of-balance of a state).
-Eigen::Matrix3Xd NetForce(const StaticModel& m, const Eigen::Matrix3Xd& nodes, const Eigen::VectorXd& P,
-                          const Eigen::Matrix3Xd& loads) {
+Eigen::Matrix3Xd NetForce(const StaticModel& m, const Eigen::Matrix3Xd& nodes,
+                          const Eigen::VectorXd& P, const Eigen::Matrix3Xd& loads) {
   const Structure& s = m.structure;
   Eigen::Matrix3Xd net = loads;
   for (int k = 0; k < s.num_strings(); ++k) {
@@ -111,7 +115,8 @@ void CheckSmallLoad(const Design& d, const Eigen::Vector3d& direction) {
   const StaticResult r = SolveStatic(model, start, d.loads, d.loads + extra);
   REQUIRE(r.converged);
   // The linear prediction from the start state, its own small imbalance included.
-  const Eigen::Matrix3Xd dx_lin = LinearResponse(model, s.nodes, P, NetForce(model, s.nodes, P, d.loads) + extra);
+  const Eigen::Matrix3Xd dx_lin =
+      LinearResponse(model, s.nodes, P, NetForce(model, s.nodes, P, d.loads) + extra);
   const Eigen::Matrix3Xd dx = r.state.nodes - s.nodes;
   INFO("|dx| " << dx.norm() << " m, |dx - dx_lin| " << (dx - dx_lin).norm() << " m");
   CHECK(dx.norm() > 0);
@@ -169,7 +174,8 @@ TEST_CASE("the static tangent is the first-order change of the nonlinear solve")
   REQUIRE(up.converged);
   REQUIRE(down.converged);
   Eigen::VectorXd fd(dx.size());
-  fd << up.state.bar_compression - down.state.bar_compression, up.state.string_tension - down.state.string_tension;
+  fd << up.state.bar_compression - down.state.bar_compression,
+      up.state.string_tension - down.state.string_tension;
   fd /= 2 * h;
   INFO("|dx| " << dx.norm() << " N, |fd - dx| " << (fd - dx).norm() << " N");
   CHECK((fd - dx).norm() <= 1e-6 * dx.norm());
@@ -184,7 +190,8 @@ TEST_CASE("the static tangent is the first-order change of the nonlinear solve")
   const StaticResult reused = SolveStatic(model, start, d.loads, d.loads + extra, &tangent);
   REQUIRE(plain.converged);
   CHECK(reused.newton_iterations == plain.newton_iterations);
-  CHECK((reused.state.nodes - plain.state.nodes).cwiseAbs().maxCoeff() <= 1e-12 * d.config.bridge.span);
+  CHECK((reused.state.nodes - plain.state.nodes).cwiseAbs().maxCoeff() <=
+        1e-12 * d.config.bridge.span);
   CHECK((reused.state.bar_compression - plain.state.bar_compression).cwiseAbs().maxCoeff() <=
         1e-12 * plain.state.bar_compression.cwiseAbs().maxCoeff());
 }

@@ -34,7 +34,8 @@ TEST_CASE("a binding frequency constraint picks the lightest n that still meets 
   // SPEC.md §9: lowest linearised frequency 100.8, 81.7, 77.2 rad/s for n = 1, 2, 3. It falls
   // with n while the mass falls too, so 79 rad/s admits n = 1, 2 only and the choice is n = 2,
   // the feasible n nearest the constraint.
-  const SweepSpec spec = Spec(R"({"n": [1, 2, 3, 4], "constraints": {"min_first_frequency_rad_s": 79}})");
+  const SweepSpec spec =
+      Spec(R"({"n": [1, 2, 3, 4], "constraints": {"min_first_frequency_rad_s": 79}})");
   const std::vector<CandidateRow> rows = RunAll(spec);
   REQUIRE(rows.size() == 4);
   // Tolerance 0.1 rad/s: SPEC.md prints these frequencies to one decimal.
@@ -43,7 +44,8 @@ TEST_CASE("a binding frequency constraint picks the lightest n that still meets 
   CHECK(rows[2].first_frequency_rad_s.value() == Approx(77.2).margin(0.1));
   int expected = -1;
   for (const CandidateRow& r : rows) {
-    if (*r.first_frequency_rad_s >= 79 && (expected < 0 || r.objective < rows[expected].objective)) {
+    if (*r.first_frequency_rad_s >= 79 &&
+        (expected < 0 || r.objective < rows[expected].objective)) {
       expected = r.candidate.index;
     }
   }
@@ -56,14 +58,17 @@ TEST_CASE("a binding frequency constraint picks the lightest n that still meets 
   CHECK(rows[2].violated == std::vector<std::string>{"min_first_frequency"});
 }
 
-TEST_CASE("where prestrain makes frequency rise with n, a binding constraint picks the smallest feasible n",
-          "[sweep]") {
+TEST_CASE(
+    "where prestrain makes frequency rise with n, a binding constraint picks the smallest feasible "
+    "n",
+    "[sweep]") {
   // Table 6's experiment: deck strings at rest length 0.95 x length with their design area
   // (keep_area). SPEC.md §9: the lowest frequency is then 134.6, 142.5, 155.2 rad/s for
   // n = 1, 2, 3: it rises with n. 30 kg per joint makes the objective grow from n = 3 on
   // (1302, 1363, 2145 kg for n = 3, 4, 5), so 160 rad/s excludes n <= 3, the unconstrained
   // optimum, and the lightest feasible candidate is the smallest feasible n.
-  const SweepSpec spec = Spec(R"({"n": [1, 2, 3, 4, 5], "deck_prestrain": [0.95], "prestrain_sizing": "keep_area",
+  const SweepSpec spec =
+      Spec(R"({"n": [1, 2, 3, 4, 5], "deck_prestrain": [0.95], "prestrain_sizing": "keep_area",
       "joint_mass": {"per_node_kg": 30}, "constraints": {"min_first_frequency_rad_s": 160}})");
   const std::vector<CandidateRow> rows = RunAll(spec);
   REQUIRE(rows.size() == 5);
@@ -73,8 +78,10 @@ TEST_CASE("where prestrain makes frequency rise with n, a binding constraint pic
   CHECK(rows[2].first_frequency_rad_s.value() == Approx(155.2).margin(0.1));
   int smallest_feasible_n = 0;
   for (size_t k = 0; k < rows.size(); ++k) {
-    if (k > 0) CHECK(*rows[k].first_frequency_rad_s > *rows[k - 1].first_frequency_rad_s);  // the premise
-    if (*rows[k].first_frequency_rad_s >= 160 && smallest_feasible_n == 0) smallest_feasible_n = rows[k].candidate.n;
+    if (k > 0)
+      CHECK(*rows[k].first_frequency_rad_s > *rows[k - 1].first_frequency_rad_s);  // the premise
+    if (*rows[k].first_frequency_rad_s >= 160 && smallest_feasible_n == 0)
+      smallest_feasible_n = rows[k].candidate.n;
   }
   CHECK(rows[2].objective < rows[3].objective);  // the unconstrained optimum is infeasible
   const SweepChoice c = Choose(rows);
@@ -159,13 +166,15 @@ TEST_CASE("without joints or constraints the mass decides at the largest n", "[s
     config.bridge.n = r.candidate.n;
     const Design d = RunDesign(config);
     const test::MemberMasses members = test::MassFromMembers(d);
-    INFO("n = " << r.candidate.n << ": from the members, bars " << members.bars << ", strings " << members.strings
-                << ", deck strings " << members.deck_strings << " kg");
+    INFO("n = " << r.candidate.n << ": from the members, bars " << members.bars << ", strings "
+                << members.strings << ", deck strings " << members.deck_strings << " kg");
     CHECK(r.bars == Approx(members.bars).epsilon(1e-9));
     CHECK(r.strings == Approx(members.strings).epsilon(1e-9));
     CHECK(r.deck_strings == Approx(members.deck_strings).epsilon(1e-9));
     CHECK(test::DeckBeamStress(d, r.deck_beams) == Approx(test::WorkingStress(d)).epsilon(1e-9));
-    CHECK(r.total == Approx(members.bars + members.strings + members.deck_strings + r.deck_beams).epsilon(1e-9));
+    CHECK(
+        r.total ==
+        Approx(members.bars + members.strings + members.deck_strings + r.deck_beams).epsilon(1e-9));
   }
 }
 

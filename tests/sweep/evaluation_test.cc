@@ -14,8 +14,8 @@
 #include "dynamics/model.h"
 #include "sweep/candidate.h"
 #include "sweep/first_frequency.h"
-#include "verify/verified_design.h"
 #include "test_support.h"
+#include "verify/verified_design.h"
 
 namespace tbridge {
 namespace {
@@ -50,7 +50,8 @@ TEST_CASE("The sparse solver finds the dense lowest frequency", "[sweep]") {
   CHECK(LowestFrequency(small).omega_rad_s == Approx(81.7).margin(0.05));
 }
 
-TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "[sweep][stability]") {
+TEST_CASE("an unstable candidate is no design: infeasible, its note says why",
+          "[sweep][stability]") {
   // Without deck-string prestress every bar of the planar bridge is an inverted pendulum
   // (docs/topology.md); tbridge design refuses it, and so does the sweep.
   json root = {{"bridge", {{"beta_deg", 10}}},
@@ -65,7 +66,8 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why", "
   CHECK_THAT(row.note, Catch::Contains("unstable"));
 }
 
-TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its note says why", "[sweep]") {
+TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its note says why",
+          "[sweep]") {
   // The engineering defaults at n = 1 with a dynamic-run budget below the walking load's
   // 80 000 steps of 5 members: the design's dynamic check is not run, so its verdict is
   // INCOMPLETE. The same candidate with the default budget is feasible: the budget alone
@@ -74,7 +76,8 @@ TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its n
   json root = {{"bridge", {{"beta_deg", 10}}},
                {"sweep",
                 {{"n", {1}},
-                 {"constraints", {{"bar_capacity_during_motion", false}, {"no_slack_under_service", false}}}}}};
+                 {"constraints",
+                  {{"bar_capacity_during_motion", false}, {"no_slack_under_service", false}}}}}};
   const SweepSpec full = ParseSweepSpec(root);
   root["loads"] = {{"dynamic_max_member_steps", 1000.0}};
   const SweepSpec starved = ParseSweepSpec(root);
@@ -92,7 +95,8 @@ TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its n
   CHECK_THAT(skipped.note, Catch::Contains("skipped"));
 }
 
-TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass", "[sweep]") {
+TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass",
+          "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}},
                {"sweep", test::PaperSweep({{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}})}};
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
@@ -108,7 +112,8 @@ TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and 
   CHECK(strained.deck_string_area_factor == Approx(factor).epsilon(1e-12));
   CHECK(strained.deck_strings == Approx(design.deck_strings * factor).epsilon(1e-12));
   CHECK(strained.prestress == Approx(sigma_w).epsilon(1e-12));
-  CHECK(strained.total == Approx(design.total + strained.deck_strings - design.deck_strings).epsilon(1e-12));
+  CHECK(strained.total ==
+        Approx(design.total + strained.deck_strings - design.deck_strings).epsilon(1e-12));
   CHECK(strained.bars == design.bars);
   // r = 0.9999 asks for less than the design prestress: area kept, stress E (1/r - 1).
   CHECK(light.deck_string_area_factor == 1.0);
@@ -128,8 +133,10 @@ TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and 
   CHECK(EvaluateCandidate(keep, grid[0]).feasible);  // the design state sits at sigma_w
 }
 
-TEST_CASE("the sweep's dynamic constraints read the paper's travelling load from the design's dynamic check",
-          "[sweep]") {
+TEST_CASE(
+    "the sweep's dynamic constraints read the paper's travelling load from the design's dynamic "
+    "check",
+    "[sweep]") {
   // The paper's outer loop at n = 2: the minimum-mass design, its dynamic check the paper's
   // travelling load (f on each deck station for 0.25 s, eqs 50-51) by RK4.
   json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}})}};
@@ -170,8 +177,10 @@ TEST_CASE("the sweep's dynamic constraints read the paper's travelling load from
   CHECK(row.feasible);  // max_dynamic_stress_ratio 10 holds; the rest are off (PaperSweep)
 }
 
-TEST_CASE("a verified candidate reads its own dynamic check and a prestrained one is checked again", "[sweep]") {
-  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", {{"n", {1}}, {"deck_prestrain", {1.0, 0.99}}}}};
+TEST_CASE("a verified candidate reads its own dynamic check and a prestrained one is checked again",
+          "[sweep]") {
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"sweep", {{"n", {1}}, {"deck_prestrain", {1.0, 0.99}}}}};
   const SweepSpec spec = ParseSweepSpec(root);
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
   REQUIRE(grid.size() == 2);
@@ -181,7 +190,8 @@ TEST_CASE("a verified candidate reads its own dynamic check and a prestrained on
   // The row reports the design's own check: its largest deck peak and bar utilisation, to the bit.
   double deck = 0, bars = 0;
   for (const DynamicRun& r : design.dynamics.runs) deck = std::max(deck, r.peak_deck_displacement);
-  for (size_t j = 0; j < design.bars.size(); ++j) bars = std::max(bars, design.dynamics.members[j].utilisation);
+  for (size_t j = 0; j < design.bars.size(); ++j)
+    bars = std::max(bars, design.dynamics.members[j].utilisation);
   CHECK(own.peak_deck_displacement == std::optional<double>(deck));
   CHECK(own.dynamic_bar_utilisation == std::optional<double>(bars));
   CHECK_THAT(own.dynamic_runs.value_or(""), Catch::StartsWith("moving_load: "));
@@ -189,12 +199,14 @@ TEST_CASE("a verified candidate reads its own dynamic check and a prestrained on
   // on the changed bridge, sees move less.
   const CandidateRow strained = EvaluateCandidate(spec, grid[1]);
   REQUIRE(strained.dynamic_check_done == std::optional<bool>(true));
-  INFO("deck peak " << deck << " m, prestrained " << strained.peak_deck_displacement.value_or(0) << " m");
+  INFO("deck peak " << deck << " m, prestrained " << strained.peak_deck_displacement.value_or(0)
+                    << " m");
   CHECK(strained.deck_string_area_factor > 1);
   CHECK(strained.peak_deck_displacement.value_or(1) < deck);
 }
 
-TEST_CASE("an unverified candidate whose dynamic run is not done is infeasible, its note says why", "[sweep]") {
+TEST_CASE("an unverified candidate whose dynamic run is not done is infeasible, its note says why",
+          "[sweep]") {
   // The paper's n = 2 with a budget below its travelling load's run: the dynamic check leaves
   // the run undone, so the dynamic constraint cannot be shown and the candidate is infeasible.
   json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}})}};
@@ -206,12 +218,14 @@ TEST_CASE("an unverified candidate whose dynamic run is not done is infeasible, 
   REQUIRE(row.ok);
   CHECK_FALSE(row.feasible);
   CHECK(row.dynamic_check_done == std::optional<bool>(false));
-  CHECK(std::find(row.violated.begin(), row.violated.end(), std::string(kDynamicCheckDone)) != row.violated.end());
+  CHECK(std::find(row.violated.begin(), row.violated.end(), std::string(kDynamicCheckDone)) !=
+        row.violated.end());
   CHECK_THAT(row.note, Catch::Contains("dynamic check not complete") && Catch::Contains("skipped"));
 }
 
 TEST_CASE("a class-k candidate runs the paper's travelling load in the dynamic check", "[sweep]") {
-  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}, {"p", {2}}})}};
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"sweep", test::PaperSweep({{"n", {2}}, {"p", {2}}})}};
   root["sweep"]["report"] = {{"dynamic_check", true}};
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
   const CandidateRow row = EvaluateCandidate(spec, EnumerateCandidates(spec.sweep)[0]);

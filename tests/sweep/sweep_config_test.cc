@@ -1,6 +1,8 @@
 // Strict parsing of the "sweep" section and of --shard: bad input names the key, the value
 // and what is allowed.
 
+#include "sweep/sweep_config.h"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -9,16 +11,13 @@
 
 #include "core/error.h"
 #include "sweep/sweep.h"
-#include "sweep/sweep_config.h"
 
 namespace tbridge {
 namespace {
 
 using nlohmann::json;
 
-json Base() {
-  return json::parse(R"({"bridge": {"beta_deg": 10}, "sweep": {"n": [1, 2, 3]}})");
-}
+json Base() { return json::parse(R"({"bridge": {"beta_deg": 10}, "sweep": {"n": [1, 2, 3]}})"); }
 
 // The message of the ConfigError that parsing `root` throws ("" when it parses).
 std::string ErrorOf(const json& root) {
@@ -30,8 +29,10 @@ std::string ErrorOf(const json& root) {
   return "";
 }
 
-TEST_CASE("the sweep's own travelling-load run of earlier versions is refused: each key names what replaced it",
-          "[sweep]") {
+TEST_CASE(
+    "the sweep's own travelling-load run of earlier versions is refused: each key names what "
+    "replaced it",
+    "[sweep]") {
   // Each old key, its value, and the key (or the reason for none) that replaced it.
   const std::vector<std::tuple<std::string, json, std::string>> replaced = {
       {"duration", 0.5, "loads.travelling_speed_m_s"},
@@ -46,15 +47,17 @@ TEST_CASE("the sweep's own travelling-load run of earlier versions is refused: e
     json j = Base();
     j["sweep"]["travelling_load"] = {{key, value}};
     INFO(key);
-    CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load." + key) && Catch::Contains(value.dump()) &&
-                               Catch::Contains(by));
+    CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.travelling_load." + key) &&
+                               Catch::Contains(value.dump()) && Catch::Contains(by));
   }
   json j = Base();
   j["sweep"]["travelling_load"] = json::object();
-  CHECK_THAT(ErrorOf(j), Catch::Contains("'sweep.travelling_load'") && Catch::Contains("loads.cases"));
+  CHECK_THAT(ErrorOf(j),
+             Catch::Contains("'sweep.travelling_load'") && Catch::Contains("loads.cases"));
   j = Base();
   j["sweep"]["report"] = {{"travelling_load", true}};
-  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.report.travelling_load") && Catch::Contains("sweep.report.dynamic_check"));
+  CHECK_THAT(ErrorOf(j), Catch::Contains("sweep.report.travelling_load") &&
+                             Catch::Contains("sweep.report.dynamic_check"));
 }
 
 TEST_CASE("a minimal sweep config resolves its defaults", "[sweep]") {
@@ -137,7 +140,8 @@ TEST_CASE("shard specs are i/N with 1 <= i <= N", "[sweep]") {
   CHECK_FALSE(s.Has(2));
   for (const char* bad : {"3/2", "0/2", "a/b", "1/0", "1", "/2", "1/2/3", "-1/2", ""}) {
     INFO(bad);
-    CHECK_THROWS_WITH(ParseShard(bad, "--shard"), Catch::Contains("--shard") && Catch::Contains("i/N"));
+    CHECK_THROWS_WITH(ParseShard(bad, "--shard"),
+                      Catch::Contains("--shard") && Catch::Contains("i/N"));
   }
 }
 

@@ -2,6 +2,8 @@
 // order and unchanged, through a ring far smaller than the run; a sink's failure on the writer
 // thread reaches the caller; and the CLI's streamed CSV agrees with the in-memory history.
 
+#include "tools/background_history.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -15,7 +17,6 @@
 #include "csv_rows.h"
 #include "dynamics/simulation.h"
 #include "dynamics/structure_model.h"
-#include "tools/background_history.h"
 
 namespace tbridge {
 namespace {
@@ -60,7 +61,8 @@ TEST_CASE("background history: 10000 rows through a ring of 8 arrive whole and i
   bool exact = true;  // copied doubles: bit for bit, no tolerance
   for (long r = 0; r < n; ++r) {
     const std::vector<double>& row = kept.rows[static_cast<size_t>(r)];
-    exact = exact && row == std::vector<double>{0.5 * r, 1.0 * r, 2.0 * r, 3.0 * r, -1.0 * r, -2.0 * r, -3.0 * r};
+    exact = exact && row == std::vector<double>{0.5 * r,  1.0 * r,  2.0 * r, 3.0 * r,
+                                                -1.0 * r, -2.0 * r, -3.0 * r};
   }
   CHECK(exact);
 }
@@ -89,21 +91,24 @@ TEST_CASE("background history: a sink's failure on the writer thread is thrown b
 TEST_CASE("simulate: the streamed history.csv of the MOTES prism is the in-memory history") {
   const std::string config = TBRIDGE_SOURCE_DIR "/configs/motes_prism.json";
   const test::fs::path dir = test::FreshDir("background_prism");
-  const test::CliResult r =
-      test::RunTbridge(dir, "simulate " + test::Quote(config) + " -o " + test::Quote((dir / "out").string()));
+  const test::CliResult r = test::RunTbridge(
+      dir, "simulate " + test::Quote(config) + " -o " + test::Quote((dir / "out").string()));
   INFO(r.err);
   REQUIRE(r.code == 0);
-  const std::vector<std::vector<double>> csv = test::ReadCsvRows((dir / "out" / "history.csv").string());
+  const std::vector<std::vector<double>> csv =
+      test::ReadCsvRows((dir / "out" / "history.csv").string());
   const Config c = LoadConfig(config);
   const DynamicModel model = BuildStructureModel(*c.structure, ModelOptionsOf(*c.dynamics));
   const SimulationResult memory = Simulate(model, *c.dynamics);
-  REQUIRE(static_cast<long>(csv.size()) == memory.history.rows());  // 501 records: t = 0 and every 10th step
+  REQUIRE(static_cast<long>(csv.size()) ==
+          memory.history.rows());  // 501 records: t = 0 and every 10th step
   double worst = 0;
   for (Eigen::Index k = 0; k < memory.history.rows(); ++k) {
     REQUIRE(static_cast<long>(csv[static_cast<size_t>(k)].size()) == memory.history.cols());
     for (Eigen::Index j = 0; j < memory.history.cols(); ++j) {
       const double v = memory.history(k, j);
-      worst = std::max(worst, std::abs(csv[static_cast<size_t>(k)][static_cast<size_t>(j)] - v) / std::max(std::abs(v), 1e-300));
+      worst = std::max(worst, std::abs(csv[static_cast<size_t>(k)][static_cast<size_t>(j)] - v) /
+                                  std::max(std::abs(v), 1e-300));
     }
   }
   // 12 significant digits: a printed value is within half a unit in its 12th digit, 5e-12 relative.

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 #include <tuple>
 
@@ -33,16 +33,19 @@ void WriteJson(const fs::path& path, const json& j) { std::ofstream(path) << j.d
 fs::path DesignFile(const fs::path& dir, const std::string& name) {
   const fs::path design = dir / "design.json";
   const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name;
-  const int code = RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code;
+  const int code =
+      RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code;
   // Written whatever the verdict; the exit says it (1 for the paper's design, which fails).
   REQUIRE(code == tbridge::test::VerdictExit(design));
   return design;
 }
 
-TEST_CASE("check: the written default design, checked from its file, gives the design's checks", "[tools]") {
+TEST_CASE("check: the written default design, checked from its file, gives the design's checks",
+          "[tools]") {
   const fs::path dir = FreshDir("check_default");
   const fs::path design = DesignFile(dir, "default.json"), checked = dir / "checked.json";
-  const auto r = RunTbridge(dir, "check " + Quote(design.string()) + " -o " + Quote(checked.string()));
+  const auto r =
+      RunTbridge(dir, "check " + Quote(design.string()) + " -o " + Quote(checked.string()));
   INFO(r.err);
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Contains("PASS") && Catch::Contains("read from its file"));
@@ -68,13 +71,15 @@ TEST_CASE("check: the written default design, checked from its file, gives the d
   double largest = 0;
   for (size_t k = 0; k < a["members"].size(); ++k) {
     INFO("member " << a["members"][k]["name"]);
-    CHECK(b["members"][k]["utilisation"].get<double>() <= a["members"][k]["utilisation"].get<double>() + 1e-9);
+    CHECK(b["members"][k]["utilisation"].get<double>() <=
+          a["members"][k]["utilisation"].get<double>() + 1e-9);
     largest = std::max(largest, b["members"][k]["utilisation"].get<double>());
   }
   CHECK(largest == Approx(a["utilisation_max"].get<double>()).epsilon(0.01));
 }
 
-TEST_CASE("check: an edited design file is refused with the key, and nothing is written", "[tools]") {
+TEST_CASE("check: an edited design file is refused with the key, and nothing is written",
+          "[tools]") {
   const fs::path dir = FreshDir("check_edited");
   const fs::path design = DesignFile(dir, "paper_n2.json"), out = dir / "checked.json";
   const json original = ReadJson(design);
@@ -84,9 +89,11 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     // (all three disagree with it, so the area is the key edited); refused naming the area and
     // the keys to set with it.
     json edited = original;
-    edited["members"][string_index]["area"] = 2 * original["members"][string_index]["area"].get<double>();
+    edited["members"][string_index]["area"] =
+        2 * original["members"][string_index]["area"].get<double>();
     WriteJson(dir / "area.json", edited);
-    const auto r = RunTbridge(dir, "check " + Quote((dir / "area.json").string()) + " -o " + Quote(out.string()));
+    const auto r = RunTbridge(
+        dir, "check " + Quote((dir / "area.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("members[" + std::to_string(string_index) + "].area") &&
                           Catch::Contains("set `radius`") && Catch::Contains("`stiffness`"));
@@ -162,7 +169,8 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     REQUIRE_FALSE(original["config"]["design"]["self_weight"].get<bool>());
     edited["config"]["design"]["self_weight"] = true;
     WriteJson(dir / "dead.json", edited);
-    const auto r = RunTbridge(dir, "check " + Quote((dir / "dead.json").string()) + " -o " + Quote(out.string()));
+    const auto r = RunTbridge(
+        dir, "check " + Quote((dir / "dead.json").string()) + " -o " + Quote(out.string()));
     INFO(r.err);
     CHECK(r.code != 2);
     CHECK_THAT(r.out, Catch::Contains("as built: reference state re-derived"));
@@ -175,9 +183,11 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     // The config's payload changed on the paper's design: its one case puts the payload into
     // the deck's own load (eq. 9), so it is checked under its own loads only.
     json edited = original;
-    edited["config"]["bridge"]["payload"] = 2 * original["config"]["bridge"]["payload"].get<double>();
+    edited["config"]["bridge"]["payload"] =
+        2 * original["config"]["bridge"]["payload"].get<double>();
     WriteJson(dir / "payload.json", edited);
-    const auto r = RunTbridge(dir, "check " + Quote((dir / "payload.json").string()) + " -o " + Quote(out.string()));
+    const auto r = RunTbridge(
+        dir, "check " + Quote((dir / "payload.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("'config.bridge.payload'"));
     CHECK_FALSE(fs::exists(out));
@@ -197,7 +207,8 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     json edited = original;
     edited["deck"]["section_mass"] = original["deck"]["section_mass"].get<double>() * (1 + 1e-9);
     WriteJson(dir / "deck.json", edited);
-    const auto r = RunTbridge(dir, "check " + Quote((dir / "deck.json").string()) + " -o " + Quote(out.string()));
+    const auto r = RunTbridge(
+        dir, "check " + Quote((dir / "deck.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("'deck.section_mass'") && Catch::Contains("tbridge design"));
     CHECK_FALSE(fs::exists(out));
@@ -207,13 +218,14 @@ TEST_CASE("check: an edited design file is refused with the key, and nothing is 
     json edited = original;
     edited["nodes"][3][1] = original["nodes"][3][1].get<double>() + 0.01;
     WriteJson(dir / "node.json", edited);
-    const auto r = RunTbridge(dir, "check " + Quote((dir / "node.json").string()) + " -o " + Quote(out.string()));
+    const auto r = RunTbridge(
+        dir, "check " + Quote((dir / "node.json").string()) + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("nodes[3]"));
   }
   {
-    const auto r = RunTbridge(dir, "check " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") + " -o " +
-                                       Quote(out.string()));
+    const auto r = RunTbridge(dir, "check " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") +
+                                       " -o " + Quote(out.string()));
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("a design file of tbridge design"));
   }
@@ -246,7 +258,8 @@ TEST_CASE(
   CHECK(checked["verdict"]["pass"] == false);
 }
 
-TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as built and FAILS", "[tools]") {
+TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as built and FAILS",
+          "[tools]") {
   // What an engineer asks of a supplier's thinner bar: area, radius and mass edited together
   // (the reader's own expressions), self-weight on (the default). Check keeps the rest lengths,
   // re-derives the reference state with the bar's new weight, says so, and fails the bar.
@@ -258,7 +271,9 @@ TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as bui
   int bar = 0;
   const int bars = original["topology"]["bars"].get<int>();
   for (int k = 1; k < bars; ++k) {
-    if (original["members"][k]["utilisation"].get<double>() > original["members"][bar]["utilisation"].get<double>()) bar = k;
+    if (original["members"][k]["utilisation"].get<double>() >
+        original["members"][bar]["utilisation"].get<double>())
+      bar = k;
   }
   REQUIRE(original["members"][bar]["utilisation"].get<double>() > 0.99);
   json edited = original;
@@ -266,12 +281,15 @@ TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as bui
   const double area = 0.8 * m["area"].get<double>();
   m["area"] = area;
   m["radius"] = std::sqrt(area / std::numbers::pi);
-  m["mass"] = original["config"]["material"]["density"].get<double>() * area * m["length"].get<double>();
+  m["mass"] =
+      original["config"]["material"]["density"].get<double>() * area * m["length"].get<double>();
   WriteJson(dir / "thinner.json", edited);
-  const auto r = RunTbridge(dir, "check " + Quote((dir / "thinner.json").string()) + " -o " + Quote(out.string()));
+  const auto r = RunTbridge(
+      dir, "check " + Quote((dir / "thinner.json").string()) + " -o " + Quote(out.string()));
   INFO(r.out << r.err);
   CHECK(r.code == 1);
-  CHECK_THAT(r.out, Catch::Contains("FAIL") && Catch::Contains("as built: reference state re-derived"));
+  CHECK_THAT(r.out,
+             Catch::Contains("FAIL") && Catch::Contains("as built: reference state re-derived"));
   const json checked = ReadJson(out);
   CHECK(checked["as_built"]["re_derived"] == true);
   // The bar is named among the edits, as an edited string is (told by its resistance in the file,
@@ -279,7 +297,8 @@ TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as bui
   CHECK(checked["as_built"]["edited"] == json::array({original["members"][bar]["name"]}));
   CHECK_THAT(r.out,
              Catch::Contains("edited: " + original["members"][bar]["name"].get<std::string>()));
-  CHECK(checked["resizing"].is_null());  // check sizes nothing: no record that reads "not converged"
+  CHECK(
+      checked["resizing"].is_null());  // check sizes nothing: no record that reads "not converged"
   CHECK(checked["members"][bar]["area"].get<double>() == area);
   // A column's resistance falls faster than its area (buckling: with I ~ A^2): the bar that
   // was used up is overloaded by at least the area's 1/0.8 = 1.25.
@@ -289,7 +308,8 @@ TEST_CASE("check: a bar made 20 % thinner by a consistent edit is checked as bui
   // re-derivation: every force balances at its nodes) and gives the same utilisations (1e-9:
   // the file's 17 digits).
   const fs::path again = dir / "again.json";
-  const auto r2 = RunTbridge(dir, "check " + Quote(out.string()) + " -q -o " + Quote(again.string()));
+  const auto r2 =
+      RunTbridge(dir, "check " + Quote(out.string()) + " -q -o " + Quote(again.string()));
   INFO(r2.err);
   CHECK(r2.code == 1);
   const json twice = ReadJson(again);

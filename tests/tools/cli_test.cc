@@ -25,7 +25,9 @@ using tbridge::test::FreshDir;
 using tbridge::test::Quote;
 using tbridge::test::ReadText;
 using Result = tbridge::test::CliResult;
-Result Run(const fs::path& dir, const std::string& args) { return tbridge::test::RunTbridge(dir, args); }
+Result Run(const fs::path& dir, const std::string& args) {
+  return tbridge::test::RunTbridge(dir, args);
+}
 
 fs::path WriteConfig(const fs::path& dir, const std::string& text) {
   const fs::path path = dir / "config.json";
@@ -69,13 +71,14 @@ TEST_CASE("bad configs exit 2, name the key and write no output") {
                      {"'bridge.span'", "-12", "(0, 2000]"});
   ExpectCleanFailure("payload_zero", R"({"bridge": {"n": 3, "payload": 0}})", 2,
                      {"'bridge.payload'", "> 0"});
-  ExpectCleanFailure("stress_zero", R"({"bridge": {"n": 3}, "material": {"yield_stress": 0}})",
-                     2, {"'material.yield_stress'", ">= 1e+06"});
+  ExpectCleanFailure("stress_zero", R"({"bridge": {"n": 3}, "material": {"yield_stress": 0}})", 2,
+                     {"'material.yield_stress'", ">= 1e+06"});
   ExpectCleanFailure("modulus_negative",
                      R"({"bridge": {"n": 3}, "material": {"youngs_modulus": -2e11}})", 2,
                      {"'material.youngs_modulus'", ">= 1e+09"});
-  ExpectCleanFailure("solver_unknown", R"({"bridge": {"n": 3}, "design": {"solver": "cplex"}})",
-                     2, {"'design.solver'", "\"cplex\"", "\"auto\", \"direct\", \"ipopt\", \"nlopt\""});
+  ExpectCleanFailure(
+      "solver_unknown", R"({"bridge": {"n": 3}, "design": {"solver": "cplex"}})", 2,
+      {"'design.solver'", "\"cplex\"", "\"auto\", \"direct\", \"ipopt\", \"nlopt\""});
   ExpectCleanFailure("nan_text", R"({"bridge": {"n": 3, "span": NaN}})", 2,
                      {"config.json", "malformed JSON"});
   ExpectCleanFailure("malformed", R"({"bridge": {"n": 3,)", 2, {"config.json", "malformed JSON"});
@@ -83,8 +86,7 @@ TEST_CASE("bad configs exit 2, name the key and write no output") {
 }
 
 TEST_CASE("a number too large for a double exits 2 and names the key") {
-  ExpectCleanFailure("huge", R"({"bridge": {"n": 3, "span": 1e999}})", 2,
-                     {"bridge.span", "1e999"});
+  ExpectCleanFailure("huge", R"({"bridge": {"n": 3, "span": 1e999}})", 2, {"bridge.span", "1e999"});
 }
 
 TEST_CASE("deeply nested JSON is bad input, not a crash") {
@@ -110,9 +112,10 @@ TEST_CASE("a design the solver cannot finish exits 3 with its status and writes 
           "[ipopt]") {
   // One Ipopt iteration cannot converge on the 3D bridge's 26 self-stresses (it needs about 20).
   REQUIRE(tbridge::SolverBuiltIn("ipopt"));  // tagged [ipopt]: left out of a build without
-  ExpectCleanFailure("no_design",
-                     R"({"bridge": {"n": 2, "planes": 2, "beta_deg": 20}, "design": {"solver": "ipopt", "max_iterations": 1}})", 3,
-                     {"no minimum-mass design", "Maximum_Iterations_Exceeded"});
+  ExpectCleanFailure(
+      "no_design",
+      R"({"bridge": {"n": 2, "planes": 2, "beta_deg": 20}, "design": {"solver": "ipopt", "max_iterations": 1}})",
+      3, {"no minimum-mass design", "Maximum_Iterations_Exceeded"});
 }
 
 TEST_CASE("a failed run leaves an existing OUT.json untouched") {
@@ -259,15 +262,17 @@ TEST_CASE("the paper's n = 3 config gives the paper's n = 3 design") {
 TEST_CASE("an unstable design exits 3, says why and writes nothing") {
   // Without deck-string prestress each bar of the planar bridge is an inverted pendulum on
   // its V (docs/topology.md): the reduced stiffness has negative pivots.
-  ExpectCleanFailure("unstable", R"({"bridge": {"n": 2}, "design": {"deck_string_min_radius": 0}, "loads": {"cases": ["paper"]}})", 3,
-                     {"unstable", "negative", "design.deck_string_min_radius"});
+  ExpectCleanFailure(
+      "unstable",
+      R"({"bridge": {"n": 2}, "design": {"deck_string_min_radius": 0}, "loads": {"cases": ["paper"]}})",
+      3, {"unstable", "negative", "design.deck_string_min_radius"});
 }
 
 TEST_CASE("the quiet flag prints nothing on success") {
   const fs::path dir = FreshDir("quiet");
   const fs::path out = dir / "OUT.json";
-  const Result r = Run(dir, "design " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") +
-                                " -o " + Quote(out.string()) + " --quiet");
+  const Result r = Run(dir, "design " + Quote(TBRIDGE_SOURCE_DIR "/configs/default.json") + " -o " +
+                                Quote(out.string()) + " --quiet");
   REQUIRE(r.exited);
   CHECK(r.code == 0);
   CHECK(r.out.empty());

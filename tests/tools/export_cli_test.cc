@@ -32,7 +32,8 @@ const std::string kDefaultConfig = std::string(TBRIDGE_SOURCE_DIR) + "/configs/d
 // dir/design.json, the design `tbridge design` writes for `config`.
 fs::path DesignOf(const fs::path& dir, const std::string& config = kDefaultConfig) {
   const fs::path design = dir / "design.json";
-  const int code = RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code;
+  const int code =
+      RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design.string())).code;
   REQUIRE(code == tbridge::test::VerdictExit(design));
   return design;
 }
@@ -56,8 +57,8 @@ void ReadDat(const std::string& text, std::map<int, CcxStep>& steps, std::vector
     if (time_at != std::string::npos && !modal) {
       const int step = static_cast<int>(std::lround(std::stod(line.substr(time_at + 8))));
       block = line.find("displacements") != std::string::npos ? &steps[step].u
-              : line.find("forces") != std::string::npos  ? &steps[step].rf
-                                                           : nullptr;
+              : line.find("forces") != std::string::npos      ? &steps[step].rf
+                                                              : nullptr;
       eigen = false;
       continue;
     }
@@ -84,8 +85,8 @@ void ReadDat(const std::string& text, std::map<int, CcxStep>& steps, std::vector
 void CompareWithCalculix(const fs::path& dir, const std::string& config) {
   const fs::path design_file = DesignOf(dir, config);
   const fs::path deck = dir / "bridge.inp";
-  REQUIRE(RunTbridge(dir, "export " + Quote(design_file.string()) + " --format calculix --rigid-bars -o " +
-                              Quote(deck.string()))
+  REQUIRE(RunTbridge(dir, "export " + Quote(design_file.string()) +
+                              " --format calculix --rigid-bars -o " + Quote(deck.string()))
               .code == 0);
   const std::string ccx = "cd " + Quote(dir.string()) + " && ccx bridge > ccx.log 2>&1";
   INFO("ccx runs the deck (calculix-ccx, tools/setup.sh); its log: " << ReadText(dir / "ccx.log"));
@@ -124,12 +125,13 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
     if (design["nodes"][v][1].get<double>() == 0) deck_nodes.push_back(static_cast<int>(v) + 1);
   }
   std::map<std::string, double> deflection;
-  for (const json& c : design["deflection_max"]) deflection[c["case"]] = c["deflection"].get<double>();
+  for (const json& c : design["deflection_max"])
+    deflection[c["case"]] = c["deflection"].get<double>();
   std::map<std::string, std::vector<json>> reactions;
   for (const json& r : design["reactions"]) reactions[r["case"]].push_back(r);
 
-  const double limit =
-      design["config"]["bridge"]["span"].get<double>() / design["config"]["loads"]["deflection_limit"].get<double>();
+  const double limit = design["config"]["bridge"]["span"].get<double>() /
+                       design["config"]["loads"]["deflection_limit"].get<double>();
   int compared = 0;
   double worst_deflection = 0, worst_reaction = 0;
   for (size_t k = 0; k < labels.size(); ++k) {
@@ -142,7 +144,8 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
     REQUIRE(reactions.count(label));
     double largest = 0;
     for (const json& r : reactions[label]) {
-      for (int a = 0; a < 3; ++a) largest = std::max(largest, std::abs(r["force"][a].get<double>()));
+      for (int a = 0; a < 3; ++a)
+        largest = std::max(largest, std::abs(r["force"][a].get<double>()));
     }
     for (const json& r : reactions[label]) {
       const int node = r["node"].get<int>();
@@ -150,7 +153,8 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
         // CalculiX's RF is what the members bring to the support; tbridge's reaction also
         // carries the load applied at the support itself (the members' weight lumped there).
         const double applied = loads[k].count(node) ? loads[k].at(node)[a] : 0.0;
-        const double error = std::abs(step.rf.at(node)[a] - applied - r["force"][a].get<double>()) / largest;
+        const double error =
+            std::abs(step.rf.at(node)[a] - applied - r["force"][a].get<double>()) / largest;
         worst_reaction = std::max(worst_reaction, error);
         // 1e-5 of the case's largest reaction: CalculiX's residual is within 1e-5 of the
         // average force (its Newton steps end near 1e-8), and its rigid bars are 1e6 times
@@ -167,7 +171,8 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
     REQUIRE(deflection.count(label));
     ++compared;
     const double error = std::abs(dy - deflection[label]);
-    if (deflection[label] > 0) worst_deflection = std::max(worst_deflection, error / deflection[label]);
+    if (deflection[label] > 0)
+      worst_deflection = std::max(worst_deflection, error / deflection[label]);
     // 1e-5 of the case's deflection, for the reasons above; a case that does not move the
     // deck (dead load alone, favourable) is compared absolutely, to 1e-5 of a millimetre.
     CHECK(error <= std::max(1e-5 * deflection[label], 1e-8));
@@ -181,12 +186,14 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
         c["case"].get<std::string>().find("after the prestress loss") == std::string::npos ? 1 : 0;
   CHECK(intact * 2 == static_cast<int>(design["deflection_max"].size()));
   CHECK(compared == intact);
-  WARN("CalculiX against tbridge: deflection " << worst_deflection << ", reactions " << worst_reaction << " over "
-                                                << compared << " cases and stations");
+  WARN("CalculiX against tbridge: deflection " << worst_deflection << ", reactions "
+                                               << worst_reaction << " over " << compared
+                                               << " cases and stations");
 
   // The lowest modes against `tbridge modes` of the same config (the same verified bridge).
   const fs::path modes_file = dir / "modes.json";
-  REQUIRE(RunTbridge(dir, "modes " + Quote(config) + " -q -o " + Quote(modes_file.string())).code == 0);
+  REQUIRE(RunTbridge(dir, "modes " + Quote(config) + " -q -o " + Quote(modes_file.string())).code ==
+          0);
   const json modes = json::parse(ReadText(modes_file))["modes"];
   REQUIRE(omega.size() >= 5);
   double worst_mode = 0;
@@ -201,7 +208,8 @@ void CompareWithCalculix(const fs::path& dir, const std::string& config) {
   WARN("CalculiX against tbridge: " << omega.size() << " lowest frequencies within " << worst_mode);
 }
 
-TEST_CASE("export: CalculiX agrees with tbridge on every case, station and the lowest modes", "[tools]") {
+TEST_CASE("export: CalculiX agrees with tbridge on every case, station and the lowest modes",
+          "[tools]") {
   CompareWithCalculix(FreshDir("export_calculix"), kDefaultConfig);
 }
 
@@ -327,11 +335,12 @@ TEST_CASE("export: the OpenSees script read back is the design, member by member
   const fs::path dir = FreshDir("export_opensees");
   const fs::path design_file = DesignOf(dir);
   const fs::path script = dir / "bridge.tcl";
-  REQUIRE(RunTbridge(dir, "export " + Quote(design_file.string()) + " --format opensees -o " + Quote(script.string()))
+  REQUIRE(RunTbridge(dir, "export " + Quote(design_file.string()) + " --format opensees -o " +
+                              Quote(script.string()))
               .code == 0);
   std::map<int, std::vector<double>> nodes;
-  std::map<int, std::vector<double>> elastic;  // tag -> E, Eneg (absent: E alone)
-  std::map<int, std::pair<int, double>> prestrain;  // tag -> wrapped tag, initial strain
+  std::map<int, std::vector<double>> elastic;                 // tag -> E, Eneg (absent: E alone)
+  std::map<int, std::pair<int, double>> prestrain;            // tag -> wrapped tag, initial strain
   std::map<int, std::tuple<int, int, double, int>> elements;  // i, j, A, material
   std::istringstream in(ReadText(script));
   std::string line;
@@ -367,11 +376,13 @@ TEST_CASE("export: the OpenSees script read back is the design, member by member
   const json design = json::parse(ReadText(design_file));
   REQUIRE(nodes.size() == design["nodes"].size());
   for (size_t v = 0; v < nodes.size(); ++v) {
-    for (int a = 0; a < 3; ++a) CHECK(nodes.at(static_cast<int>(v) + 1)[a] == design["nodes"][v][a].get<double>());
+    for (int a = 0; a < 3; ++a)
+      CHECK(nodes.at(static_cast<int>(v) + 1)[a] == design["nodes"][v][a].get<double>());
   }
   // The script lists the strings first, then the bars; the design file the bars first.
   const json& members = design["members"];
-  const int bars = design["topology"]["bars"].get<int>(), strings = design["topology"]["strings"].get<int>();
+  const int bars = design["topology"]["bars"].get<int>(),
+            strings = design["topology"]["strings"].get<int>();
   REQUIRE(static_cast<int>(elements.size()) == bars + strings);
   const double E = design["config"]["material"]["youngs_modulus"].get<double>();
   for (int e = 1; e <= bars + strings; ++e) {
@@ -388,13 +399,15 @@ TEST_CASE("export: the OpenSees script read back is the design, member by member
     if (string) {
       REQUIRE(el.size() == 3);
       CHECK(el[2] == 0.0);  // no compression modulus: a string never pushes
-      // Tension E' A (l - s) / s + E' A strain: k = E' A / s, and k s strain is the reference force.
+      // Tension E' A (l - s) / s + E' A strain: k = E' A / s, and k s strain is the reference
+      // force.
       const double k = el[0] * area / s;
       CHECK(k == Approx(m["stiffness"].get<double>()).epsilon(1e-12));
       // The strain (s - L0) / s loses digits to cancellation, eps s / (s - L0): 1e-12 for a
       // string stretched 1e-4; 1e-10 holds it for strings stretched down to 1e-6.
       CHECK(k * s * strain == Approx(m["reference_force"].get<double>()).epsilon(1e-10));
-      // The force is zero at the rest length: the strain there, (L0 - s) / s, cancels the prestrain.
+      // The force is zero at the rest length: the strain there, (L0 - s) / s, cancels the
+      // prestrain.
       CHECK((m["rest_length"].get<double>() - s) / s + strain == Approx(0).margin(1e-15));
     } else {
       REQUIRE(el.size() == 1);
@@ -410,20 +423,23 @@ TEST_CASE("export: a bad format or option is refused with exit 2 and nothing wri
   const fs::path design_file = DesignOf(dir);
   const fs::path out = dir / "out" / "bridge.inp";
   const auto before = tbridge::test::Snapshot(dir / "out");
-  for (const std::string& args : {std::string("--format abaqus"), std::string("--format opensees --modes 3"),
-                                  std::string("--format calculix --modes 0")}) {
+  for (const std::string& args :
+       {std::string("--format abaqus"), std::string("--format opensees --modes 3"),
+        std::string("--format calculix --modes 0")}) {
     INFO(args);
-    const auto r = RunTbridge(dir, "export " + Quote(design_file.string()) + " " + args + " -o " + Quote(out.string()));
+    const auto r = RunTbridge(
+        dir, "export " + Quote(design_file.string()) + " " + args + " -o " + Quote(out.string()));
     CHECK(r.code == 2);
-    CHECK(r.err.find(args.find("modes") == std::string::npos ? "--format" : "--modes") != std::string::npos);
+    CHECK(r.err.find(args.find("modes") == std::string::npos ? "--format" : "--modes") !=
+          std::string::npos);
     CHECK(tbridge::test::Snapshot(dir / "out") == before);
   }
   // A design file that is not self-consistent: the key is named.
   json design = json::parse(ReadText(design_file));
   design["members"][8]["radius"] = design["members"][8]["radius"].get<double>() * 0.99;
   std::ofstream(dir / "edited.json") << design.dump(2);
-  const auto r = RunTbridge(dir, "export " + Quote((dir / "edited.json").string()) + " --format calculix -o " +
-                                     Quote(out.string()));
+  const auto r = RunTbridge(dir, "export " + Quote((dir / "edited.json").string()) +
+                                     " --format calculix -o " + Quote(out.string()));
   CHECK(r.code == 2);
   CHECK(r.err.find("members[8]") != std::string::npos);
   CHECK(tbridge::test::Snapshot(dir / "out") == before);

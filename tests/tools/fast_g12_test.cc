@@ -2,6 +2,8 @@
 // holds and over the cases where its shortcut gives way (rounding near a half, powers of ten,
 // the ends of the double range).
 
+#include "tools/fast_g12.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -9,8 +11,6 @@
 #include <limits>
 #include <random>
 #include <string>
-
-#include "tools/fast_g12.h"
 
 namespace tbridge::cli {
 namespace {
@@ -66,7 +66,8 @@ TEST_CASE("FormatG12 writes what printf's %.12g writes") {
     const double v = k % 3 == 0   ? unit(rng) * std::pow(10.0, exponent(rng))
                      : k % 3 == 1 ? unit(rng) * 1e3
                                   : std::round(unit(rng) * 1e6) / 1e3;
-    if (Fast(v) != Printf(v) && ++mismatches <= 5) FAIL_CHECK(Fast(v) << " against printf's " << Printf(v));
+    if (Fast(v) != Printf(v) && ++mismatches <= 5)
+      FAIL_CHECK(Fast(v) << " against printf's " << Printf(v));
   }
   CHECK(mismatches == 0);
 }

@@ -20,8 +20,8 @@ TEST_CASE("simulate: a blown-up run names step, time and a safe dt and writes no
   std::ofstream(config) << R"({"bridge": {"n": 3},
     "dynamics": {"duration": 0.5, "dt": 2e-3, "integrator": "rk4",
                  "perturbation": {"bar_class": 1, "delta": 0.1}}})";
-  const test::CliResult r = test::RunTbridge(dir, "simulate " + test::Quote(config.string()) + " -o " +
-                                                      test::Quote((dir / "out").string()));
+  const test::CliResult r = test::RunTbridge(dir, "simulate " + test::Quote(config.string()) +
+                                                      " -o " + test::Quote((dir / "out").string()));
   INFO(r.err);
   CHECK(r.exited);
   CHECK(r.code != 0);

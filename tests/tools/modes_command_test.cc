@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 
 // Exit code of `tbridge modes <args>`, output discarded; -1 when it did not exit.
 int RunModes(const std::string& args) {
-  const std::string command = std::string("'") + TBRIDGE_BINARY + "' modes " + args + " > /dev/null 2>&1";
+  const std::string command =
+      std::string("'") + TBRIDGE_BINARY + "' modes " + args + " > /dev/null 2>&1";
   const int status = std::system(command.c_str());
   return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -68,7 +69,8 @@ TEST_CASE("tbridge modes --modes keeps the lowest modes and the RK4 step", "[too
   fs::remove_all(dir);
 }
 
-TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default", "[tools][modes]") {
+TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default",
+          "[tools][modes]") {
   const fs::path dir = fs::temp_directory_path() / "tbridge_modes_large_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -84,7 +86,8 @@ TEST_CASE("tbridge modes gives the lowest 20 modes of a large bridge by default"
   REQUIRE(j["modes"].size() == 20u);
   CHECK(j["model"]["free_dofs"] == 1020);
   for (size_t k = 1; k < j["modes"].size(); ++k) {
-    CHECK(j["modes"][k]["omega_rad_s"].get<double>() >= j["modes"][k - 1]["omega_rad_s"].get<double>());
+    CHECK(j["modes"][k]["omega_rad_s"].get<double>() >=
+          j["modes"][k - 1]["omega_rad_s"].get<double>());
   }
   // A second algorithm: every mode of the same model by the dense solve (--modes 0, 765 modes
   // in 1.4 s). The Lanczos eigenvalues are converged to 1e-10 (measured: they agree to 4e-10),
@@ -114,15 +117,17 @@ namespace {
 
 // Exit code of `tbridge <command> <args>`, output discarded.
 int RunCommand(const std::string& command_and_args) {
-  const std::string command = std::string("'") + TBRIDGE_BINARY + "' " + command_and_args + " > /dev/null 2>&1";
+  const std::string command =
+      std::string("'") + TBRIDGE_BINARY + "' " + command_and_args + " > /dev/null 2>&1";
   const int status = std::system(command.c_str());
   return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace
 
-TEST_CASE("tbridge modes --mass crowd gives the comfort check's frequencies and names each mode's motion",
-          "[tools][modes][comfort]") {
+TEST_CASE(
+    "tbridge modes --mass crowd gives the comfort check's frequencies and names each mode's motion",
+    "[tools][modes][comfort]") {
   const fs::path dir = fs::temp_directory_path() / "tbridge_modes_comfort_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -130,7 +135,8 @@ TEST_CASE("tbridge modes --mass crowd gives the comfort check's frequencies and 
   std::ofstream(config) << R"({"bridge": {"n": 2}})";
   const fs::path design = dir / "design.json", modes = dir / "modes.json";
   REQUIRE(RunCommand("design '" + config.string() + "' -o '" + design.string() + "' -q") <= 1);
-  REQUIRE(RunCommand("modes '" + config.string() + "' -o '" + modes.string() + "' --mass crowd -q") == 0);
+  REQUIRE(RunCommand("modes '" + config.string() + "' -o '" + modes.string() +
+                     "' --mass crowd -q") == 0);
   std::ifstream design_in(design), modes_in(modes);
   const nlohmann::json d = nlohmann::json::parse(design_in), m = nlohmann::json::parse(modes_in);
   CHECK(m["model"]["mass"] == "crowd");
@@ -141,7 +147,8 @@ TEST_CASE("tbridge modes --mass crowd gives the comfort check's frequencies and 
     const nlohmann::json& same = m["modes"][mode["index"].get<int>() - 1];
     // The same model, the same dense eigen-decomposition: the design file's shortest
     // round-trip digits give the frequency back to 1e-9 (the contract of the comfort report).
-    CHECK(same["frequency_hz"].get<double>() == Approx(mode["frequency_hz"].get<double>()).epsilon(1e-9));
+    CHECK(same["frequency_hz"].get<double>() ==
+          Approx(mode["frequency_hz"].get<double>()).epsilon(1e-9));
     CHECK(same["motion"] == mode["direction"]);
   }
   // A planar bridge: only vertical, longitudinal or local motions.

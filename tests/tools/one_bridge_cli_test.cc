@@ -23,8 +23,12 @@ TEST_CASE("modes of a config are the modes of the design tbridge design writes",
   const fs::path dir = FreshDir("one_bridge");
   const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json";
   const fs::path design_file = dir / "design.json", modes_file = dir / "modes.json";
-  REQUIRE(RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design_file.string())).code == 0);
-  REQUIRE(RunTbridge(dir, "modes " + Quote(config) + " -q --modes 3 -o " + Quote(modes_file.string())).code == 0);
+  REQUIRE(
+      RunTbridge(dir, "design " + Quote(config) + " -q -o " + Quote(design_file.string())).code ==
+      0);
+  REQUIRE(
+      RunTbridge(dir, "modes " + Quote(config) + " -q --modes 3 -o " + Quote(modes_file.string()))
+          .code == 0);
 
   // The written design's modes, computed here from the file: the model tbridge modes builds
   // for an engineering config (the deck's inertia, no further gravity).
@@ -35,11 +39,13 @@ TEST_CASE("modes of a config are the modes of the design tbridge design writes",
   options.deck_inertia = true;
   tbridge::ModalOptions modal;
   modal.count = 3;
-  const tbridge::ModalResult mine = tbridge::ComputeModes(tbridge::BuildDynamicModel(d, options), modal);
+  const tbridge::ModalResult mine =
+      tbridge::ComputeModes(tbridge::BuildDynamicModel(d, options), modal);
   const json modes = json::parse(ReadText(modes_file));
   REQUIRE(modes["modes"].size() >= 1u);
   // 1e-9 relative: the same model, built from the file's 17 digits rather than in memory.
-  CHECK(modes["modes"][0]["omega_rad_s"].get<double>() == Approx(mine.modes.at(0).omega_rad_s).epsilon(1e-9));
+  CHECK(modes["modes"][0]["omega_rad_s"].get<double>() ==
+        Approx(mine.modes.at(0).omega_rad_s).epsilon(1e-9));
 }
 
 }  // namespace

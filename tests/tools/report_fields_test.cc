@@ -42,7 +42,8 @@ void CheckEnvelope(const json& file) {
   for (const json& c : file["cases"]) ultimate[c["name"]] = c["limit_state"] == "ultimate";
   const json& supports = file["reaction_envelope"]["supports"];
   REQUIRE(!supports.empty());
-  CHECK_THAT(file["reaction_envelope"]["includes"].get<std::string>(), Catch::Contains("loads applied at the support node"));
+  CHECK_THAT(file["reaction_envelope"]["includes"].get<std::string>(),
+             Catch::Contains("loads applied at the support node"));
   for (const json& s : supports) {
     const int node = s["node"];
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -61,8 +62,10 @@ void CheckEnvelope(const json& file) {
 
 }  // namespace
 
-TEST_CASE("report: demand / resistance = utilisation, the reaction envelope, the group peaks, mirror areas",
-          "[tools]") {
+TEST_CASE(
+    "report: demand / resistance = utilisation, the reaction envelope, the group peaks, mirror "
+    "areas",
+    "[tools]") {
   const fs::path dir = FreshDir("report_fields");
   const fs::path design = dir / "design.json", checked = dir / "checked.json";
   const std::string config = std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json";
@@ -72,7 +75,8 @@ TEST_CASE("report: demand / resistance = utilisation, the reaction envelope, the
   CheckMembers(a);
   CheckEnvelope(a);
   // The same fields, with the same meanings, in check's output.
-  const auto c = RunTbridge(dir, "check " + Quote(design.string()) + " -q -o " + Quote(checked.string()));
+  const auto c =
+      RunTbridge(dir, "check " + Quote(design.string()) + " -q -o " + Quote(checked.string()));
   REQUIRE(c.code == 0);
   const json b = json::parse(ReadText(checked));
   CheckMembers(b);
@@ -81,7 +85,8 @@ TEST_CASE("report: demand / resistance = utilisation, the reaction envelope, the
   // nonlinear solves of the same bridge (1e-9: the file's reread).
   for (size_t k = 0; k < a["members"].size(); ++k) {
     INFO("member " << a["members"][k]["name"]);
-    CHECK(b["members"][k]["force"].get<double>() == Approx(a["members"][k]["force"].get<double>()).epsilon(1e-9));
+    CHECK(b["members"][k]["force"].get<double>() ==
+          Approx(a["members"][k]["force"].get<double>()).epsilon(1e-9));
     CHECK(b["members"][k]["force_min"].get<double>() ==
           Approx(a["members"][k]["force_min"].get<double>()).epsilon(1e-9).margin(1e-6));
   }
@@ -91,7 +96,8 @@ TEST_CASE("report: demand / resistance = utilisation, the reaction envelope, the
       INFO(run["name"] << " " << g["group"]);
       if (g["static_peak"].get<double>() > 0) {
         CHECK(g["peak_ratio"].get<double>() ==
-              Approx(g["dynamic_peak"].get<double>() / g["static_peak"].get<double>()).epsilon(1e-15));
+              Approx(g["dynamic_peak"].get<double>() / g["static_peak"].get<double>())
+                  .epsilon(1e-15));
       }
     }
   }
@@ -110,7 +116,8 @@ TEST_CASE("report: demand / resistance = utilisation, the reaction envelope, the
   };
   int pairs = 0;
   for (const json& m : a["members"]) {
-    const int i = mirror_of(m["nodes"][0].get<int>() - 1), j = mirror_of(m["nodes"][1].get<int>() - 1);
+    const int i = mirror_of(m["nodes"][0].get<int>() - 1),
+              j = mirror_of(m["nodes"][1].get<int>() - 1);
     REQUIRE((i > 0 && j > 0));
     for (const json& n : a["members"]) {
       const int p = n["nodes"][0], q = n["nodes"][1];

@@ -6,8 +6,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "cli_support.h"
@@ -25,18 +25,26 @@ json Summary(const fs::path& dir) {
 
 }  // namespace
 
-TEST_CASE("simulate: a design file runs as the config it was designed from, and edited as built", "[tools]") {
+TEST_CASE("simulate: a design file runs as the config it was designed from, and edited as built",
+          "[tools]") {
   const fs::path dir = FreshDir("simulate_design");
   json config = json::parse(ReadText(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json"));
   config["bridge"]["n"] = 2;
   // A short run of the verified bridge standing under its loads: 2000 RK4 steps.
-  config["dynamics"] = {{"duration", 0.2}, {"dt", 1e-4}, {"integrator", "rk4"},
-                        {"record", {{"nodes", {3}}, {"every", 100}}}, {"frequency", {{"enabled", false}}}};
+  config["dynamics"] = {{"duration", 0.2},
+                        {"dt", 1e-4},
+                        {"integrator", "rk4"},
+                        {"record", {{"nodes", {3}}, {"every", 100}}},
+                        {"frequency", {{"enabled", false}}}};
   std::ofstream(dir / "config.json") << config.dump(2);
   const std::string design = (dir / "design.json").string();
-  REQUIRE(RunTbridge(dir, "design " + Quote((dir / "config.json").string()) + " -q -o " + Quote(design)).code == 0);
-  const auto a = RunTbridge(dir, "simulate " + Quote((dir / "config.json").string()) + " -q -o " + Quote((dir / "a").string()));
-  const auto b = RunTbridge(dir, "simulate " + Quote(design) + " -q -o " + Quote((dir / "b").string()));
+  REQUIRE(
+      RunTbridge(dir, "design " + Quote((dir / "config.json").string()) + " -q -o " + Quote(design))
+          .code == 0);
+  const auto a = RunTbridge(dir, "simulate " + Quote((dir / "config.json").string()) + " -q -o " +
+                                     Quote((dir / "a").string()));
+  const auto b =
+      RunTbridge(dir, "simulate " + Quote(design) + " -q -o " + Quote((dir / "b").string()));
   INFO(a.err << b.err);
   REQUIRE(a.code == 0);
   REQUIRE(b.code == 0);
@@ -50,7 +58,8 @@ TEST_CASE("simulate: a design file runs as the config it was designed from, and 
   json edited = json::parse(ReadText(design));
   int string = -1;
   for (size_t k = edited["topology"]["bars"].get<size_t>(); k < edited["members"].size(); ++k) {
-    if (string < 0 || edited["members"][k]["mass"] > edited["members"][string]["mass"]) string = static_cast<int>(k);
+    if (string < 0 || edited["members"][k]["mass"] > edited["members"][string]["mass"])
+      string = static_cast<int>(k);
   }
   json& m = edited["members"][string];
   const double area = 0.8 * m["area"].get<double>();
@@ -60,7 +69,8 @@ TEST_CASE("simulate: a design file runs as the config it was designed from, and 
   m["mass"] = mat["density"].get<double>() * area * m["length"].get<double>();
   m["stiffness"] = mat["youngs_modulus"].get<double>() * area / m["rest_length"].get<double>();
   std::ofstream(dir / "edited.json") << edited.dump(2);
-  const auto c = RunTbridge(dir, "simulate " + Quote((dir / "edited.json").string()) + " -q -o " + Quote((dir / "c").string()));
+  const auto c = RunTbridge(dir, "simulate " + Quote((dir / "edited.json").string()) + " -q -o " +
+                                     Quote((dir / "c").string()));
   INFO(c.err);
   REQUIRE(c.code == 0);
   CHECK(Summary(dir / "c")["max_string_stress"] != Summary(dir / "a")["max_string_stress"]);
@@ -70,7 +80,8 @@ TEST_CASE("simulate: a design file runs as the config it was designed from, and 
   plain["config"].erase("dynamics");
   std::ofstream(dir / "plain.json") << plain.dump(2);
   const auto before = Snapshot(dir / "a");
-  const auto d = RunTbridge(dir, "simulate " + Quote((dir / "plain.json").string()) + " -q -o " + Quote((dir / "a").string()));
+  const auto d = RunTbridge(dir, "simulate " + Quote((dir / "plain.json").string()) + " -q -o " +
+                                     Quote((dir / "a").string()));
   CHECK(d.code == 2);
   CHECK_THAT(d.err, Catch::Contains("config.dynamics"));
   CHECK(Snapshot(dir / "a") == before);  // the earlier run's outputs, as they were

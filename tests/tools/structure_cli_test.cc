@@ -45,7 +45,8 @@ TEST_CASE("simulate: record.bar_forces puts each bar's force peaks in the summar
   const test::CliResult r = Run(dir, "simulate", path.string(), dir / "out");
   INFO(r.err);
   REQUIRE(r.code == 0);
-  const nlohmann::json summary = nlohmann::json::parse(test::ReadText(dir / "out" / "summary.json"));
+  const nlohmann::json summary =
+      nlohmann::json::parse(test::ReadText(dir / "out" / "summary.json"));
   const nlohmann::json& peaks = summary["bar_force_peaks"];
   REQUIRE(peaks.size() == 4);
   CHECK(peaks[0]["bar"] == "4-1");

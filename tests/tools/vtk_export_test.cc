@@ -22,7 +22,8 @@ fs::path WriteScenario(const fs::path& dir, const std::string& record_nodes) {
   const fs::path path = dir / "n1.json";
   std::ofstream(path) << R"({"bridge": {"n": 1}, "dynamics": {"duration": 0.01, "dt": 1e-5,
     "perturbation": {"bar_class": 1, "delta": 0.1},
-    "record": {"nodes": )" << record_nodes << R"(, "every": 100}}})";
+    "record": {"nodes": )"
+                      << record_nodes << R"(, "every": 100}}})";
   return path;
 }
 
@@ -39,12 +40,14 @@ std::vector<std::string> DataItemParents(const std::string& xml) {
   std::vector<std::string> open, parents;
   for (size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
     const size_t end = xml.find('>', at);
-    if (end == std::string::npos) throw std::runtime_error("unterminated tag at " + std::to_string(at));
+    if (end == std::string::npos)
+      throw std::runtime_error("unterminated tag at " + std::to_string(at));
     const std::string tag = xml.substr(at + 1, end - at - 1);
     if (tag.empty() || tag[0] == '?') continue;
     if (tag[0] == '/') {
       if (open.empty() || open.back() != tag.substr(1)) {
-        throw std::runtime_error("</" + tag.substr(1) + "> closes " + (open.empty() ? "nothing" : "<" + open.back() + ">"));
+        throw std::runtime_error("</" + tag.substr(1) + "> closes " +
+                                 (open.empty() ? "nothing" : "<" + open.back() + ">"));
       }
       open.pop_back();
       continue;
@@ -61,7 +64,8 @@ std::vector<std::string> DataItemParents(const std::string& xml) {
 std::vector<long long> Seeks(const std::string& xml) {
   std::vector<long long> out;
   const std::regex seek(R"re(Seek="(\d+)")re");
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), seek); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), seek); it != std::sregex_iterator();
+       ++it) {
     out.push_back(std::stoll((*it)[1]));
   }
   return out;
@@ -75,7 +79,8 @@ std::vector<T> ReadAt(const std::string& bin, long long offset, size_t count) {
   return out;
 }
 
-TEST_CASE("simulate --vtk writes one XDMF time series: run.xdmf and its data run.bin", "[tools][vtk]") {
+TEST_CASE("simulate --vtk writes one XDMF time series: run.xdmf and its data run.bin",
+          "[tools][vtk]") {
   const fs::path dir = test::FreshDir("vtk");
   const fs::path config = WriteScenario(dir, "[1, 2]");
   const auto r = test::RunTbridge(dir, "simulate " + test::Quote(config.string()) + " -o " +
@@ -93,7 +98,9 @@ TEST_CASE("simulate --vtk writes one XDMF time series: run.xdmf and its data run
   // and four attributes, each holding one DataItem, in a properly nested document.
   std::vector<std::string> expected;
   for (int k = 0; k < 11; ++k) {
-    for (const char* e : {"Topology", "Geometry", "Attribute", "Attribute", "Attribute", "Attribute"}) expected.push_back(e);
+    for (const char* e :
+         {"Topology", "Geometry", "Attribute", "Attribute", "Attribute", "Attribute"})
+      expected.push_back(e);
   }
   REQUIRE(DataItemParents(xml) == expected);
   // run.bin holds what the XML says: connectivity and types at its head (5 x 2 + 5 ints), then
@@ -110,7 +117,8 @@ TEST_CASE("simulate --vtk writes one XDMF time series: run.xdmf and its data run
   for (size_t k = 0; k < 12; ++k) CHECK(u[k] == Approx(perturbed[k]).margin(1e-14));
   // Points minus displacements are the same design positions in the last sample as in the first.
   const size_t last = seek.size() - 6;
-  const std::vector<double> p0 = ReadAt<double>(bin, seek[1], 12), p1 = ReadAt<double>(bin, seek[last + 1], 12);
+  const std::vector<double> p0 = ReadAt<double>(bin, seek[1], 12),
+                            p1 = ReadAt<double>(bin, seek[last + 1], 12);
   const std::vector<double> u1 = ReadAt<double>(bin, seek[last + 2], 12);
   for (size_t k = 0; k < 12; ++k) CHECK(p1[k] - u1[k] == Approx(p0[k] - u[k]).margin(1e-14));
   // The strings are taut (the flags 0) with a tension of k (s - L0) > 0; the bar's is 0.
@@ -133,20 +141,24 @@ TEST_CASE("simulate --vtk without every free node recorded is refused, nothing w
   CHECK_FALSE(fs::exists(dir / "vtk"));
 }
 
-TEST_CASE("simulate: the periodic n = 1 run has one period by both estimators", "[tools][frequency]") {
+TEST_CASE("simulate: the periodic n = 1 run has one period by both estimators",
+          "[tools][frequency]") {
   // SPEC §9: the n = 1 motion at delta = 0.1 m is periodic (T = 0.1178 s by an exact
   // quadrature of the energy). The summary's spectral peak and its mean crossing spacing
   // measure that one period independently; 1 % covers the crossings' unequal half-periods of
   // a non-sinusoidal wave averaged over the 8.5 periods of the 1 s record.
   const fs::path dir = test::FreshDir("crossings");
-  const auto r = test::RunTbridge(dir, "simulate " + test::Quote(TBRIDGE_SOURCE_DIR "/configs/paper_t5_n1.json") +
-                                           " -o " + test::Quote((dir / "out").string()) + " -q");
+  const auto r = test::RunTbridge(
+      dir, "simulate " + test::Quote(TBRIDGE_SOURCE_DIR "/configs/paper_t5_n1.json") + " -o " +
+               test::Quote((dir / "out").string()) + " -q");
   INFO(r.err);
   REQUIRE(r.code == 0);
-  const nlohmann::json summary = nlohmann::json::parse(test::ReadText(dir / "out" / "summary.json"));
+  const nlohmann::json summary =
+      nlohmann::json::parse(test::ReadText(dir / "out" / "summary.json"));
   const nlohmann::json& frequency = summary.at("frequency");
   REQUIRE(frequency.at("crossings").is_object());
-  const double spectral = frequency.at("period_s"), crossings = frequency.at("crossings").at("period_s");
+  const double spectral = frequency.at("period_s"),
+               crossings = frequency.at("crossings").at("period_s");
   CHECK(crossings == Approx(spectral).epsilon(0.01));
   CHECK(crossings == Approx(0.1178).epsilon(0.01));  // SPEC §9's quadrature, the same 1 %
 }

@@ -12,7 +12,8 @@
 namespace tbridge {
 namespace {
 
-TEST_CASE("a designed bridge with its weight on and no further load stays at rest", "[verify][dynamics]") {
+TEST_CASE("a designed bridge with its weight on and no further load stays at rest",
+          "[verify][dynamics]") {
   Config config;  // engineering defaults: self-weight in the design, so gravity on the structure
   config.bridge.n = 2;
   const Design d = DesignAndVerify(config);

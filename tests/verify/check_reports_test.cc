@@ -31,7 +31,8 @@ const LoadCase& CaseNamed(const Design& d, const std::string& name) {
   return d.cases.front();
 }
 
-TEST_CASE("a run with no extra load starts in the design's own serviceability state", "[verify][dynamics]") {
+TEST_CASE("a run with no extra load starts in the design's own serviceability state",
+          "[verify][dynamics]") {
   Config config;  // engineering defaults: self-weight, deck inertia, the payload standing in a run
   config.bridge.n = 2;
   config.loads.superimposed_dead_n_per_m = 800;  // so that every weight of the deck is in play
@@ -55,7 +56,8 @@ TEST_CASE("a run with no extra load starts in the design's own serviceability st
   CHECK(weight == Approx(g * d.mass.structure).epsilon(1e-12));
   const double deck_on_nodes = -d.actions.base[kDeckDead].row(1).sum();
   const double payload_on_nodes = -d.actions.base[kPayloadFull].row(1).sum();
-  CHECK(-model.loads.row(1).sum() == Approx(weight + deck_on_nodes + payload_on_nodes).epsilon(1e-12));
+  CHECK(-model.loads.row(1).sum() ==
+        Approx(weight + deck_on_nodes + payload_on_nodes).epsilon(1e-12));
 
   // And the run starts where the design's nonlinear static solve of that case puts the bridge:
   // 1e-9 m, well above the solver's convergence (forces to 1e-10 of the largest) and far below

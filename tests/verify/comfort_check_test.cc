@@ -1,6 +1,8 @@
 // The footbridge comfort check (verify/comfort_check.h) against independent truths: the steady
 // resonant response of the modal equation against a damped time-history run of the nonlinear
 // model; the verdict it enters; the paper's switches; bad input.
+#include "verify/comfort_check.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -10,14 +12,14 @@
 #include "core/config.h"
 #include "core/error.h"
 #include "dynamics/simulation.h"
-#include "verify/comfort_check.h"
 #include "verify/comfort_sizing.h"
 #include "verify/verified_design.h"
 
 namespace tbridge {
 
-TEST_CASE("a resonant crowd load: the modal equation's F/(2 xi k) against a damped time-history run",
-          "[comfort][verify]") {
+TEST_CASE(
+    "a resonant crowd load: the modal equation's F/(2 xi k) against a damped time-history run",
+    "[comfort][verify]") {
   Config config;
   config.bridge.n = 2;
   // 2 % damping, so that the start's transient (every mode's decays at xi omega under mass-
@@ -37,7 +39,7 @@ TEST_CASE("a resonant crowd load: the modal equation's F/(2 xi k) against a damp
   // its steady amplitude is F* / (2 xi k*), k* = omega^2 M*, and its acceleration omega^2 that.
   const double modal_mass = 1.0 / (motion.peak_displacement * motion.peak_displacement);
   const double amplitude_wanted = 1e-4;  // [m]: small, so that the nonlinear model is linear
-  double weight = 0;  // sum A_k |phi_k| / phi_max per unit pressure
+  double weight = 0;                     // sum A_k |phi_k| / phi_max per unit pressure
   const Eigen::Matrix3Xd unit = CrowdModeLoad(d, mode, motion, 1.0);
   for (Eigen::Index a = 0; a < unit.cols(); ++a) weight += std::abs(unit(1, a) * mode.shape(1, a));
   weight /= motion.peak_displacement;
@@ -88,7 +90,8 @@ TEST_CASE("a resonant crowd load: the modal equation's F/(2 xi k) against a damp
   CHECK(peak_acceleration == Approx(acceleration).epsilon(0.01));
 }
 
-TEST_CASE("comfort enters the verdict: a failing footbridge FAILS, naming comfort", "[comfort][verify]") {
+TEST_CASE("comfort enters the verdict: a failing footbridge FAILS, naming comfort",
+          "[comfort][verify]") {
   Config config;
   config.bridge.n = 2;
   Design d = RunDesign(config);
@@ -114,8 +117,9 @@ TEST_CASE("comfort enters the verdict: a failing footbridge FAILS, naming comfor
   CHECK(DesignVerdict(d).summary.find("comfort check not run") != std::string::npos);
 }
 
-TEST_CASE("the 3D bridge: lateral and torsional modes checked, lateral lock-in by the critical number",
-          "[comfort][verify]") {
+TEST_CASE(
+    "the 3D bridge: lateral and torsional modes checked, lateral lock-in by the critical number",
+    "[comfort][verify]") {
   // The 3D bridge of two planes at n = 1 with the engineering defaults, its lateral trigger
   // raised to 5 Hz: sized with its comfort rows its first mode twists the deck (2.56 Hz with the
   // crowd) and its lateral modes lie above EN 1990's 2.5 Hz, which this test reads as well.
@@ -139,8 +143,9 @@ TEST_CASE("the 3D bridge: lateral and torsional modes checked, lateral lock-in b
     // Sétra's critical number (Arup's Millennium Bridge measurements, k = 300 N s/m):
     // N_L = 8 pi xi f M* / k, typed here from the closed form with the report's own frequency
     // and modal mass; 1e-12 relative: the same five products.
-    CHECK(m.lock_in_pedestrians ==
-          Approx(8 * std::numbers::pi * xi * m.frequency_hz * m.modal_mass_kg / 300).epsilon(1e-12));
+    CHECK(
+        m.lock_in_pedestrians ==
+        Approx(8 * std::numbers::pi * xi * m.frequency_hz * m.modal_mass_kg / 300).epsilon(1e-12));
     CHECK(m.frequency_hz < config.comfort.horizontal_trigger_hz);
   }
   CHECK(seen["lateral"] >= 1);
@@ -185,7 +190,8 @@ TEST_CASE("the 3D bridge: lateral and torsional modes checked, lateral lock-in b
     CHECK(sway.acceleration_m_s2 == 0.0);
     CHECK(sway.pass == (check.pedestrians < n_l));
   }
-  CHECK(check.pedestrians > 8 * std::numbers::pi * xi * 0.9 * 2e3 / 300);  // the light deck does lock in
+  CHECK(check.pedestrians >
+        8 * std::numbers::pi * xi * 0.9 * 2e3 / 300);  // the light deck does lock in
   CHECK(check.pedestrians < 8 * std::numbers::pi * xi * 0.9 * 2e5 / 300);  // the heavy one does not
 }
 
@@ -234,7 +240,8 @@ TEST_CASE("with the paper's switches comfort is not checked and the verdict says
   CHECK(v.scope.find("comfort not checked (the paper's switches)") != std::string::npos);
 }
 
-TEST_CASE("bad comfort input is refused, naming the key, the value and what is allowed", "[comfort][config]") {
+TEST_CASE("bad comfort input is refused, naming the key, the value and what is allowed",
+          "[comfort][config]") {
   const auto refuses = [](const nlohmann::json& comfort, const std::string& key) {
     try {
       ParseConfig({{"bridge", {{"n", 2}}}, {"comfort", comfort}});

@@ -2,16 +2,17 @@
 // simulate's path (RunScenario with the verified design): the paper's travelling load on the
 // design that tbridge design writes.
 
-#include <catch2/catch.hpp>
+#include "verify/dynamic_check.h"
+
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <map>
 
-#include "core/config.h"
 #include "app/scenario.h"
 #include "bridge/design_model.h"
+#include "core/config.h"
 #include "design/static_model.h"
 #include "dynamics/simulation.h"
-#include "verify/dynamic_check.h"
 #include "verify/load_scenarios.h"
 #include "verify/verified_design.h"
 
@@ -34,7 +35,8 @@ double GroupPeak(const Structure& st, const SimulationSummary& s, const std::str
 TEST_CASE("the design's dynamic check is what a separate run of the paper's travelling load gives",
           "[verify][dynamics]") {
   // The three shipped engineering configs, each designed and then run separately.
-  const std::string name = GENERATE(as<std::string>{}, "default", "footbridge_steel_40m", "footbridge_aluminium_20m");
+  const std::string name =
+      GENERATE(as<std::string>{}, "default", "footbridge_steel_40m", "footbridge_aluminium_20m");
   INFO("config " << name);
   Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json");
   // The paper's travelling load is checked when a config asks for it, as this one now does.
@@ -55,13 +57,15 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
   run.integrator = IntegratorKind::kRk4;
   run.frequency.enabled = false;
   run.record.bar_forces = true;
-  run.gravity_on_structure = true;  // follows design.self_weight, as the parse would set it
+  run.gravity_on_structure = true;   // follows design.self_weight, as the parse would set it
   run.stabilisation.enabled = true;  // the check's runs hold the bar lengths
   for (int k = 0; k < stations; ++k) {
-    run.loads.push_back({0.25 * k, 0.25 * (k + 1), d.topology.deck_nodes[k] + 1, {0, -d.deck.node_load, 0}});
+    run.loads.push_back(
+        {0.25 * k, 0.25 * (k + 1), d.topology.deck_nodes[k] + 1, {0, -d.deck.node_load, 0}});
   }
   config.dynamics = run;
-  const ScenarioResult r = RunScenario(config, {}, {}, [](const Config& c) { return DesignAndVerify(c); });
+  const ScenarioResult r =
+      RunScenario(config, {}, {}, [](const Config& c) { return DesignAndVerify(c); });
   const SimulationSummary& s = r.simulation.summary;
 
   // The same design: the separate run designed it again, deterministically.
@@ -81,7 +85,8 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
     INFO("string " << d.strings[k].name);
     if (MustStayTaut(d, k)) CHECK(s.min_string_strain[k] >= 0);
   }
-  CHECK(s.max_string_stress <= d.config.material.yield_stress / d.config.design.yield_safety_factor);
+  CHECK(s.max_string_stress <=
+        d.config.material.yield_stress / d.config.design.yield_safety_factor);
   CHECK(DesignVerdict(r.design).utilisation_max <= 1.0 + 1e-9);
 }
 
@@ -133,7 +138,8 @@ TEST_CASE("the dynamic check's static counterparts are the load standing at each
   for (const Eigen::Matrix3Xd& l : loads) {
     const StaticResult r = SolveStatic(statics, start, d.loads, l);
     REQUIRE(r.converged);
-    for (int b = 0; b < st.num_bars(); ++b) peak[st.bars[b].group] = std::max(peak[st.bars[b].group], r.state.bar_compression[b]);
+    for (int b = 0; b < st.num_bars(); ++b)
+      peak[st.bars[b].group] = std::max(peak[st.bars[b].group], r.state.bar_compression[b]);
     for (int k = 0; k < st.num_strings(); ++k) {
       peak[st.strings[k].group] = std::max(peak[st.strings[k].group], r.state.string_tension[k]);
     }
@@ -151,7 +157,8 @@ TEST_CASE("the dynamic check's static counterparts are the load standing at each
   }
 }
 
-TEST_CASE("a dynamic run over the budget at its asked step is skipped before its model is built", "[verify][dynamics]") {
+TEST_CASE("a dynamic run over the budget at its asked step is skipped before its model is built",
+          "[verify][dynamics]") {
   Config config;
   config.bridge.n = 2;
   config.loads.dynamic_method = "rk4";  // the budget is the nonlinear run's
@@ -177,7 +184,8 @@ TEST_CASE("a dynamic run over the budget at its asked step is skipped before its
   CHECK(exact.members.front().utilisation == full.members.front().utilisation);
 }
 
-TEST_CASE("a dynamic check not run says so for each run and its design never passes", "[verify][dynamics]") {
+TEST_CASE("a dynamic check not run says so for each run and its design never passes",
+          "[verify][dynamics]") {
   // The sizing's record of a design whose static check fails by far (verify/verified_design.cc):
   // every run the check would do, not done, with the reason; every member without a finding.
   Config config;
@@ -186,7 +194,8 @@ TEST_CASE("a dynamic check not run says so for each run and its design never pas
   const DynamicCheck full = CheckDynamics(d);
   REQUIRE(full.runs.size() == 1);
   REQUIRE(full.runs.front().done);
-  const DynamicCheck skipped = DynamicCheckNotRun(d, "not run: the static check fails by more than 10 %");
+  const DynamicCheck skipped =
+      DynamicCheckNotRun(d, "not run: the static check fails by more than 10 %");
   REQUIRE(skipped.runs.size() == full.runs.size());
   CHECK(skipped.runs.front().name == full.runs.front().name);
   CHECK_FALSE(skipped.runs.front().done);

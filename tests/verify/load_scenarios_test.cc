@@ -2,15 +2,16 @@
 // and the moving load and the wind gust, run slowly, against their static counterparts (the
 // quasi-static limit of a dynamic run).
 
+#include "verify/load_scenarios.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "bridge/design_model.h"
-#include "sweep/first_frequency.h"
 #include "dynamics/model.h"
 #include "dynamics/node_forces.h"
+#include "sweep/first_frequency.h"
 #include "verify/dynamic_check.h"
-#include "verify/load_scenarios.h"
 
 namespace tbridge {
 namespace {
@@ -30,7 +31,8 @@ DeckLoad LoadAt(const Design& d, const DynamicsConfig& run, double t) {
   return out;
 }
 
-TEST_CASE("a load crossing the deck is shared between deck nodes by the lever rule", "[verify][dynamics]") {
+TEST_CASE("a load crossing the deck is shared between deck nodes by the lever rule",
+          "[verify][dynamics]") {
   Config config;
   config.bridge.n = 3;
   const Design d = RunDesign(config);
@@ -111,7 +113,8 @@ TEST_CASE("a slowly rising wind gives the static wind's forces", "[verify][dynam
   INFO("quasi-static bound " << bound);
   REQUIRE(bound < 0.01);
   for (const GroupAmplification& g : run.groups) {
-    INFO("group " << g.group << ": static " << g.static_peak << " N, dynamic " << g.dynamic_peak << " N");
+    INFO("group " << g.group << ": static " << g.static_peak << " N, dynamic " << g.dynamic_peak
+                  << " N");
     CHECK(g.amplification <= 1 + bound);
     CHECK(g.amplification >= 1 - bound);
   }

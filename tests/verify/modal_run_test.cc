@@ -47,7 +47,8 @@ Pair RunBoth(const Design& d, double force_n) {
   bool converged = false;
   StaticState& standing = out.standing;
   out.abutments = model.reaction_groups;
-  const StationResponses stations = MovingLoadStations(d, model, statics, force_n, scene.duration, standing, converged);
+  const StationResponses stations =
+      MovingLoadStations(d, model, statics, force_n, scene.duration, standing, converged);
   REQUIRE(converged);
   ModalRunOptions modal = ModalRunOptionsOf(d);  // as the check runs it
   modal.max_nonlinearity = 1.0;  // done whatever the nonlinearity: the test reads its error
@@ -61,7 +62,8 @@ Pair RunBoth(const Design& d, double force_n) {
 // (bars: the smaller of yield and buckling; strings: sigma_w A).
 double ForceError(const Design& d, const Pair& p) {
   const BarRule rule = BarRuleOf(d.config);
-  const double E = BarMaterial(d.config).youngs_modulus, sigma_w = StringMaterial(d.config).DesignStress();
+  const double E = BarMaterial(d.config).youngs_modulus,
+               sigma_w = StringMaterial(d.config).DesignStress();
   double worst = 0;
   for (size_t b = 0; b < d.bars.size(); ++b) {
     const BarCapacity cap = BarResistance(d.bars[b].area, d.bars[b].length, rule, E);
@@ -84,10 +86,12 @@ std::array<double, 2> StandingReaction(const Pair& p, size_t abutment) {
 }
 
 double DeckError(const Pair& p) {
-  return std::abs(p.modal.peak_deck_displacement_m - p.rk4.peak_deck_displacement[1]) / p.rk4.peak_deck_displacement[1];
+  return std::abs(p.modal.peak_deck_displacement_m - p.rk4.peak_deck_displacement[1]) /
+         p.rk4.peak_deck_displacement[1];
 }
 
-TEST_CASE("the modal walking-load run agrees with the nonlinear run on the verified default bridge", "[verify][dynamics]") {
+TEST_CASE("the modal walking-load run agrees with the nonlinear run on the verified default bridge",
+          "[verify][dynamics]") {
   // The design `tbridge design configs/default.json` writes (n = 3, comfort on: the deck at 5.6
   // mm under Q_t). 1 % of each member's resistance and 1 % of the deck's peak: the dynamic
   // check's stated accuracy (its utilisations are read to that). Measured 1.4e-3 and 3.1e-4;
@@ -100,8 +104,9 @@ TEST_CASE("the modal walking-load run agrees with the nonlinear run on the verif
   config.design.rest_length_tolerance = 0;
   const Design d = DesignAndVerify(config);
   const Pair p = RunBoth(d, config.loads.travelling_load_n);
-  INFO("nonlinearity " << p.modal.nonlinearity << ", " << p.modal.modes << " modes to " << p.modal.highest_mode_hz
-                       << " Hz; force error " << ForceError(d, p) << ", deck error " << DeckError(p));
+  INFO("nonlinearity " << p.modal.nonlinearity << ", " << p.modal.modes << " modes to "
+                       << p.modal.highest_mode_hz << " Hz; force error " << ForceError(d, p)
+                       << ", deck error " << DeckError(p));
   CHECK(p.modal.nonlinearity <= config.loads.dynamic_modal_max_nonlinearity);
   CHECK(ForceError(d, p) <= 0.01);
   CHECK(DeckError(p) <= 0.01);
@@ -111,7 +116,8 @@ TEST_CASE("the modal walking-load run agrees with the nonlinear run on the verif
   CHECK_THAT(d.dynamics.runs.front().integrator, Catch::StartsWith("modal"));
 }
 
-TEST_CASE("under a small load the modal run is the linear response the nonlinear run tends to", "[verify][dynamics]") {
+TEST_CASE("under a small load the modal run is the linear response the nonlinear run tends to",
+          "[verify][dynamics]") {
   // The first design at n = 3 (soft: its deck goes 34 mm down under 10 kN) under a 100 N walking
   // load: the nonlinear run departs from the linear one by the nonlinearity times the load's
   // share of 10 kN (0.026 / 100 here), so both agree to 1e-4 of the deck's peak and 1e-5 of a
@@ -151,8 +157,10 @@ TEST_CASE("under a small load the modal run is the linear response the nonlinear
   }
 }
 
-TEST_CASE("where a string that must stay taut goes slack, or the bridge is not linear enough, the nonlinear run takes over",
-          "[verify][dynamics]") {
+TEST_CASE(
+    "where a string that must stay taut goes slack, or the bridge is not linear enough, the "
+    "nonlinear run takes over",
+    "[verify][dynamics]") {
   Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json");
   SECTION("a string that must stay taut slack at a station: the first design at n = 4") {
     // String 2-16 goes slack with Q_t at a station. Told that every string must stay taut (no
@@ -166,8 +174,8 @@ TEST_CASE("where a string that must stay taut goes slack, or the bridge is not l
     const StaticModel statics = StaticModelOf(d);
     StaticState standing;
     bool converged = false;
-    const StationResponses stations =
-        MovingLoadStations(d, model, statics, config.loads.travelling_load_n, 8.0, standing, converged);
+    const StationResponses stations = MovingLoadStations(
+        d, model, statics, config.loads.travelling_load_n, 8.0, standing, converged);
     REQUIRE(converged);
     ModalRunOptions modal;
     modal.cutoff_hz = 100;
@@ -184,7 +192,8 @@ TEST_CASE("where a string that must stay taut goes slack, or the bridge is not l
     const DynamicRun& run = check.runs.front();
     CHECK(run.done);
     CHECK(run.integrator == "rk4");
-    CHECK_THAT(run.note, Catch::Contains("modal run not done") && Catch::Contains("not linear enough"));
+    CHECK_THAT(run.note,
+               Catch::Contains("modal run not done") && Catch::Contains("not linear enough"));
   }
 }
 

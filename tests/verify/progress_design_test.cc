@@ -26,7 +26,8 @@ struct Stop {};
 
 }  // namespace
 
-TEST_CASE("progress of a verified design: per sizing, check and run, with the share done", "[verify]") {
+TEST_CASE("progress of a verified design: per sizing, check and run, with the share done",
+          "[verify]") {
   Config config;
   config.bridge.n = 2;
   std::FILE* file = std::tmpfile();

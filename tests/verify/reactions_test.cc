@@ -1,8 +1,8 @@
 // Every static case of the default config: the support reactions balance the case's loads,
 // recomputed here from the case's actions.
 
-#include <catch2/catch.hpp>
 #include <Eigen/Core>
+#include <catch2/catch.hpp>
 
 #include "core/config.h"
 #include "design/design.h"

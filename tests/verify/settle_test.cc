@@ -4,14 +4,14 @@
 // are exactly the design's reference loads, so both analyses see the same forces, and a
 // constant extra load from t = 0 must bring the damped motion to rest at the static solution.
 
-#include <catch2/catch.hpp>
 #include <Eigen/Core>
+#include <catch2/catch.hpp>
 
 #include "bridge/design_model.h"
+#include "design/static_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "test_support.h"
-#include "design/static_model.h"
 #include "verify/static_check.h"
 
 namespace tbridge {
@@ -25,7 +25,8 @@ TEST_CASE("a damped time history settles at the static solution") {
 
   // Static: from the reference state to the reference loads plus the extra load.
   const StaticModel statics = StaticModelOf(d);
-  const StaticState start = StateAt(statics, s.nodes, d.reference_forces.head(s.num_bars()), d.loads);
+  const StaticState start =
+      StateAt(statics, s.nodes, d.reference_forces.head(s.num_bars()), d.loads);
   Eigen::Matrix3Xd loads = d.loads;
   loads(1, deck_node) -= extra;
   const StaticResult st = SolveStatic(statics, start, d.loads, loads);

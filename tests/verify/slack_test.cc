@@ -10,7 +10,10 @@
 namespace tbridge {
 namespace {
 
-TEST_CASE("a deck chain that goes slack fails the design and only a string that must stay taut fails for slack", "[verify]") {
+TEST_CASE(
+    "a deck chain that goes slack fails the design and only a string that must stay taut fails for "
+    "slack",
+    "[verify]") {
   // The 40 m footbridge with the paper's blanket (yield factor 10, Euler, its one case): its
   // deck strings, prestressed at exactly the working stress, go slack under the paper's
   // travelling load (README, "The trade").

@@ -44,8 +44,9 @@ void CheckAgainstHandStatics(const Config& config, const std::string& governs) {
     buckling = chi * area * fy / config.design.buckling_safety_factor;
   }
   const double yield = area * sigma_w;
-  INFO("bar: demand " << found.demand << " N (f = " << f << "), resistance " << found.resistance << " N ("
-                      << found.mode << "); yield " << yield << ", buckling " << buckling << " N");
+  INFO("bar: demand " << found.demand << " N (f = " << f << "), resistance " << found.resistance
+                      << " N (" << found.mode << "); yield " << yield << ", buckling " << buckling
+                      << " N");
   CHECK(bar.length == Approx(l).epsilon(1e-12));  // the drawn geometry, to round-off
   CHECK(found.demand == Approx(f).epsilon(tol));
   CHECK(found.mode == governs);

@@ -2,8 +2,8 @@
 // brute-force nonlinear solve of every case at every station, with every station solved
 // nonlinearly (the default) and with the linear pass screening them.
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "core/config.h"
@@ -38,18 +38,21 @@ BruteForce Solve(const Design& d) {
   for (const LoadCase& c : d.cases) {
     const int stations = c.station_load != 0 ? static_cast<int>(d.actions.station_nodes.size()) : 1;
     for (int k = 0; k < stations; ++k) {
-      const StaticResult r = SolveStatic(model, start, d.loads, d.actions.Loads(c, c.station_load != 0 ? k : -1));
+      const StaticResult r =
+          SolveStatic(model, start, d.loads, d.actions.Loads(c, c.station_load != 0 ? k : -1));
       REQUIRE(r.converged);
       ++out.solves;
       if (c.state == LimitState::kUltimate) {
         for (int b = 0; b < nb; ++b) {
           const BarCapacity cap = BarResistance(d.bars[b].area, d.bars[b].length, rule, E);
           const double f = r.state.bar_compression[b];
-          out.utilisation[b] = std::max({out.utilisation[b], std::abs(f) / cap.yield, f / cap.buckling});
+          out.utilisation[b] =
+              std::max({out.utilisation[b], std::abs(f) / cap.yield, f / cap.buckling});
         }
         for (int j = 0; j < ns; ++j) {
           if (d.strings[j].area > 0) {
-            out.utilisation[nb + j] = std::max(out.utilisation[nb + j], r.state.string_tension[j] / (d.strings[j].area * sigma_w));
+            out.utilisation[nb + j] = std::max(
+                out.utilisation[nb + j], r.state.string_tension[j] / (d.strings[j].area * sigma_w));
           }
         }
         continue;
@@ -62,7 +65,8 @@ BruteForce Solve(const Design& d) {
           out.utilisation[nb + j] = std::max(out.utilisation[nb + j], 1 - strain / (sigma_w / E));
         }
       }
-      for (int v : d.topology.deck_nodes) out.deflection = std::max(out.deflection, std::abs(r.state.nodes(1, v) - s.nodes(1, v)));
+      for (int v : d.topology.deck_nodes)
+        out.deflection = std::max(out.deflection, std::abs(r.state.nodes(1, v) - s.nodes(1, v)));
     }
   }
   return out;

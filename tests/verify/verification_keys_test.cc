@@ -1,8 +1,9 @@
 // The settings that decide what the verified design checks are config keys, and each does what
-// its description says: loads.dynamic_dt_s the step the runs ask for, loads.dynamic_max_member_steps
-// the largest run done (over it: the dynamic check not run, the design INCOMPLETE), and
-// design.max_sizings the designs the verified sizing runs at most, design.dynamic_screen the
-// static utilisation above which the sizing's own designs are not run dynamically.
+// its description says: loads.dynamic_dt_s the step the runs ask for,
+// loads.dynamic_max_member_steps the largest run done (over it: the dynamic check not run, the
+// design INCOMPLETE), and design.max_sizings the designs the verified sizing runs at most,
+// design.dynamic_screen the static utilisation above which the sizing's own designs are not run
+// dynamically.
 
 #include <catch2/catch.hpp>
 
@@ -11,7 +12,8 @@
 
 namespace tbridge {
 
-TEST_CASE("the verification's settings are keys, and each decides what it says", "[verify][config]") {
+TEST_CASE("the verification's settings are keys, and each decides what it says",
+          "[verify][config]") {
   Config config;
   config.bridge.n = 1;
   config.comfort.check = false;
@@ -45,7 +47,8 @@ TEST_CASE("the verification's settings are keys, and each decides what it says",
   CHECK(base.resizing.iterations > 1);
 }
 
-TEST_CASE("design.dynamic_screen decides which of the sizing's designs are run dynamically", "[verify][config]") {
+TEST_CASE("design.dynamic_screen decides which of the sizing's designs are run dynamically",
+          "[verify][config]") {
   // The default at n = 5, one sizing: its design fails the static check by 13 % (utilisation
   // 1.13, BENCHMARKS.md), above the default screen of 1.1, so its runs are not run, and it says
   // why; with the screen at 1e9 the same design is run. Either way it FAILS, on its statics.

@@ -206,7 +206,8 @@ TEST_CASE("the 3D bridge designs and passes with the engineering defaults at n =
   Check3dBridgeAt(3);
 }
 // Tagged [stress]: run as the entry `verify: stress` (tests/CMakeLists.txt), with its own timeout.
-TEST_CASE("the 3D bridge designs and passes with the engineering defaults at n = 4", "[verify][stress]") {
+TEST_CASE("the 3D bridge designs and passes with the engineering defaults at n = 4",
+          "[verify][stress]") {
   Check3dBridgeAt(4);
 }
 
