@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   build-essential      # g++ 12, make
   cmake
+  clang-format-14      # the formatter the tests hold every C++ file to (tools/check_format.sh)
   pkg-config           # finds Ipopt
   libeigen3-dev        # dense and sparse linear algebra
   coinor-libipopt-dev  # default minimum-mass solver
