@@ -75,7 +75,9 @@ class ScenarioCache {
     auto it = cache_.find(key);
     if (it == cache_.end()) {
       ++runs;
-      it = cache_.emplace(key, RunScenario(config, HooksFor(path, progress_)).simulation.summary)
+      it = cache_
+               .emplace(key,
+                        RunSimulateScenario(config, HooksFor(path, progress_)).simulation.summary)
                .first;
     }
     return it->second;
@@ -165,7 +167,7 @@ PaperReproduction ReproducePaper(const std::string& dir, const std::set<int>& ta
   if (tables.count(kSection73)) {
     for (const char* run : {"travelling", "wind"}) {
       const std::string path = dir + "/paper_3d_" + run + ".json";
-      const ScenarioResult r = RunScenario(LoadConfig(path), HooksFor(path, progress));
+      const ScenarioResult r = RunSimulateScenario(LoadConfig(path), HooksFor(path, progress));
       ++out.runs;
       const SimulationSummary& s = r.simulation.summary;
       nlohmann::json peak = nlohmann::json::object(), node = nlohmann::json::object();

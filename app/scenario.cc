@@ -25,7 +25,7 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
     return r;
   }
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "design");
-  r.design = make_design ? make_design(config) : RunDesign(config);
+  r.design = make_design(config);
   if (on_design) on_design(r.design);
   r.model = BuildDynamicModel(r.design, options);
   if (hooks.progress != nullptr) hooks.progress->Stage(hooks.stage_prefix + "simulate");
@@ -35,10 +35,11 @@ ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
 
 ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks,
                                    const std::function<void(const Design&)>& on_design) {
+  const auto paper = [](const Config& c) { return RunDesign(c); };
   const auto verified = [](const Config& c) { return DesignAndVerify(c); };
   return RunScenario(
       config, hooks, on_design,
-      KeepsPaperSwitches(config) ? std::function<Design(const Config&)>{} : verified);
+      KeepsPaperSwitches(config) ? std::function<Design(const Config&)>{paper} : verified);
 }
 
 ScenarioResult RunDesignScenario(const Design& design, const RunHooks& hooks,

@@ -23,16 +23,17 @@ struct ScenarioResult {
 // design and builds its model with BuildStructureModel. `hooks` go to Simulate (progress,
 // the caller's bytes per record for the output limit); the progress stages are "design" and
 // "simulate".
-// `on_design` (optional) sees the design before the run starts, and may throw to stop it.
-// `make_design` (optional) designs a bridge config in place of RunDesign: the verified design
-// of tbridge simulate, so that it runs the bridge tbridge design writes.
-ScenarioResult RunScenario(const Config& config, const RunHooks& hooks = {},
-                           const std::function<void(const Design&)>& on_design = {},
-                           const std::function<Design(const Config&)>& make_design = {});
+// `on_design` (optional: empty) sees the design before the run starts, and may throw to stop it.
+// `make_design` designs a bridge config: the verified design for tbridge simulate
+// (RunSimulateScenario), the design as written for a design file (RunDesignScenario). It has no
+// default, so that no caller runs the unverified equilibrium design by leaving it out.
+ScenarioResult RunScenario(const Config& config, const RunHooks& hooks,
+                           const std::function<void(const Design&)>& on_design,
+                           const std::function<Design(const Config&)>& make_design);
 
-// `tbridge simulate`'s scenario: RunScenario on the bridge tbridge design writes, verified and
-// resized (a config with the paper's switches keeps the paper's design, which needs no check to
-// be simulated), or on the config's custom structure.
+// `tbridge simulate`'s scenario, and the paper's tables': RunScenario on the bridge tbridge
+// design writes, verified and resized (a config with the paper's switches keeps the paper's
+// design, RunDesign, which needs no check to be simulated), or on the config's custom structure.
 ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks = {},
                                    const std::function<void(const Design&)>& on_design = {});
 
