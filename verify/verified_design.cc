@@ -663,12 +663,17 @@ Design FirstDesign(const Config& config, ProgressReporter* progress, bool* relax
   return RunDesign(relaxed_config, progress);
 }
 
+// Member forces [N] on a structure's orthonormal self-stress basis: their projection on its
+// self-stresses (empty where it has none).
+Eigen::VectorXd SelfStressCoefficients(const Structure& structure, const Eigen::VectorXd& forces) {
+  const EquilibriumSolver basis(BuildEquilibrium(structure));
+  if (basis.states() == 0) return Eigen::VectorXd();
+  return basis.SelfStresses().transpose() * forces;
+}
+
 // The coefficients of a design's prestress on the orthonormal self-stress basis.
 Eigen::VectorXd PrestressCoefficients(const Design& d) {
-  const EquilibriumSystem eq = BuildEquilibrium(d.topology.structure);
-  const EquilibriumSolver basis(eq);
-  if (basis.states() == 0) return Eigen::VectorXd();
-  return basis.SelfStresses().transpose() * PrestressForces(d);
+  return SelfStressCoefficients(d.topology.structure, PrestressForces(d));
 }
 
 // The first design's member areas and prestress coefficients, computed once.
@@ -1021,9 +1026,7 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, const S
   if (start != nullptr && start->areas.size() == areas.size() &&
       static_cast<size_t>(start->prestress_forces.size()) == areas.size() && alpha.size() > 0) {
     areas = start->areas;
-    alpha =
-        EquilibriumSolver(BuildEquilibrium(first.topology.structure)).SelfStresses().transpose() *
-        start->prestress_forces;
+    alpha = SelfStressCoefficients(first.topology.structure, start->prestress_forces);
   }
   // The start: the first design's (or the given) areas and prestress under the config's own loads
   // and weight.
