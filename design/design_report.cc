@@ -650,27 +650,26 @@ std::string WhatMovesIt(const Design& d, const Verdict& v) {
   return "what moves it: the largest violation is " + worst->kind + by + "; keys: " + worst->keys;
 }
 
-}  // namespace
-
-void WriteDesignJson(const Design& d, std::ostream& os) {
+// The topology section: the counts and the fixed nodes (1-based).
+json TopologyJson(const Design& d) {
   const Structure& s = d.topology.structure;
-  // The small sections as JSON values; nodes and members are streamed one per line, so the
-  // memory stays that of the design itself.
   json fixed = json::array();
   for (int v = 0; v < s.num_nodes(); ++v) {
     if (v < static_cast<int>(s.fixed.size()) && s.fixed[v]) fixed.push_back(v + 1);
   }
-  const json topology = {{"n", d.config.bridge.n},
-                         {"p", d.config.bridge.p},
-                         {"beta_deg", d.config.bridge.beta_deg},
-                         {"planes", d.topology.planes},
-                         {"nodes", s.num_nodes()},
-                         {"bars", s.num_bars()},
-                         {"strings", s.num_strings()},
-                         {"class", s.TensegrityClass()},
-                         {"fixed_nodes", fixed}};
-  const Verdict verdict = DesignVerdict(d);
-  const DeckBeamCheck& beams = verdict.deck_beams;
+  return {{"n", d.config.bridge.n},
+          {"p", d.config.bridge.p},
+          {"beta_deg", d.config.bridge.beta_deg},
+          {"planes", d.topology.planes},
+          {"nodes", s.num_nodes()},
+          {"bars", s.num_bars()},
+          {"strings", s.num_strings()},
+          {"class", s.TensegrityClass()},
+          {"fixed_nodes", fixed}};
+}
+
+// The deck section, with the check of its beams.
+json DeckJson(const Design& d, const DeckBeamCheck& beams) {
   const json deck_check = {{"status", CheckStatusName(beams.Status())},
                            {"utilisation", beams.utilisation},
                            {"stress_ed", beams.stress_ed_pa},
@@ -681,61 +680,65 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
                            {"sag", beams.sag_m},
                            {"sag_limit", beams.sag_limit_m},
                            {"sag_case", beams.sag_case}};
-  const json deck = {{"section_length", d.deck.section_length},
-                     {"section_mass", d.deck.section_mass},
-                     {"thickness", d.deck.thickness},
-                     {"node_load", d.deck.node_load},
-                     {"total_load", d.deck.total_load},
-                     {"beams_mass", d.deck.beams_mass},
-                     {"sized_by", d.deck.sized_by},
-                     {"check", deck_check}};
-  const json mass = {{"bars", d.mass.bars},
-                     {"strings", d.mass.strings},
-                     {"deck_strings", d.mass.deck_strings},
-                     {"deck_beams", d.mass.deck_beams},
-                     {"structure", d.mass.structure},
-                     {"total", d.mass.total}};
-  const Resizing::Kkt& kkt = d.resizing.kkt;
-  const json solver = {
-      {"name", d.solver.solver},
-      {"status", d.solver.status},
-      {"iterations", d.solver.iterations},
-      {"problem", d.solver_form},
-      {"kkt", !kkt.computed ? json(nullptr)
-                            : json{{"stationarity", kkt.stationarity},
-                                   {"feasibility", kkt.feasibility},
-                                   {"complementarity", kkt.complementarity},
-                                   {"second_order", kkt.second_order},
-                                   {"second_order_by", kkt.second_order_by},
-                                   {"proved_local_optimum", kkt.proved_local_optimum},
-                                   {"failed", kkt.failed},
-                                   {"active_rows", kkt.active_rows},
-                                   {"active_bounds", kkt.active_bounds},
-                                   {"free_variables", kkt.free_variables},
-                                   {"null_space_dimension", kkt.null_space_dimension}}}};
-  auto field = [&os](const char* key, const json& value, bool last = false) {
-    std::string text = value.dump(2);
-    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3))
-      text.insert(at + 1, "  ");
-    os << "  \"" << key << "\": " << text << (last ? "\n" : ",\n");
-  };
+  return {{"section_length", d.deck.section_length},
+          {"section_mass", d.deck.section_mass},
+          {"thickness", d.deck.thickness},
+          {"node_load", d.deck.node_load},
+          {"total_load", d.deck.total_load},
+          {"beams_mass", d.deck.beams_mass},
+          {"sized_by", d.deck.sized_by},
+          {"check", deck_check}};
+}
 
-  os << "{\n";
-  field("angle_search", AngleSearchJson(d.angle));
-  field("as_built", AsBuiltJson(d));
-  field("cases", CasesJson(d));
-  field("comfort", ComfortJson(d));
-  field("config", ToJson(d.config));
-  field("deck", deck);
-  field("designed_for", DesignLoadsJson(d.designed_for ? *d.designed_for : d.config));
-  field("deflection_max", DeflectionsJson(d));
-  field("dynamic_check", DynamicsJson(d));
-  field("equilibrium_residual_N", d.equilibrium_residual);
-  field("loads_changed",
-        d.designed_for ? ChangedLoads(*d.designed_for, d.config) : std::vector<std::string>{});
-  field("mass", mass);
-  field("mass_attribution", AttributionJson(d));
-  field("materials", MaterialsJson(d.config));
+json MassJson(const Design& d) {
+  return {{"bars", d.mass.bars},
+          {"strings", d.mass.strings},
+          {"deck_strings", d.mass.deck_strings},
+          {"deck_beams", d.mass.deck_beams},
+          {"structure", d.mass.structure},
+          {"total", d.mass.total}};
+}
+
+// The solver section, with its optimality certificate when one was computed.
+json SolverJson(const Design& d) {
+  const Resizing::Kkt& kkt = d.resizing.kkt;
+  return {{"name", d.solver.solver},
+          {"status", d.solver.status},
+          {"iterations", d.solver.iterations},
+          {"problem", d.solver_form},
+          {"kkt", !kkt.computed ? json(nullptr)
+                                : json{{"stationarity", kkt.stationarity},
+                                       {"feasibility", kkt.feasibility},
+                                       {"complementarity", kkt.complementarity},
+                                       {"second_order", kkt.second_order},
+                                       {"second_order_by", kkt.second_order_by},
+                                       {"proved_local_optimum", kkt.proved_local_optimum},
+                                       {"failed", kkt.failed},
+                                       {"active_rows", kkt.active_rows},
+                                       {"active_bounds", kkt.active_bounds},
+                                       {"free_variables", kkt.free_variables},
+                                       {"null_space_dimension", kkt.null_space_dimension}}}};
+}
+
+// A design read from its file (tbridge check) was not sized here: no record, rather than
+// one that reads "not converged".
+json ResizingJson(const Design& d) {
+  return d.solver_form == kReadFromFile ? json(nullptr)
+                                        : json{{"iterations", d.resizing.iterations},
+                                               {"converged", d.resizing.converged},
+                                               {"tolerance", d.resizing.tolerance},
+                                               {"structure_mass_kg", d.resizing.structure_mass_kg},
+                                               {"utilisation_max", d.resizing.utilisation_max},
+                                               {"changes", d.resizing.changes},
+                                               {"second_start_kg", d.resizing.second_start_kg},
+                                               {"optima", d.resizing.optima},
+                                               {"why", d.resizing.why},
+                                               {"comfort_rows", d.resizing.comfort_rows}};
+}
+
+// The "members" and "nodes" sections, streamed one per line.
+void WriteMembersAndNodes(const Design& d, std::ostream& os) {
+  const Structure& s = d.topology.structure;
   // Members and nodes go through a buffer written to the stream a block at a time.
   std::string text;
   constexpr size_t kBlock = 1 << 20;
@@ -770,38 +773,18 @@ void WriteDesignJson(const Design& d, std::ostream& os) {
   }
   text += s.num_nodes() ? "]\n  ],\n" : "\n  ],\n";
   flush(true);
-  field("reaction_envelope", ReactionEnvelopeJson(d));
-  field("reactions", ReactionsJson(d));
-  // A design read from its file (tbridge check) was not sized here: no record, rather than
-  // one that reads "not converged".
-  field("resizing", d.solver_form == kReadFromFile
-                        ? json(nullptr)
-                        : json{{"iterations", d.resizing.iterations},
-                               {"converged", d.resizing.converged},
-                               {"tolerance", d.resizing.tolerance},
-                               {"structure_mass_kg", d.resizing.structure_mass_kg},
-                               {"utilisation_max", d.resizing.utilisation_max},
-                               {"changes", d.resizing.changes},
-                               {"second_start_kg", d.resizing.second_start_kg},
-                               {"optima", d.resizing.optima},
-                               {"why", d.resizing.why},
-                               {"comfort_rows", d.resizing.comfort_rows}});
-  field("self_weight_iterations", d.self_weight_iterations);
-  field("self_stress_states", d.self_stress_states);
-  field("solver", solver);
-  field("stability", StabilityJson(d.stability));
-  field("topology", topology);
-  field("units", Units());
-  field("utilisation_max", verdict.utilisation_max);
-  field("verdict", VerdictJson(d, verdict), true);
-  os << "}\n";
 }
 
-std::string DesignSummary(const Design& d, int max_member_rows) {
+// Appends a line of text to `out`.
+auto LineAppender(std::string& out) {
+  return [&out](const std::string& text) { out += text + "\n"; };
+}
+
+// The bridge, its topology and its deck.
+void AppendSummaryHead(std::string& out, const Design& d) {
   const Structure& s = d.topology.structure;
   const BridgeConfig& b = d.config.bridge;
-  std::string out;
-  auto line = [&out](const std::string& text) { out += text + "\n"; };
+  const auto line = LineAppender(out);
 
   line(Format("%s bridge: n = %d, p = %d, beta = %g deg, span %g m, payload %g N",
               b.planes == 1 ? "planar substructure" : "3D coupled", b.n, b.p, b.beta_deg, b.span,
@@ -815,8 +798,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
              "node, F_tot = %.6g N",
              d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3, d.deck.node_load,
              d.deck.total_load));
-  const Verdict verdict = DesignVerdict(d);
-  const DeckBeamCheck& beams = verdict.deck_beams;
+}
+
+// The deck beams, the solver (or the file the design was read from) and the stability.
+void AppendSummaryDesign(std::string& out, const Design& d, const DeckBeamCheck& beams) {
+  const auto line = LineAppender(out);
   line(
       Format("deck beams: thickness set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / "
              "%g = %.4g mm (%s)",
@@ -847,6 +833,13 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
              "%d zero pivots); critical load factor %s",
              v.stable ? "stable" : "UNSTABLE", v.reduced_dofs, v.reduced_dofs, v.negative_pivots,
              v.zero_pivots, critical.c_str()));
+}
+
+// The support reactions of the reference state and, when the statics ran, their envelope
+// and the abutments.
+void AppendSummaryReactions(std::string& out, const Design& d) {
+  const Structure& s = d.topology.structure;
+  const auto line = LineAppender(out);
   std::string reactions;
   for (int n = 0; n < s.num_nodes() && n < d.reactions.cols(); ++n) {
     if (!s.fixed[n]) continue;
@@ -873,6 +866,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
     }
     for (const AbutmentFinding& a : d.statics.abutments) line(AbutmentLine(a));
   }
+}
+
+// The load cases, their notes and the static check.
+void AppendSummaryStatics(std::string& out, const Design& d) {
+  const auto line = LineAppender(out);
   line(Format(
       "load cases: %zu (%s)%s", d.cases.size(),
       d.config.design.self_weight ? "self-weight in G" : "no self-weight",
@@ -914,6 +912,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                                           : d.statics.deflection_case.c_str(),
         d.config.loads.deflection_limit, d.statics.deflection_limit_m, worst_balance));
   }
+}
+
+// The sizings of the resizing loop, the optimality certificate and the comfort rows.
+void AppendSummaryResizing(std::string& out, const Design& d, const Verdict& verdict) {
+  const auto line = LineAppender(out);
   if (d.resizing.iterations > 1) {
     line(Format("resizing: %d designs, structure %.4g kg -> %.4g kg (%s); %s",
                 d.resizing.iterations, d.resizing.structure_mass_kg.front(), d.mass.structure,
@@ -951,6 +954,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
              : "optimality: not proved: " + k.failed);
   }
   for (const std::string& row : d.resizing.comfort_rows) line("comfort row of the sizing: " + row);
+}
+
+// One line per dynamic run.
+void AppendSummaryDynamics(std::string& out, const Design& d) {
+  const auto line = LineAppender(out);
   if (d.dynamics.done && d.dynamics.runs.empty())
     line("dynamic check: no dynamic load among loads.cases");
   for (const DynamicRun& r : d.dynamics.runs) {
@@ -973,12 +981,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
         r.peak_horizontal_reaction[1] / 1000, r.peak_vertical_reaction[0] / 1000,
         r.peak_vertical_reaction[1] / 1000, amp.c_str()));
   }
-  for (const std::string& text : ComfortSummaryLines(d)) line(text);
-  line(verdict.summary);
-  if (const std::string lever = WhatMovesIt(d, verdict); !lever.empty()) line(lever);
-  line("scope: " + verdict.scope);
-  line("");
+}
 
+// The member table, its first `max_member_rows` rows.
+void AppendSummaryMembers(std::string& out, const Design& d, int max_member_rows) {
+  const auto line = LineAppender(out);
   line(
       "members (force: the largest over the ultimate cases, tension for strings, compression for "
       "bars; "
@@ -1008,7 +1015,11 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
         Format("  ... %zu more members omitted (all are in the JSON output)", rows.size() - shown));
   }
   line("");
+}
 
+// The masses and what the structure's mass pays for.
+void AppendSummaryMass(std::string& out, const Design& d) {
+  const auto line = LineAppender(out);
   line("mass [kg]:");
   line(Format("  bars                         %12.3f", d.mass.bars));
   line(Format("  strings (non-deck)           %12.3f", d.mass.strings));
@@ -1031,6 +1042,77 @@ std::string DesignSummary(const Design& d, int max_member_rows) {
                   a.premium_by_kind_kg[k]));
     }
   }
+}
+
+}  // namespace
+
+void WriteDesignJson(const Design& d, std::ostream& os) {
+  // The small sections as JSON values; nodes and members are streamed one per line, so the
+  // memory stays that of the design itself.
+  const json topology = TopologyJson(d);
+  const Verdict verdict = DesignVerdict(d);
+  const DeckBeamCheck& beams = verdict.deck_beams;
+  const json deck = DeckJson(d, beams);
+  const json mass = MassJson(d);
+  const json solver = SolverJson(d);
+  auto field = [&os](const char* key, const json& value, bool last = false) {
+    std::string text = value.dump(2);
+    for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 3))
+      text.insert(at + 1, "  ");
+    os << "  \"" << key << "\": " << text << (last ? "\n" : ",\n");
+  };
+
+  os << "{\n";
+  field("angle_search", AngleSearchJson(d.angle));
+  field("as_built", AsBuiltJson(d));
+  field("cases", CasesJson(d));
+  field("comfort", ComfortJson(d));
+  field("config", ToJson(d.config));
+  field("deck", deck);
+  field("designed_for", DesignLoadsJson(d.designed_for ? *d.designed_for : d.config));
+  field("deflection_max", DeflectionsJson(d));
+  field("dynamic_check", DynamicsJson(d));
+  field("equilibrium_residual_N", d.equilibrium_residual);
+  field("loads_changed",
+        d.designed_for ? ChangedLoads(*d.designed_for, d.config) : std::vector<std::string>{});
+  field("mass", mass);
+  field("mass_attribution", AttributionJson(d));
+  field("materials", MaterialsJson(d.config));
+  WriteMembersAndNodes(d, os);
+  field("reaction_envelope", ReactionEnvelopeJson(d));
+  field("reactions", ReactionsJson(d));
+  field("resizing", ResizingJson(d));
+  field("self_weight_iterations", d.self_weight_iterations);
+  field("self_stress_states", d.self_stress_states);
+  field("solver", solver);
+  field("stability", StabilityJson(d.stability));
+  field("topology", topology);
+  field("units", Units());
+  field("utilisation_max", verdict.utilisation_max);
+  field("verdict", VerdictJson(d, verdict), true);
+  os << "}\n";
+}
+
+std::string DesignSummary(const Design& d, int max_member_rows) {
+  std::string out;
+  AppendSummaryHead(out, d);
+  const Verdict verdict = DesignVerdict(d);
+  const DeckBeamCheck& beams = verdict.deck_beams;
+  AppendSummaryDesign(out, d, beams);
+  AppendSummaryReactions(out, d);
+  AppendSummaryStatics(out, d);
+  AppendSummaryResizing(out, d, verdict);
+  AppendSummaryDynamics(out, d);
+  const auto line = LineAppender(out);
+  for (const std::string& text : ComfortSummaryLines(d)) line(text);
+  line(verdict.summary);
+  if (const std::string lever = WhatMovesIt(d, verdict); !lever.empty()) line(lever);
+  line("scope: " + verdict.scope);
+  line("");
+
+  AppendSummaryMembers(out, d, max_member_rows);
+
+  AppendSummaryMass(out, d);
   return out;
 }
 
