@@ -388,6 +388,198 @@ void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& ru
   }
 }
 
+// Drops the travelling families where their station solves would cost too much, and the design
+// says so; returns whether a travelling load is left to check.
+bool KeepAffordableTravellingLoads(Design& d, int members) {
+  bool travels = false;
+  for (const LoadCase& c : d.cases) travels = travels || c.station_load != 0;
+  // A travelling family costs one equilibrium solve per deck station, each linear in the
+  // members: 0.6 s at n = 10, 9.5 s at n = 12, 310 s at n = 14. Beyond 2^23 station-members
+  // (n = 10 on a planar bridge) the families are left out, and the design says so.
+  const double station_members = static_cast<double>(d.actions.station_nodes.size()) * members;
+  if (travels && station_members > 8388608.0) {
+    std::erase_if(d.cases, [](const LoadCase& c) { return c.station_load != 0; });
+    d.notes.push_back(
+        "loads.cases: the travelling loads are not checked: " +
+        std::to_string(d.actions.station_nodes.size()) + " deck stations x " +
+        std::to_string(members) +
+        " members exceed the 2^23 station-members a design solves for them (n <= 10 on a planar "
+        "bridge)");
+    d.unchecked_cases = true;
+    travels = false;
+    if (d.cases.empty())
+      throw ModelError(
+          "loads.cases: only travelling loads were asked for, and they are too costly to check at "
+          "this n");
+  }
+  return travels;
+}
+
+// The self-stress basis, formed where it is small enough (2^20 entries).
+EquilibriumBasis BasisOf(const EquilibriumSolver& solver, const EquilibriumSystem& eq,
+                         int members) {
+  EquilibriumBasis basis;
+  basis.rank = solver.rank();
+  basis.states = solver.states();
+  basis.basis_formed = static_cast<double>(members) * basis.states <= 1048576.0;
+  basis.self_stress = basis.basis_formed ? solver.SelfStresses() : Eigen::MatrixXd(members, 0);
+  if (basis.self_stress.size())
+    basis.basis_residual = (eq.A * basis.self_stress).cwiseAbs().maxCoeff();
+  return basis;
+}
+
+// Sizes every member for its largest force, rest lengths from the reference state; `mass`
+// takes each member's mass. Returns the members' total mass.
+template <typename Floor>
+double SizeMembers(Design& d, const DesignInputs& in, const BarRule& rule, const Floor& floor,
+                   const Eigen::VectorXd& largest, const Eigen::VectorXd& reference_forces,
+                   std::vector<double>& mass) {
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  const MinMassSettings& settings = in.settings;
+  d.bars.clear();
+  d.strings.clear();
+  double total = 0;
+  for (int b = 0; b < nb; ++b) {
+    MemberSizing m =
+        SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, settings.bars);
+    if (floor(b) > 0 && m.area == floor(b)) m.governed_by = "resized";
+    m.kind = MemberKind::kBar;
+    m.i = s.bars[b].i;
+    m.j = s.bars[b].j;
+    m.name = Structure::Name(s.bars[b]);
+    m.reference_force = reference_forces[b];
+    mass[b] = m.mass;
+    total += m.mass;
+    d.bars.push_back(m);
+  }
+  for (int k = 0; k < s.num_strings(); ++k) {
+    MemberSizing m = SizeString(s.Length(s.strings[k]), largest[nb + k], reference_forces[nb + k],
+                                std::max(in.string_min_area[k], floor(nb + k)), settings.strings);
+    if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k)) m.governed_by = "resized";
+    m.kind = StringKind(s.strings[k]);
+    m.i = s.strings[k].i;
+    m.j = s.strings[k].j;
+    m.name = Structure::Name(s.strings[k]);
+    mass[nb + k] = m.mass;
+    total += m.mass;
+    d.strings.push_back(m);
+  }
+  return total;
+}
+
+// The self-weight fixed point: each pass adds the weight of the last sizing. The weight
+// is a fraction of the load well below 1 for any bridge that can stand, so the change of
+// mass shrinks geometrically, to 1e-12 (a few hundred rounding steps of a sum of masses)
+// where each pass's optimum is exact (the closed-form and direct solves). An iterative
+// solver returns it only to about design.tolerance (relative): there the change stops
+// shrinking at a few times that (the 3D bridge at n = 2: +-1.2e-9 at 1e-10), and a change
+// below 100 times the tolerance that did not halve is as settled as the solver can tell.
+// Where the problem has many optima (the 3D bridge's dozens of self-stress states), such
+// a change of weight can move the solver between them and the passes cycle (at n = 3 with
+// a period of 4 passes and a spread of 4e-6): after 8 passes a change of 1e-5 is settled.
+// The weight is then right to 1e-5 of the structure's own weight, far below what any check
+// resolves, and the verified sizing rebuilds the weight from its own design anyway. A
+// change that grows after the first passes does not settle: the mass either diverges or
+// jumps between optima (the 3D bridge at n = 4: 1232, 1233, 1172, 1197, 1171 kg).
+// Returns whether the sizing of mass `total` settles it; throws where it does not settle.
+bool SelfWeightSettled(const Config& config, const Design& d, double total, double previous_total,
+                       double& previous_change) {
+  const double change = std::abs(total - previous_total) / total;
+  const bool settled =
+      change <= 1e-12 ||
+      (change <= 100 * config.design.tolerance && change > 0.5 * previous_change) ||
+      (d.self_weight_iterations > 8 && change <= 1e-5);
+  if (!config.design.self_weight || settled) return true;
+  const bool unsettled = d.self_weight_iterations >= 3 && change > previous_change && change > 1e-5;
+  previous_change = change;
+  if (d.self_weight_iterations >= 200 || unsettled || !std::isfinite(total)) {
+    // Still growing: the weight outruns what the members carry. Moving back and forth: the
+    // minimum-mass problem has many optima (self-stresses), and a small change of weight
+    // moves the solver from one to another.
+    const bool growing = !std::isfinite(total) || total > 1.05 * previous_total;
+    throw ModelError(
+        "self-weight: the member mass did not settle in " +
+        std::to_string(d.self_weight_iterations) + " sizings (" + NumberText(previous_total) +
+        " kg, then " + NumberText(total) + " kg): " +
+        (growing
+             ? std::string("the members cannot carry their own weight at this span and material")
+             : std::string("it moves between optima of the minimum-mass problem (" +
+                           std::to_string(d.self_stress_states) +
+                           " self-stress states); design.self_weight false designs without it")));
+  }
+  return false;
+}
+
+// No design where the solver failed, the reference state is out of equilibrium or a member is
+// past its floor: the error says what was solved, and on a 3D bridge what may be at fault.
+void RequireDesignFound(const Design& d, const Config& config, const EquilibriumBasis& basis,
+                        const MinMassSettings& settings, const MinMassSolution& solution,
+                        double sigma_w) {
+  const double load_scale = SelfStressForceScale(basis, settings);
+  const double smallest = solution.forces.col(solution.forces.cols() - 1).minCoeff();
+  if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
+      d.equilibrium_residual > 1e-6 * load_scale || smallest < -1e-6 * load_scale) {
+    std::ostringstream os;
+    os << "no minimum-mass design found for n = " << config.bridge.n << ", p = " << config.bridge.p
+       << ", beta = " << config.bridge.beta_deg << " deg: solver " << d.solver.solver
+       << " returned status " << d.solver.status << " after " << d.solver.iterations
+       << " iterations (equilibrium residual " << d.equilibrium_residual << " N)";
+    if (d.topology.planes == 2) {
+      // The transverse strings' prestress floor grows with sigma_w; where the loads cannot
+      // balance it, no member forces are both in equilibrium and of the right sign.
+      const double r = config.design.transverse_string_min_radius;
+      os << "; the transverse strings are prestressed at sigma_w pi r^2 = "
+         << sigma_w * std::numbers::pi * r * r
+         << " N each (design.transverse_string_min_radius = " << r
+         << " m), which these loads may not balance: a "
+         << "smaller radius lowers it";
+    }
+    throw ModelError(os.str());
+  }
+}
+
+// Utilisation of every member under its largest (ultimate) and smallest force of any case.
+void UtiliseMembers(Design& d, const MinMassSolution& solution, const BarRule& rule, double sigma_w,
+                    const MinMassSettings& settings, bool single, const CaseEnvelope& env) {
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars(), members = nb + s.num_strings();
+  const Eigen::VectorXd& largest = solution.forces.col(0);
+  const Eigen::VectorXd& least = solution.forces.col(solution.forces.cols() - 1);
+  for (int j = 0; j < members; ++j) {
+    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    Utilise(m, largest[j], least[j], rule, sigma_w, settings.bars.youngs_modulus);
+    m.force_min = least[j];
+    m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
+    if (m.mode == "slack" || m.mode == "tension")
+      m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
+    (m.kind == MemberKind::kBar          ? d.mass.bars
+     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
+                                         : d.mass.strings) += m.mass;
+  }
+}
+
+// Keeps the reference state and assesses it: stability, support reactions, and the masses.
+void CompleteDesign(Design& d, const Config& config, const MinMassSolution& solution,
+                    const Eigen::VectorXd& reference_forces,
+                    const Eigen::Matrix3Xd& reference_loads, const LoadCase& reference) {
+  const Structure& s = d.topology.structure;
+  d.alpha = solution.alpha;
+  d.reference_forces = reference_forces;
+  d.loads = reference_loads;
+  d.reference = reference;
+  // Stability with the bars held: sparse and roughly linear, so it runs at every n; the dense
+  // critical load factor only where it costs well under a second (n <= 6).
+  std::vector<double> string_stiffness(d.strings.size());
+  for (size_t k = 0; k < d.strings.size(); ++k) string_stiffness[k] = d.strings[k].stiffness;
+  d.stability = AssessStability(s, reference_forces, string_stiffness, config.bridge.n <= 6);
+  d.reactions = SupportReactions(s, reference_forces, reference_loads);
+  d.reactions.array() += 0.0;  // -0 (a fixed node's untouched axis) reads as 0 in the outputs
+  d.mass.deck_beams = d.deck.beams_mass;
+  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
+  d.mass.total = d.mass.structure + d.mass.deck_beams;
+}
+
 }  // namespace
 
 // The permanent action's factors: deck dead load, and the members' weight when it is on.
@@ -426,27 +618,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress,
 
   d.actions = std::move(in.actions);
   d.cases = MakeLoadCases(config, d.deck, d.notes);
-  bool travels = false;
-  for (const LoadCase& c : d.cases) travels = travels || c.station_load != 0;
-  // A travelling family costs one equilibrium solve per deck station, each linear in the
-  // members: 0.6 s at n = 10, 9.5 s at n = 12, 310 s at n = 14. Beyond 2^23 station-members
-  // (n = 10 on a planar bridge) the families are left out, and the design says so.
-  const double station_members = static_cast<double>(d.actions.station_nodes.size()) * members;
-  if (travels && station_members > 8388608.0) {
-    std::erase_if(d.cases, [](const LoadCase& c) { return c.station_load != 0; });
-    d.notes.push_back(
-        "loads.cases: the travelling loads are not checked: " +
-        std::to_string(d.actions.station_nodes.size()) + " deck stations x " +
-        std::to_string(members) +
-        " members exceed the 2^23 station-members a design solves for them (n <= 10 on a planar "
-        "bridge)");
-    d.unchecked_cases = true;
-    travels = false;
-    if (d.cases.empty())
-      throw ModelError(
-          "loads.cases: only travelling loads were asked for, and they are too costly to check at "
-          "this n");
-  }
+  const bool travels = KeepAffordableTravellingLoads(d, members);
   const bool single = d.cases.size() == 1 && !travels;
 
   const EquilibriumSystem eq = BuildEquilibrium(s);
@@ -454,13 +626,7 @@ Design RunDesign(const Config& config, ProgressReporter* progress,
   d.self_stress_states = solver.states();
   StationInfluence influence;
   if (travels) influence = InfluenceOfStations(solver, eq, d.actions);
-  EquilibriumBasis basis;
-  basis.rank = solver.rank();
-  basis.states = solver.states();
-  basis.basis_formed = static_cast<double>(members) * basis.states <= 1048576.0;
-  basis.self_stress = basis.basis_formed ? solver.SelfStresses() : Eigen::MatrixXd(members, 0);
-  if (basis.self_stress.size())
-    basis.basis_residual = (eq.A * basis.self_stress).cwiseAbs().maxCoeff();
+  EquilibriumBasis basis = BasisOf(solver, eq, members);
   done(0.6);
 
   // The reference state: the drawn geometry is in equilibrium under it (the paper's design
@@ -501,73 +667,8 @@ Design RunDesign(const Config& config, ProgressReporter* progress,
 
     // Size every member for its largest force; rest lengths from the reference state.
     const Eigen::VectorXd largest = solution.forces.col(0);
-    d.bars.clear();
-    d.strings.clear();
-    double total = 0;
-    for (int b = 0; b < nb; ++b) {
-      MemberSizing m =
-          SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, settings.bars);
-      if (floor(b) > 0 && m.area == floor(b)) m.governed_by = "resized";
-      m.kind = MemberKind::kBar;
-      m.i = s.bars[b].i;
-      m.j = s.bars[b].j;
-      m.name = Structure::Name(s.bars[b]);
-      m.reference_force = reference_forces[b];
-      mass[b] = m.mass;
-      total += m.mass;
-      d.bars.push_back(m);
-    }
-    for (int k = 0; k < s.num_strings(); ++k) {
-      MemberSizing m = SizeString(s.Length(s.strings[k]), largest[nb + k], reference_forces[nb + k],
-                                  std::max(in.string_min_area[k], floor(nb + k)), settings.strings);
-      if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k))
-        m.governed_by = "resized";
-      m.kind = StringKind(s.strings[k]);
-      m.i = s.strings[k].i;
-      m.j = s.strings[k].j;
-      m.name = Structure::Name(s.strings[k]);
-      mass[nb + k] = m.mass;
-      total += m.mass;
-      d.strings.push_back(m);
-    }
-    // The self-weight fixed point: each pass adds the weight of the last sizing. The weight
-    // is a fraction of the load well below 1 for any bridge that can stand, so the change of
-    // mass shrinks geometrically, to 1e-12 (a few hundred rounding steps of a sum of masses)
-    // where each pass's optimum is exact (the closed-form and direct solves). An iterative
-    // solver returns it only to about design.tolerance (relative): there the change stops
-    // shrinking at a few times that (the 3D bridge at n = 2: +-1.2e-9 at 1e-10), and a change
-    // below 100 times the tolerance that did not halve is as settled as the solver can tell.
-    // Where the problem has many optima (the 3D bridge's dozens of self-stress states), such
-    // a change of weight can move the solver between them and the passes cycle (at n = 3 with
-    // a period of 4 passes and a spread of 4e-6): after 8 passes a change of 1e-5 is settled.
-    // The weight is then right to 1e-5 of the structure's own weight, far below what any check
-    // resolves, and the verified sizing rebuilds the weight from its own design anyway. A
-    // change that grows after the first passes does not settle: the mass either diverges or
-    // jumps between optima (the 3D bridge at n = 4: 1232, 1233, 1172, 1197, 1171 kg).
-    const double change = std::abs(total - previous_total) / total;
-    const bool settled =
-        change <= 1e-12 ||
-        (change <= 100 * config.design.tolerance && change > 0.5 * previous_change) ||
-        (d.self_weight_iterations > 8 && change <= 1e-5);
-    if (!config.design.self_weight || settled) break;
-    const bool unsettled =
-        d.self_weight_iterations >= 3 && change > previous_change && change > 1e-5;
-    previous_change = change;
-    if (d.self_weight_iterations >= 200 || unsettled || !std::isfinite(total)) {
-      // Still growing: the weight outruns what the members carry. Moving back and forth: the
-      // minimum-mass problem has many optima (self-stresses), and a small change of weight
-      // moves the solver from one to another.
-      const bool growing = !std::isfinite(total) || total > 1.05 * previous_total;
-      throw ModelError(
-          "self-weight: the member mass did not settle in " +
-          std::to_string(d.self_weight_iterations) + " sizings (" + NumberText(previous_total) +
-          " kg, then " + NumberText(total) + " kg): " +
-          (growing
-               ? std::string("the members cannot carry their own weight at this span and material")
-               : std::string("it moves between optima of the minimum-mass problem (" +
-                             std::to_string(d.self_stress_states) +
-                             " self-stress states); design.self_weight false designs without it")));
-    }
+    const double total = SizeMembers(d, in, rule, floor, largest, reference_forces, mass);
+    if (SelfWeightSettled(config, d, total, previous_total, previous_change)) break;
     previous_total = total;
   }
   done(0.8);
@@ -576,56 +677,9 @@ Design RunDesign(const Config& config, ProgressReporter* progress,
   const Eigen::Matrix3Xd reference_loads = d.actions.Loads(reference);
   const Eigen::VectorXd residual = EquilibriumResidual(eq, reference_forces, reference_loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
-  const double load_scale = SelfStressForceScale(basis, settings);
-  const double smallest = solution.forces.col(solution.forces.cols() - 1).minCoeff();
-  if (!d.solver.success || !std::isfinite(d.equilibrium_residual) ||
-      d.equilibrium_residual > 1e-6 * load_scale || smallest < -1e-6 * load_scale) {
-    std::ostringstream os;
-    os << "no minimum-mass design found for n = " << config.bridge.n << ", p = " << config.bridge.p
-       << ", beta = " << config.bridge.beta_deg << " deg: solver " << d.solver.solver
-       << " returned status " << d.solver.status << " after " << d.solver.iterations
-       << " iterations (equilibrium residual " << d.equilibrium_residual << " N)";
-    if (d.topology.planes == 2) {
-      // The transverse strings' prestress floor grows with sigma_w; where the loads cannot
-      // balance it, no member forces are both in equilibrium and of the right sign.
-      const double r = config.design.transverse_string_min_radius;
-      os << "; the transverse strings are prestressed at sigma_w pi r^2 = "
-         << sigma_w * std::numbers::pi * r * r
-         << " N each (design.transverse_string_min_radius = " << r
-         << " m), which these loads may not balance: a "
-         << "smaller radius lowers it";
-    }
-    throw ModelError(os.str());
-  }
-
-  // Utilisation of every member under its largest (ultimate) and smallest force of any case.
-  const Eigen::VectorXd& largest = solution.forces.col(0);
-  const Eigen::VectorXd& least = solution.forces.col(solution.forces.cols() - 1);
-  for (int j = 0; j < members; ++j) {
-    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
-    Utilise(m, largest[j], least[j], rule, sigma_w, settings.bars.youngs_modulus);
-    m.force_min = least[j];
-    m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
-    if (m.mode == "slack" || m.mode == "tension")
-      m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
-    (m.kind == MemberKind::kBar          ? d.mass.bars
-     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
-                                         : d.mass.strings) += m.mass;
-  }
-  d.alpha = solution.alpha;
-  d.reference_forces = reference_forces;
-  d.loads = reference_loads;
-  d.reference = reference;
-  // Stability with the bars held: sparse and roughly linear, so it runs at every n; the dense
-  // critical load factor only where it costs well under a second (n <= 6).
-  std::vector<double> string_stiffness(d.strings.size());
-  for (size_t k = 0; k < d.strings.size(); ++k) string_stiffness[k] = d.strings[k].stiffness;
-  d.stability = AssessStability(s, reference_forces, string_stiffness, config.bridge.n <= 6);
-  d.reactions = SupportReactions(s, reference_forces, reference_loads);
-  d.reactions.array() += 0.0;  // -0 (a fixed node's untouched axis) reads as 0 in the outputs
-  d.mass.deck_beams = d.deck.beams_mass;
-  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
-  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  RequireDesignFound(d, config, basis, settings, solution, sigma_w);
+  UtiliseMembers(d, solution, rule, sigma_w, settings, single, env);
+  CompleteDesign(d, config, solution, reference_forces, reference_loads, reference);
   done(1.0);
   return d;
 }
