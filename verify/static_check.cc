@@ -164,6 +164,197 @@ std::vector<AbutmentFinding> AbutmentFindings(const Design& d,
   return out;
 }
 
+// The stations checked per case (-1: a case that does not travel).
+std::vector<std::vector<int>> StationsOfCases(const Design& d, const std::vector<int>& family_of,
+                                              const std::vector<std::vector<char>>& selected,
+                                              int stations) {
+  std::vector<std::vector<int>> stations_of(d.cases.size(), std::vector<int>{-1});
+  for (size_t c = 0; c < d.cases.size(); ++c) {
+    if (family_of[c] >= 0) {
+      stations_of[c].clear();
+      for (int k = 0; k < stations; ++k) {
+        if (selected[family_of[c]][k]) stations_of[c].push_back(k);
+      }
+    }
+  }
+  return stations_of;
+}
+
+// A solve of a case at a station, or a station whose response is a solved one's mirror image.
+struct Job {
+  int c = 0, station = -1, lane = 0;
+  bool restart = true;  // the first of its series
+  int image_of = -1;    // the job whose mirror image this station's response is (not solved)
+};
+
+// The jobs of `stations_of`, a station that is the mirror image of a solved one not solved
+// again; `solves` takes the number of solves (for the progress).
+std::vector<Job> PlanJobs(const Design& d, const std::vector<std::vector<int>>& stations_of,
+                          const std::vector<int>& family_of,
+                          const std::vector<std::vector<char>>& selected,
+                          const std::optional<StationMirror>& mirror,
+                          const std::vector<int>& case_image, int stations, int& solves) {
+  std::vector<Job> jobs;
+  int lane_solves[2] = {0, 0};
+  solves = 0;
+  for (size_t c = 0; c < d.cases.size(); ++c) {
+    const std::vector<int>& st = stations_of[c];
+    const bool paired = mirror && !case_image.empty() && case_image[c] == static_cast<int>(c) &&
+                        !st.empty() && st.front() >= 0;
+    // Per station of the case, its job (to find the image's).
+    std::vector<int> job_at(static_cast<size_t>(stations), -1);
+    std::vector<size_t> solved;  // indexes into st
+    for (size_t i = 0; i < st.size(); ++i) {
+      const int image = paired ? mirror->station_image[static_cast<size_t>(st[i])] : -1;
+      if (image < 0 || image >= st[i] ||
+          !selected[static_cast<size_t>(family_of[c])][static_cast<size_t>(image)]) {
+        solved.push_back(i);
+      }
+    }
+    const size_t half = solved.size() > 1 ? (solved.size() + 1) / 2 : solved.size();
+    const int single_lane = lane_solves[1] < lane_solves[0] ? 1 : 0;
+    for (size_t i = 0, next = 0; i < st.size(); ++i) {
+      Job job{static_cast<int>(c), st[i], 0, false, -1};
+      if (next < solved.size() && solved[next] == i) {
+        job.lane = solved.size() > 1 ? (next < half ? 0 : 1) : single_lane;
+        job.restart = next == 0 || next == half;
+        ++lane_solves[job.lane];
+        ++solves;
+        ++next;
+      } else {
+        job.lane = -1;
+        job.image_of =
+            job_at[static_cast<size_t>(mirror->station_image[static_cast<size_t>(st[i])])];
+      }
+      if (st[i] >= 0) job_at[static_cast<size_t>(st[i])] = static_cast<int>(jobs.size());
+      jobs.push_back(job);
+    }
+  }
+  return jobs;
+}
+
+// A job's response and its loads' sum and size (for the balance of the reactions).
+struct Solved {
+  StaticResult result;
+  Eigen::Vector3d load_total = Eigen::Vector3d::Zero();
+  double load_abs_sum = 0;
+};
+
+// Solves the jobs in their two lanes, then takes each mirrored station's response from its
+// image's (counted in out.mirrored).
+std::vector<Solved> SolveJobs(const Design& d, const StaticModel& model, const StaticState& start,
+                              std::optional<StaticTangent>& tangent, const std::vector<Job>& jobs,
+                              int solves, const std::optional<StationMirror>& mirror,
+                              ProgressReporter* progress, StaticCheck& out) {
+  std::vector<Solved> solved(jobs.size());
+  std::atomic<int> done{0};
+  std::atomic<bool> stop{false};
+  const auto run_lane = [&](int lane) {
+    StaticSeries series(model, start, d.loads, lane == 0 && tangent ? &*tangent : nullptr);
+    for (size_t i = 0; i < jobs.size() && !stop; ++i) {
+      const Job& job = jobs[i];
+      if (job.lane != lane) continue;
+      // Only this thread's lane reports (the reporter's cancel hook runs in its owner's thread).
+      if (lane == 0 && progress != nullptr) progress->Update(done.load(), solves);
+      if (job.restart) series.Restart();
+      const Eigen::Matrix3Xd loads = d.actions.Loads(d.cases[job.c], job.station);
+      solved[i].result = series.Solve(loads);
+      solved[i].load_total = loads.rowwise().sum();
+      solved[i].load_abs_sum = loads.cwiseAbs().sum();
+      ++done;
+    }
+  };
+  InTwoLanes([&] { run_lane(1); },
+             [&] {
+               try {
+                 run_lane(0);
+               } catch (...) {
+                 stop = true;  // the other lane ends at its next solve
+                 throw;
+               }
+             });
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const int j = jobs[i].image_of;
+    if (j < 0) continue;
+    solved[i].result = mirror->mirror.Of(solved[static_cast<size_t>(j)].result);
+    solved[i].load_abs_sum = solved[static_cast<size_t>(j)].load_abs_sum;
+    solved[i].load_total =
+        mirror->mirror.flip.cwiseProduct(solved[static_cast<size_t>(j)].load_total);
+    ++out.mirrored;
+  }
+  return solved;
+}
+
+// The response of case `c` at `station` (-1: not travelling): its convergence, reactions and
+// their balance against the loads, and its largest deck deflection.
+CaseResponse CaseResponseOf(const Design& d, int c, int station, const Solved& solved) {
+  const Structure& s = d.topology.structure;
+  const StaticResult& result = solved.result;
+  CaseResponse r;
+  r.case_index = c;
+  r.station = station;
+  r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, c, station});
+  r.converged = result.converged;
+  r.message = result.message;
+  r.slack_strings = result.slack_strings;
+  r.reactions = result.state.reactions;
+  r.balance = (r.reactions.rowwise().sum() + solved.load_total).norm() /
+              std::max(solved.load_abs_sum, 1e-300);
+  for (int v : d.topology.deck_nodes) {
+    const double dy = std::abs(result.state.nodes(1, v) - s.nodes(1, v));
+    if (dy > r.deflection_m) r.deflection_m = dy, r.deflection_node = v;
+  }
+  return r;
+}
+
+// The members' findings under an ultimate case: bars in yield and buckling, strings in yield.
+void RaiseUltimateFindings(const Design& d, const StaticResult& result, const CaseResponse& r,
+                           const BarRule& rule, double E, double sigma_w, StaticCheck& out) {
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  for (int b = 0; b < nb; ++b) {
+    const MemberSizing& m = d.bars[b];
+    const double force = result.state.bar_compression[b];
+    const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
+    RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, "yield");
+    if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, "buckling");
+  }
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    const MemberSizing& m = d.strings[k];
+    if (m.area > 0)
+      RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w, r.label,
+                   "yield");
+  }
+}
+
+// The strings' findings under a serviceability case (their stress, and a string that must stay
+// taut gone slack), and the largest deflection.
+void RaiseServiceFindings(const Design& d, const StaticResult& result, const CaseResponse& r,
+                          double sigma_w, double sigma_ser, const MemberMaterial& strings,
+                          StaticCheck& out) {
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars();
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    const MemberSizing& m = d.strings[k];
+    if (m.area > 0) {
+      RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_ser, r.label,
+                   "serviceability");
+    }
+  }
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    const Member& e = s.strings[k];
+    const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
+    const MemberSizing& m = d.strings[k];
+    if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
+    RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w,
+                      strings.youngs_modulus, r.label);
+  }
+  if (r.deflection_m > out.deflection_max_m) {
+    out.deflection_max_m = r.deflection_m;
+    out.deflection_case = r.label;
+  }
+}
+
 }  // namespace
 
 StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
@@ -202,16 +393,8 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
     selected = SelectStations(d, families, *tangent, start, d.config.loads.station_margin);
   }
 
-  // The stations checked per case (-1: a case that does not travel).
-  std::vector<std::vector<int>> stations_of(d.cases.size(), std::vector<int>{-1});
-  for (size_t c = 0; c < d.cases.size(); ++c) {
-    if (family_of[c] >= 0) {
-      stations_of[c].clear();
-      for (int k = 0; k < out.stations; ++k) {
-        if (selected[family_of[c]][k]) stations_of[c].push_back(k);
-      }
-    }
-  }
+  const std::vector<std::vector<int>> stations_of =
+      StationsOfCases(d, family_of, selected, out.stations);
 
   // A symmetric design under a travelling family that is its own mirror image: the response
   // at a station is the mirror image of the response at its image station (MidSpanMirror),
@@ -226,108 +409,18 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
   // stations to solve split in halves, each half a series from the reference state and then
   // from the last station's equilibrium; a case without stations goes to the lane with less
   // work. The lanes are fixed by the design alone, so the results do not depend on the machine.
-  struct Job {
-    int c = 0, station = -1, lane = 0;
-    bool restart = true;  // the first of its series
-    int image_of = -1;    // the job whose mirror image this station's response is (not solved)
-  };
-  std::vector<Job> jobs;
-  int lane_solves[2] = {0, 0};
   int solves = 0;  // for the progress
-  for (size_t c = 0; c < d.cases.size(); ++c) {
-    const std::vector<int>& st = stations_of[c];
-    const bool paired = mirror && !case_image.empty() && case_image[c] == static_cast<int>(c) &&
-                        !st.empty() && st.front() >= 0;
-    // Per station of the case, its job (to find the image's).
-    std::vector<int> job_at(static_cast<size_t>(out.stations), -1);
-    std::vector<size_t> solved;  // indexes into st
-    for (size_t i = 0; i < st.size(); ++i) {
-      const int image = paired ? mirror->station_image[static_cast<size_t>(st[i])] : -1;
-      if (image < 0 || image >= st[i] ||
-          !selected[static_cast<size_t>(family_of[c])][static_cast<size_t>(image)]) {
-        solved.push_back(i);
-      }
-    }
-    const size_t half = solved.size() > 1 ? (solved.size() + 1) / 2 : solved.size();
-    const int single_lane = lane_solves[1] < lane_solves[0] ? 1 : 0;
-    for (size_t i = 0, next = 0; i < st.size(); ++i) {
-      Job job{static_cast<int>(c), st[i], 0, false, -1};
-      if (next < solved.size() && solved[next] == i) {
-        job.lane = solved.size() > 1 ? (next < half ? 0 : 1) : single_lane;
-        job.restart = next == 0 || next == half;
-        ++lane_solves[job.lane];
-        ++solves;
-        ++next;
-      } else {
-        job.lane = -1;
-        job.image_of =
-            job_at[static_cast<size_t>(mirror->station_image[static_cast<size_t>(st[i])])];
-      }
-      if (st[i] >= 0) job_at[static_cast<size_t>(st[i])] = static_cast<int>(jobs.size());
-      jobs.push_back(job);
-    }
-  }
-  struct Solved {
-    StaticResult result;
-    Eigen::Vector3d load_total = Eigen::Vector3d::Zero();
-    double load_abs_sum = 0;
-  };
-  std::vector<Solved> solved(jobs.size());
-  std::atomic<int> done{0};
-  std::atomic<bool> stop{false};
-  const auto run_lane = [&](int lane) {
-    StaticSeries series(model, start, d.loads, lane == 0 && tangent ? &*tangent : nullptr);
-    for (size_t i = 0; i < jobs.size() && !stop; ++i) {
-      const Job& job = jobs[i];
-      if (job.lane != lane) continue;
-      // Only this thread's lane reports (the reporter's cancel hook runs in its owner's thread).
-      if (lane == 0 && progress != nullptr) progress->Update(done.load(), solves);
-      if (job.restart) series.Restart();
-      const Eigen::Matrix3Xd loads = d.actions.Loads(d.cases[job.c], job.station);
-      solved[i].result = series.Solve(loads);
-      solved[i].load_total = loads.rowwise().sum();
-      solved[i].load_abs_sum = loads.cwiseAbs().sum();
-      ++done;
-    }
-  };
-  InTwoLanes([&] { run_lane(1); },
-             [&] {
-               try {
-                 run_lane(0);
-               } catch (...) {
-                 stop = true;  // the other lane ends at its next solve
-                 throw;
-               }
-             });
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    const int j = jobs[i].image_of;
-    if (j < 0) continue;
-    solved[i].result = mirror->mirror.Of(solved[static_cast<size_t>(j)].result);
-    solved[i].load_abs_sum = solved[static_cast<size_t>(j)].load_abs_sum;
-    solved[i].load_total =
-        mirror->mirror.flip.cwiseProduct(solved[static_cast<size_t>(j)].load_total);
-    ++out.mirrored;
-  }
+  const std::vector<Job> jobs =
+      PlanJobs(d, stations_of, family_of, selected, mirror, case_image, out.stations, solves);
+  const std::vector<Solved> solved =
+      SolveJobs(d, model, start, tangent, jobs, solves, mirror, progress, out);
 
   for (size_t i = 0; i < jobs.size(); ++i) {
     const int c = jobs[i].c, station = jobs[i].station;
     const LoadCase& lc = d.cases[c];
     const StaticResult& result = solved[i].result;
-    CaseResponse r;
-    r.case_index = c;
-    r.station = station;
-    r.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, c, station});
     if (jobs[i].image_of < 0) ++out.nonlinear_solves;
-    r.converged = result.converged;
-    r.message = result.message;
-    r.slack_strings = result.slack_strings;
-    r.reactions = result.state.reactions;
-    r.balance = (r.reactions.rowwise().sum() + solved[i].load_total).norm() /
-                std::max(solved[i].load_abs_sum, 1e-300);
-    for (int v : d.topology.deck_nodes) {
-      const double dy = std::abs(result.state.nodes(1, v) - s.nodes(1, v));
-      if (dy > r.deflection_m) r.deflection_m = dy, r.deflection_node = v;
-    }
+    CaseResponse r = CaseResponseOf(d, c, station, solved[i]);
     out.all_converged = out.all_converged && r.converged;
     if (r.converged) {
       for (int j = 0; j < nb + static_cast<int>(d.strings.size()); ++j) {
@@ -337,42 +430,10 @@ StaticCheck CheckStatics(const Design& d, ProgressReporter* progress) {
         if (lc.state == LimitState::kUltimate) out.force_max[j] = std::max(out.force_max[j], force);
       }
     }
-    if (r.converged && lc.state == LimitState::kUltimate) {
-      for (int b = 0; b < nb; ++b) {
-        const MemberSizing& m = d.bars[b];
-        const double force = result.state.bar_compression[b];
-        const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-        RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, "yield");
-        if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, "buckling");
-      }
-      for (size_t k = 0; k < d.strings.size(); ++k) {
-        const MemberSizing& m = d.strings[k];
-        if (m.area > 0)
-          RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w,
-                       r.label, "yield");
-      }
-    }
-    if (r.converged && lc.state == LimitState::kServiceability) {
-      for (size_t k = 0; k < d.strings.size(); ++k) {
-        const MemberSizing& m = d.strings[k];
-        if (m.area > 0) {
-          RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_ser,
-                       r.label, "serviceability");
-        }
-      }
-      for (size_t k = 0; k < d.strings.size(); ++k) {
-        const Member& e = s.strings[k];
-        const double length = (result.state.nodes.col(e.j) - result.state.nodes.col(e.i)).norm();
-        const MemberSizing& m = d.strings[k];
-        if (length >= m.rest_length || !MustStayTaut(d, static_cast<int>(k))) continue;
-        RaiseSlackFinding(out.members[nb + k], (length - m.rest_length) / m.rest_length, sigma_w,
-                          strings.youngs_modulus, r.label);
-      }
-      if (r.deflection_m > out.deflection_max_m) {
-        out.deflection_max_m = r.deflection_m;
-        out.deflection_case = r.label;
-      }
-    }
+    if (r.converged && lc.state == LimitState::kUltimate)
+      RaiseUltimateFindings(d, result, r, rule, E, sigma_w, out);
+    if (r.converged && lc.state == LimitState::kServiceability)
+      RaiseServiceFindings(d, result, r, sigma_w, sigma_ser, strings, out);
     out.cases.push_back(std::move(r));
   }
   for (double& f : out.force_min) {
