@@ -289,23 +289,11 @@ double ChosenAngle(const json& file) {
   return beta->get<double>();
 }
 
-}  // namespace
-
-Design ReadDesign(const json& file) {
-  if (!file.is_object() || !file.contains("config") || !file.contains("members") ||
-      !file.contains("nodes") || !file.at("members").is_array() || !file.at("nodes").is_array()) {
-    throw ConfigError("(root)", "(a JSON value)",
-                      "a design file of tbridge design, with config, members and nodes");
-  }
-  Design d;
-  d.config = ParseConfig(file.at("config"));
-  if (d.config.structure)
-    throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
-  if (d.config.bridge.beta_auto) d.config.bridge.beta_deg = ChosenAngle(file);
-  // The bridge as designed: its deck plates sized for the loads it was designed for, which the
-  // file records beside the config; the config's loads, where an engineer changed them, are the
-  // loads it is checked under.
-  const Config designed =
+// The bridge as designed: its deck plates sized for the loads it was designed for, which the
+// file records beside the config; the config's loads, where an engineer changed them, are the
+// loads it is checked under (d.designed_for).
+Config DesignedConfig(const json& file, Design& d) {
+  Config designed =
       file.contains("designed_for") ? WithDesignLoads(d.config, file.at("designed_for")) : d.config;
   if (!ChangedLoads(designed, d.config).empty()) {
     if (KeepsPaperSwitches(d.config)) {
@@ -317,29 +305,13 @@ Design ReadDesign(const json& file) {
     Validate(designed);
     d.designed_for = designed;
   }
-  DesignInputs in = PrepareDesign(designed);
-  d.topology = std::move(in.topology);
-  RequireDeck(file, in.deck);
-  d.deck = in.deck;
-  d.actions = d.designed_for ? MakeActions(d.config, d.topology, d.deck) : std::move(in.actions);
-  d.cases = MakeLoadCases(d.config, d.deck, d.notes);
-  const Structure& s = d.topology.structure;
-  const int nb = s.num_bars(), ns = s.num_strings();
-  const MemberMaterial bar_material = BarMaterial(d.config),
-                       string_material = StringMaterial(d.config);
-  const BarRule rule = BarRuleOf(d.config);
+  return designed;
+}
 
-  // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it
-  // exactly); or, in a file check wrote with its reference state re-derived ("as_built"), the
-  // as-built geometry, with every bar of its drawn length (to 1e-9 m: bars are rigid).
-  const json& nodes = file.at("nodes");
-  if (static_cast<int>(nodes.size()) != s.num_nodes()) {
-    throw ConfigError("nodes", std::to_string(nodes.size()) + " nodes",
-                      "the config draws " + std::to_string(s.num_nodes()));
-  }
-  const bool as_built = file.contains("as_built") && file.at("as_built").is_object() &&
-                        file.at("as_built").value("re_derived", false);
-  const Eigen::Matrix3Xd drawn = s.nodes;
+// The drawn geometry: as the config draws it, to 1e-9 m; or, `as_built`, the as-built
+// geometry, with every bar of its drawn length and every support where it was `drawn`.
+void ReadNodes(const json& nodes, Design& d, bool as_built, const Eigen::Matrix3Xd& drawn) {
+  const Structure& s = d.topology.structure;
   for (int v = 0; v < s.num_nodes(); ++v) {
     const json& p = nodes[v];
     bool same = p.is_array() && p.size() == 3;
@@ -376,6 +348,122 @@ Design ReadDesign(const json& file) {
       }
     }
   }
+}
+
+// A member as written: area (and rest length) as written, the rest derived from them; a member
+// whose reference force is not what it carries as read is added to `edited`.
+MemberSizing ReadMember(const json& file, int k, const Structure& s,
+                        const MemberMaterial& bar_material, const MemberMaterial& string_material,
+                        const BarRule& rule, std::vector<std::string>& edited) {
+  const int nb = s.num_bars();
+  const json& j = MemberOf(file, k, s);
+  const std::string where = "members[" + std::to_string(k) + "]";
+  const bool bar = k < nb;
+  const ::tbridge::Member& e = bar ? s.bars[k] : s.strings[k - nb];
+  MemberSizing m;
+  m.name = Structure::Name(e);
+  m.kind = bar                 ? MemberKind::kBar
+           : e.group == "deck" ? MemberKind::kDeckString
+                               : MemberKind::kString;
+  m.i = e.i;
+  m.j = e.j;
+  m.length = s.Length(e);
+  m.area = Number(j, "area", where);
+  if (!(m.area >= 0) || !std::isfinite(m.area))
+    throw ConfigError(where + ".area", NumberText(m.area), "a finite area >= 0 [m^2]");
+  m.radius = std::sqrt(m.area / std::numbers::pi);
+  const MemberMaterial& mat = bar ? bar_material : string_material;
+  m.mass = mat.density * m.area * m.length;
+  m.reference_force = Number(j, "reference_force", where);
+  m.rest_length = bar ? m.length : Number(j, "rest_length", where);
+  if (!bar) {
+    if (!(m.rest_length > 0))
+      throw ConfigError(where + ".rest_length", NumberText(m.rest_length), "a rest length > 0 [m]");
+    m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
+    // The string's tension at the drawn geometry is its reference force: 1e-6 relative
+    // allows the file's rounding and the design's own sizing tolerance, and no real edit.
+    // Otherwise its area or rest length was edited: the reference state is re-derived.
+    const double tension = StringTension(m.stiffness, m.rest_length, m.length);
+    if (std::abs(tension - m.reference_force) > 1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
+      edited.push_back(m.name);
+    }
+  }
+  RequireDerived(j, "length", m.length, where, m.name, "the length between its nodes");
+  if (bar) {
+    if (!j.contains("stiffness") || !j.at("stiffness").is_null()) {
+      throw ConfigError(
+          where + ".stiffness", j.contains("stiffness") ? j.at("stiffness").dump() : "(missing)",
+          "member " + m.name + " is a bar, rigid in the model: null, as tbridge design writes it");
+    }
+  }
+  RequireSection(j, m, mat, bar, where);
+  // Its governing finding as written (check recomputes it): written again, as WithAreas writes a
+  // design, its resistance still tells an edited bar.
+  m.mode = j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
+  m.resistance = j.contains("resistance") && j.at("resistance").is_number()
+                     ? j.at("resistance").get<double>()
+                     : 0.0;
+  if (bar && BarAreaEdited(m, rule, mat.youngs_modulus)) edited.push_back(m.name);
+  m.force = m.reference_force;
+  m.force_density = m.force / m.length;
+  m.stress = m.area > 0 ? m.force / m.area : 0.0;
+  m.governed_by = j.value("governed_by", "");
+  return m;
+}
+
+// A file check wrote with its reference state re-derived: as built, and it says so again.
+void RecordAsBuilt(const json& file, Design& d, const Eigen::Matrix3Xd& drawn) {
+  const Structure& s = d.topology.structure;
+  const int ns = s.num_strings();
+  const json& a = file.at("as_built");
+  d.as_built.re_derived = true;
+  d.as_built.edited = a.value("edited", std::vector<std::string>{});
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    const double move = (s.nodes.col(v) - drawn.col(v)).norm();
+    if (move > d.as_built.node_move_m) d.as_built.node_move_m = move, d.as_built.node = v;
+  }
+  for (int k = 0; k < ns; ++k)
+    d.as_built.slack_strings += d.strings[k].reference_force <= 0 ? 1 : 0;
+}
+
+}  // namespace
+
+Design ReadDesign(const json& file) {
+  if (!file.is_object() || !file.contains("config") || !file.contains("members") ||
+      !file.contains("nodes") || !file.at("members").is_array() || !file.at("nodes").is_array()) {
+    throw ConfigError("(root)", "(a JSON value)",
+                      "a design file of tbridge design, with config, members and nodes");
+  }
+  Design d;
+  d.config = ParseConfig(file.at("config"));
+  if (d.config.structure)
+    throw ConfigError("config.structure", "(present)", "a design file's config describes a bridge");
+  if (d.config.bridge.beta_auto) d.config.bridge.beta_deg = ChosenAngle(file);
+  const Config designed = DesignedConfig(file, d);
+  DesignInputs in = PrepareDesign(designed);
+  d.topology = std::move(in.topology);
+  RequireDeck(file, in.deck);
+  d.deck = in.deck;
+  d.actions = d.designed_for ? MakeActions(d.config, d.topology, d.deck) : std::move(in.actions);
+  d.cases = MakeLoadCases(d.config, d.deck, d.notes);
+  const Structure& s = d.topology.structure;
+  const int nb = s.num_bars(), ns = s.num_strings();
+  const MemberMaterial bar_material = BarMaterial(d.config),
+                       string_material = StringMaterial(d.config);
+  const BarRule rule = BarRuleOf(d.config);
+
+  // The drawn geometry: as the config draws it, to 1e-9 m (the file's 17 digits hold it
+  // exactly); or, in a file check wrote with its reference state re-derived ("as_built"), the
+  // as-built geometry, with every bar of its drawn length (to 1e-9 m: bars are rigid).
+  const json& nodes = file.at("nodes");
+  if (static_cast<int>(nodes.size()) != s.num_nodes()) {
+    throw ConfigError("nodes", std::to_string(nodes.size()) + " nodes",
+                      "the config draws " + std::to_string(s.num_nodes()));
+  }
+  const bool as_built = file.contains("as_built") && file.at("as_built").is_object() &&
+                        file.at("as_built").value("re_derived", false);
+  const Eigen::Matrix3Xd drawn = s.nodes;
+  ReadNodes(nodes, d, as_built, drawn);
 
   // Members: area (and rest length) as written, the rest derived from them.
   if (static_cast<int>(file.at("members").size()) != nb + ns) {
@@ -386,61 +474,8 @@ Design ReadDesign(const json& file) {
   std::vector<std::string> edited;  // members whose reference force is not what they carry as read
   d.reference_forces.resize(nb + ns);
   for (int k = 0; k < nb + ns; ++k) {
-    const json& j = MemberOf(file, k, s);
-    const std::string where = "members[" + std::to_string(k) + "]";
     const bool bar = k < nb;
-    const ::tbridge::Member& e = bar ? s.bars[k] : s.strings[k - nb];
-    MemberSizing m;
-    m.name = Structure::Name(e);
-    m.kind = bar                 ? MemberKind::kBar
-             : e.group == "deck" ? MemberKind::kDeckString
-                                 : MemberKind::kString;
-    m.i = e.i;
-    m.j = e.j;
-    m.length = s.Length(e);
-    m.area = Number(j, "area", where);
-    if (!(m.area >= 0) || !std::isfinite(m.area))
-      throw ConfigError(where + ".area", NumberText(m.area), "a finite area >= 0 [m^2]");
-    m.radius = std::sqrt(m.area / std::numbers::pi);
-    const MemberMaterial& mat = bar ? bar_material : string_material;
-    m.mass = mat.density * m.area * m.length;
-    m.reference_force = Number(j, "reference_force", where);
-    m.rest_length = bar ? m.length : Number(j, "rest_length", where);
-    if (!bar) {
-      if (!(m.rest_length > 0))
-        throw ConfigError(where + ".rest_length", NumberText(m.rest_length),
-                          "a rest length > 0 [m]");
-      m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
-      // The string's tension at the drawn geometry is its reference force: 1e-6 relative
-      // allows the file's rounding and the design's own sizing tolerance, and no real edit.
-      // Otherwise its area or rest length was edited: the reference state is re-derived.
-      const double tension = StringTension(m.stiffness, m.rest_length, m.length);
-      if (std::abs(tension - m.reference_force) >
-          1e-6 * std::max(std::abs(m.reference_force), 1.0)) {
-        edited.push_back(m.name);
-      }
-    }
-    RequireDerived(j, "length", m.length, where, m.name, "the length between its nodes");
-    if (bar) {
-      if (!j.contains("stiffness") || !j.at("stiffness").is_null()) {
-        throw ConfigError(where + ".stiffness",
-                          j.contains("stiffness") ? j.at("stiffness").dump() : "(missing)",
-                          "member " + m.name +
-                              " is a bar, rigid in the model: null, as tbridge design writes it");
-      }
-    }
-    RequireSection(j, m, mat, bar, where);
-    // Its governing finding as written (check recomputes it): written again, as WithAreas writes a
-    // design, its resistance still tells an edited bar.
-    m.mode = j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
-    m.resistance = j.contains("resistance") && j.at("resistance").is_number()
-                       ? j.at("resistance").get<double>()
-                       : 0.0;
-    if (bar && BarAreaEdited(m, rule, mat.youngs_modulus)) edited.push_back(m.name);
-    m.force = m.reference_force;
-    m.force_density = m.force / m.length;
-    m.stress = m.area > 0 ? m.force / m.area : 0.0;
-    m.governed_by = j.value("governed_by", "");
+    const MemberSizing m = ReadMember(file, k, s, bar_material, string_material, rule, edited);
     masses[k] = m.mass;
     d.reference_forces[k] = m.reference_force;
     (bar                                 ? d.mass.bars
@@ -475,16 +510,7 @@ Design ReadDesign(const json& file) {
               " N unbalanced at a node: the as-built reference state did not converge");
     }
   } else if (as_built) {
-    // A file check wrote with its reference state re-derived: as built, and it says so again.
-    const json& a = file.at("as_built");
-    d.as_built.re_derived = true;
-    d.as_built.edited = a.value("edited", std::vector<std::string>{});
-    for (int v = 0; v < s.num_nodes(); ++v) {
-      const double move = (s.nodes.col(v) - drawn.col(v)).norm();
-      if (move > d.as_built.node_move_m) d.as_built.node_move_m = move, d.as_built.node = v;
-    }
-    for (int k = 0; k < ns; ++k)
-      d.as_built.slack_strings += d.strings[k].reference_force <= 0 ? 1 : 0;
+    RecordAsBuilt(file, d, drawn);
   }
   AssessReferenceState(d);
   d.solver.solver = "none";
