@@ -26,6 +26,52 @@ struct Touch {
   double sign;
 };
 
+// An entry of A (used only while building A's pattern): its constant part and its bars'
+// terms, each a coefficient of b_d, or of |b|^2 for d = -1.
+struct Entry {
+  double constant = 0;
+  std::map<std::pair<int, int>, double> bar_terms;  // (bar, d) -> coef
+};
+
+// Fill-reducing order (AMD) of A's pattern `entries` ((row, col), row <= col, natural order),
+// computed once: new_row[r] is the row of A that natural row r takes.
+std::vector<int> FillReducingOrder(int n_rows,
+                                   const std::map<std::pair<int, int>, Entry>& entries) {
+  const int nnz = static_cast<int>(entries.size());
+  std::vector<int> new_row(n_rows);
+  for (int r = 0; r < n_rows; ++r) new_row[r] = r;
+  if (n_rows > 1) {
+    cholmod_common c;
+    cholmod_start(&c);
+    c.print = 0;
+    cholmod_sparse* pattern =
+        cholmod_allocate_sparse(n_rows, n_rows, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c);
+    if (pattern == nullptr) {
+      cholmod_finish(&c);
+      throw ModelError(std::string(kEngine) +
+                       ": CHOLMOD could not allocate the constraint pattern");
+    }
+    std::vector<std::vector<int>> by_col(n_rows);
+    for (const auto& [rc, e] : entries) by_col[rc.second].push_back(rc.first);
+    int* cp = static_cast<int*>(pattern->p);
+    int* ri = static_cast<int*>(pattern->i);
+    cp[0] = 0;
+    for (int col = 0; col < n_rows; ++col) {
+      int at = cp[col];
+      for (const int row : by_col[col]) ri[at++] = row;
+      cp[col + 1] = at;
+    }
+    std::vector<int> perm(n_rows);
+    const int ok = cholmod_amd(pattern, nullptr, 0, perm.data(), &c);
+    cholmod_free_sparse(&pattern, &c);
+    cholmod_finish(&c);
+    if (!ok)
+      throw ModelError(std::string(kEngine) + ": CHOLMOD could not order the constraint matrix");
+    for (int k = 0; k < n_rows; ++k) new_row[perm[k]] = k;
+  }
+  return new_row;
+}
+
 }  // namespace
 
 // CHOLMOD's state for one workspace. A holds the upper triangle (stype +1) in the system's
@@ -71,14 +117,8 @@ struct ClassKWorkspace::Solver {
   }
 };
 
-ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& options,
-                           std::vector<TimedLoad> timed_loads)
-    : EngineFrame(model, options, timed_loads, kEngine),
-      n_model_bars_(static_cast<int>(model.bars.size())) {
-  // Bars and their copies. A node's first copy is its primary: it takes the node's mass and
-  // force, and the node's acceleration is read from it.
-  primary_copy_.assign(n_n_, -1);
-  std::vector<std::vector<int>> node_copies(n_n_);
+// Bars and their copies; node_copies[a] takes node a's copies, its primary first.
+void ClassKSystem::PackBars(const DynamicModel& model, std::vector<std::vector<int>>& node_copies) {
   for (size_t k = 0; k < model.bars.size(); ++k) {
     const DynamicBar& b = model.bars[k];
     const std::string name = "bar " + NodeName(b.i) + "-" + NodeName(b.j);
@@ -121,6 +161,17 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
     bars_.push_back(p);
     AddMassBlock(free_i ? p.oi : -1, free_j ? p.oj : -1, m00, m01, m11);
   }
+}
+
+ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& options,
+                           std::vector<TimedLoad> timed_loads)
+    : EngineFrame(model, options, timed_loads, kEngine),
+      n_model_bars_(static_cast<int>(model.bars.size())) {
+  // Bars and their copies. A node's first copy is its primary: it takes the node's mass and
+  // force, and the node's acceleration is read from it.
+  primary_copy_.assign(n_n_, -1);
+  std::vector<std::vector<int>> node_copies(n_n_);
+  PackBars(model, node_copies);
 
   // Constraint rows in their natural order: bar rows, then dim rows per extra copy.
   n_rows_ = static_cast<int>(bars_.size());
@@ -144,10 +195,6 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
   // A = J M^-1 J^T, bar by bar: every ordered pair of touches of a bar adds
   // sign1 sign2 Minv(end1, end2) times |b|^2 (two bar rows), b_d (bar and coincidence row)
   // or 1 (two coincidence rows on the same axis). Kept: the upper triangle.
-  struct Entry {
-    double constant = 0;
-    std::map<std::pair<int, int>, double> bar_terms;  // (bar, d) -> coef
-  };
   std::map<std::pair<int, int>, Entry> entries;  // (row, col), row <= col, natural order
   for (int k = 0; k < num_bars(); ++k) {
     const PackedBar& p = bars_[k];
@@ -167,40 +214,9 @@ ClassKSystem::ClassKSystem(const DynamicModel& model, const ClassKOptions& optio
       }
     }
   }
-  const int nnz = static_cast<int>(entries.size());
 
   // Fill-reducing order (AMD), computed once on the pattern.
-  std::vector<int> new_row(n_rows_);
-  for (int r = 0; r < n_rows_; ++r) new_row[r] = r;
-  if (n_rows_ > 1) {
-    cholmod_common c;
-    cholmod_start(&c);
-    c.print = 0;
-    cholmod_sparse* pattern =
-        cholmod_allocate_sparse(n_rows_, n_rows_, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c);
-    if (pattern == nullptr) {
-      cholmod_finish(&c);
-      throw ModelError(std::string(kEngine) +
-                       ": CHOLMOD could not allocate the constraint pattern");
-    }
-    std::vector<std::vector<int>> by_col(n_rows_);
-    for (const auto& [rc, e] : entries) by_col[rc.second].push_back(rc.first);
-    int* cp = static_cast<int*>(pattern->p);
-    int* ri = static_cast<int*>(pattern->i);
-    cp[0] = 0;
-    for (int col = 0; col < n_rows_; ++col) {
-      int at = cp[col];
-      for (const int row : by_col[col]) ri[at++] = row;
-      cp[col + 1] = at;
-    }
-    std::vector<int> perm(n_rows_);
-    const int ok = cholmod_amd(pattern, nullptr, 0, perm.data(), &c);
-    cholmod_free_sparse(&pattern, &c);
-    cholmod_finish(&c);
-    if (!ok)
-      throw ModelError(std::string(kEngine) + ": CHOLMOD could not order the constraint matrix");
-    for (int k = 0; k < n_rows_; ++k) new_row[perm[k]] = k;
-  }
+  const std::vector<int> new_row = FillReducingOrder(n_rows_, entries);
 
   // The permuted upper triangle in compressed columns, with its constant and bar parts.
   std::map<std::pair<int, int>, const Entry*> permuted;  // (col, row) -> entry: CSC order

@@ -104,6 +104,9 @@ class ClassKSystem : public EngineFrame {
   friend class EngineFrame;  // dispatches to DerivativeImpl
   template <int D, bool Damped, bool Stabilised>
   void DerivativeImpl(double t, const double* y, double* dy, ClassKWorkspace& ws) const;
+  // The constructor's bars with a free end, their copies (node_copies[a]: node a's, its primary
+  // first) and their mass blocks.
+  void PackBars(const DynamicModel& model, std::vector<std::vector<int>>& node_copies);
 
   int n_model_bars_ = 0, n_rows_ = 0;
   std::vector<PackedBar> bars_;
