@@ -23,6 +23,88 @@ void Fail(std::string& failed, const char* what, double value, double limit) {
   failed += (failed.empty() ? "" : "; ") + std::string(text);
 }
 
+// The tangent space: the null space of the strongly active normals. A weakly active
+// constraint (multiplier 0), row or bound, does not restrict it: the directions into its
+// feasible side belong to the critical cone, and checking the whole line instead of the
+// half is the safer error. The normals are scaled to unit length so that the rank
+// tolerance (near sqrt(eps): normals closer to dependent than that give no vertex one can
+// trust) does not depend on the rows' units.
+// Returns an orthonormal basis of it, of the `n` variables: the identity without such normals.
+Eigen::MatrixXd TangentSpace(const Eigen::MatrixXd& A, const Eigen::VectorXd& z,
+                             double largest_multiplier, Eigen::Index n) {
+  const Eigen::Index k = A.cols();
+  const double strong = 1e-10 * std::max(1.0, largest_multiplier);
+  std::vector<Eigen::VectorXd> normals;
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const double norm = A.col(j).norm();
+    if (z[j] > strong && norm > 0) normals.push_back(A.col(j) / norm);
+  }
+  Eigen::MatrixXd Z = Eigen::MatrixXd::Identity(n, n);
+  if (!normals.empty()) {
+    Eigen::MatrixXd N(n, static_cast<Eigen::Index>(normals.size()));
+    for (size_t j = 0; j < normals.size(); ++j) N.col(static_cast<Eigen::Index>(j)) = normals[j];
+    Eigen::FullPivHouseholderQR<Eigen::MatrixXd> qr(N);
+    qr.setThreshold(1e-8);
+    const Eigen::MatrixXd Q = qr.matrixQ();  // its first rank() columns span N's
+    Z = Q.rightCols(n - qr.rank());
+  }
+  return Z;
+}
+
+// The second-order condition on the tangent space `Z`, by the Hessian of the Lagrangian
+// (central differences of its gradient, from `in.at`) reduced to it.
+void SecondOrderByHessian(const KktInput& in, const Eigen::VectorXd& z, const Eigen::MatrixXd& Z,
+                          double tolerance, double grad_norm, KktCertificate& c) {
+  const Eigen::Index n = in.x.size();
+  const int m = static_cast<int>(in.active.size());
+  const Eigen::VectorXd lambda = z.head(m);
+  const auto grad_lagrangian = [&](const Eigen::VectorXd& y) {
+    Eigen::VectorXd g;
+    Eigen::MatrixXd J;
+    in.at(y, g, J);
+    Require(g.size() == n && J.rows() == m && J.cols() == n, "`at` returned wrong sizes");
+    Require(g.allFinite() && J.allFinite(), "`at` returned non-finite values");
+    return Eigen::VectorXd(g - J.transpose() * lambda);
+  };
+  // Central differences: truncation O(h^2) (nothing for quadratic f and g), rounding about
+  // eps |grad L| / h, 1e-10 of it.
+  const double h = 1e-6 * std::max(1.0, in.x.lpNorm<Eigen::Infinity>());
+  Eigen::MatrixXd HZ(n, Z.cols());
+  for (Eigen::Index j = 0; j < Z.cols(); ++j) {
+    HZ.col(j) =
+        (grad_lagrangian(in.x + h * Z.col(j)) - grad_lagrangian(in.x - h * Z.col(j))) / (2 * h);
+  }
+  const Eigen::MatrixXd M = Z.transpose() * HZ;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (M + M.transpose()),
+                                                           Eigen::EigenvaluesOnly);
+  c.smallest_curvature = eig.eigenvalues()[0];
+  const double size = std::max({1.0, eig.eigenvalues().cwiseAbs().maxCoeff(), grad_norm});
+  c.second_order = c.smallest_curvature >= -tolerance * size;
+  if (c.second_order) c.second_order_by = "reduced Hessian";
+}
+
+// What failed, in c.failed ("" when every condition holds).
+void RecordFailures(const KktInput& in, double tolerance, KktCertificate& c) {
+  // Written as "not <=" so that NaN fails.
+  if (!(c.stationarity <= tolerance)) Fail(c.failed, "stationarity", c.stationarity, tolerance);
+  if (!(c.feasibility <= tolerance)) Fail(c.failed, "feasibility", c.feasibility, tolerance);
+  if (!(c.complementarity <= tolerance)) {
+    Fail(c.failed, "complementarity", c.complementarity, tolerance);
+  }
+  if (!c.second_order) {
+    char text[128];
+    if (in.at) {
+      std::snprintf(text, sizeof text, "second order: reduced Hessian eigenvalue %.1e < 0",
+                    c.smallest_curvature);
+    } else {
+      std::snprintf(text, sizeof text,
+                    "second order: not a vertex (%d free directions) and no Hessian",
+                    c.null_space_dimension);
+    }
+    c.failed += (c.failed.empty() ? "" : "; ") + std::string(text);
+  }
+}
+
 }  // namespace
 
 KktCertificate CertifyLocalOptimum(const KktInput& in, double tolerance) {
@@ -87,27 +169,8 @@ KktCertificate CertifyLocalOptimum(const KktInput& in, double tolerance) {
   }
   c.complementarity /= scale;
 
-  // The tangent space: the null space of the strongly active normals. A weakly active
-  // constraint (multiplier 0), row or bound, does not restrict it: the directions into its
-  // feasible side belong to the critical cone, and checking the whole line instead of the
-  // half is the safer error. The normals are scaled to unit length so that the rank
-  // tolerance (near sqrt(eps): normals closer to dependent than that give no vertex one can
-  // trust) does not depend on the rows' units.
-  const double strong = 1e-10 * std::max(1.0, c.largest_multiplier);
-  std::vector<Eigen::VectorXd> normals;
-  for (Eigen::Index j = 0; j < k; ++j) {
-    const double norm = A.col(j).norm();
-    if (z[j] > strong && norm > 0) normals.push_back(A.col(j) / norm);
-  }
-  Eigen::MatrixXd Z = Eigen::MatrixXd::Identity(n, n);
-  if (!normals.empty()) {
-    Eigen::MatrixXd N(n, static_cast<Eigen::Index>(normals.size()));
-    for (size_t j = 0; j < normals.size(); ++j) N.col(static_cast<Eigen::Index>(j)) = normals[j];
-    Eigen::FullPivHouseholderQR<Eigen::MatrixXd> qr(N);
-    qr.setThreshold(1e-8);
-    const Eigen::MatrixXd Q = qr.matrixQ();  // its first rank() columns span N's
-    Z = Q.rightCols(n - qr.rank());
-  }
+  // The tangent space: the null space of the strongly active normals.
+  const Eigen::MatrixXd Z = TangentSpace(A, z, c.largest_multiplier, n);
   c.null_space_dimension = static_cast<int>(Z.cols());
   c.smallest_curvature = std::numeric_limits<double>::quiet_NaN();
   if (Z.cols() == 0) {
@@ -116,50 +179,10 @@ KktCertificate CertifyLocalOptimum(const KktInput& in, double tolerance) {
     c.second_order = true;
     c.second_order_by = "vertex";
   } else if (in.at) {
-    const Eigen::VectorXd lambda = z.head(m);
-    const auto grad_lagrangian = [&](const Eigen::VectorXd& y) {
-      Eigen::VectorXd g;
-      Eigen::MatrixXd J;
-      in.at(y, g, J);
-      Require(g.size() == n && J.rows() == m && J.cols() == n, "`at` returned wrong sizes");
-      Require(g.allFinite() && J.allFinite(), "`at` returned non-finite values");
-      return Eigen::VectorXd(g - J.transpose() * lambda);
-    };
-    // Central differences: truncation O(h^2) (nothing for quadratic f and g), rounding about
-    // eps |grad L| / h, 1e-10 of it.
-    const double h = 1e-6 * std::max(1.0, in.x.lpNorm<Eigen::Infinity>());
-    Eigen::MatrixXd HZ(n, Z.cols());
-    for (Eigen::Index j = 0; j < Z.cols(); ++j) {
-      HZ.col(j) =
-          (grad_lagrangian(in.x + h * Z.col(j)) - grad_lagrangian(in.x - h * Z.col(j))) / (2 * h);
-    }
-    const Eigen::MatrixXd M = Z.transpose() * HZ;
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (M + M.transpose()),
-                                                             Eigen::EigenvaluesOnly);
-    c.smallest_curvature = eig.eigenvalues()[0];
-    const double size = std::max({1.0, eig.eigenvalues().cwiseAbs().maxCoeff(), grad_norm});
-    c.second_order = c.smallest_curvature >= -tolerance * size;
-    if (c.second_order) c.second_order_by = "reduced Hessian";
+    SecondOrderByHessian(in, z, Z, tolerance, grad_norm, c);
   }
 
-  // Written as "not <=" so that NaN fails.
-  if (!(c.stationarity <= tolerance)) Fail(c.failed, "stationarity", c.stationarity, tolerance);
-  if (!(c.feasibility <= tolerance)) Fail(c.failed, "feasibility", c.feasibility, tolerance);
-  if (!(c.complementarity <= tolerance)) {
-    Fail(c.failed, "complementarity", c.complementarity, tolerance);
-  }
-  if (!c.second_order) {
-    char text[128];
-    if (in.at) {
-      std::snprintf(text, sizeof text, "second order: reduced Hessian eigenvalue %.1e < 0",
-                    c.smallest_curvature);
-    } else {
-      std::snprintf(text, sizeof text,
-                    "second order: not a vertex (%d free directions) and no Hessian",
-                    c.null_space_dimension);
-    }
-    c.failed += (c.failed.empty() ? "" : "; ") + std::string(text);
-  }
+  RecordFailures(in, tolerance, c);
   c.proved_local_optimum = c.failed.empty();
   return c;
 }
