@@ -198,6 +198,65 @@ bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& sta
   return true;
 }
 
+// Whether a run is left to do: a modal one, or one within the budget at its asked step (a run
+// over it is noted as skipped).
+bool AnyRunToDo(std::vector<LoadRun>& runs, const LoadsConfig& l, double members,
+                double max_member_steps) {
+  bool any = false;
+  for (LoadRun& run : runs) {
+    any = Modal(run, l) ||
+          WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)",
+                       run) ||
+          any;
+  }
+  return any;
+}
+
+// The static solves take the strings as the run has them (a prestrain changes them).
+StaticModel StaticModelOfRun(const Design& d, const DynamicModel& model) {
+  StaticModel statics = StaticModelOf(d);
+  for (size_t k = 0; k < d.strings.size(); ++k) {
+    statics.string_rest_length[k] = model.strings.rest_length[k];
+    statics.string_stiffness[k] = model.strings.stiffness[k];
+  }
+  return statics;
+}
+
+// The member's finding under a run's `demand`: a bar against its yield and buckling, a string
+// against its yield and, where it must stay taut, going slack (listed in out.slack_strings).
+void RaiseDynamicFinding(const Design& d, int j, double demand, const SimulationSummary& summary,
+                         const std::string& label, const BarRule& rule, double E,
+                         const MemberMaterial& strings, double sigma_w, DynamicCheck& out) {
+  const int nb = d.topology.structure.num_bars();
+  const bool bar = j < nb;
+  const MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
+  MemberFinding& f = out.members[j];
+  if (bar) {
+    const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
+    RaiseFinding(f, demand, std::min(cap.yield, cap.buckling), label, "dynamic");
+  } else {
+    if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, "dynamic");
+    const double strain = summary.min_string_strain[j - nb];
+    if (strain < 0 && MustStayTaut(d, j - nb)) {
+      RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);
+      if (std::find(out.slack_strings.begin(), out.slack_strings.end(), j - nb) ==
+          out.slack_strings.end()) {
+        out.slack_strings.push_back(j - nb);
+      }
+    }
+  }
+}
+
+// The member's group: its static and dynamic peaks and the largest member's amplification.
+void TakeGroupPeak(std::map<std::string, GroupAmplification>& groups, const std::string& group,
+                   const Eigen::VectorXd& static_peak, int j, double peak) {
+  GroupAmplification& g = groups[group];
+  g.group = group;
+  g.static_peak = std::max(g.static_peak, static_peak[j]);
+  g.dynamic_peak = std::max(g.dynamic_peak, peak);
+  if (static_peak[j] > 0) g.amplification = std::max(g.amplification, peak / static_peak[j]);
+}
+
 }  // namespace
 
 ModelOptions DynamicCheckModelOptions(const Design& d,
@@ -237,14 +296,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
   // A run over the budget at its asked step is over it at any stable one (no longer): it is
   // skipped before anything is built for it, and with no run left nothing is.
   const double members = static_cast<double>(d.bars.size() + d.strings.size());
-  bool any = false;
-  for (LoadRun& run : runs) {
-    any = Modal(run, l) ||
-          WithinBudget(members, max_member_steps, " (the asked step; a stable one is no longer)",
-                       run) ||
-          any;
-  }
-  if (!any) {
+  if (!AnyRunToDo(runs, l, members, max_member_steps)) {
     for (LoadRun& run : runs) out.runs.push_back(std::move(run.record));
     return out;
   }
@@ -258,12 +310,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
   // The prestress is not factored (EN 1990 6.4.3.2 takes gamma_P = 1 for prestress that
   // favours and disfavours alike); the permanent load's share of the reference force is.
   const Eigen::VectorXd prestress = PrestressForces(d);
-  // The static solves take the strings as the run has them (a prestrain changes them).
-  StaticModel statics = StaticModelOf(d);
-  for (size_t k = 0; k < d.strings.size(); ++k) {
-    statics.string_rest_length[k] = model.strings.rest_length[k];
-    statics.string_stiffness[k] = model.strings.stiffness[k];
-  }
+  StaticModel statics = StaticModelOfRun(d, model);
   // The nonlinear runs share the model, the engine and its stabilisation: one stability limit
   // serves all, found when the first of them needs it.
   double stable_dt = 0;
@@ -320,26 +367,8 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
         const double demand = prestress[j] +
                               (permanent > 0 ? gamma_g_sup : gamma_g_inf) * permanent +
                               run.gamma * std::max(peak - m.reference_force, 0.0);
-        MemberFinding& f = out.members[j];
-        if (bar) {
-          const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-          RaiseFinding(f, demand, std::min(cap.yield, cap.buckling), label, "dynamic");
-        } else {
-          if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, "dynamic");
-          const double strain = summary.min_string_strain[j - nb];
-          if (strain < 0 && MustStayTaut(d, j - nb)) {
-            RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);
-            if (std::find(out.slack_strings.begin(), out.slack_strings.end(), j - nb) ==
-                out.slack_strings.end()) {
-              out.slack_strings.push_back(j - nb);
-            }
-          }
-        }
-        GroupAmplification& g = groups[group];
-        g.group = group;
-        g.static_peak = std::max(g.static_peak, static_peak[j]);
-        g.dynamic_peak = std::max(g.dynamic_peak, peak);
-        if (static_peak[j] > 0) g.amplification = std::max(g.amplification, peak / static_peak[j]);
+        RaiseDynamicFinding(d, j, demand, summary, label, rule, E, strings, sigma_w, out);
+        TakeGroupPeak(groups, group, static_peak, j, peak);
       }
       for (auto& [name, g] : groups) run.record.groups.push_back(g);
     }
