@@ -135,6 +135,39 @@ class DiscardHistory : public HistorySink {
   void Row(double, const double*) override {}
 };
 
+// The run's summary as the command prints it: the run, the deck frequency and displacement,
+// the string stress, the slack and error measures and the prestrains.
+void PrintSimulation(const DynamicModel& model, const SimulationSummary& s) {
+  std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator;
+  if (s.substeps > 1) std::cout << " x " << s.substeps << " sub-steps";
+  std::cout << ", " << s.engine << ", " << s.wall_seconds << " s)\n";
+  if (s.has_frequency) {
+    std::cout << "deck frequency: T = " << s.frequency.period_s
+              << " s, f = " << s.frequency.frequency_hz
+              << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
+  } else if (!s.frequency_note.empty()) {
+    std::cout << s.frequency_note << "\n";  // "no deck frequency: ..." and why
+  }
+  if (!model.deck_nodes.empty()) {
+    std::cout << "peak deck displacement";
+    for (int d = 0; d < model.dim; ++d) {
+      std::cout << (d > 0 ? ", " : " ") << "xyz"[d] << " " << s.peak_deck_displacement[d] << " m";
+    }
+    std::cout << "\n";
+  }
+  if (s.allowed_stress > 0) {  // a structure without string areas has no stress to report
+    std::cout << "max string stress " << s.max_string_stress << " Pa (allowed " << s.allowed_stress
+              << ")" << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "") << "\n";
+  }
+  std::cout << "slack transitions " << s.slack.total << ", max bar-length error "
+            << s.max_bar_length_error << ", energy drift " << s.energy.max_drift << "\n";
+  for (const PrestrainReport& p : s.prestrain) {
+    std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress
+              << " Pa" << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ")
+              << p.allowed_stress << " Pa\n";
+  }
+}
+
 int RunSimulateCommand(const std::vector<std::string>& args) {
   const CommandSpec& spec = SimulateSpec();
   const ParsedArgs parsed = ParseArgs(args, spec);
@@ -219,36 +252,7 @@ int RunSimulateCommand(const std::vector<std::string>& args) {
   if (vtk_history) vtk_history->Finish();
   outputs.Commit();
   if (!parsed.Flag("-q")) {
-    const SimulationSummary& s = result.summary;
-    std::cout << "simulated " << s.duration << " s in " << s.steps << " steps (" << s.integrator;
-    if (s.substeps > 1) std::cout << " x " << s.substeps << " sub-steps";
-    std::cout << ", " << s.engine << ", " << s.wall_seconds << " s)\n";
-    if (s.has_frequency) {
-      std::cout << "deck frequency: T = " << s.frequency.period_s
-                << " s, f = " << s.frequency.frequency_hz
-                << " Hz, omega = " << s.frequency.omega_rad_s << " rad/s\n";
-    } else if (!s.frequency_note.empty()) {
-      std::cout << s.frequency_note << "\n";  // "no deck frequency: ..." and why
-    }
-    if (!model.deck_nodes.empty()) {
-      std::cout << "peak deck displacement";
-      for (int d = 0; d < model.dim; ++d) {
-        std::cout << (d > 0 ? ", " : " ") << "xyz"[d] << " " << s.peak_deck_displacement[d] << " m";
-      }
-      std::cout << "\n";
-    }
-    if (s.allowed_stress > 0) {  // a structure without string areas has no stress to report
-      std::cout << "max string stress " << s.max_string_stress << " Pa (allowed "
-                << s.allowed_stress << ")" << (s.stress_exceeds_allowed ? " EXCEEDS ALLOWED" : "")
-                << "\n";
-    }
-    std::cout << "slack transitions " << s.slack.total << ", max bar-length error "
-              << s.max_bar_length_error << ", energy drift " << s.energy.max_drift << "\n";
-    for (const PrestrainReport& p : s.prestrain) {
-      std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress
-                << " Pa" << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ")
-                << p.allowed_stress << " Pa\n";
-    }
+    PrintSimulation(model, result.summary);
     std::cout << "wrote " << out_dir << "/summary.json" << (csv ? " and history.csv" : "") << "\n";
   }
   return 0;
