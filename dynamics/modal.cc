@@ -171,23 +171,22 @@ void DenseModes(const DynamicModel& model, const LinearisedSystem& sys, const Mo
   result.highest_omega_rad_s = top.omega_rad_s;
 }
 
-// The lowest options.count modes by Spectra on the block-wise null space of the bar groups
-// (see the header for why). Falls back to DenseModes when the count is too close to the
-// number of modes for a Lanczos basis.
-void SparseModes(const DynamicModel& model, const LinearisedSystem& sys,
-                 const ModalOptions& options, ModalResult& result) {
+// Z: per group the trailing columns of Q in its G^T P = Q R, identity on DOFs of no group.
+// Columns follow the DOFs: a group's block is emitted where its first DOF comes. Returns Z's
+// entries; `columns` takes its number of columns, `rank_sum` the groups' ranks.
+Triplets BlockNullSpace(const DynamicModel& model, const LinearisedSystem& sys,
+                        const ModalOptions& options, int& columns, int& rank_sum) {
   const int n_dof = static_cast<int>(sys.mass.rows());
   const std::vector<int> first_dof = FirstDofs(sys, model.num_nodes());
   const std::vector<BarGroup> groups = GroupBars(model, first_dof);
-  // Z: per group the trailing columns of Q in its G^T P = Q R, identity on DOFs of no group.
-  // Columns follow the DOFs: a group's block is emitted where its first DOF comes.
   std::vector<int> group_of(n_dof, -1);
   for (size_t g = 0; g < groups.size(); ++g) {
     for (const int d : groups[g].dofs) group_of[d] = static_cast<int>(g);
   }
   std::vector<int> local(n_dof, -1);
   Triplets zt;
-  int columns = 0, rank_sum = 0;
+  columns = 0;
+  rank_sum = 0;
   for (int d = 0; d < n_dof; ++d) {
     const int g = group_of[d];
     if (g < 0) {
@@ -209,6 +208,36 @@ void SparseModes(const DynamicModel& model, const LinearisedSystem& sys,
       ++columns;
     }
   }
+  return zt;
+}
+
+// The highest mode's omega, into result.highest_omega_rad_s.
+void HighestMode(const SparseMatrix& k_red, const SparseMatrix& m_red, int n_red,
+                 const ModalOptions& options, ModalResult& result) {
+  using StiffnessOp = Spectra::SparseSymMatProd<double>;
+  using CholeskyOp = Spectra::SparseCholesky<double>;
+  StiffnessOp stiffness_op(k_red);
+  CholeskyOp cholesky_op(m_red);
+  Spectra::SymGEigsSolver<StiffnessOp, CholeskyOp, Spectra::GEigsMode::Cholesky> top(
+      stiffness_op, cholesky_op, 1, std::min(n_red, 20));
+  top.init();
+  top.compute(Spectra::SortRule::LargestAlge, 1000, options.highest_tolerance);
+  if (top.info() != Spectra::CompInfo::Successful) {
+    throw ModelError("modal analysis: the sparse eigensolver did not converge to the highest mode");
+  }
+  Mode highest;
+  SetOmega(top.eigenvalues()(0), highest);
+  result.highest_omega_rad_s = highest.omega_rad_s;
+}
+
+// The lowest options.count modes by Spectra on the block-wise null space of the bar groups
+// (see the header for why). Falls back to DenseModes when the count is too close to the
+// number of modes for a Lanczos basis.
+void SparseModes(const DynamicModel& model, const LinearisedSystem& sys,
+                 const ModalOptions& options, ModalResult& result) {
+  const int n_dof = static_cast<int>(sys.mass.rows());
+  int columns = 0, rank_sum = 0;
+  const Triplets zt = BlockNullSpace(model, sys, options, columns, rank_sum);
   const int n_red = columns;
   result.constraints = rank_sum;
   result.total_modes = n_red;
@@ -276,21 +305,7 @@ void SparseModes(const DynamicModel& model, const LinearisedSystem& sys,
   result.solver = "sparse";
 
   if (options.highest) {
-    using StiffnessOp = Spectra::SparseSymMatProd<double>;
-    using CholeskyOp = Spectra::SparseCholesky<double>;
-    StiffnessOp stiffness_op(k_red);
-    CholeskyOp cholesky_op(m_red);
-    Spectra::SymGEigsSolver<StiffnessOp, CholeskyOp, Spectra::GEigsMode::Cholesky> top(
-        stiffness_op, cholesky_op, 1, std::min(n_red, 20));
-    top.init();
-    top.compute(Spectra::SortRule::LargestAlge, 1000, options.highest_tolerance);
-    if (top.info() != Spectra::CompInfo::Successful) {
-      throw ModelError(
-          "modal analysis: the sparse eigensolver did not converge to the highest mode");
-    }
-    Mode highest;
-    SetOmega(top.eigenvalues()(0), highest);
-    result.highest_omega_rad_s = highest.omega_rad_s;
+    HighestMode(k_red, m_red, n_red, options, result);
   }
 }
 
