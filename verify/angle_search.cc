@@ -55,6 +55,60 @@ const AngleSearch::Trial& Chosen(const std::vector<AngleSearch::Trial>& trials) 
   return *chosen;
 }
 
+// Of the passing trials' sizes by angle, the nearest `beta`'s (null without one).
+const SizingStart* NearestStart(const std::vector<std::pair<double, SizingStart>>& starts,
+                                double beta) {
+  const SizingStart* near = nullptr;
+  double distance = std::numeric_limits<double>::infinity();
+  for (const auto& [at, sizes] : starts) {
+    if (std::abs(at - beta) < distance) {
+      distance = std::abs(at - beta);
+      near = &sizes;
+    }
+  }
+  return near;
+}
+
+// The golden section within `step` either side of `best_deg`, the scan's best, inside the
+// search's range; `trial` designs at an angle and records it.
+template <typename TrialAt>
+void GoldenSection(const AngleSearch& record, double best_deg, double step, const TrialAt& trial) {
+  const double ratio = (std::sqrt(5.0) - 1) / 2;
+  double a = std::max(record.low_deg, best_deg - step),
+         b = std::min(record.high_deg, best_deg + step);
+  double c = b - ratio * (b - a), e = a + ratio * (b - a);
+  AngleSearch::Trial fc = trial(c), fe = trial(e);
+  while (b - a > kAngleTolerance) {
+    if (!Better(fe, fc)) {  // the best lies in [a, e]
+      b = e;
+      e = c;
+      fe = fc;
+      c = b - ratio * (b - a);
+      fc = trial(c);
+    } else {
+      a = c;
+      c = e;
+      fc = fe;
+      e = a + ratio * (b - a);
+      fe = trial(e);
+    }
+  }
+}
+
+// The angle chosen among the trials, with a note where none passed or it is at an end of the
+// range.
+void ChooseAngle(AngleSearch& record) {
+  const AngleSearch::Trial& chosen_trial = Chosen(record.trials);
+  record.chosen_deg = chosen_trial.beta_deg;
+  if (!chosen_trial.pass) {
+    record.note += "no angle tried passed: the design at the least failing one is kept";
+  } else if (record.chosen_deg - record.low_deg < kAngleTolerance ||
+             record.high_deg - record.chosen_deg < kAngleTolerance) {
+    record.note +=
+        "the angle chosen is at an end of design.beta_range_deg: the best may lie beyond it";
+  }
+}
+
 }  // namespace
 
 Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
@@ -68,17 +122,6 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
   // The passing trials' sizes by angle: each later trial starts from the nearest one's (a fresh
   // verified design took about 40 s per angle at n = 6 on the 30 m footbridge).
   std::vector<std::pair<double, SizingStart>> starts;
-  const auto nearest_start = [&](double beta) -> const SizingStart* {
-    const SizingStart* near = nullptr;
-    double distance = std::numeric_limits<double>::infinity();
-    for (const auto& [at, sizes] : starts) {
-      if (std::abs(at - beta) < distance) {
-        distance = std::abs(at - beta);
-        near = &sizes;
-      }
-    }
-    return near;
-  };
   // One verified design per angle tried, its solver's iterations capped (kTrialIterations); a
   // design that cannot be built or sized at an angle (a ModelError: unstable, no prestress)
   // fails there.
@@ -95,7 +138,7 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
     t.beta_deg = beta;
     t.utilisation_max = std::numeric_limits<double>::infinity();
     try {
-      const Design d = DesignAndVerify(at, progress, nearest_start(beta));
+      const Design d = DesignAndVerify(at, progress, NearestStart(starts, beta));
       const Verdict verdict = DesignVerdict(d);
       t.mass_kg = d.mass.structure;
       t.pass = verdict.pass;
@@ -131,35 +174,8 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
     }
   }
   // The golden section within a step either side of the scan's best.
-  const double step = span / steps, ratio = (std::sqrt(5.0) - 1) / 2;
-  double a = std::max(record.low_deg, best->beta_deg - step),
-         b = std::min(record.high_deg, best->beta_deg + step);
-  double c = b - ratio * (b - a), e = a + ratio * (b - a);
-  AngleSearch::Trial fc = trial(c), fe = trial(e);
-  while (b - a > kAngleTolerance) {
-    if (!Better(fe, fc)) {  // the best lies in [a, e]
-      b = e;
-      e = c;
-      fe = fc;
-      c = b - ratio * (b - a);
-      fc = trial(c);
-    } else {
-      a = c;
-      c = e;
-      fc = fe;
-      e = a + ratio * (b - a);
-      fe = trial(e);
-    }
-  }
-  const AngleSearch::Trial& chosen_trial = Chosen(record.trials);
-  record.chosen_deg = chosen_trial.beta_deg;
-  if (!chosen_trial.pass) {
-    record.note += "no angle tried passed: the design at the least failing one is kept";
-  } else if (record.chosen_deg - record.low_deg < kAngleTolerance ||
-             record.high_deg - record.chosen_deg < kAngleTolerance) {
-    record.note +=
-        "the angle chosen is at an end of design.beta_range_deg: the best may lie beyond it";
-  }
+  GoldenSection(record, best->beta_deg, span / steps, trial);
+  ChooseAngle(record);
   // The design at the angle chosen, with the config's own solver settings: the same design as
   // the config with that angle given.
   Config chosen = config;
