@@ -39,30 +39,10 @@ void StaticStep(std::ostream& os, const std::string& label, const Eigen::Matrix3
   os << "*NODE PRINT, NSET=NODES\nU\n*NODE PRINT, NSET=SUPPORTS\nRF\n*END STEP\n";
 }
 
-}  // namespace
-
-void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostream& os) {
+// The strings and bars as springs, each with its own table.
+void WriteSprings(const FeModel& fe, const CalculixOptions& options, std::ostream& os) {
   const Structure& s = fe.statics.structure;
-  const int nn = s.num_nodes(), nb = s.num_bars(), ns = s.num_strings();
-  const int dim = s.dim();
-  os << "** tbridge export: " << nn << " nodes, " << nb << " bars, " << ns
-     << " strings; SI units (m, N, kg, s)\n";
-  os << "** bars " << (options.rigid_bars ? "near-rigid" : "elastic") << "; nodes " << nn + 1 << "-"
-     << nn + nb << " are the bars' midpoints, which carry mass only\n";
-  os << "*NODE, NSET=NALL\n";
-  for (int v = 0; v < nn; ++v) {
-    os << v + 1 << ", " << Num(s.nodes(0, v)) << ", " << Num(s.nodes(1, v)) << ", "
-       << Num(s.nodes(2, v)) << "\n";
-  }
-  for (int b = 0; b < nb; ++b) {
-    const Eigen::Vector3d mid = 0.5 * (s.nodes.col(s.bars[b].i) + s.nodes.col(s.bars[b].j));
-    os << nn + b + 1 << ", " << Num(mid(0)) << ", " << Num(mid(1)) << ", " << Num(mid(2)) << "\n";
-  }
-  os << "*NSET, NSET=NODES, GENERATE\n1, " << nn << ", 1\n*NSET, NSET=SUPPORTS\n";
-  for (int v = 0; v < nn; ++v) {
-    if (s.fixed[v]) os << v + 1 << ",\n";
-  }
-
+  const int nb = s.num_bars(), ns = s.num_strings();
   // Strings: no force below the rest length, k past it; elongation from the drawn length s.
   for (int k = 0; k < ns; ++k) {
     const Member& m = s.strings[k];
@@ -93,8 +73,12 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
            {{-0.5 * length, force - 0.5 * length * stiffness},
             {0.5 * length, force + 0.5 * length * stiffness}});
   }
+}
 
-  // Masses: node masses, and each bar's consistent mass through its midpoint.
+// Masses: node masses, and each bar's consistent mass through its midpoint.
+void WriteMasses(const FeModel& fe, std::ostream& os) {
+  const Structure& s = fe.statics.structure;
+  const int nn = s.num_nodes(), nb = s.num_bars(), ns = s.num_strings();
   Eigen::VectorXd mass = fe.modal.node_mass;
   mass.conservativeResize(nn + nb);
   mass.tail(nb).setZero();
@@ -112,6 +96,35 @@ void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostre
        << id << ", " << v + 1 << "\n*MASS, ELSET=E" << id << "\n"
        << Num(mass[v]) << "\n";
   }
+}
+
+}  // namespace
+
+void WriteCalculix(const FeModel& fe, const CalculixOptions& options, std::ostream& os) {
+  const Structure& s = fe.statics.structure;
+  const int nn = s.num_nodes(), nb = s.num_bars(), ns = s.num_strings();
+  const int dim = s.dim();
+  os << "** tbridge export: " << nn << " nodes, " << nb << " bars, " << ns
+     << " strings; SI units (m, N, kg, s)\n";
+  os << "** bars " << (options.rigid_bars ? "near-rigid" : "elastic") << "; nodes " << nn + 1 << "-"
+     << nn + nb << " are the bars' midpoints, which carry mass only\n";
+  os << "*NODE, NSET=NALL\n";
+  for (int v = 0; v < nn; ++v) {
+    os << v + 1 << ", " << Num(s.nodes(0, v)) << ", " << Num(s.nodes(1, v)) << ", "
+       << Num(s.nodes(2, v)) << "\n";
+  }
+  for (int b = 0; b < nb; ++b) {
+    const Eigen::Vector3d mid = 0.5 * (s.nodes.col(s.bars[b].i) + s.nodes.col(s.bars[b].j));
+    os << nn + b + 1 << ", " << Num(mid(0)) << ", " << Num(mid(1)) << ", " << Num(mid(2)) << "\n";
+  }
+  os << "*NSET, NSET=NODES, GENERATE\n1, " << nn << ", 1\n*NSET, NSET=SUPPORTS\n";
+  for (int v = 0; v < nn; ++v) {
+    if (s.fixed[v]) os << v + 1 << ",\n";
+  }
+
+  WriteSprings(fe, options, os);
+
+  WriteMasses(fe, os);
   os << "*EQUATION\n";
   for (int b = 0; b < nb; ++b) {
     for (int a = 0; a < dim; ++a) {
