@@ -124,9 +124,49 @@ double JointMass(const Design& design, const JointMassConfig& joint) {
   return mass;
 }
 
-CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate) {
+namespace {
+
+// The sweep's constraints the row violates (row.violated), and whether it is feasible.
+void CheckConstraints(const SweepSpec& spec, CandidateRow& row) {
   const SweepConfig& sw = spec.sweep;
   const SweepConstraints& con = sw.constraints;
+  const double span = spec.base.bridge.span;
+  auto check = [&](bool active, bool passed, const char* name) {
+    if (active && !passed) row.violated.push_back(name);
+  };
+  check(sw.verified, row.verified.value_or(false), kVerifiedDesign);
+  check(sw.constraints.Dynamic(), row.dynamic_check_done.value_or(false), kDynamicCheckDone);
+  check(con.min_first_frequency_rad_s.has_value(),
+        row.first_frequency_rad_s &&
+            *row.first_frequency_rad_s >= con.min_first_frequency_rad_s.value_or(0),
+        kMinFirstFrequency);
+  check(con.max_deck_displacement.has_value(),
+        row.peak_deck_displacement &&
+            *row.peak_deck_displacement <= con.max_deck_displacement.value_or(0),
+        kMaxDeckDisplacement);
+  check(con.span_over_displacement.has_value(),
+        row.peak_deck_displacement &&
+            *row.peak_deck_displacement * con.span_over_displacement.value_or(0) <= span,
+        kSpanOverDisplacement);
+  check(con.no_slack_under_service, row.slack_taut_strings && *row.slack_taut_strings == 0,
+        kNoSlack);
+  check(con.max_dynamic_stress_ratio.has_value(),
+        row.dynamic_string_utilisation &&
+            *row.dynamic_string_utilisation <= con.max_dynamic_stress_ratio.value_or(0),
+        kMaxDynamicStress);
+  check(con.bar_capacity_during_motion,
+        row.dynamic_bar_utilisation && *row.dynamic_bar_utilisation <= 1.0, kBarCapacity);
+  // 1e-8 relative: the design state sits at sigma_w up to the solver's force tolerance
+  // (design.tolerance, 1e-10 by default, seen as 2e-10 relative in the deck strings).
+  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-8),
+        kPrestressAllowed);
+  row.feasible = row.violated.empty();
+}
+
+}  // namespace
+
+CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate) {
+  const SweepConfig& sw = spec.sweep;
   CandidateRow row;
   row.candidate = candidate;
   try {
@@ -199,37 +239,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     return row;
   }
 
-  const double span = spec.base.bridge.span;
-  auto check = [&](bool active, bool passed, const char* name) {
-    if (active && !passed) row.violated.push_back(name);
-  };
-  check(sw.verified, row.verified.value_or(false), kVerifiedDesign);
-  check(sw.constraints.Dynamic(), row.dynamic_check_done.value_or(false), kDynamicCheckDone);
-  check(con.min_first_frequency_rad_s.has_value(),
-        row.first_frequency_rad_s &&
-            *row.first_frequency_rad_s >= con.min_first_frequency_rad_s.value_or(0),
-        kMinFirstFrequency);
-  check(con.max_deck_displacement.has_value(),
-        row.peak_deck_displacement &&
-            *row.peak_deck_displacement <= con.max_deck_displacement.value_or(0),
-        kMaxDeckDisplacement);
-  check(con.span_over_displacement.has_value(),
-        row.peak_deck_displacement &&
-            *row.peak_deck_displacement * con.span_over_displacement.value_or(0) <= span,
-        kSpanOverDisplacement);
-  check(con.no_slack_under_service, row.slack_taut_strings && *row.slack_taut_strings == 0,
-        kNoSlack);
-  check(con.max_dynamic_stress_ratio.has_value(),
-        row.dynamic_string_utilisation &&
-            *row.dynamic_string_utilisation <= con.max_dynamic_stress_ratio.value_or(0),
-        kMaxDynamicStress);
-  check(con.bar_capacity_during_motion,
-        row.dynamic_bar_utilisation && *row.dynamic_bar_utilisation <= 1.0, kBarCapacity);
-  // 1e-8 relative: the design state sits at sigma_w up to the solver's force tolerance
-  // (design.tolerance, 1e-10 by default, seen as 2e-10 relative in the deck strings).
-  check(con.prestress_within_allowed, row.prestress <= row.allowed_stress * (1 + 1e-8),
-        kPrestressAllowed);
-  row.feasible = row.violated.empty();
+  CheckConstraints(spec, row);
   return row;
 }
 
