@@ -33,13 +33,8 @@ nlohmann::json ModelMembersJson(const DynamicModel& model) {
   return {{"positions", nodes}, {"fixed", fixed}, {"bars", bars}, {"strings", strings}};
 }
 
-}  // namespace
-
-nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
-                           const SimulationResult& r) {
-  const SimulationSummary& s = r.summary;
-  nlohmann::json j;
-  j["config"] = ToJson(config);
+// The model section: its counts, moving mass, bar length classes and members.
+nlohmann::json ModelJson(const DynamicModel& model) {
   nlohmann::json classes = nlohmann::json::array();
   const auto groups = BarLengthClasses(model);
   for (size_t c = 0; c < groups.size(); ++c) {
@@ -48,17 +43,18 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
     classes.push_back(
         {{"class", c + 1}, {"length_m", model.bars[groups[c].front()].length}, {"bars", bars}});
   }
-  j["model"] = {{"dim", model.dim},
-                {"nodes", model.num_nodes()},
-                {"bars", model.bars.size()},
-                {"strings", model.strings.size()},
-                {"moving_mass_kg", MovingMass(model)},
-                {"bar_length_classes", classes},
-                {"members", ModelMembersJson(model)}};
-  j["run"] = {{"integrator", s.integrator},   {"substeps", s.substeps},
-              {"engine", s.engine},           {"steps", s.steps},
-              {"rejected_steps", s.rejected}, {"evaluations", s.evaluations},
-              {"duration_s", s.duration},     {"wall_s", s.wall_seconds}};
+  return {{"dim", model.dim},
+          {"nodes", model.num_nodes()},
+          {"bars", model.bars.size()},
+          {"strings", model.strings.size()},
+          {"moving_mass_kg", MovingMass(model)},
+          {"bar_length_classes", classes},
+          {"members", ModelMembersJson(model)}};
+}
+
+// The frequency section: the deck's, when the run found one (with its second estimates), else
+// why not.
+void AddFrequency(const SimulationSummary& s, nlohmann::json& j) {
   if (s.has_frequency) {
     j["frequency"] = {{"method", "dominant spectral peak of the summed vertical deck displacement"},
                       {"periods", {s.frequency.period_s}},
@@ -87,6 +83,21 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
   } else if (!s.frequency_note.empty()) {
     j["frequency"] = {{"note", s.frequency_note}};
   }
+}
+
+}  // namespace
+
+nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
+                           const SimulationResult& r) {
+  const SimulationSummary& s = r.summary;
+  nlohmann::json j;
+  j["config"] = ToJson(config);
+  j["model"] = ModelJson(model);
+  j["run"] = {{"integrator", s.integrator},   {"substeps", s.substeps},
+              {"engine", s.engine},           {"steps", s.steps},
+              {"rejected_steps", s.rejected}, {"evaluations", s.evaluations},
+              {"duration_s", s.duration},     {"wall_s", s.wall_seconds}};
+  AddFrequency(s, j);
   j["max_string_stress"] = {{"stress_pa", s.max_string_stress},
                             {"string", s.max_stress_string},
                             {"time_s", s.max_stress_time},
