@@ -211,6 +211,36 @@ Eigen::VectorXd Multipliers(const Structure& s, const Eigen::VectorXd& bar_compr
   return lambda;
 }
 
+// Tolerances: forces to 1e-10 of the largest load or member force (a few hundred rounding
+// steps of the sums at a node); this is that force scale.
+double ForceScale(const StaticState& start, const Eigen::Matrix3Xd& start_loads,
+                  const Eigen::Matrix3Xd& loads) {
+  double force_scale = std::max(loads.cwiseAbs().maxCoeff(), start_loads.cwiseAbs().maxCoeff());
+  if (start.bar_compression.size())
+    force_scale = std::max(force_scale, start.bar_compression.cwiseAbs().maxCoeff());
+  if (start.string_tension.size())
+    force_scale = std::max(force_scale, start.string_tension.cwiseAbs().maxCoeff());
+  force_scale = std::max(force_scale, 1e-300);
+  return force_scale;
+}
+
+// Takes the Newton `step` into the nodes `x` and the multipliers `lambda`, limited to a tenth of
+// the shortest bar `min_bar`, so a slack switch cannot throw the structure across a
+// configuration.
+void TakeLimitedStep(const Structure& s, const DofMap& map, double min_bar,
+                     const Eigen::VectorXd& step, Eigen::Matrix3Xd& x, Eigen::VectorXd& lambda) {
+  const int nb = s.num_bars();
+  double largest = 0;
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (map.first[v] >= 0) largest = std::max(largest, step.segment(map.first[v], map.dim).norm());
+  }
+  const double scale = largest > 0.1 * min_bar ? 0.1 * min_bar / largest : 1.0;
+  for (int v = 0; v < s.num_nodes(); ++v) {
+    if (map.first[v] >= 0) x.col(v).head(map.dim) += scale * step.segment(map.first[v], map.dim);
+  }
+  lambda += scale * step.tail(nb);
+}
+
 }  // namespace
 
 StaticTangent::StaticTangent(const StaticModel& model, const StaticState& state)
@@ -263,12 +293,7 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start,
   const bool reuse = tangent != nullptr && tangent->ok();
   // Tolerances: forces to 1e-10 of the largest load or member force (a few hundred rounding
   // steps of the sums at a node); bar lengths to 1e-12 relative.
-  double force_scale = std::max(loads.cwiseAbs().maxCoeff(), start_loads.cwiseAbs().maxCoeff());
-  if (start.bar_compression.size())
-    force_scale = std::max(force_scale, start.bar_compression.cwiseAbs().maxCoeff());
-  if (start.string_tension.size())
-    force_scale = std::max(force_scale, start.string_tension.cwiseAbs().maxCoeff());
-  force_scale = std::max(force_scale, 1e-300);
+  const double force_scale = ForceScale(start, start_loads, loads);
   double min_bar = 1e300;
   for (const Member& e : s.bars) min_bar = std::min(min_bar, s.Length(e));
   StaticResult out;
@@ -318,19 +343,7 @@ StaticResult SolveStatic(const StaticModel& m, const StaticState& start,
         lu.Solve(step);
       }
       if (!step.allFinite()) break;
-      // Limit a step to a tenth of the shortest bar, so a slack switch cannot throw the
-      // structure across a configuration.
-      double largest = 0;
-      for (int v = 0; v < s.num_nodes(); ++v) {
-        if (map.first[v] >= 0)
-          largest = std::max(largest, step.segment(map.first[v], map.dim).norm());
-      }
-      const double scale = largest > 0.1 * min_bar ? 0.1 * min_bar / largest : 1.0;
-      for (int v = 0; v < s.num_nodes(); ++v) {
-        if (map.first[v] >= 0)
-          x.col(v).head(map.dim) += scale * step.segment(map.first[v], map.dim);
-      }
-      lambda += scale * step.tail(nb);
+      TakeLimitedStep(s, map, min_bar, step, x, lambda);
     }
     ++out.load_steps;
     if (ok) {
