@@ -111,7 +111,12 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
   cost_.conservativeResize(s_ + num_envelopes_);
   for (int e = 0; e < num_envelopes_; ++e) cost_[s_ + e] = envelope_cost[e];
 
-  // Rows: per case, per active member: floor, then envelope, then buckling.
+  FormRows();
+}
+
+// Rows: per case, per active member: floor, then envelope, then buckling.
+void ReducedMinMassProblem::FormRows() {
+  const int cases = num_cases();
   std::vector<double> lo_rows;
   hess_of_active_.assign(active_.size(), -1);
   for (int c = 0; c < cases; ++c) {

@@ -97,6 +97,8 @@ class ReducedMinMassProblem final : public NlpProblem {
     int kind, active, c;
   };
   double ScaledForce(const Active& a, int c, const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // The constructor's constraint rows (rows_, row_lo_) and the sparsity patterns.
+  void FormRows();
 
   int nb_ = 0, ns_ = 0, s_ = 0, num_envelopes_ = 0, active_bars_ = 0;
   MinMassSettings settings_;
