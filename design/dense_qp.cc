@@ -273,6 +273,83 @@ const char* DenseQpStatusName(DenseQpStatus status) {
   return "unknown";
 }
 
+bool DenseQpSolver::Factor(const DenseQp& qp, Eigen::VectorXd& p) {
+  diagonal_ = qp.G.isDiagonal(0.0);
+  if (diagonal_) {
+    // The sequential QP's G is diagonal: L = sqrt(G), with no dense factorisation.
+    if (!(qp.G.diagonal().array() > 0).all()) return false;
+    inv_sqrt_ = qp.G.diagonal().cwiseSqrt().cwiseInverse();
+    p = -qp.a.cwiseQuotient(qp.G.diagonal());
+  } else {
+    llt_.compute(qp.G);
+    if (llt_.info() != Eigen::Success) return false;
+    p = -llt_.solve(qp.a);
+  }
+  return true;
+}
+
+DenseQpSolver::StepEnd DenseQpSolver::Step(const DenseQp& qp, int kp, double nt_norm,
+                                           Eigen::VectorXd& p) {
+  // z, the rest of the candidate's normal, is the step in y; r = R^-1 d1 how the active
+  // multipliers must change.
+  Split();
+  if (q_ > 0) {
+    r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d1_.head(q_));
+  }
+  double t1 = kInf;
+  int l = -1;
+  for (int k = 0; k < q_; ++k) {
+    if (r_[k] > 0.0 && u_[k] / r_[k] < t1) t1 = u_[k] / r_[k], l = k;
+  }
+  // The candidate is independent of the active normals as StartFrom judges (kIndependent).
+  // The primal step length is -slack / (z . nt), and z . nt = |z|^2 exactly (z is orthogonal
+  // to Q1), where the product itself is |z|^2 plus rounding of order 1e-14 |z| |nt|: below
+  // z/nt = 1e-7 that sign could flip, and a step of -1e6 left the active rows violated by
+  // 3e-4 in a program "solved" (n = 7).
+  const double z_norm = z_.norm();
+  const bool primal = z_norm > kIndependent * nt_norm;
+  const double t2 = primal ? -Slack(qp, kp, p) / (z_norm * z_norm) : kInf;
+  if (!std::isfinite(t1) && !std::isfinite(t2)) {
+    // kp lies in the active normals' span, and no active multiplier can give way: in exact
+    // arithmetic the program is infeasible. Violated by rounding alone (the active
+    // constraints imply it to within 1e-8 of its bound), it is met, and left out.
+    if (Slack(qp, kp, p) >= -1e-8 * (1 + std::abs(Rhs(qp, kp)))) {
+      is_active_[static_cast<size_t>(kp)] = 2;
+      left_out_ = true;
+      return StepEnd::kLeftOut;
+    }
+    return StepEnd::kInfeasible;
+  }
+  const double t = std::min(t1, t2);
+  if (primal) {
+    dp_ = z_;
+    ToP(dp_);
+    p += t * dp_;
+  }
+  if (q_ > 0) u_.head(q_) -= t * r_.head(q_);
+  u_[q_] += t;
+  if (t2 <= t1) {
+    Add(z_norm, kp);  // a primal step: kp is independent of the active normals
+    return StepEnd::kJoined;
+  }
+  Drop(l);
+  return StepEnd::kDropped;
+}
+
+void DenseQpSolver::Multipliers(DenseQpSolution& out) const {
+  out.active = active_;
+  for (int k = 0; k < q_; ++k) {
+    const int c = active_[static_cast<size_t>(k)];
+    if (c < m_) {
+      out.row_multiplier[c] = u_[k];
+    } else if (c < m_ + n_) {
+      out.bound_multiplier[c - m_] += u_[k];
+    } else {
+      out.bound_multiplier[c - m_ - n_] -= u_[k];
+    }
+  }
+}
+
 void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolerance,
                           const std::vector<int>* warm) {
   const int n = static_cast<int>(qp.G.rows());
@@ -286,22 +363,9 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
   out.bound_multiplier.setZero(n);
 
   Eigen::VectorXd& p = out.p;
-  diagonal_ = qp.G.isDiagonal(0.0);
-  if (diagonal_) {
-    // The sequential QP's G is diagonal: L = sqrt(G), with no dense factorisation.
-    if (!(qp.G.diagonal().array() > 0).all()) {
-      out.status = DenseQpStatus::kNotPositiveDefinite;
-      return;
-    }
-    inv_sqrt_ = qp.G.diagonal().cwiseSqrt().cwiseInverse();
-    p = -qp.a.cwiseQuotient(qp.G.diagonal());
-  } else {
-    llt_.compute(qp.G);
-    if (llt_.info() != Eigen::Success) {
-      out.status = DenseQpStatus::kNotPositiveDefinite;
-      return;
-    }
-    p = -llt_.solve(qp.a);
+  if (!Factor(qp, p)) {
+    out.status = DenseQpStatus::kNotPositiveDefinite;
+    return;
   }
   q_ = 0;
   active_.clear();
@@ -327,64 +391,16 @@ void DenseQpSolver::Solve(const DenseQp& qp, DenseQpSolution& out, double tolera
     for (;;) {
       ++out.steps;
       if (out.steps > max_steps) break;
-      // z, the rest of the candidate's normal, is the step in y; r = R^-1 d1 how the active
-      // multipliers must change.
-      Split();
-      if (q_ > 0) {
-        r_.head(q_) = R_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solve(d1_.head(q_));
-      }
-      double t1 = kInf;
-      int l = -1;
-      for (int k = 0; k < q_; ++k) {
-        if (r_[k] > 0.0 && u_[k] / r_[k] < t1) t1 = u_[k] / r_[k], l = k;
-      }
-      // The candidate is independent of the active normals as StartFrom judges (kIndependent).
-      // The primal step length is -slack / (z . nt), and z . nt = |z|^2 exactly (z is orthogonal
-      // to Q1), where the product itself is |z|^2 plus rounding of order 1e-14 |z| |nt|: below
-      // z/nt = 1e-7 that sign could flip, and a step of -1e6 left the active rows violated by
-      // 3e-4 in a program "solved" (n = 7).
-      const double z_norm = z_.norm();
-      const bool primal = z_norm > kIndependent * nt_norm;
-      const double t2 = primal ? -Slack(qp, kp, p) / (z_norm * z_norm) : kInf;
-      if (!std::isfinite(t1) && !std::isfinite(t2)) {
-        // kp lies in the active normals' span, and no active multiplier can give way: in exact
-        // arithmetic the program is infeasible. Violated by rounding alone (the active
-        // constraints imply it to within 1e-8 of its bound), it is met, and left out.
-        if (Slack(qp, kp, p) >= -1e-8 * (1 + std::abs(Rhs(qp, kp)))) {
-          is_active_[static_cast<size_t>(kp)] = 2;
-          left_out_ = true;
-          break;
-        }
+      const StepEnd end = Step(qp, kp, nt_norm, p);
+      if (end == StepEnd::kInfeasible) {
         out.status = DenseQpStatus::kInfeasible;
         return;
       }
-      const double t = std::min(t1, t2);
-      if (primal) {
-        dp_ = z_;
-        ToP(dp_);
-        p += t * dp_;
-      }
-      if (q_ > 0) u_.head(q_) -= t * r_.head(q_);
-      u_[q_] += t;
-      if (t2 <= t1) {
-        Add(z_norm, kp);  // a primal step: kp is independent of the active normals
-        break;
-      }
-      Drop(l);
+      if (end != StepEnd::kDropped) break;
     }
   }
   if (!out.solved) return;
-  out.active = active_;
-  for (int k = 0; k < q_; ++k) {
-    const int c = active_[static_cast<size_t>(k)];
-    if (c < m) {
-      out.row_multiplier[c] = u_[k];
-    } else if (c < m + n) {
-      out.bound_multiplier[c - m] += u_[k];
-    } else {
-      out.bound_multiplier[c - m - n] -= u_[k];
-    }
-  }
+  Multipliers(out);
 }
 
 }  // namespace tbridge

@@ -89,6 +89,17 @@ class DenseQpSolver {
   int MostViolated(const DenseQp& qp, const Eigen::VectorXd& p, double tolerance);
   void Add(double z_norm, int k);  // constraint k joins: z_ / z_norm to Q1, [d1; z_norm] to R
   void Drop(int l);                // removes active constraint l (0-based in the active list)
+  // G's factor (diagonal_, inv_sqrt_ or llt_) and the unconstrained minimiser into p; false
+  // where G is not positive definite.
+  bool Factor(const DenseQp& qp, Eigen::VectorXd& p);
+  // How one step toward the candidate kp ended: kp joined the active set, an active
+  // constraint left, kp was left out as met by rounding, or the program is infeasible.
+  enum class StepEnd { kJoined, kDropped, kLeftOut, kInfeasible };
+  // One step along the primal and dual directions toward candidate kp (nt_ its transformed
+  // normal, nt_norm its norm).
+  StepEnd Step(const DenseQp& qp, int kp, double nt_norm, Eigen::VectorXd& p);
+  // The active set and its multipliers, as rows and bounds, into out.
+  void Multipliers(DenseQpSolution& out) const;
 
   static constexpr int kBlock = 32;  // warm constraints that join StartFrom's active set at once
   int n_ = -1, m_ = -1, q_ = 0;      // sizes; q_: active constraints
