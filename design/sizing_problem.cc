@@ -741,21 +741,14 @@ struct SizingProblem::Impl {
     }
   }
 
-  // The problem's symmetries and, for the whole problem (`first_row`: per combination, its
-  // first row), each row's orbit under them (row_representative, member_representative).
-  void IndexImages(const Design& d, const std::vector<int>* first_row) {
-    const int n_rows = static_cast<int>(rows.size());
-    row_representative.resize(static_cast<size_t>(n_rows));
-    member_representative.resize(static_cast<size_t>(nm));
-    for (int r = 0; r < n_rows; ++r) row_representative[static_cast<size_t>(r)] = r;
-    for (int j = 0; j < nm; ++j) member_representative[static_cast<size_t>(j)] = j;
-    if (first_row == nullptr) return;
+  // The mirrors that map the problem onto itself (symmetries, pointers into `mirrors`) and, per
+  // symmetry, each combination's image.
+  std::vector<std::vector<int>> CombinationImages(const Design& d,
+                                                  const std::vector<Mirror>& mirrors,
+                                                  std::vector<const Mirror*>& symmetries) const {
     const int stations = static_cast<int>(d.actions.station_nodes.size());
     const double span = d.config.bridge.span;
-    // Per symmetry, each combination's image.
-    std::vector<const Mirror*> symmetries;
     std::vector<std::vector<int>> combo_image;
-    const std::vector<Mirror> mirrors = Mirrors(s, span);
     std::vector<std::vector<int>> combo_at(d.cases.size(),
                                            std::vector<int>(static_cast<size_t>(stations) + 1, -1));
     for (size_t c = 0; c < combos.size(); ++c) {
@@ -777,26 +770,38 @@ struct SizingProblem::Impl {
       symmetries.push_back(&m);
       combo_image.push_back(std::move(image));
     }
-    if (symmetries.empty()) return;
-    // Each row's place within its combination by kind and member (or node): the same in a
-    // combination and its image, which share a case. The reference-taut rows by member.
+    return combo_image;
+  }
+
+  // Each row's place within its combination by kind and member (or node), per layout of the
+  // combinations' rows; the reference-taut rows by member.
+  struct RowSlots {
+    int width = 0;
+    std::vector<std::vector<int>> slot;  // per combination layout: kind x width -> offset
+    std::vector<int> layout;             // per combination, its layout in `slot`
+    std::vector<int> reference_taut;     // per member, its reference-taut row (-1: none)
+  };
+  RowSlots SlotRows(const std::vector<int>& first_row) const {
+    const int n_rows = static_cast<int>(rows.size());
+    RowSlots out;
     const int kinds = SizingRow::kComfort + 1;
     const int width = std::max({nm, s.num_nodes(), static_cast<int>(corrections.comfort.size())});
-    std::vector<std::vector<int>> slot;      // per combination layout: kind x width -> offset
-    std::vector<int> layout(combos.size());  // per combination, its layout in `slot`
+    out.width = width;
+    std::vector<std::vector<int>>& slot = out.slot;
+    std::vector<int>& layout = out.layout;
+    layout.resize(combos.size());
     std::map<std::vector<char>, int> layouts;
-    std::vector<int> reference_taut(static_cast<size_t>(nm), -1);
+    out.reference_taut.assign(static_cast<size_t>(nm), -1);
     // The comfort and reference-taut rows come last, after every combination's.
     int combos_end = n_rows;
     for (int r = n_rows - 1; r >= 0 && rows[static_cast<size_t>(r)].combination < 0; --r) {
       combos_end = r;
       const SizingRow& row = rows[static_cast<size_t>(r)];
       if (row.kind == SizingRow::kReferenceTaut)
-        reference_taut[static_cast<size_t>(row.member)] = r;
+        out.reference_taut[static_cast<size_t>(row.member)] = r;
     }
     for (size_t c = 0; c < combos.size(); ++c) {
-      const int begin = (*first_row)[c],
-                end = c + 1 < combos.size() ? (*first_row)[c + 1] : combos_end;
+      const int begin = first_row[c], end = c + 1 < combos.size() ? first_row[c + 1] : combos_end;
       std::vector<char> key;  // the kinds in order: the layout
       for (int r = begin; r < end; ++r)
         key.push_back(static_cast<char>(rows[static_cast<size_t>(r)].kind));
@@ -810,6 +815,46 @@ struct SizingProblem::Impl {
       }
       slot.push_back(std::move(offsets));
     }
+    return out;
+  }
+
+  // Each member's representative: the least of its images under the symmetries and their
+  // pairs.
+  void MemberRepresentatives(const std::vector<const Mirror*>& symmetries) {
+    for (int j = 0; j < nm; ++j) {
+      int first = j;
+      for (const Mirror* m : symmetries) first = std::min(first, m->member[static_cast<size_t>(j)]);
+      for (const Mirror* m1 : symmetries) {
+        for (const Mirror* m2 : symmetries)
+          first =
+              std::min(first, m2->member[static_cast<size_t>(m1->member[static_cast<size_t>(j)])]);
+      }
+      member_representative[static_cast<size_t>(j)] = first;
+    }
+  }
+
+  // The problem's symmetries and, for the whole problem (`first_row`: per combination, its
+  // first row), each row's orbit under them (row_representative, member_representative).
+  void IndexImages(const Design& d, const std::vector<int>* first_row) {
+    const int n_rows = static_cast<int>(rows.size());
+    row_representative.resize(static_cast<size_t>(n_rows));
+    member_representative.resize(static_cast<size_t>(nm));
+    for (int r = 0; r < n_rows; ++r) row_representative[static_cast<size_t>(r)] = r;
+    for (int j = 0; j < nm; ++j) member_representative[static_cast<size_t>(j)] = j;
+    if (first_row == nullptr) return;
+    const double span = d.config.bridge.span;
+    // Per symmetry, each combination's image.
+    std::vector<const Mirror*> symmetries;
+    const std::vector<Mirror> mirrors = Mirrors(s, span);
+    const std::vector<std::vector<int>> combo_image = CombinationImages(d, mirrors, symmetries);
+    if (symmetries.empty()) return;
+    // Each row's place within its combination by kind and member (or node): the same in a
+    // combination and its image, which share a case. The reference-taut rows by member.
+    const RowSlots slots = SlotRows(*first_row);
+    const int width = slots.width;
+    const std::vector<std::vector<int>>& slot = slots.slot;
+    const std::vector<int>& layout = slots.layout;
+    const std::vector<int>& reference_taut = slots.reference_taut;
     const auto image_of = [&](size_t m, int r) {
       const SizingRow& row = rows[static_cast<size_t>(r)];
       // A mode's eigenvalue reads the group variables only, which the mirrors keep.
@@ -842,16 +887,7 @@ struct SizingProblem::Impl {
       }
       row_representative[static_cast<size_t>(r)] = *std::min_element(orbit.begin(), orbit.end());
     }
-    for (int j = 0; j < nm; ++j) {
-      int first = j;
-      for (const Mirror* m : symmetries) first = std::min(first, m->member[static_cast<size_t>(j)]);
-      for (const Mirror* m1 : symmetries) {
-        for (const Mirror* m2 : symmetries)
-          first =
-              std::min(first, m2->member[static_cast<size_t>(m1->member[static_cast<size_t>(j)])]);
-      }
-      member_representative[static_cast<size_t>(j)] = first;
-    }
+    MemberRepresentatives(symmetries);
   }
 
   // Combination c's value of row `row` of per-column values `m` (its case's column plus its
@@ -1049,6 +1085,176 @@ struct SizingProblem::Impl {
       }
     }
   }
+
+  // Building (SizingProblem::Build): the members, their materials, floors, groups and scales.
+  static void ReadMembers(Impl& p, const Design& d, SizingCorrections corrections) {
+    p.s = d.topology.structure;
+    const Structure& s = p.s;
+    p.nb = s.num_bars();
+    p.ns = s.num_strings();
+    p.nm = p.nb + p.ns;
+    const Config& config = d.config;
+    const MemberMaterial strings = StringMaterial(config), bars = BarMaterial(config);
+    p.E = strings.youngs_modulus;
+    p.E_bar = bars.youngs_modulus;
+    p.sigma_w = strings.DesignStress();
+    p.sigma_ser = StringServiceStress(config);
+    for (int j = 0; j < p.nm; ++j) p.rho.push_back(j < p.nb ? bars.density : strings.density);
+    p.rule = BarRuleOf(config);
+    p.deflection_limit_m = config.bridge.span / config.loads.deflection_limit;
+    corrections.demand_factor.resize(p.nm, 1.0);
+    corrections.taut_margin_n.resize(p.nm, 0.0);
+    p.corrections = std::move(corrections);
+    const DesignInputs in = PrepareDesign(config);
+    for (int j = 0; j < p.nm; ++j) {
+      const Member& m = j < p.nb ? s.bars[j] : s.strings[j - p.nb];
+      p.length.push_back(s.Length(m));
+      const double floor = j < p.nb ? in.settings.bar_min_area[j] : in.string_min_area[j - p.nb];
+      p.min_area.push_back(std::max(floor, kAreaFloor));
+      p.must_taut.push_back(j >= p.nb && MustStayTaut(d, j - p.nb));
+    }
+    p.group_of = MirrorGroups(s, config.bridge.span);
+    p.groups = *std::max_element(p.group_of.begin(), p.group_of.end()) + 1;
+    p.members_of.resize(p.groups);
+    for (int j = 0; j < p.nm; ++j) p.members_of[p.group_of[j]].push_back(j);
+    p.area_scale.assign(p.groups, 0.0);
+    for (int j = 0; j < p.nm; ++j) {
+      const double area = j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area;
+      double& scale = p.area_scale[p.group_of[j]];
+      scale = std::max({scale, area, p.min_area[j]});
+    }
+    p.deck_nodes = d.topology.deck_nodes;
+  }
+
+  // Building: the reference state, the particular forces of G and the self-stresses, and the
+  // design's reference forces as the problem reads them.
+  static void ReadReferenceState(Impl& p, const Design& d) {
+    const Structure& s = p.s;
+    // The reference state: the particular forces of G and the self-stresses.
+    const EquilibriumSystem eq = BuildEquilibrium(s);
+    const EquilibriumSolver solver(eq);
+    if (solver.states() > kMaxSoughtStates) {
+      throw ModelError("the verified sizing seeks its symmetric self-stress states among at most " +
+                       std::to_string(kMaxSoughtStates) + " states; this bridge has " +
+                       std::to_string(solver.states()));
+    }
+    if (solver.states()) {
+      const Eigen::MatrixXd all = solver.SelfStresses();
+      p.N = SymmetricSelfStresses(all, p.group_of, p.groups);
+      p.to_basis = all.transpose() * p.N;
+    }
+    p.states = static_cast<int>(p.N.cols());
+    if (p.states > kMaxStates) {
+      throw ModelError("the verified sizing takes at most " + std::to_string(kMaxStates) +
+                       " symmetric self-stress states; this bridge has " +
+                       std::to_string(p.states));
+    }
+    // The minimum-norm particular forces of symmetric loads are symmetric themselves.
+    p.x_g = solver.Particular(FreeLoads(eq, d.loads)).col(0);
+    p.force_scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
+    for (int j = 0; j < p.nm; ++j)
+      p.area0.push_back(j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area);
+    // The design's reference forces as the problem reads them: G's particular forces and the
+    // symmetric part of its prestress.
+    p.xr0 = p.states
+                ? Eigen::VectorXd(p.x_g + p.N * (p.N.transpose() * (d.reference_forces - p.x_g)))
+                : p.x_g;
+    p.mass_scale = std::max(d.mass.structure, 1e-3);
+  }
+
+  // Building: the load columns and the combinations, named as the static check names them.
+  static void FormCombinations(Impl& p, const Design& d) {
+    const Structure& s = p.s;
+    // The load columns: each case's change from the reference loads, then a unit station load.
+    const int stations = static_cast<int>(d.actions.station_nodes.size());
+    auto free = [&s](const Eigen::Matrix3Xd& loads) {
+      return LinearResponse::FreeVector(s, loads);
+    };
+    const Eigen::VectorXd reference_free = free(d.loads);
+    p.loads.resize(reference_free.size(), static_cast<Eigen::Index>(d.cases.size()) + stations);
+    for (size_t c = 0; c < d.cases.size(); ++c)
+      p.loads.col(c) = free(d.actions.Loads(d.cases[c])) - reference_free;
+    const int station_column0 = static_cast<int>(d.cases.size());
+    for (int k = 0; k < stations; ++k)
+      p.loads.col(station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
+    for (size_t c = 0; c < d.cases.size(); ++c) {
+      const LoadCase& lc = d.cases[c];
+      for (int k = lc.station_load != 0 ? 0 : -1; k < (lc.station_load != 0 ? stations : 0); ++k) {
+        SizingCombination combo;
+        combo.case_index = static_cast<int>(c);
+        combo.station = k;
+        combo.ultimate = lc.state == LimitState::kUltimate;
+        // Named as the static check names its solves: the station by its first deck node.
+        combo.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), k});
+        p.combos.push_back(combo);
+        p.station_factor.push_back(k >= 0 ? lc.station_load : 0.0);
+        p.base_column.push_back(static_cast<int>(c));
+        p.station_column.push_back(k >= 0 ? station_column0 + k : -1);
+      }
+    }
+  }
+
+  // Building: the rows of every combination, then the comfort and reference-taut rows; returns
+  // per combination its first row.
+  static std::vector<int> FormRows(Impl& p, const Design& d) {
+    const Structure& s = p.s;
+    const Config& config = d.config;
+    // The rows.
+    std::vector<int> first_row;  // per combination
+    for (int c = 0; c < static_cast<int>(p.combos.size()); ++c) {
+      first_row.push_back(static_cast<int>(p.rows.size()));
+      if (p.combos[c].ultimate) {
+        for (int j = 0; j < p.nm; ++j) {
+          if (j < p.nb) {
+            p.rows.push_back({SizingRow::kBuckling, j, c});
+            p.rows.push_back({SizingRow::kYield, j, c});
+          } else {
+            p.rows.push_back({SizingRow::kStrength, j, c});
+          }
+        }
+        for (int a = 0; a < 2; ++a) {
+          if (p.horizontal_capacity > 0) p.rows.push_back({SizingRow::kSupportHorizontal, a, c});
+          // Without the members' weight no variable moves a vertical reaction (weight_share):
+          // the check holds it, as a row it would be a constant.
+          if (p.vertical_capacity > 0 && config.design.self_weight)
+            p.rows.push_back({SizingRow::kSupportVertical, a, c});
+        }
+      }
+      // The strings that must stay taut (the prestressed ones) do so in every combination. The
+      // others may go slack, as the checks allow: the linear analysis then reads them in
+      // compression, and the checks' corrections (kappa, kappa_d) carry the difference.
+      for (int j = p.nb; j < p.nm; ++j) {
+        if (p.must_taut[j]) p.rows.push_back({SizingRow::kTaut, j, c});
+      }
+      // Each string's stress under the characteristic combinations, the reference loads alone
+      // included (the permanent case: the prestress is there at its highest against the load).
+      if (!p.combos[c].ultimate) {
+        for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kServiceStress, j, c});
+      }
+      // The deflections are those from the reference state: none in a combination of the
+      // reference loads alone (the permanent serviceability case), nor at a support.
+      const bool deflects = p.station_factor[c] != 0 || !p.loads.col(p.base_column[c]).isZero(0.0);
+      if (!p.combos[c].ultimate && deflects) {
+        for (int v : p.deck_nodes) {
+          if (s.fixed[v]) continue;
+          p.rows.push_back({SizingRow::kDeflectionDown, v, c});
+          p.rows.push_back({SizingRow::kDeflectionUp, v, c});
+        }
+      }
+    }
+    // The comfort rows: each a function of the variables alone, posed once.
+    for (size_t k = 0; k < p.corrections.comfort.size(); ++k)
+      p.rows.push_back({SizingRow::kComfort, static_cast<int>(k), -1});
+    // A string that no self-stress reaches (its row of the orthonormal N is rounding) has the
+    // reference force G alone gives it, whatever the variables: its row would be a constant,
+    // violated (n = 8: 126 strings at 0.95 of the row's margin once the weight had grown) or not,
+    // which no sizing can mend. The checks find such a string slack or taut.
+    for (int j = p.nb; j < p.nm; ++j) {
+      if (p.states > 0 && !p.N.row(j).isZero(1e-12))
+        p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
+    }
+    return first_row;
+  }
 };
 
 // Builds `p`, the rows of the reference state carrying alpha_factor of the prestress; the rows
@@ -1059,156 +1265,16 @@ size_t SizingProblem::Build(Impl& p, const Design& d, SizingCorrections correcti
                             const PrestressStateSpec& state) {
   p.alpha_factor = state.alpha_factor;
   p.state = static_cast<int>(state.state);
-  p.s = d.topology.structure;
-  const Structure& s = p.s;
-  p.nb = s.num_bars();
-  p.ns = s.num_strings();
-  p.nm = p.nb + p.ns;
+  Impl::ReadMembers(p, d, std::move(corrections));
+  Impl::ReadReferenceState(p, d);
+  Impl::FormCombinations(p, d);
+
   const Config& config = d.config;
-  const MemberMaterial strings = StringMaterial(config), bars = BarMaterial(config);
-  p.E = strings.youngs_modulus;
-  p.E_bar = bars.youngs_modulus;
-  p.sigma_w = strings.DesignStress();
-  p.sigma_ser = StringServiceStress(config);
-  for (int j = 0; j < p.nm; ++j) p.rho.push_back(j < p.nb ? bars.density : strings.density);
-  p.rule = BarRuleOf(config);
-  p.deflection_limit_m = config.bridge.span / config.loads.deflection_limit;
-  corrections.demand_factor.resize(p.nm, 1.0);
-  corrections.taut_margin_n.resize(p.nm, 0.0);
-  p.corrections = std::move(corrections);
-  const DesignInputs in = PrepareDesign(config);
-  for (int j = 0; j < p.nm; ++j) {
-    const Member& m = j < p.nb ? s.bars[j] : s.strings[j - p.nb];
-    p.length.push_back(s.Length(m));
-    const double floor = j < p.nb ? in.settings.bar_min_area[j] : in.string_min_area[j - p.nb];
-    p.min_area.push_back(std::max(floor, kAreaFloor));
-    p.must_taut.push_back(j >= p.nb && MustStayTaut(d, j - p.nb));
-  }
-  p.group_of = MirrorGroups(s, config.bridge.span);
-  p.groups = *std::max_element(p.group_of.begin(), p.group_of.end()) + 1;
-  p.members_of.resize(p.groups);
-  for (int j = 0; j < p.nm; ++j) p.members_of[p.group_of[j]].push_back(j);
-  p.area_scale.assign(p.groups, 0.0);
-  for (int j = 0; j < p.nm; ++j) {
-    const double area = j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area;
-    double& scale = p.area_scale[p.group_of[j]];
-    scale = std::max({scale, area, p.min_area[j]});
-  }
-  p.deck_nodes = d.topology.deck_nodes;
-
-  // The reference state: the particular forces of G and the self-stresses.
-  const EquilibriumSystem eq = BuildEquilibrium(s);
-  const EquilibriumSolver solver(eq);
-  if (solver.states() > kMaxSoughtStates) {
-    throw ModelError("the verified sizing seeks its symmetric self-stress states among at most " +
-                     std::to_string(kMaxSoughtStates) + " states; this bridge has " +
-                     std::to_string(solver.states()));
-  }
-  if (solver.states()) {
-    const Eigen::MatrixXd all = solver.SelfStresses();
-    p.N = SymmetricSelfStresses(all, p.group_of, p.groups);
-    p.to_basis = all.transpose() * p.N;
-  }
-  p.states = static_cast<int>(p.N.cols());
-  if (p.states > kMaxStates) {
-    throw ModelError("the verified sizing takes at most " + std::to_string(kMaxStates) +
-                     " symmetric self-stress states; this bridge has " + std::to_string(p.states));
-  }
-  // The minimum-norm particular forces of symmetric loads are symmetric themselves.
-  p.x_g = solver.Particular(FreeLoads(eq, d.loads)).col(0);
-  p.force_scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
-  for (int j = 0; j < p.nm; ++j)
-    p.area0.push_back(j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area);
-  // The design's reference forces as the problem reads them: G's particular forces and the
-  // symmetric part of its prestress.
-  p.xr0 = p.states ? Eigen::VectorXd(p.x_g + p.N * (p.N.transpose() * (d.reference_forces - p.x_g)))
-                   : p.x_g;
-  p.mass_scale = std::max(d.mass.structure, 1e-3);
-
-  // The load columns: each case's change from the reference loads, then a unit station load.
-  const int stations = static_cast<int>(d.actions.station_nodes.size());
-  auto free = [&s](const Eigen::Matrix3Xd& loads) { return LinearResponse::FreeVector(s, loads); };
-  const Eigen::VectorXd reference_free = free(d.loads);
-  p.loads.resize(reference_free.size(), static_cast<Eigen::Index>(d.cases.size()) + stations);
-  for (size_t c = 0; c < d.cases.size(); ++c)
-    p.loads.col(c) = free(d.actions.Loads(d.cases[c])) - reference_free;
-  const int station_column0 = static_cast<int>(d.cases.size());
-  for (int k = 0; k < stations; ++k)
-    p.loads.col(station_column0 + k) = free(d.actions.StationLoad(k, 1.0));
-  for (size_t c = 0; c < d.cases.size(); ++c) {
-    const LoadCase& lc = d.cases[c];
-    for (int k = lc.station_load != 0 ? 0 : -1; k < (lc.station_load != 0 ? stations : 0); ++k) {
-      SizingCombination combo;
-      combo.case_index = static_cast<int>(c);
-      combo.station = k;
-      combo.ultimate = lc.state == LimitState::kUltimate;
-      // Named as the static check names its solves: the station by its first deck node.
-      combo.label = CaseLabel(d.cases, d.actions, MemberExtreme{0, static_cast<int>(c), k});
-      p.combos.push_back(combo);
-      p.station_factor.push_back(k >= 0 ? lc.station_load : 0.0);
-      p.base_column.push_back(static_cast<int>(c));
-      p.station_column.push_back(k >= 0 ? station_column0 + k : -1);
-    }
-  }
-
   p.horizontal_capacity = config.supports.horizontal_capacity_n.value_or(0.0);
   p.vertical_capacity = config.supports.vertical_capacity_n.value_or(0.0);
   if (p.horizontal_capacity > 0 || p.vertical_capacity > 0) p.IndexReactions(d);
 
-  // The rows.
-  std::vector<int> first_row;  // per combination
-  for (int c = 0; c < static_cast<int>(p.combos.size()); ++c) {
-    first_row.push_back(static_cast<int>(p.rows.size()));
-    if (p.combos[c].ultimate) {
-      for (int j = 0; j < p.nm; ++j) {
-        if (j < p.nb) {
-          p.rows.push_back({SizingRow::kBuckling, j, c});
-          p.rows.push_back({SizingRow::kYield, j, c});
-        } else {
-          p.rows.push_back({SizingRow::kStrength, j, c});
-        }
-      }
-      for (int a = 0; a < 2; ++a) {
-        if (p.horizontal_capacity > 0) p.rows.push_back({SizingRow::kSupportHorizontal, a, c});
-        // Without the members' weight no variable moves a vertical reaction (weight_share):
-        // the check holds it, as a row it would be a constant.
-        if (p.vertical_capacity > 0 && config.design.self_weight)
-          p.rows.push_back({SizingRow::kSupportVertical, a, c});
-      }
-    }
-    // The strings that must stay taut (the prestressed ones) do so in every combination. The
-    // others may go slack, as the checks allow: the linear analysis then reads them in
-    // compression, and the checks' corrections (kappa, kappa_d) carry the difference.
-    for (int j = p.nb; j < p.nm; ++j) {
-      if (p.must_taut[j]) p.rows.push_back({SizingRow::kTaut, j, c});
-    }
-    // Each string's stress under the characteristic combinations, the reference loads alone
-    // included (the permanent case: the prestress is there at its highest against the load).
-    if (!p.combos[c].ultimate) {
-      for (int j = p.nb; j < p.nm; ++j) p.rows.push_back({SizingRow::kServiceStress, j, c});
-    }
-    // The deflections are those from the reference state: none in a combination of the
-    // reference loads alone (the permanent serviceability case), nor at a support.
-    const bool deflects = p.station_factor[c] != 0 || !p.loads.col(p.base_column[c]).isZero(0.0);
-    if (!p.combos[c].ultimate && deflects) {
-      for (int v : p.deck_nodes) {
-        if (s.fixed[v]) continue;
-        p.rows.push_back({SizingRow::kDeflectionDown, v, c});
-        p.rows.push_back({SizingRow::kDeflectionUp, v, c});
-      }
-    }
-  }
-  // The comfort rows: each a function of the variables alone, posed once.
-  for (size_t k = 0; k < p.corrections.comfort.size(); ++k)
-    p.rows.push_back({SizingRow::kComfort, static_cast<int>(k), -1});
-  // A string that no self-stress reaches (its row of the orthonormal N is rounding) has the
-  // reference force G alone gives it, whatever the variables: its row would be a constant,
-  // violated (n = 8: 126 strings at 0.95 of the row's margin once the weight had grown) or not,
-  // which no sizing can mend. The checks find such a string slack or taut.
-  for (int j = p.nb; j < p.nm; ++j) {
-    if (p.states > 0 && !p.N.row(j).isZero(1e-12))
-      p.rows.push_back({SizingRow::kReferenceTaut, j, -1});
-  }
+  const std::vector<int> first_row = Impl::FormRows(p, d);  // per combination
   const size_t whole = p.rows.size();
   for (SizingRow& row : p.rows) row.state = p.state;
   for (SizingCombination& combo : p.combos) combo.label += state.suffix;
