@@ -988,6 +988,295 @@ Design CheckedAsDesigned(Design d, Resizing record, ProgressReporter* progress) 
   return d;
 }
 
+// A first design the sizing cannot take (more symmetric self-stress states than it takes as
+// variables), checked as it is, saying so.
+Design CheckedBeyondStates(const Config& config, const Design& first, bool relaxed,
+                           int symmetric_states, const Resizing& record,
+                           ProgressReporter* progress) {
+  // A relaxed first design (without the members' weight, or with the paper's switches) is
+  // checked under the config's own loads and weight: its sizes, not its relaxed loads.
+  Design d =
+      relaxed ? SizedDesign(config, MemberAreas(first), PrestressCoefficients(first)) : first;
+  if (relaxed) {
+    d.solver = first.solver;
+    d.solver_form = first.solver_form;
+    d.notes.push_back(
+        "design: the equilibrium design with the config's own weight and loads found none that "
+        "settled: its sizes are those of the relaxed design (without the members' weight, or "
+        "with the paper's switches), checked with the config's weight and loads");
+  }
+  d.notes.push_back("design: the verified sizing takes at most " +
+                    std::to_string(SizingProblem::kMaxStates) +
+                    " symmetric self-stress states as variables, sought among at most " +
+                    std::to_string(SizingProblem::kMaxSoughtStates) + " states; this bridge has " +
+                    (symmetric_states < 0 ? std::to_string(first.self_stress_states) + " states"
+                                          : std::to_string(symmetric_states) + " symmetric of " +
+                                                std::to_string(first.self_stress_states)) +
+                    ": its equilibrium design is checked as it is");
+  return CheckedAsDesigned(std::move(d), record, progress);
+}
+
+// The sizing loop's state from one sizing to the next.
+struct SizingLoop {
+  std::vector<double> areas;
+  Eigen::VectorXd alpha;
+  Design current;
+  SizingCorrections corrections;
+  std::optional<Design> best;  // the lightest design that passed
+  std::optional<BestSizing> best_sizing;
+  // The structure's mass of the last design that passed (NaN: none yet; a plain double, as GCC 12
+  // read an optional reset inside the loop as used uninitialised).
+  double last_passing_kg = std::numeric_limits<double>::quiet_NaN();
+  CarriedRows carried;  // the last sizing's active rows
+  // The piece below a binding comfort row's mode, tried once: the modes held there, the last
+  // sizing of the trial, and the first run while it runs.
+  bool tried_below = false;
+  std::set<std::string> below;
+  int last_below = 0;
+  std::optional<FirstRun> first_run;
+  std::string below_note;  // what the trial found, for resizing.optima
+};
+
+// The loop's first sizes: the first design's, or the given start's where it fits.
+SizingLoop StartLoop(const Config& config, const Design& first, const FirstSizes& first_sizes,
+                     const SizingStart* start) {
+  SizingLoop loop;
+  loop.areas = first_sizes.areas;
+  loop.alpha = first_sizes.alpha;
+  if (start != nullptr && start->areas.size() == loop.areas.size() &&
+      static_cast<size_t>(start->prestress_forces.size()) == loop.areas.size() &&
+      loop.alpha.size() > 0) {
+    loop.areas = start->areas;
+    loop.alpha = SelfStressCoefficients(first.topology.structure, start->prestress_forces);
+  }
+  // The start: the first design's (or the given) areas and prestress under the config's own loads
+  // and weight.
+  loop.current = SizedDesign(config, loop.areas, loop.alpha);
+  return loop;
+}
+
+// One sizing of the loop: its problem, its solution and active set, its design, and what was
+// tried where the solver could not finish it ("" where it did).
+struct SizingStep {
+  std::unique_ptr<SizingProblem> posed;
+  Eigen::VectorXd x;
+  ActiveSet active;
+  Design d;
+  std::string retried;
+};
+
+// The sizing about the current design's weight, from the current sizes and prestress.
+SizingStep SizeOnce(const Config& config, const std::string& solver, SizingLoop& loop,
+                    Resizing& record, ProgressReporter* progress) {
+  SizingStep step;
+  // A sizing whose comfort rows ask more than it can hold fails: it is solved again with each
+  // comfort row's step halved (in log frequency), then without them, and the next design goes
+  // on from there.
+  for (int ease = 0; ease <= kComfortEases + 1; ++ease) {
+    step.posed = std::make_unique<SizingProblem>(loop.current, loop.corrections);
+    step.x = step.posed->VariablesOf(loop.areas, loop.alpha);
+    step.active = loop.carried.For(*step.posed);
+    step.d = Size(config, loop.current, loop.corrections, solver, *step.posed, step.x,
+                  record.time_s, progress, step.active, kSizingTolerance);
+    if (step.d.solver.success) break;
+    // Then this sizing goes without them, for strength alone, and the next design's rows start
+    // again.
+    if (ease >= kComfortEases || !EaseComfortRows(loop.corrections.comfort)) {
+      if (loop.corrections.comfort.empty()) break;
+      loop.corrections.comfort.clear();
+    }
+  }
+  // A sizing the solver could not finish is solved again by another solver from the same start
+  // before the loop stops on it (the SQP's failures are its own: a subproblem it could not
+  // solve, a step limit), and the record says what was tried.
+  if (!step.d.solver.success) {
+    const std::string other = OtherSolver(solver);
+    if (!other.empty()) {
+      const std::string failed = step.d.solver.status;
+      step.x = step.posed->VariablesOf(loop.areas, loop.alpha);
+      step.active = ActiveSet{};
+      step.d = Size(config, loop.current, loop.corrections, other, *step.posed, step.x,
+                    record.time_s, progress, step.active, kSizingTolerance);
+      step.retried = solver + " stopped with " + failed + "; " + other + " from the same start " +
+                     (step.d.solver.success ? "solved it" : "stopped with " + step.d.solver.status);
+    }
+  }
+  return step;
+}
+
+// The checks of a sizing's design (verdict) and, where its mass settled on the current
+// design's but it fails, the repair of its failing members (repair, x); true where that mended
+// some.
+bool CheckAndRepair(const Config& config, const SizingProblem& problem, const Design& current,
+                    Design& d, Eigen::VectorXd& x, Resizing& record, ProgressReporter* progress,
+                    Verdict& verdict, std::string& repair) {
+  RunChecks(d, record.time_s, progress, Screen::kStaticFailure);
+  // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended
+  // one.
+  verdict = SizingVerdict(d);
+  if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure &&
+      !verdict.pass) {
+    const Eigen::VectorXd solved = x;
+    repair = Repair(config, problem, d, x, verdict, record.time_s, progress);
+    return x != solved;
+  }
+  return false;
+}
+
+// Where the kept design's comfort row binds with a piece below to try: the note of it in the
+// record, the first run kept, and the loop sized again from the kept design, its mode held on
+// the piece below; true then. Otherwise the note of why not (below_note), and false.
+bool StartPieceBelow(bool settled, const Verdict& verdict, SizingStep& step, SizingLoop& loop,
+                     Resizing& record) {
+  loop.tried_below = true;
+  const std::optional<std::string> mode = BindingComfortMode(*loop.best_sizing);
+  if (!mode) return false;
+  std::vector<ComfortRow> rows = ComfortRowsOf(*loop.best, AnalyseComfort(*loop.best), {*mode});
+  if (std::any_of(rows.begin(), rows.end(), [](const ComfortRow& r) { return r.below; })) {
+    // Sized again from the kept design, its mode held on the piece below.
+    std::ostringstream os;
+    os << (settled ? "the loop settled" : "the loop stopped") << " at " << loop.best->mass.structure
+       << " kg with " << *mode << "'s comfort row binding: the piece below tried, from that design";
+    for (const ComfortRow& row : rows) os << "; comfort: " << row.label;
+    if (settled) {
+      // The settling sizing was not checked and is no design of the record: the note goes
+      // with the sizing before it, and the trial's first sizing takes its number.
+      record.structure_mass_kg.pop_back();
+      --record.iterations;
+      record.changes.back() += "; " + os.str();
+    } else {
+      record.changes.push_back(os.str());
+    }
+    loop.first_run = FirstRun{
+        *loop.best,
+        *loop.best_sizing,
+        loop.current,
+        loop.corrections,
+        std::move(step.posed),
+        step.active.posed,
+        settled,
+        settled ? "" : WhyUnsettled(true, record.iterations, verdict, step.d.solver, step.retried)};
+    loop.below = {*mode};
+    loop.last_below = record.iterations + kPieceBelowSizings;
+    loop.corrections = loop.best_sizing->corrections;
+    loop.corrections.comfort = std::move(rows);
+    loop.current = *loop.best;
+    loop.areas = MemberAreas(loop.current);
+    loop.alpha = loop.current.alpha;
+    loop.best.reset();
+    loop.best_sizing.reset();
+    loop.last_passing_kg = std::numeric_limits<double>::quiet_NaN();
+    loop.carried = CarriedRows();
+    return true;
+  }
+  loop.below_note = *mode +
+                    "'s comfort row binds at the kept design; no frequency down to a third of its "
+                    "own passes: no piece below to try";
+  return false;
+}
+
+// The end of the loop: the lighter passing design of the trial of the piece below and the first
+// run, its second start, polish, attribution and certificate, and the record.
+Design EndOfLoop(const Config& config, const std::string& solver, const FirstSizes& first_sizes,
+                 bool settled, const Verdict& verdict, const SizingStep& step, SizingLoop& loop,
+                 Resizing& record, ProgressReporter* progress) {
+  // The end of the trial of the piece below: the lighter passing design of the two runs.
+  const SizingProblem* last_problem = step.posed.get();
+  std::vector<char> last_posed = step.active.posed;
+  bool converged = settled;
+  std::string why = settled ? ""
+                            : WhyUnsettled(loop.best.has_value(), record.iterations, verdict,
+                                           step.d.solver, step.retried);
+  if (loop.first_run) {
+    FirstRun& first_run = *loop.first_run;
+    const double first_kg = first_run.best.mass.structure;
+    const bool lighter = loop.best && loop.best->mass.structure < first_kg * (1 - kSettled);
+    std::ostringstream os;
+    os << "the piece below: ";
+    if (loop.best) {
+      os << loop.best->mass.structure << " kg passes, "
+         << (lighter ? "lighter than" : "not lighter than") << " the first run's " << first_kg
+         << " kg";
+    } else {
+      os << "no design passed";
+    }
+    os << "; kept " << (lighter ? "the piece below's" : "the first run's");
+    loop.below_note = os.str();
+    if (!lighter) {
+      loop.best = std::move(first_run.best);
+      loop.best_sizing = std::move(first_run.sizing);
+      loop.current = std::move(first_run.current);
+      loop.corrections = std::move(first_run.corrections);
+      last_problem = first_run.problem.get();
+      last_posed = first_run.posed;
+      converged = first_run.settled;
+      why = first_run.why;
+    }
+  }
+  std::optional<Design>& best = loop.best;
+  std::optional<BestSizing>& best_sizing = loop.best_sizing;
+  if (best) {
+    if (const std::optional<Eigen::VectorXd> other =
+            SecondStart(config, loop.current, loop.corrections, solver, *last_problem, first_sizes,
+                        *best, record, progress, last_posed)) {
+      best_sizing = BestSizing{loop.current, loop.corrections, *other, ""};
+    }
+    if (!loop.below_note.empty()) record.optima = loop.below_note + "; " + record.optima;
+    Polish(config, solver, *best_sizing, *best, record, progress);
+    // What drives the mass and the certificate, of the design kept only (a problem built
+    // again for it).
+    const SizingProblem best_problem(best_sizing->current, best_sizing->corrections);
+    best->attribution = Attribution(best_sizing->current, best_sizing->corrections, best_problem,
+                                    best_sizing->x, best->statics, best->dynamics, first_sizes);
+    record.kkt = Certify(best_sizing->current, best_sizing->corrections, best_problem,
+                         best_sizing->x, best_sizing->not_optimal);
+  }
+  Design out = best ? *best : step.d;
+  record.converged = converged;
+  record.comfort_rows.clear();
+  if (best) {
+    for (const ComfortRow& row : best_sizing->corrections.comfort)
+      record.comfort_rows.push_back(row.label);
+  }
+  if (!converged) record.why = why;
+  out.resizing = record;
+  if (progress != nullptr) progress->SetStagePrefix("");
+  return out;
+}
+
+// The next sizing's comfort rows, about this design's own modes and static state: the rows
+// hold the state, whose error falls as the designs settle.
+// Only about a design near its strength: one that fails its checks by more than
+// design.dynamic_screen is corrected by them first, as its dynamic runs wait (the 3D 40 m
+// footbridge's first sizing, at 6.8 under wind, asked x7 of its members), and keeps the last
+// rows, which follow their modes from the design they were found in: dropped, the next sizing
+// went back to a light design that failed comfort, and the 40 m footbridge at n = 6 swung
+// between 3.8, 9.6 and 25.5 t for 19 sizings and more.
+void NextComfortRows(const Config& config, const SizingProblem& problem, const Eigen::VectorXd& x,
+                     const Design& d, const Verdict& verdict, SizingLoop& loop, Resizing& record) {
+  SizingCorrections& corrections = loop.corrections;
+  const bool fresh = verdict.utilisation_max <= config.design.dynamic_screen;
+  std::vector<ComfortRow> next = corrections.comfort;
+  if (fresh) {
+    const ComfortAnalysis comfort =
+        Timed(record.time_s.comfort_check, [&] { return AnalyseComfort(d); });
+    next = ComfortRowsOf(d, comfort, loop.below);
+    // How far the last rows foretold this design's eigenvalues (the static state and the
+    // members' weight they hold), which raises the next rows' targets.
+    const double missed = CorrectComfortRows(problem, x, next);
+    if (!corrections.comfort.empty() && !next.empty()) {
+      std::ostringstream os;
+      os << "; comfort rows foretold within " << missed << " of omega^2";
+      record.changes.back() += os.str();
+    }
+  } else if (!next.empty()) {
+    record.changes.back() += "; the last comfort rows kept";
+  }
+  corrections.comfort = std::move(next);
+  for (const ComfortRow& row : corrections.comfort)
+    record.changes.back() += "; comfort: " + row.label;
+}
+
 }  // namespace
 
 Design DesignAndVerify(const Config& config, ProgressReporter* progress, const SizingStart* start) {
@@ -1009,284 +1298,72 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, const S
       Timed(record.time_s.first_design, [&] { return FirstDesign(config, progress, &relaxed); });
   const int symmetric_states = SizingProblem::SymmetricStates(first);
   if (symmetric_states < 0 || symmetric_states > SizingProblem::kMaxStates) {
-    // A relaxed first design (without the members' weight, or with the paper's switches) is
-    // checked under the config's own loads and weight: its sizes, not its relaxed loads.
-    Design d =
-        relaxed ? SizedDesign(config, MemberAreas(first), PrestressCoefficients(first)) : first;
-    if (relaxed) {
-      d.solver = first.solver;
-      d.solver_form = first.solver_form;
-      d.notes.push_back(
-          "design: the equilibrium design with the config's own weight and loads found none that "
-          "settled: its sizes are those of the relaxed design (without the members' weight, or "
-          "with the paper's switches), checked with the config's weight and loads");
-    }
-    d.notes.push_back(
-        "design: the verified sizing takes at most " + std::to_string(SizingProblem::kMaxStates) +
-        " symmetric self-stress states as variables, sought among at most " +
-        std::to_string(SizingProblem::kMaxSoughtStates) + " states; this bridge has " +
-        (symmetric_states < 0 ? std::to_string(first.self_stress_states) + " states"
-                              : std::to_string(symmetric_states) + " symmetric of " +
-                                    std::to_string(first.self_stress_states)) +
-        ": its equilibrium design is checked as it is");
-    return CheckedAsDesigned(std::move(d), record, progress);
+    return CheckedBeyondStates(config, first, relaxed, symmetric_states, record, progress);
   }
   // The first design's sizes: the start, the second start's base and the premium's reference.
   const FirstSizes first_sizes{MemberAreas(first), PrestressCoefficients(first)};
-  std::vector<double> areas = first_sizes.areas;
-  Eigen::VectorXd alpha = first_sizes.alpha;
-  if (start != nullptr && start->areas.size() == areas.size() &&
-      static_cast<size_t>(start->prestress_forces.size()) == areas.size() && alpha.size() > 0) {
-    areas = start->areas;
-    alpha = SelfStressCoefficients(first.topology.structure, start->prestress_forces);
-  }
-  // The start: the first design's (or the given) areas and prestress under the config's own loads
-  // and weight.
-  Design current = SizedDesign(config, areas, alpha);
-  record.structure_mass_kg.push_back(current.mass.structure);
-  SizingCorrections corrections;
-  std::optional<Design> best;  // the lightest design that passed
-  std::optional<BestSizing> best_sizing;
-  // The structure's mass of the last design that passed (NaN: none yet; a plain double, as GCC 12
-  // read an optional reset inside the loop as used uninitialised).
-  double last_passing_kg = std::numeric_limits<double>::quiet_NaN();
-  CarriedRows carried;  // the last sizing's active rows
-  // The piece below a binding comfort row's mode, tried once: the modes held there, the last
-  // sizing of the trial, and the first run while it runs.
-  bool tried_below = false;
-  std::set<std::string> below;
-  int last_below = 0;
-  std::optional<FirstRun> first_run;
-  std::string below_note;  // what the trial found, for resizing.optima
+  SizingLoop loop = StartLoop(config, first, first_sizes, start);
+  record.structure_mass_kg.push_back(loop.current.mass.structure);
   for (record.iterations = 1;; ++record.iterations) {
     // The sizing about the current design's weight, from the current sizes and prestress.
     if (progress != nullptr) {
       progress->SetStagePrefix("sizing " + std::to_string(record.iterations) + " (of at most " +
                                std::to_string(max_iterations) + "): ");
     }
-    std::unique_ptr<SizingProblem> posed;
-    Eigen::VectorXd x;
-    ActiveSet active;
-    Design d;
-    // A sizing whose comfort rows ask more than it can hold fails: it is solved again with each
-    // comfort row's step halved (in log frequency), then without them, and the next design goes
-    // on from there.
-    for (int ease = 0; ease <= kComfortEases + 1; ++ease) {
-      posed = std::make_unique<SizingProblem>(current, corrections);
-      x = posed->VariablesOf(areas, alpha);
-      active = carried.For(*posed);
-      d = Size(config, current, corrections, solver, *posed, x, record.time_s, progress, active,
-               kSizingTolerance);
-      if (d.solver.success) break;
-      // Then this sizing goes without them, for strength alone, and the next design's rows start
-      // again.
-      if (ease >= kComfortEases || !EaseComfortRows(corrections.comfort)) {
-        if (corrections.comfort.empty()) break;
-        corrections.comfort.clear();
-      }
-    }
-    // A sizing the solver could not finish is solved again by another solver from the same start
-    // before the loop stops on it (the SQP's failures are its own: a subproblem it could not
-    // solve, a step limit), and the record says what was tried.
-    std::string retried;
-    if (!d.solver.success) {
-      const std::string other = OtherSolver(solver);
-      if (!other.empty()) {
-        const std::string failed = d.solver.status;
-        x = posed->VariablesOf(areas, alpha);
-        active = ActiveSet{};
-        d = Size(config, current, corrections, other, *posed, x, record.time_s, progress, active,
-                 kSizingTolerance);
-        retried = solver + " stopped with " + failed + "; " + other + " from the same start " +
-                  (d.solver.success ? "solved it" : "stopped with " + d.solver.status);
-      }
-    }
-    const SizingProblem& problem = *posed;
-    carried = CarriedRows(problem, active);
+    SizingStep step = SizeOnce(config, solver, loop, record, progress);
+    Design& d = step.d;
+    Eigen::VectorXd& x = step.x;
+    const SizingProblem& problem = *step.posed;
+    loop.carried = CarriedRows(problem, step.active);
     // Settled: the sizing from a passing design's corrections lands within kSettled of that
     // design's mass, so the linear model says what the checks say and the corrections have
     // nothing left to move by more than the tolerance. Its own design is not checked: it
     // could only replace the passing one by a lighter one within kSettled of it (n = 7: its
     // checks failed by a hair three sizings running, each mended, before a second design passed;
     // 13 designs, 7.7 s, against 10, 5.4 s, for 6e-6 of the mass).
-    const bool settled = d.solver.success && std::abs(d.mass.structure - last_passing_kg) <=
+    const bool settled = d.solver.success && std::abs(d.mass.structure - loop.last_passing_kg) <=
                                                  kSettled * d.mass.structure;
     Verdict verdict;
     std::string repair;
     bool mended = false;  // d is the sizing's design with its failing members mended
     if (!settled) {
-      RunChecks(d, record.time_s, progress, Screen::kStaticFailure);
-      // Each verdict copies the design (SizingVerdict): taken once, and again only for a mended
-      // one.
-      verdict = SizingVerdict(d);
-      if (std::abs(d.mass.structure - current.mass.structure) <= kSettled * d.mass.structure &&
-          !verdict.pass) {
-        const Eigen::VectorXd solved = x;
-        repair = Repair(config, problem, d, x, verdict, record.time_s, progress);
-        mended = x != solved;
-      }
+      mended =
+          CheckAndRepair(config, problem, loop.current, d, x, record, progress, verdict, repair);
     }
     const SolverOutcome& outcome = d.solver;
     const StaticCheck& statics = d.statics;
     const DynamicCheck& dynamics = d.dynamics;
-    areas = problem.Areas(x);
-    alpha = problem.Alpha(x);
+    loop.areas = problem.Areas(x);
+    loop.alpha = problem.Alpha(x);
     record.structure_mass_kg.push_back(d.mass.structure);
     if (!settled) record.utilisation_max.push_back(verdict.utilisation_max);
-    if (verdict.pass) last_passing_kg = d.mass.structure;
-    if (verdict.pass && (!best || d.mass.structure < best->mass.structure)) {
-      best = d;
-      best_sizing = BestSizing{current, corrections, x, mended ? "not proved optimal: mended" : ""};
+    if (verdict.pass) loop.last_passing_kg = d.mass.structure;
+    if (verdict.pass && (!loop.best || d.mass.structure < loop.best->mass.structure)) {
+      loop.best = d;
+      loop.best_sizing =
+          BestSizing{loop.current, loop.corrections, x, mended ? "not proved optimal: mended" : ""};
     }
     // The trial of the piece below ends at its own count, or once a sizing is heavier than the
     // first run's design (the corrections only add to it).
     const bool heavier_than_first =
-        first_run && d.solver.success &&
-        d.mass.structure > first_run->best.mass.structure * (1 + kSettled);
+        loop.first_run && d.solver.success &&
+        d.mass.structure > loop.first_run->best.mass.structure * (1 + kSettled);
     const bool last =
-        !settled && (record.iterations >= (first_run ? last_below : max_iterations) ||
+        !settled && (record.iterations >= (loop.first_run ? loop.last_below : max_iterations) ||
                      !outcome.success || !d.statics.all_converged ||
                      verdict.outcome == VerdictOutcome::kIncomplete || heavier_than_first);
-    if ((settled || last) && best && !tried_below) {
-      tried_below = true;
-      if (const std::optional<std::string> mode = BindingComfortMode(*best_sizing)) {
-        std::vector<ComfortRow> rows = ComfortRowsOf(*best, AnalyseComfort(*best), {*mode});
-        if (std::any_of(rows.begin(), rows.end(), [](const ComfortRow& r) { return r.below; })) {
-          // Sized again from the kept design, its mode held on the piece below.
-          std::ostringstream os;
-          os << (settled ? "the loop settled" : "the loop stopped") << " at "
-             << best->mass.structure << " kg with " << *mode
-             << "'s comfort row binding: the piece below tried, from that design";
-          for (const ComfortRow& row : rows) os << "; comfort: " << row.label;
-          if (settled) {
-            // The settling sizing was not checked and is no design of the record: the note goes
-            // with the sizing before it, and the trial's first sizing takes its number.
-            record.structure_mass_kg.pop_back();
-            --record.iterations;
-            record.changes.back() += "; " + os.str();
-          } else {
-            record.changes.push_back(os.str());
-          }
-          first_run = FirstRun{
-              *best,
-              *best_sizing,
-              current,
-              corrections,
-              std::move(posed),
-              active.posed,
-              settled,
-              settled ? "" : WhyUnsettled(true, record.iterations, verdict, outcome, retried)};
-          below = {*mode};
-          last_below = record.iterations + kPieceBelowSizings;
-          corrections = best_sizing->corrections;
-          corrections.comfort = std::move(rows);
-          current = *best;
-          areas = MemberAreas(current);
-          alpha = current.alpha;
-          best.reset();
-          best_sizing.reset();
-          last_passing_kg = std::numeric_limits<double>::quiet_NaN();
-          carried = CarriedRows();
-          continue;
-        }
-        below_note = *mode +
-                     "'s comfort row binds at the kept design; no frequency down to a third of its "
-                     "own passes: no piece below to try";
-      }
+    if ((settled || last) && loop.best && !loop.tried_below &&
+        StartPieceBelow(settled, verdict, step, loop, record)) {
+      continue;
     }
     if (settled || last) {
-      // The end of the trial of the piece below: the lighter passing design of the two runs.
-      const SizingProblem* last_problem = &problem;
-      std::vector<char> last_posed = active.posed;
-      bool converged = settled;
-      std::string why =
-          settled ? ""
-                  : WhyUnsettled(best.has_value(), record.iterations, verdict, outcome, retried);
-      if (first_run) {
-        const double first_kg = first_run->best.mass.structure;
-        const bool lighter = best && best->mass.structure < first_kg * (1 - kSettled);
-        std::ostringstream os;
-        os << "the piece below: ";
-        if (best) {
-          os << best->mass.structure << " kg passes, "
-             << (lighter ? "lighter than" : "not lighter than") << " the first run's " << first_kg
-             << " kg";
-        } else {
-          os << "no design passed";
-        }
-        os << "; kept " << (lighter ? "the piece below's" : "the first run's");
-        below_note = os.str();
-        if (!lighter) {
-          best = std::move(first_run->best);
-          best_sizing = std::move(first_run->sizing);
-          current = std::move(first_run->current);
-          corrections = std::move(first_run->corrections);
-          last_problem = first_run->problem.get();
-          last_posed = first_run->posed;
-          converged = first_run->settled;
-          why = first_run->why;
-        }
-      }
-      if (best) {
-        if (const std::optional<Eigen::VectorXd> other =
-                SecondStart(config, current, corrections, solver, *last_problem, first_sizes, *best,
-                            record, progress, last_posed)) {
-          best_sizing = BestSizing{current, corrections, *other, ""};
-        }
-        if (!below_note.empty()) record.optima = below_note + "; " + record.optima;
-        Polish(config, solver, *best_sizing, *best, record, progress);
-        // What drives the mass and the certificate, of the design kept only (a problem built
-        // again for it).
-        const SizingProblem best_problem(best_sizing->current, best_sizing->corrections);
-        best->attribution =
-            Attribution(best_sizing->current, best_sizing->corrections, best_problem,
-                        best_sizing->x, best->statics, best->dynamics, first_sizes);
-        record.kkt = Certify(best_sizing->current, best_sizing->corrections, best_problem,
-                             best_sizing->x, best_sizing->not_optimal);
-      }
-      Design out = best ? *best : d;
-      record.converged = converged;
-      record.comfort_rows.clear();
-      if (best) {
-        for (const ComfortRow& row : best_sizing->corrections.comfort)
-          record.comfort_rows.push_back(row.label);
-      }
-      if (!converged) record.why = why;
-      out.resizing = record;
-      if (progress != nullptr) progress->SetStagePrefix("");
-      return out;
+      return EndOfLoop(config, solver, first_sizes, settled, verdict, step, loop, record, progress);
     }
-    record.changes.push_back((retried.empty() ? "" : retried + "; ") + repair +
-                             Correct(corrections, problem, x, d, statics, dynamics, verdict.pass));
-    // The next sizing's comfort rows, about this design's own modes and static state: the rows
-    // hold the state, whose error falls as the designs settle.
-    // Only about a design near its strength: one that fails its checks by more than
-    // design.dynamic_screen is corrected by them first, as its dynamic runs wait (the 3D 40 m
-    // footbridge's first sizing, at 6.8 under wind, asked x7 of its members), and keeps the last
-    // rows, which follow their modes from the design they were found in: dropped, the next sizing
-    // went back to a light design that failed comfort, and the 40 m footbridge at n = 6 swung
-    // between 3.8, 9.6 and 25.5 t for 19 sizings and more.
-    const bool fresh = verdict.utilisation_max <= config.design.dynamic_screen;
-    std::vector<ComfortRow> next = corrections.comfort;
-    if (fresh) {
-      const ComfortAnalysis comfort =
-          Timed(record.time_s.comfort_check, [&] { return AnalyseComfort(d); });
-      next = ComfortRowsOf(d, comfort, below);
-      // How far the last rows foretold this design's eigenvalues (the static state and the
-      // members' weight they hold), which raises the next rows' targets.
-      const double missed = CorrectComfortRows(problem, x, next);
-      if (!corrections.comfort.empty() && !next.empty()) {
-        std::ostringstream os;
-        os << "; comfort rows foretold within " << missed << " of omega^2";
-        record.changes.back() += os.str();
-      }
-    } else if (!next.empty()) {
-      record.changes.back() += "; the last comfort rows kept";
-    }
-    corrections.comfort = std::move(next);
-    for (const ComfortRow& row : corrections.comfort)
-      record.changes.back() += "; comfort: " + row.label;
-    current = std::move(d);
+    record.changes.push_back(
+        (step.retried.empty() ? "" : step.retried + "; ") + repair +
+        Correct(loop.corrections, problem, x, d, statics, dynamics, verdict.pass));
+    NextComfortRows(config, problem, x, d, verdict, loop, record);
+    loop.current = std::move(d);
   }
 }
 
