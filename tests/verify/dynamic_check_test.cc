@@ -11,6 +11,7 @@
 #include "app/scenario.h"
 #include "bridge/design_model.h"
 #include "core/config.h"
+#include "core/error.h"
 #include "design/static_model.h"
 #include "dynamics/simulation.h"
 #include "verify/load_scenarios.h"
@@ -182,6 +183,25 @@ TEST_CASE("a dynamic run over the budget at its asked step is skipped before its
   REQUIRE(exact.runs.front().done);
   CHECK(exact.runs.front().steps == full.runs.front().steps);
   CHECK(exact.members.front().utilisation == full.members.front().utilisation);
+}
+
+TEST_CASE("a dynamic check whose bridge has no standing equilibrium says so for each run",
+          "[verify][dynamics]") {
+  // Every string half again as long as designed: slack under the run's standing loads, the
+  // bridge a mechanism, so the runs have no equilibrium to start from. The check says so for
+  // each run and is not complete (the verdict reads INCOMPLETE); it does not stop the design.
+  Config config;
+  config.bridge.n = 2;
+  Design d = RunDesign(config);
+  for (MemberSizing& s : d.strings) s.rest_length *= 1.5;
+  // The premise: the run's model itself finds no equilibrium.
+  REQUIRE_THROWS_AS(BuildDynamicModel(d, DynamicCheckModelOptions(d, {})), ModelError);
+  DynamicCheck check;
+  REQUIRE_NOTHROW(check = CheckDynamics(d));
+  REQUIRE(check.runs.size() == 1);
+  CHECK_FALSE(check.runs.front().done);
+  CHECK(check.runs.front().note.find("initial static equilibrium") != std::string::npos);
+  CHECK(check.Status() == CheckStatus::kNotRun);
 }
 
 TEST_CASE("a dynamic check not run says so for each run and its design never passes",
