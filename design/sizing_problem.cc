@@ -24,7 +24,6 @@ namespace tbridge {
 
 namespace {
 
-constexpr int kMaxStates = SizingProblem::kMaxStates;
 // The smallest area any member may take [m^2] (a radius of 56 um): keeps T / (sigma_w A)
 // finite for a string the loads do not use.
 constexpr double kAreaFloor = 1e-8;
@@ -1167,8 +1166,8 @@ struct SizingProblem::Impl {
     const Structure& s = p.s;
     // The load columns: each case's change from the reference loads, then a unit station load.
     const int stations = static_cast<int>(d.actions.station_nodes.size());
-    auto free = [&s](const Eigen::Matrix3Xd& loads) {
-      return LinearResponse::FreeVector(s, loads);
+    auto free = [&s](const Eigen::Matrix3Xd& node_loads) {
+      return LinearResponse::FreeVector(s, node_loads);
     };
     const Eigen::VectorXd reference_free = free(d.loads);
     p.loads.resize(reference_free.size(), static_cast<Eigen::Index>(d.cases.size()) + stations);
