@@ -257,6 +257,38 @@ void TakeGroupPeak(std::map<std::string, GroupAmplification>& groups, const std:
   if (static_peak[j] > 0) g.amplification = std::max(g.amplification, peak / static_peak[j]);
 }
 
+// A bridge that has no static equilibrium under the runs' standing loads (strings slack, a
+// mechanism) has no run to start from: each run says so and the check is not complete, which
+// the verdict reads as INCOMPLETE, where the exception stopped the whole design with no file
+// written (the 30 m footbridge at n = 5 fixed at 10 deg, its abutments over their capacity).
+// Returns the runs' model, or none where it cannot be built: then every run's record, saying why,
+// is in out.runs.
+std::optional<DynamicModel> BuildRunModel(const Design& d,
+                                          const std::vector<StringPrestrain>& prestrain,
+                                          std::vector<LoadRun>& runs, DynamicCheck& out) {
+  std::optional<DynamicModel> built;
+  try {
+    built = BuildDynamicModel(d, DynamicCheckModelOptions(d, prestrain));
+  } catch (const ModelError& e) {
+    for (LoadRun& run : runs) {
+      run.record.note =
+          std::string("not done: ") + e.what() +
+          " (under the run's standing loads; stiffen the bridge or raise its prestress)";
+      out.runs.push_back(std::move(run.record));
+    }
+    return std::nullopt;
+  }
+  return built;
+}
+
+// The run's peak reactions at the first two abutments, from its summary.
+void TakePeakReactions(const SimulationSummary& summary, LoadRun& run) {
+  for (size_t a = 0; a < summary.peak_reactions.size() && a < 2; ++a) {
+    run.record.peak_horizontal_reaction[a] = summary.peak_reactions[a].horizontal;
+    run.record.peak_vertical_reaction[a] = summary.peak_reactions[a].vertical;
+  }
+}
+
 }  // namespace
 
 ModelOptions DynamicCheckModelOptions(const Design& d,
@@ -300,22 +332,8 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
     for (LoadRun& run : runs) out.runs.push_back(std::move(run.record));
     return out;
   }
-  // A bridge that has no static equilibrium under the runs' standing loads (strings slack, a
-  // mechanism) has no run to start from: each run says so and the check is not complete, which
-  // the verdict reads as INCOMPLETE, where the exception stopped the whole design with no file
-  // written (the 30 m footbridge at n = 5 fixed at 10 deg, its abutments over their capacity).
-  std::optional<DynamicModel> built;
-  try {
-    built = BuildDynamicModel(d, DynamicCheckModelOptions(d, prestrain));
-  } catch (const ModelError& e) {
-    for (LoadRun& run : runs) {
-      run.record.note =
-          std::string("not done: ") + e.what() +
-          " (under the run's standing loads; stiffen the bridge or raise its prestress)";
-      out.runs.push_back(std::move(run.record));
-    }
-    return out;
-  }
+  const std::optional<DynamicModel> built = BuildRunModel(d, prestrain, runs, out);
+  if (!built) return out;
   const DynamicModel& model = *built;
 
   const double gamma_g_sup = paper ? 1.0 : l.gamma_g_sup, gamma_g_inf = paper ? 1.0 : l.gamma_g_inf;
@@ -361,10 +379,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
       done = Run(model, stable_dt, members, max_member_steps, run, summary, progress);
     }
     if (done) {
-      for (size_t a = 0; a < summary.peak_reactions.size() && a < 2; ++a) {
-        run.record.peak_horizontal_reaction[a] = summary.peak_reactions[a].horizontal;
-        run.record.peak_vertical_reaction[a] = summary.peak_reactions[a].vertical;
-      }
+      TakePeakReactions(summary, run);
       const std::string label = "dynamic: " + run.record.name;
       solve_stations();
       const Eigen::VectorXd static_peak =
