@@ -159,6 +159,15 @@ std::vector<AbutmentFinding> AbutmentFindings(const Design& d,
         f.horizontal_n = r.Horizontal(), f.horizontal_case = c.label;
       if (r.Vertical() > f.vertical_n) f.vertical_n = r.Vertical(), f.vertical_case = c.label;
     }
+    // No ultimate case found an equilibrium: the reference state's reactions (the permanent load
+    // and the prestress, in which the bridge stands) are the least the abutment takes, where
+    // an empty envelope read "0 kN" (the 30 m footbridge fixed at 10 deg: 99.6 MN each).
+    if (f.horizontal_case.empty() && f.vertical_case.empty() && d.reactions.cols() > 0) {
+      const AbutmentReaction r = ReactionOf(a, d.reactions);
+      const std::string label = "reference state: no ultimate case found an equilibrium";
+      f.horizontal_n = r.Horizontal(), f.horizontal_case = label;
+      f.vertical_n = r.Vertical(), f.vertical_case = label;
+    }
     out.push_back(std::move(f));
   }
   return out;

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "core/config.h"
 #include "design/design.h"
@@ -29,6 +30,32 @@ TEST_CASE("reactions balance the applied loads in every static case of the defau
     // less. Measured at most 8.3e-10 (sls_travelling at node 7), 2e-11 without a travelling
     // load: 1e-9 is the bound asked of the design output, held with a margin of only 1.2.
     CHECK(imbalance.norm() <= 1e-9 * scale);
+  }
+}
+
+TEST_CASE("an abutment whose ultimate cases found no equilibrium reports the reference state") {
+  // Every string half again as long as designed: no ultimate case finds an equilibrium, and the
+  // abutments' envelope would be empty. It reports the reference state's reactions instead (the
+  // least each abutment takes), labelled so, not 0 kN.
+  Config config;
+  config.bridge.n = 2;
+  config.supports.horizontal_capacity_n = 1.0;  // 1 N: any reaction is far over it
+  Design d = RunDesign(config);
+  for (MemberSizing& s : d.strings) s.rest_length *= 1.5;
+  const StaticCheck check = CheckStatics(d);
+  for (const CaseResponse& r : check.cases) REQUIRE_FALSE(r.converged);  // the premise
+  REQUIRE(check.abutments.size() == 2);
+  for (const AbutmentFinding& a : check.abutments) {
+    // The same sums over the abutment's support nodes, formed here from the design's reactions.
+    double x = 0, y = 0, z = 0;
+    for (const int node : a.nodes)
+      x += d.reactions(0, node), y += d.reactions(1, node), z += d.reactions(2, node);
+    REQUIRE(std::hypot(x, z) > 0);
+    // Tolerance: the same additions in another order, a few ulps.
+    CHECK(a.horizontal_n == Approx(std::hypot(x, z)).epsilon(1e-12));
+    CHECK(a.vertical_n == Approx(std::abs(y)).epsilon(1e-12));
+    CHECK(a.horizontal_case.find("reference state") != std::string::npos);
+    CHECK(a.HorizontalUtilisation() > 1);
   }
 }
 
