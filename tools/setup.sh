@@ -8,6 +8,7 @@ packages=(
   build-essential      # g++ 12, make
   cmake
   clang-format-14      # the formatter the tests hold every C++ file to (tools/check_format.sh)
+  clang-tidy-14        # the function-size check the tests run (tools/check_function_size.sh)
   pkg-config           # finds Ipopt
   libeigen3-dev        # dense and sparse linear algebra
   coinor-libipopt-dev  # default minimum-mass solver
