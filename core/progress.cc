@@ -89,10 +89,10 @@ std::string WorkInProgress() {
 
 void ProgressReporter::Stage(const std::string& name) {
   if (cancel_) cancel_();
-  SetWorkStage(prefix_ + name);
+  SetWorkStage(outer_ + prefix_ + name);
   if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
-  stage_ = prefix_ + name;
+  stage_ = outer_ + prefix_ + name;
   stage_start_ = std::chrono::steady_clock::now();
   done_ = total_ = 0;
   first_done_ = -1;

@@ -63,6 +63,10 @@ class ProgressReporter {
   // Put before every later stage's name ("sizing 3: " + "static check"), so that work nested
   // in a larger loop says where in the loop it is. Call from the thread that owns the reporter.
   void SetStagePrefix(std::string prefix) { prefix_ = std::move(prefix); }
+  // Put before that prefix: an outer loop's place, which the inner loop's own prefix does not
+  // replace ("angle 30 deg (trial 5): " + "sizing 3 (of at most 25): " + "static check"). Call
+  // from the thread that owns the reporter; "" clears it.
+  void SetOuterPrefix(std::string prefix) { outer_ = std::move(prefix); }
 
   // Stops drawing for good and ends the line if one was drawn, e.g. before printing warnings
   // or results; later calls do nothing. Call from the thread that owns the reporter.
@@ -93,7 +97,7 @@ class ProgressReporter {
   std::chrono::steady_clock::time_point first_time_;
   std::thread thread_;
   std::function<void()> cancel_;
-  std::string prefix_;
+  std::string prefix_, outer_;
 };
 
 // What the process is working on, for the one message that cannot ask the work itself (out of

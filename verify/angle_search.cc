@@ -137,6 +137,11 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
     double use = 0;
     t.beta_deg = beta;
     t.utilisation_max = std::numeric_limits<double>::infinity();
+    // The search takes minutes at n = 6: each trial's stages say which angle they are at.
+    if (progress != nullptr) {
+      progress->SetOuterPrefix(Format("angle %g deg (trial ", beta) +
+                               std::to_string(record.trials.size() + 1) + "): ");
+    }
     try {
       const Design d = DesignAndVerify(at, progress, NearestStart(starts, beta));
       const Verdict verdict = DesignVerdict(d);
@@ -181,7 +186,10 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
   Config chosen = config;
   chosen.bridge.beta_auto = false;
   chosen.bridge.beta_deg = record.chosen_deg;
+  if (progress != nullptr)
+    progress->SetOuterPrefix(Format("angle chosen, %g deg: ", record.chosen_deg));
   Design out = DesignAndVerify(chosen, progress);
+  if (progress != nullptr) progress->SetOuterPrefix("");
   out.config.bridge.beta_auto = true;
   out.angle = std::move(record);
   return out;

@@ -47,6 +47,30 @@ TEST_CASE("progress of a verified design: per sizing, check and run, with the sh
   CHECK_THAT(drawn, Catch::Contains("ETA"));
 }
 
+TEST_CASE("progress of the angle's search names each trial's angle and the angle chosen",
+          "[verify]") {
+  // A search of a few trials: a narrow range, comfort off, the 12 m default at n = 2.
+  Config config;
+  config.bridge.n = 2;
+  config.bridge.beta_auto = true;
+  config.design.beta_range_deg = {40.0, 50.0};
+  config.comfort.check = false;
+  std::FILE* file = std::tmpfile();
+  REQUIRE(file != nullptr);
+  Design d;
+  {
+    ProgressReporter progress(true, file, 0.0, 0.002);
+    d = DesignAndVerify(config, &progress);
+  }
+  const std::string drawn = ReadAll(file);
+  std::fclose(file);
+  REQUIRE(d.angle.done);
+  // The scan starts at the range's steeper end: its first trial is at 50 deg.
+  CHECK_THAT(drawn, Catch::Contains("angle 50 deg (trial 1): sizing 1 (of at most 25): "));
+  CHECK_THAT(drawn, Catch::Contains("angle 40 deg (trial "));
+  CHECK_THAT(drawn, Catch::Contains("angle chosen, "));
+}
+
 TEST_CASE("a cancel hook stops a verified design where it throws", "[verify]") {
   Config config;
   config.bridge.n = 2;
