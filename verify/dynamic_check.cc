@@ -222,14 +222,15 @@ StaticModel StaticModelOfRun(const Design& d, const DynamicModel& model) {
   return statics;
 }
 
-// The member's finding under a run's `demand`: a bar against its yield and buckling, a string
-// against its yield and, where it must stay taut, going slack (listed in out.slack_strings).
-void RaiseDynamicFinding(const Design& d, int j, double demand, const SimulationSummary& summary,
-                         const std::string& label, const BarRule& rule, double E,
-                         const MemberMaterial& strings, double sigma_w, DynamicCheck& out) {
+// Member j's (`m`'s) finding under a run's `demand`: a bar against its yield and buckling, a
+// string against its yield and, where it must stay taut, going slack (listed in
+// out.slack_strings).
+void RaiseDynamicFinding(const Design& d, int j, const MemberSizing& m, double demand,
+                         const SimulationSummary& summary, const std::string& label,
+                         const BarRule& rule, double E, const MemberMaterial& strings,
+                         double sigma_w, DynamicCheck& out) {
   const int nb = d.topology.structure.num_bars();
   const bool bar = j < nb;
-  const MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
   MemberFinding& f = out.members[j];
   if (bar) {
     const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
@@ -398,7 +399,7 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
         const double demand = prestress[j] +
                               (permanent > 0 ? gamma_g_sup : gamma_g_inf) * permanent +
                               run.gamma * std::max(peak - m.reference_force, 0.0);
-        RaiseDynamicFinding(d, j, demand, summary, label, rule, E, strings, sigma_w, out);
+        RaiseDynamicFinding(d, j, m, demand, summary, label, rule, E, strings, sigma_w, out);
         TakeGroupPeak(groups, group, static_peak, j, peak);
       }
       for (auto& [name, g] : groups) run.record.groups.push_back(g);
