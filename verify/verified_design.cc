@@ -351,6 +351,13 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     if (lambda.size() == rows) lambda[f] += lambda[r], lambda[r] = 0;
   }
   const SizingCorrections alike = full.ImageCorrections(corrections);
+  // Violated beyond the solver's own tolerance on a row as the solver reads it (posed_g): within
+  // it the solver counts a posed row as met, so posing such a row starts a round that changes
+  // nothing. As posed, not as a margin: a strength row's margin 1 - kappa F / R(A) reads its
+  // posed (R(A) - kappa F) / R_ref scaled by R_ref / R(A), lower where the member shrank (n = 8:
+  // rows at their posed bound read 3e-5 below it as margins, and each round posed a few more
+  // rows until the sixteenth).
+  const auto violated_at = [&](int r) { return !(posed_g[r] >= lo[r] - options.tolerance); };
   bool restarted = false;  // a failed round started again from the sizing's start (once)
   bool resume = false;     // the round after that restart, solved whatever its start reads
   for (int round = 0; round < 16; ++round) {
@@ -360,13 +367,7 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     const std::vector<char> near = NearLimits(full, g);
     std::vector<int> unposed_violations;
     for (int r = 0; r < rows; ++r) {
-      // Violated beyond the solver's own tolerance on a row as the solver reads it: within it
-      // the solver counts a posed row as met, so posing such a row starts a round that changes
-      // nothing. As posed, not as a margin: a strength row's margin 1 - kappa F / R(A) reads
-      // its posed (R(A) - kappa F) / R_ref scaled by R_ref / R(A), lower where the member shrank
-      // (n = 8: rows at their posed bound read 3e-5 below it as margins, and each round posed a
-      // few more rows until the sixteenth).
-      const bool bad = !(posed_g[r] >= lo[r] - options.tolerance);
+      const bool bad = violated_at(r);
       violated = violated || bad;
       const int f = first[static_cast<size_t>(r)];
       // A row left out that now reads over twice its limit: a member far from its limits at
@@ -421,7 +422,7 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
       restarted = true;
       full.Constraints(x, posed_g);
       for (int r = 0; r < rows; ++r) {
-        if (!(posed_g[r] >= lo[r] - options.tolerance)) keep[first[static_cast<size_t>(r)]] = 1;
+        if (violated_at(r)) keep[first[static_cast<size_t>(r)]] = 1;
       }
       x = start;
       lambda.resize(0);
