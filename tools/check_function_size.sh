@@ -17,12 +17,6 @@ if [ ! -f "$build/compile_commands.json" ]; then
   exit 2
 fi
 
-# The functions still over the limit, one "FILE FUNCTION" a line as clang-tidy names them
-# (e.g. "design/sqp_solver.cc SolveWithSqp"): each is to be split, and then its line here goes.
-# The list can only shrink: a function named here that is no longer over the limit fails the
-# check until its line is removed. Empty: every product function is within the limit.
-allowed=()
-
 dirs=(core statics design truss dynamics bridge verify sweep export app tools python)
 if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
   mapfile -t files < <(git ls-files "${dirs[@]/%//*.cc}")
@@ -58,38 +52,11 @@ if [ "$status" -ne 0 ]; then
   exit 2
 fi
 
-failed=0
 for f in "${long[@]}"; do
   read -r file name line n <<< "$f"
-  known=0
-  for a in "${allowed[@]}"; do
-    if [ "$a" = "$file $name" ]; then known=1; fi
-  done
-  if [ "$known" -eq 0 ]; then
-    echo "check_function_size: $file:$line: $name is $n lines (limit 100)" >&2
-    failed=1
-  else
-    echo "check_function_size: $file:$line: $name is $n lines, allowed until it is split"
-  fi
+  echo "check_function_size: $file:$line: $name is $n lines (limit 100)" >&2
 done
-for a in "${allowed[@]}"; do
-  found=0
-  for f in "${long[@]}"; do
-    read -r file name _ <<< "$f"
-    if [ "$a" = "$file $name" ]; then found=1; fi
-  done
-  if [ "$found" -eq 0 ]; then
-    echo "check_function_size: $a is allowed to be long but is no longer over 100 lines:" \
-      "remove it from the list in tools/check_function_size.sh" >&2
-    failed=1
-  fi
-done
-if [ "$failed" -ne 0 ]; then
+if [ "${#long[@]}" -gt 0 ]; then
   exit 1
 fi
-if [ "${#allowed[@]}" -eq 0 ]; then
-  echo "check_function_size: no function over 100 lines in ${#files[@]} files"
-else
-  echo "check_function_size: no function over 100 lines in ${#files[@]} files but the" \
-    "${#allowed[@]} allowed until split"
-fi
+echo "check_function_size: no function over 100 lines in ${#files[@]} files"
