@@ -1,7 +1,8 @@
-// The pieces of a tensegrity's linearisation about a state that the modal analysis
-// (dynamics/modal.h) and the stability check (design/stability.h) both assemble: the free
-// degrees of freedom, a member's 3x3 block placed at its two ends, and a bar's constraint row.
-// What goes into the blocks (tangent, geometric, material) stays with each caller.
+// The pieces of a tensegrity's linearisation about a state that the static solve
+// (statics/static_solve.h), the modal analysis (dynamics/modal.h), the stability check
+// (design/stability.h), the linear response (design/linear_response.h) and the truss analysis
+// assemble: the free degrees of freedom, a string's tangent block, a member's 3x3 block placed at
+// its two ends, and a bar's constraint row.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,6 +24,38 @@ inline std::vector<int> FreeDofs(const std::vector<bool>& fixed, int dim, int& n
     n_dof += dim;
   }
   return first;
+}
+
+// u u^T, `u` a unit vector: the projector onto u, evaluated (so that k u u^T rounds as
+// k (u_a u_b) wherever it is formed).
+inline Eigen::Matrix3d AlongProjector(const Eigen::Vector3d& u) { return u * u.transpose(); }
+
+// I - u u^T on the top-left dim x dim (zero elsewhere), `u` a unit vector: the projector normal
+// to u, which turns a member's force into the stiffness of its direction's turning.
+inline Eigen::Matrix3d NormalProjector(const Eigen::Vector3d& u, int dim = 3) {
+  Eigen::Matrix3d p = Eigen::Matrix3d::Zero();
+  p.topLeftCorner(dim, dim).setIdentity();
+  return p - AlongProjector(u);
+}
+
+// A string's material stiffness k u u^T [N/m]: `k` its axial stiffness E A / L0, `u` its unit
+// vector.
+inline Eigen::Matrix3d StringMaterialBlock(const Eigen::Vector3d& u, double k) {
+  return k * AlongProjector(u);
+}
+
+// A string's geometric stiffness q (I - u u^T) [N/m], `q` its force density t / L [N/m]; with a
+// bar's (-q I) it is what prestress adds to the tangent.
+inline Eigen::Matrix3d StringGeometricBlock(const Eigen::Vector3d& u, double q, int dim = 3) {
+  return q * NormalProjector(u, dim);
+}
+
+// The tangent stiffness d(t u)/d(x_j - x_i) of a taut string [N/m]: k u u^T + q (I - u u^T),
+// with `k` its axial stiffness and `q` its force density t / L. It is linear in (k, q), so the
+// same block at (dk, dq) is its derivative along a change of stiffness and force.
+inline Eigen::Matrix3d StringTangentBlock(const Eigen::Vector3d& u, double k, double q,
+                                          int dim = 3) {
+  return StringMaterialBlock(u, k) + StringGeometricBlock(u, q, dim);
 }
 
 // Adds the member block `g` as [g -g; -g g] on the free DOFs of its end nodes i and j (the

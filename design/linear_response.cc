@@ -34,10 +34,9 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
   for (int j = 0; j < nb_ + ns_; ++j) {
     const bool bar = j < nb_;
     const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
-    const Eigen::Matrix3d ee = unit_[j] * unit_[j].transpose();
     const double q = reference_forces[j] / length_[j];
     const Eigen::Matrix3d g =
-        bar ? Eigen::Matrix3d(-q * I) : Eigen::Matrix3d(k_[j - nb_] * ee + q * (I - ee));
+        bar ? Eigen::Matrix3d(-q * I) : StringTangentBlock(unit_[j], k_[j - nb_], q, dim_);
     AddPairBlock(g, m.i, m.j, dof_, dim_, t);
     if (bar) AddBarRow(ndof_ + j, m.i, m.j, unit_[j], dof_, dim_, t);
   }
@@ -183,9 +182,9 @@ Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u,
     const double dq = dp.forces[j] / length_[j];
     if (dk == 0 && dq == 0) continue;
     const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
-    const Eigen::Matrix3d ee = unit_[j] * unit_[j].transpose();
+    // The string block is linear in (k, q): at (dk, dq) it is its own derivative.
     const Eigen::Matrix3d g =
-        bar ? Eigen::Matrix3d(-dq * I) : Eigen::Matrix3d(dk * ee + dq * (I - ee));
+        bar ? Eigen::Matrix3d(-dq * I) : StringTangentBlock(unit_[j], dk, dq, dim_);
     AddBlockAction(g, m.i, m.j, u, dKu);
   }
   return dKu;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/tangent_blocks.h"
 #include "core/two_lanes.h"
 #include "design/abutments.h"
 #include "design/case_envelope.h"
@@ -680,7 +681,7 @@ struct SizingProblem::Impl {
         t.far = s.fixed[static_cast<size_t>(far)] ? -1 : far;
         t.sign = j < nb ? -1.0 : 1.0;
         const Eigen::Vector3d e = (s.nodes.col(m.j) - s.nodes.col(m.i)).normalized();
-        t.turn = (Eigen::Matrix3d::Identity() - e * e.transpose()) / s.Length(m);
+        t.turn = NormalProjector(e) / s.Length(m);
         reaction_terms[static_cast<size_t>(a)].push_back(t);
       }
     }

@@ -62,9 +62,8 @@ Tangent AssembleTangent(const Structure& s, const Eigen::VectorXd& forces,
   for (int k = 0; k < ns; ++k) {
     const Member& m = s.strings[k];
     const Eigen::Vector3d u = unit(m);
-    const Eigen::Matrix3d uu = u * u.transpose();
-    add(kg, m, (forces[nb + k] / s.Length(m)) * (I - uu));
-    add(material, m, k_string[k] * uu);
+    add(kg, m, StringGeometricBlock(u, forces[nb + k] / s.Length(m), dim));
+    add(material, m, StringMaterialBlock(u, k_string[k]));
   }
   for (int b = 0; b < nb; ++b) {
     const Member& m = s.bars[b];

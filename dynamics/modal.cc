@@ -347,9 +347,8 @@ LinearisedSystem Linearise(const DynamicModel& model) {
     const Eigen::Vector3d u = s / length;
     force.col(st.i) += tension * u;
     force.col(st.j) -= tension * u;
-    const Eigen::Matrix3d uu = u * u.transpose();
-    const Eigen::Matrix3d block = (tension / length) * (eye - uu) + st.stiffness * uu;
-    AddPairBlock(block, st.i, st.j, first_dof, dim, stiffness);
+    AddPairBlock(StringTangentBlock(u, st.stiffness, tension / length), st.i, st.j, first_dof, dim,
+                 stiffness);
   }
 
   // Bar force directions on the free DOFs: a compression lambda pushes node j along +b and

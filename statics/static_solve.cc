@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/string_law.h"
+#include "core/tangent_blocks.h"
 
 namespace tbridge {
 
@@ -69,7 +70,8 @@ void EmitNewtonEntries(const StaticModel& m, const DofMap& map, const Eigen::Mat
                        const Eigen::VectorXd& lambda, Sink&& sink) {
   const Structure& s = m.structure;
   const int n = map.count, dim = map.dim;
-  // Block [[B, -B], [-B, B]] between nodes i and j.
+  // Block [[B, -B], [-B, B]] between nodes i and j. Unlike AddPairBlock it passes zero entries
+  // too: the Newton matrix's pattern is built once and then filled by position.
   auto pair_block = [&](int i, int j, const Eigen::Matrix3d& B) {
     const int ends[2] = {i, j};
     for (int p = 0; p < 2; ++p) {
@@ -91,13 +93,12 @@ void EmitNewtonEntries(const StaticModel& m, const DofMap& map, const Eigen::Mat
     if (len <= m.string_rest_length[k]) {
       // Slack: no force. A 1e-6 share of its axial stiffness keeps the Newton matrix regular
       // while a string chatters across its rest length (the residual stays exact).
-      pair_block(e.i, e.j, Eigen::Matrix3d(-1e-6 * m.string_stiffness[k] * u * u.transpose()));
+      pair_block(e.i, e.j, -StringMaterialBlock(u, 1e-6 * m.string_stiffness[k]));
       continue;
     }
     const double tension = StringTension(m.string_stiffness[k], m.string_rest_length[k], len);
-    const Eigen::Matrix3d K = m.string_stiffness[k] * u * u.transpose() +
-                              tension / len * (Eigen::Matrix3d::Identity() - u * u.transpose());
-    pair_block(e.i, e.j, -K);  // dR/dx of a string is minus its tangent stiffness
+    // dR/dx of a string is minus its tangent stiffness
+    pair_block(e.i, e.j, -StringTangentBlock(u, m.string_stiffness[k], tension / len));
   }
   for (int b = 0; b < s.num_bars(); ++b) {
     const Member& e = s.bars[b];

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/tangent_blocks.h"
 
 namespace tbridge {
 
@@ -18,8 +19,7 @@ int DofOf(const TrussModel& m, int node, int axis) {
 }  // namespace
 
 Eigen::Matrix3d MemberBlock(const Eigen::Vector3d& d, double l, double k, double n) {
-  const Eigen::Matrix3d dd = d * d.transpose();
-  return k * dd + n / l * (Eigen::Matrix3d::Identity() - dd);
+  return StringTangentBlock(d, k, n / l);
 }
 
 Eigen::SparseMatrix<double> AssembleStiffness(const TrussModel& model,
