@@ -19,6 +19,18 @@ MemberKind StringKind(const Member& m) {
   return m.group == "deck" ? MemberKind::kDeckString : MemberKind::kString;
 }
 
+MassBreakdown MassesOf(const std::vector<MemberSizing>& bars,
+                       const std::vector<MemberSizing>& strings, double deck_beams) {
+  MassBreakdown mass;
+  for (const MemberSizing& b : bars) mass.bars += b.mass;
+  for (const MemberSizing& s : strings)
+    (s.kind == MemberKind::kDeckString ? mass.deck_strings : mass.strings) += s.mass;
+  mass.deck_beams = deck_beams;
+  mass.structure = mass.bars + mass.strings + mass.deck_strings;
+  mass.total = mass.structure + mass.deck_beams;
+  return mass;
+}
+
 namespace {
 
 // The rank decision and the loads' reach: a sound basis leaves A N at rounding (entries of A
@@ -553,9 +565,6 @@ void UtiliseMembers(Design& d, const MinMassSolution& solution, const BarRule& r
     m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
     if (m.mode == "slack" || m.mode == "tension")
       m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
-    (m.kind == MemberKind::kBar          ? d.mass.bars
-     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
-                                         : d.mass.strings) += m.mass;
   }
 }
 
@@ -575,9 +584,7 @@ void CompleteDesign(Design& d, const Config& config, const MinMassSolution& solu
   d.stability = AssessStability(s, reference_forces, string_stiffness, config.bridge.n <= 6);
   d.reactions = SupportReactions(s, reference_forces, reference_loads);
   d.reactions.array() += 0.0;  // -0 (a fixed node's untouched axis) reads as 0 in the outputs
-  d.mass.deck_beams = d.deck.beams_mass;
-  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
-  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  d.mass = MassesOf(d.bars, d.strings, d.deck.beams_mass);
 }
 
 }  // namespace

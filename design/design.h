@@ -28,6 +28,12 @@ struct MassBreakdown {
   double total = 0;         // structure + deck beams [kg]
 };
 
+// The breakdown of the members' masses: `bars`' and `strings`' masses summed by kind in member
+// order, with `deck_beams` [kg], the structure and the total from them. Every design's
+// breakdown is made here, so its parts always sum to its structure and total.
+MassBreakdown MassesOf(const std::vector<MemberSizing>& bars,
+                       const std::vector<MemberSizing>& strings, double deck_beams);
+
 // Design::solver_form of a design read back from its file (design/design_reader.h).
 inline constexpr const char* kReadFromFile = "read from file";
 

@@ -177,19 +177,14 @@ void WeighMembers(Design& d, std::vector<double>& masses) {
   const int nb = s.num_bars();
   const double bar_density = BarMaterial(d.config).density,
                string_density = StringMaterial(d.config).density;
-  d.mass.bars = d.mass.strings = d.mass.deck_strings = 0;
   for (int k = 0; k < nb + s.num_strings(); ++k) {
     const bool bar = k < nb;
     MemberSizing& m = bar ? d.bars[k] : d.strings[k - nb];
     m.length = s.Length(bar ? s.bars[k] : s.strings[k - nb]);
     m.mass = (bar ? bar_density : string_density) * m.area * m.length;
     masses[k] = m.mass;
-    (bar                                 ? d.mass.bars
-     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
-                                         : d.mass.strings) += m.mass;
   }
-  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
-  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  d.mass = MassesOf(d.bars, d.strings, d.mass.deck_beams);
   d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, d.config.design.gravity);
   d.loads = d.actions.Loads(d.reference);
 }
@@ -478,14 +473,9 @@ Design ReadDesign(const json& file) {
     const MemberSizing m = ReadMember(file, k, s, bar_material, string_material, rule, edited);
     masses[k] = m.mass;
     d.reference_forces[k] = m.reference_force;
-    (bar                                 ? d.mass.bars
-     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
-                                         : d.mass.strings) += m.mass;
     (bar ? d.bars : d.strings).push_back(m);
   }
-  d.mass.deck_beams = d.deck.beams_mass;
-  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
-  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  d.mass = MassesOf(d.bars, d.strings, d.deck.beams_mass);
 
   // The reference state: its loads from the members as read, its forces in equilibrium with them.
   d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, d.config.design.gravity);

@@ -58,17 +58,12 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas,
     m.force = force;
     m.force_density = force / m.length;
     m.stress = m.area > 0 ? force / m.area : 0.0;
-    (bar                                 ? d.mass.bars
-     : m.kind == MemberKind::kDeckString ? d.mass.deck_strings
-                                         : d.mass.strings) += m.mass;
     (bar ? d.bars : d.strings).push_back(m);
   }
   const Eigen::VectorXd residual = EquilibriumResidual(eq, d.reference_forces, d.loads);
   d.equilibrium_residual = residual.size() ? residual.cwiseAbs().maxCoeff() : 0.0;
   AssessReferenceState(d);
-  d.mass.deck_beams = d.deck.beams_mass;
-  d.mass.structure = d.mass.bars + d.mass.strings + d.mass.deck_strings;
-  d.mass.total = d.mass.structure + d.mass.deck_beams;
+  d.mass = MassesOf(d.bars, d.strings, d.deck.beams_mass);
   return d;
 }
 

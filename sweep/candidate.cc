@@ -20,7 +20,7 @@ namespace {
 double GrowDeckStrings(Design& design, double ratio) {
   const MemberMaterial mat = StringMaterial(design.config);
   const double sigma_w = mat.DesignStress();
-  double factor = 1, deck_mass = 0;
+  double factor = 1;
   for (MemberSizing& s : design.strings) {
     if (s.kind != MemberKind::kDeckString) continue;
     const double tension = mat.youngs_modulus * s.area * (1 / ratio - 1);
@@ -35,12 +35,8 @@ double GrowDeckStrings(Design& design, double ratio) {
     s.rest_length = s.length / (1 + s.stress / mat.youngs_modulus);
     s.stiffness = mat.youngs_modulus * area / s.rest_length;
     s.mass = mat.density * area * s.length;
-    deck_mass += s.mass;
   }
-  MassBreakdown& m = design.mass;
-  m.deck_strings = deck_mass;
-  m.structure = m.bars + m.strings + m.deck_strings;
-  m.total = m.structure + m.deck_beams;
+  design.mass = MassesOf(design.bars, design.strings, design.mass.deck_beams);
   return factor;
 }
 
