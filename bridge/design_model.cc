@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/member_area.h"
 #include "design/abutments.h"
 #include "design/static_model.h"
 #include "dynamics/simulation.h"
@@ -53,13 +54,13 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     ds.rest_length = s.rest_length;
     ds.stiffness = s.stiffness;
     ds.damping = options.damping;
-    ds.mass = strings.density * s.area * s.rest_length;
+    ds.mass = MassOfArea(strings.density, s.area, s.rest_length);
     ds.area = s.area;
     const std::string& group = st.strings[k].group;
     for (const StringPrestrain& p : options.prestrain) {
       if (p.group != group) continue;
       ds.rest_length = p.ratio * s.length;
-      ds.stiffness = strings.youngs_modulus * s.area / ds.rest_length;
+      ds.stiffness = AxialStiffness(strings.youngs_modulus, s.area, ds.rest_length);
     }
     m.AddString(ds, s.name, group);
   }

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/member_area.h"
 #include "core/string_law.h"
 #include "design/design_loads.h"
 #include "design/design_report.h"
@@ -181,7 +182,7 @@ void WeighMembers(Design& d, std::vector<double>& masses) {
     const bool bar = k < nb;
     MemberSizing& m = bar ? d.bars[k] : d.strings[k - nb];
     m.length = s.Length(bar ? s.bars[k] : s.strings[k - nb]);
-    m.mass = (bar ? bar_density : string_density) * m.area * m.length;
+    m.mass = MassOfArea(bar ? bar_density : string_density, m.area, m.length);
     masses[k] = m.mass;
   }
   d.mass = MassesOf(d.bars, d.strings, d.mass.deck_beams);
@@ -366,15 +367,15 @@ MemberSizing ReadMember(const json& file, int k, const Structure& s,
   m.area = Number(j, "area", where);
   if (!(m.area >= 0) || !std::isfinite(m.area))
     throw ConfigError(where + ".area", NumberText(m.area), "a finite area >= 0 [m^2]");
-  m.radius = std::sqrt(m.area / std::numbers::pi);
+  m.radius = RadiusOfArea(m.area);
   const MemberMaterial& mat = bar ? bar_material : string_material;
-  m.mass = mat.density * m.area * m.length;
+  m.mass = MassOfArea(mat.density, m.area, m.length);
   m.reference_force = Number(j, "reference_force", where);
   m.rest_length = bar ? m.length : Number(j, "rest_length", where);
   if (!bar) {
     if (!(m.rest_length > 0))
       throw ConfigError(where + ".rest_length", NumberText(m.rest_length), "a rest length > 0 [m]");
-    m.stiffness = mat.youngs_modulus * m.area / m.rest_length;
+    m.stiffness = AxialStiffness(mat.youngs_modulus, m.area, m.rest_length);
     // The string's tension at the drawn geometry is its reference force: 1e-6 relative
     // allows the file's rounding and the design's own sizing tolerance, and no real edit.
     // Otherwise its area or rest length was edited: the reference state is re-derived.
@@ -527,7 +528,7 @@ Design WithRestLengths(const Design& design, const std::vector<double>& shorteni
                         "a rest length > 0 [m]");
     }
     m["rest_length"] = rest;
-    m["stiffness"] = modulus * m.at("area").get<double>() / rest;
+    m["stiffness"] = AxialStiffness(modulus, m.at("area").get<double>(), rest);
   }
   return ReadDesign(file);
 }
@@ -538,7 +539,7 @@ Design WithTemperature(const Design& design, double delta_k) {
                        bar_material = BarMaterial(d.config);
   for (MemberSizing& m : d.strings) {
     m.rest_length *= 1.0 + string_material.thermal_expansion * delta_k;
-    m.stiffness = string_material.youngs_modulus * m.area / m.rest_length;
+    m.stiffness = AxialStiffness(string_material.youngs_modulus, m.area, m.rest_length);
   }
   std::vector<double> masses(d.bars.size() + d.strings.size());
   const Eigen::Matrix3Xd drawn = d.topology.structure.nodes;
@@ -571,10 +572,10 @@ Design WithAreas(const Design& design, const std::vector<double>& areas) {
     }
     json& m = members[k];
     m["area"] = a;
-    m["radius"] = std::sqrt(a / std::numbers::pi);
-    m["mass"] = mat.density * a * m.at("length").get<double>();
+    m["radius"] = RadiusOfArea(a);
+    m["mass"] = MassOfArea(mat.density, a, m.at("length").get<double>());
     if (!m.at("stiffness").is_null())
-      m["stiffness"] = mat.youngs_modulus * a / m.at("rest_length").get<double>();
+      m["stiffness"] = AxialStiffness(mat.youngs_modulus, a, m.at("rest_length").get<double>());
   }
   return ReadDesign(file);
 }

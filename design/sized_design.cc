@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/member_area.h"
 #include "design/design.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
@@ -26,8 +27,8 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas,
   const MemberMaterial bar_material = BarMaterial(config), string_material = StringMaterial(config);
   std::vector<double> masses(nb + ns);
   for (int j = 0; j < nb + ns; ++j) {
-    masses[j] = (j < nb ? bar_material : string_material).density * areas[j] *
-                s.Length(j < nb ? s.bars[j] : s.strings[j - nb]);
+    masses[j] = MassOfArea((j < nb ? bar_material : string_material).density, areas[j],
+                           s.Length(j < nb ? s.bars[j] : s.strings[j - nb]));
   }
   if (config.design.self_weight)
     d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, config.design.gravity);

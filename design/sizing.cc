@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/member_area.h"
 
 namespace tbridge {
 
@@ -67,13 +68,12 @@ MemberSizing SizeString(double length, double tension, double reference_tension,
     s.area = yield_area;
     s.governed_by = "yield";
   }
-  s.radius = std::sqrt(s.area / std::numbers::pi);
+  s.radius = RadiusOfArea(s.area);
   s.stress = s.area > 0 ? s.force / s.area : 0.0;
   s.reference_force = std::max(reference_tension, 0.0);
-  s.rest_length =
-      length / (1.0 + (s.area > 0 ? s.reference_force / s.area : 0.0) / m.youngs_modulus);
-  s.stiffness = s.area > 0 ? m.youngs_modulus * s.area / s.rest_length : 0.0;
-  s.mass = m.density * s.area * length;
+  s.rest_length = RestLengthOfArea(m.youngs_modulus, s.area, s.reference_force, length);
+  s.stiffness = s.area > 0 ? AxialStiffness(m.youngs_modulus, s.area, s.rest_length) : 0.0;
+  s.mass = MassOfArea(m.density, s.area, length);
   CheckFinite(s, m);
   return s;
 }
@@ -172,9 +172,9 @@ MemberSizing SizeBar(double length, double compression, double min_area, const B
     b.area = min_area;
     b.governed_by = "min_radius";
   }
-  b.radius = std::sqrt(b.area / std::numbers::pi);
+  b.radius = RadiusOfArea(b.area);
   b.stress = b.area > 0 ? b.force / b.area : 0.0;
-  b.mass = m.density * b.area * length;
+  b.mass = MassOfArea(m.density, b.area, length);
   CheckFinite(b, m);
   return b;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/member_area.h"
 #include "core/tangent_blocks.h"
 #include "core/two_lanes.h"
 #include "design/abutments.h"
@@ -318,7 +319,8 @@ struct SizingProblem::Impl {
       st.bar_capacity[static_cast<size_t>(j)] = BarResistance(st.a[j], length[j], rule, E_bar);
     st.xr = Reference(x, &st.shift_jac);
     Eigen::VectorXd k(ns);
-    for (int q = 0; q < ns; ++q) k[q] = (E * st.a[nb + q] + st.xr[nb + q]) / length[nb + q];
+    for (int q = 0; q < ns; ++q)
+      k[q] = TautStringStiffness(E, st.a[nb + q], st.xr[nb + q], length[nb + q]);
     st.g.resize(static_cast<Eigen::Index>(rows.size()));
     // A reference state that is not stable (a negative stiffness on the motions that keep the
     // bar lengths) has no meaningful linear response: the point is an evaluation error, and
@@ -971,7 +973,8 @@ struct SizingProblem::Impl {
     for (int v = v_first; v < v_last; ++v) {
       std::vector<std::pair<int, double>> strings;  // (string, dk/dx_v [N/m])
       for (int j : members_of[v]) {
-        if (j >= nb) strings.emplace_back(j - nb, E * area_scale[v] / length[j]);
+        if (j >= nb)
+          strings.emplace_back(j - nb, TautStringStiffness(E, area_scale[v], 0.0, length[j]));
       }
       // A member's force change in combination c: through the strings' stiffness on the load's
       // stretches (the adjoint's), and a string's own on its stretch.
@@ -1031,7 +1034,8 @@ struct SizingProblem::Impl {
       LinearResponse::Direction dp;
       dp.forces = N.col(v - groups) * (force_scale * alpha_factor);
       dp.stiffness = Eigen::VectorXd(ns);
-      for (int q = 0; q < ns; ++q) dp.stiffness[q] = dp.forces[nb + q] / length[nb + q];
+      for (int q = 0; q < ns; ++q)
+        dp.stiffness[q] = TautStringStiffness(E, 0.0, dp.forces[nb + q], length[nb + q]);
       const Eigen::MatrixXd action = st.lin->StiffnessAction(st.u, dp);
       touched.clear();
       for (Eigen::Index i = 0; i < action.rows(); ++i) {

@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "core/member_area.h"
+
 namespace tbridge {
 
 std::string CalculixNumber(double v) {
@@ -66,8 +68,8 @@ void WriteSprings(const FeModel& fe, const CalculixOptions& options, std::ostrea
   for (int b = 0; b < nb; ++b) {
     const Member& m = s.bars[b];
     const double length = s.Length(m);
-    const double stiffness =
-        fe.youngs_modulus * fe.bar_area[b] / length * (options.rigid_bars ? kRigidBarFactor : 1.0);
+    const double stiffness = AxialStiffness(fe.youngs_modulus, fe.bar_area[b], length) *
+                             (options.rigid_bars ? kRigidBarFactor : 1.0);
     const double force = -fe.reference.bar_compression[b];
     Spring(os, ns + b + 1, m.i, m.j,
            {{-0.5 * length, force - 0.5 * length * stiffness},

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/member_area.h"
 #include "export/calculix.h"
 
 namespace tbridge {
@@ -19,7 +20,8 @@ void Members(const TrussDesign& d, const Eigen::VectorXd& areas, std::ostream& o
   const TrussModel& m = d.model;
   for (int e = 0; e < m.num_members(); ++e) {
     const TrussMember& member = m.members[static_cast<size_t>(e)];
-    const double k = m.youngs_modulus * areas[e] / member.length, half = 0.5 * member.length;
+    const double k = AxialStiffness(m.youngs_modulus, areas[e], member.length),
+                 half = 0.5 * member.length;
     const double n0 = d.check.prestress[e];
     os << "*ELEMENT, TYPE=SPRINGA, ELSET=E" << e + 1 << "\n"
        << e + 1 << ", " << member.i + 1 << ", " << member.j + 1 << "\n*SPRING, ELSET=E" << e + 1
@@ -38,7 +40,7 @@ void Masses(const TrussDesign& d, const Eigen::VectorXd& areas, std::ostream& os
     mass[nm.node - 1] += nm.mass_kg;
   for (int e = 0; e < ne; ++e) {
     const TrussMember& member = m.members[static_cast<size_t>(e)];
-    const double me = m.density * areas[e] * member.length;
+    const double me = MassOfArea(m.density, areas[e], member.length);
     mass[member.i] += me / 6;
     mass[member.j] += me / 6;
     mass[nn + e] = 2 * me / 3;

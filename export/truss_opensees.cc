@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/member_area.h"
 #include "export/opensees.h"
 
 namespace tbridge {
@@ -41,7 +42,7 @@ void Members(const TrussDesign& d, bool corotational, std::ostream& os) {
        << Num(d.check.prestress[k] / (m.youngs_modulus * areas[k])) << "\n"
        << "element " << (corotational ? "corotTruss " : "truss ") << e << " " << member.i + 1 << " "
        << member.j + 1 << " " << Num(areas[k]) << " " << 2 * e << " -rho "
-       << Num(m.density * areas[k]) << " -cMass 1\n";
+       << Num(MassOfArea(m.density, areas[k], 1.0)) << " -cMass 1\n";
   }
 }
 

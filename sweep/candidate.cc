@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "bridge/design_model.h"
 #include "core/error.h"
+#include "core/member_area.h"
 #include "dynamics/model.h"
 #include "sweep/first_frequency.h"
 #include "verify/dynamic_check.h"
@@ -28,13 +28,13 @@ double GrowDeckStrings(Design& design, double ratio) {
     factor = std::max(factor, area / s.area);
     if (area > s.area) s.governed_by = "prestress";
     s.area = area;
-    s.radius = std::sqrt(area / std::numbers::pi);
+    s.radius = RadiusOfArea(area);
     s.force = tension;
     s.force_density = tension / s.length;
     s.stress = tension / area;
-    s.rest_length = s.length / (1 + s.stress / mat.youngs_modulus);
-    s.stiffness = mat.youngs_modulus * area / s.rest_length;
-    s.mass = mat.density * area * s.length;
+    s.rest_length = RestLengthOfArea(mat.youngs_modulus, area, tension, s.length);
+    s.stiffness = AxialStiffness(mat.youngs_modulus, area, s.rest_length);
+    s.mass = MassOfArea(mat.density, area, s.length);
   }
   design.mass = MassesOf(design.bars, design.strings, design.mass.deck_beams);
   return factor;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/member_area.h"
 #include "core/tangent_blocks.h"
 
 namespace tbridge {
@@ -106,7 +107,8 @@ TrussAnalysis::TrussAnalysis(const TrussModel& model, const Eigen::VectorXd& mem
 
 Eigen::Matrix3d TrussAnalysis::Block(int e, double area, double n0) const {
   const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  return MemberBlock(m.direction, m.length, model_.youngs_modulus * area / m.length, n0);
+  return MemberBlock(m.direction, m.length, AxialStiffness(model_.youngs_modulus, area, m.length),
+                     n0);
 }
 
 double TrussAnalysis::Elongation(int e, const Eigen::VectorXd& u) const {
@@ -121,7 +123,8 @@ Eigen::Vector3d TrussAnalysis::Pull(int e, const Eigen::VectorXd& u) const {
 
 double TrussAnalysis::Force(int e, const Eigen::VectorXd& u) const {
   const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  return prestress_[e] + model_.youngs_modulus * areas_[e] / m.length * Elongation(e, u);
+  return prestress_[e] +
+         AxialStiffness(model_.youngs_modulus, areas_[e], m.length) * Elongation(e, u);
 }
 
 Eigen::VectorXd TrussAnalysis::StiffnessTimes(int v, const Eigen::VectorXd& u) const {
@@ -162,7 +165,7 @@ TrussCaseResponse TrussAnalysis::Solve(int c, bool sensitivities) const {
   r.dforces.resize(nm, nv);
   for (int e = 0; e < nm; ++e) {
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    const double k = model_.youngs_modulus * areas_[e] / m.length;
+    const double k = AxialStiffness(model_.youngs_modulus, areas_[e], m.length);
     for (int v = 0; v < nv; ++v) r.dforces(e, v) = k * Elongation(e, r.du.col(v));
     AddForcePartials(model_, e, Elongation(e, r.u), r.dforces);
   }
@@ -215,7 +218,8 @@ Eigen::MatrixXd TrussAnalysis::MassPerVariable(int v) const {
 Eigen::MatrixXd TrussAnalysis::Mass() const {
   Eigen::MatrixXd out = model_.node_mass.asDiagonal();
   for (int e = 0; e < model_.num_members(); ++e) {
-    const double mass = model_.density * model_.members[static_cast<size_t>(e)].length * areas_[e];
+    const double mass =
+        MassOfArea(model_.density, areas_[e], model_.members[static_cast<size_t>(e)].length);
     AddEnds(e, mass / 3 * Eigen::Matrix3d::Identity(), mass / 6 * Eigen::Matrix3d::Identity(), out);
   }
   return out;

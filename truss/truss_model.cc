@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "core/member_area.h"
 
 namespace tbridge {
 
@@ -175,7 +176,7 @@ Eigen::MatrixXd TrussModel::Equilibrium() const {
 double TrussModel::Mass(const Eigen::VectorXd& group_areas) const {
   double mass = 0;
   for (int g = 0; g < num_groups(); ++g)
-    mass += density * group_areas[g] * groups[static_cast<size_t>(g)].length_sum;
+    mass += MassOfArea(density, group_areas[g], groups[static_cast<size_t>(g)].length_sum);
   return mass;
 }
 
@@ -188,7 +189,7 @@ Eigen::VectorXd TrussModel::MemberAreas(const Eigen::VectorXd& group_areas) cons
 double TrussModel::MassOfMembers(const Eigen::VectorXd& member_areas) const {
   double mass = 0;
   for (int e = 0; e < num_members(); ++e)
-    mass += density * member_areas[e] * members[static_cast<size_t>(e)].length;
+    mass += MassOfArea(density, member_areas[e], members[static_cast<size_t>(e)].length);
   return mass;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/member_area.h"
 
 namespace tbridge {
 
@@ -40,7 +41,8 @@ Eigen::Vector3d TrussNonlinearStatics::Direction(int e, const Eigen::VectorXd& u
 
 double TrussNonlinearStatics::Force(int e, double length) const {
   const TrussMember& m = model_.members[static_cast<size_t>(e)];
-  return prestress_[e] + model_.youngs_modulus * areas_[e] / m.length * (length - m.length);
+  return prestress_[e] +
+         AxialStiffness(model_.youngs_modulus, areas_[e], m.length) * (length - m.length);
 }
 
 Eigen::Vector3d TrussNonlinearStatics::Pull(int e, const Eigen::VectorXd& u) const {
@@ -62,7 +64,8 @@ std::unique_ptr<TrussFactor> TrussNonlinearStatics::Tangent(const Eigen::VectorX
     double l = 0;
     const Eigen::Vector3d d = Direction(e, u, l);
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    blocks.push_back(MemberBlock(d, l, model_.youngs_modulus * areas_[e] / m.length, Force(e, l)));
+    blocks.push_back(
+        MemberBlock(d, l, AxialStiffness(model_.youngs_modulus, areas_[e], m.length), Force(e, l)));
   }
   return FactoriseStiffness(model_, AssembleStiffness(model_, blocks));
 }
@@ -156,7 +159,7 @@ void TrussNonlinearStatics::Sensitivities(int c, TrussCaseResponse& r) const {
   r.dforces.resize(nm, nv);
   for (int e = 0; e < nm; ++e) {
     const TrussMember& m = model_.members[static_cast<size_t>(e)];
-    const double k = model_.youngs_modulus * areas_[e] / m.length;
+    const double k = AxialStiffness(model_.youngs_modulus, areas_[e], m.length);
     for (int v = 0; v < nv; ++v)
       r.dforces(e, v) =
           k * d[static_cast<size_t>(e)].dot(RelativeDisplacement(model_, e, r.du.col(v)));

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/member_area.h"
+
 namespace tbridge {
 
 namespace {
@@ -41,7 +43,7 @@ json Displacements(const TrussModel& m, const TrussCaseResponse& r) {
 // The length member e is made to so that it carries prestress n0 at area a when fitted at its
 // drawn length: L / (1 + n0 / (E A)).
 double RestLength(const TrussModel& m, int e, double a, double n0) {
-  return m.members[static_cast<size_t>(e)].length / (1 + n0 / (m.youngs_modulus * a));
+  return RestLengthOfArea(m.youngs_modulus, a, n0, m.members[static_cast<size_t>(e)].length);
 }
 
 json Members(const TrussDesign& d) {
@@ -60,7 +62,7 @@ json Members(const TrussDesign& d) {
          {"kind", TrussKindName(g.kind)},
          {"length", member.length},
          {"area", c.area},
-         {"mass", m.density * c.area * member.length},
+         {"mass", MassOfArea(m.density, c.area, member.length)},
          {"prestress_n", d.check.prestress[e]},
          {"rest_length_m", RestLength(m, e, c.area, d.check.prestress[e])},
          {"force", c.force},
@@ -178,7 +180,7 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
                       {"kind", TrussKindName(group.kind)},
                       {"area", d.sizing.group_areas[g]},
                       {"members", group.members.size()},
-                      {"mass", m.density * d.sizing.group_areas[g] * group.length_sum}});
+                      {"mass", MassOfArea(m.density, d.sizing.group_areas[g], group.length_sum)}});
   }
   double added = 0;
   for (const StructureNodeMass& nm : d.config.structure->node_masses) added += nm.mass_kg;
@@ -270,7 +272,8 @@ std::string TrussDesignSummary(const TrussDesign& d) {
     const TrussGroup& group = m.groups[static_cast<size_t>(g)];
     os << "  " << group.name << " (" << TrussKindName(group.kind) << ", " << group.members.size()
        << " members): " << Format("%.6g", d.sizing.group_areas[g])
-       << Format(", %.6g", m.density * d.sizing.group_areas[g] * group.length_sum) << "\n";
+       << Format(", %.6g", MassOfArea(m.density, d.sizing.group_areas[g], group.length_sum))
+       << "\n";
   }
   if (m.num_prestress() > 0) os << PrestressLine(d);
   for (const TrussLimitCheck& l : d.check.displacements) {

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/material.h"
+#include "core/member_area.h"
 #include "dynamics/modal_sensitivity.h"
 
 namespace tbridge {
@@ -166,7 +167,7 @@ DynamicModel MovedModel(const HeldModel& held, const std::vector<double>& a,
   const RowMembers& r = held.members;
   for (int j = 0; j < r.bars; ++j) {
     const size_t k = static_cast<size_t>(j);
-    m.bars.mass[k] += r.bar_density * (a[k] - held.area[k]) * r.length[k];
+    m.bars.mass[k] += MassOfArea(r.bar_density, a[k] - held.area[k], r.length[k]);
   }
   std::vector<double> added(m.strings.size(), 0.0);
   for (size_t q = 0; q < m.strings.size(); ++q) {
@@ -176,12 +177,12 @@ DynamicModel MovedModel(const HeldModel& held, const std::vector<double>& a,
     const double s = (m.positions.col(m.strings.j[q]) - m.positions.col(m.strings.i[q])).norm();
     const double k0 = m.strings.stiffness[q];
     const double tension = k0 * (s - m.strings.rest_length[q]) + df;
-    const double k1 = k0 + (r.string_modulus * da + df) / r.length[k];
+    const double k1 = k0 + TautStringStiffness(r.string_modulus, da, df, r.length[k]);
     if (!(k1 > 0)) throw ModelError("a string's stiffness falls to zero");
     m.strings.stiffness[q] = k1;
     m.strings.rest_length[q] = s - tension / k1;
     m.strings.area[q] = a[k];
-    added[q] = r.string_density * da * r.rest_length[k];
+    added[q] = MassOfArea(r.string_density, da, r.rest_length[k]);
     m.strings.mass[q] += added[q];
   }
   ForEachStringMassShare(m, ModelOptions{}.string_mass, [&](int q, int node, int bar, int count) {
