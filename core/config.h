@@ -70,6 +70,9 @@ struct DesignConfig {
   // design passes with the prestress at its highest and its lowest so made
   // (design/prestress_states.h).
   double rest_length_tolerance = 0.0;
+  // [B]: a design whose estimated peak memory (verify/memory_estimate.h) exceeds this is refused
+  // before any work. Absent: the memory available when the design starts (MemAvailable).
+  std::optional<double> memory_limit_bytes;
 };
 
 // The actions on a designed bridge and how they combine (EN 1990 6.4.3.2 and 6.5.3), each

@@ -396,6 +396,18 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                    "lengths as designed. "
                    "Not with the paper's one case"},
            d.rest_length_tolerance, Range{0.0, 0.1, false, true});
+  v.OptionalNumber(
+      KeyInfo{"memory_limit_bytes", "B",
+              "the most memory a design may take: one whose estimated peak (members x "
+              "combinations x states of the prestress, about fourfold per level of `bridge.n`: "
+              "the static check's solutions, the verified sizing's rows) is over it is refused "
+              "before any work, exit 2, naming the estimate (`tbridge sweep`: the candidate is "
+              "not designed, its note says why). Null: the memory available when the design "
+              "starts (`MemAvailable` of /proc/meminfo; no limit where that cannot be read). The "
+              "estimate is a little above the peaks measured at n <= 6 and grows 4x per level "
+              "beyond, an upper bound there (docs/verified_sizing.md, \"Memory\")",
+              false, nullptr, "the memory available"},
+      d.memory_limit_bytes, Range::Positive(), Absent::kNull);
 }
 
 template <class L, class V>

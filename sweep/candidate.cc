@@ -9,6 +9,7 @@
 #include "dynamics/model.h"
 #include "sweep/first_frequency.h"
 #include "verify/dynamic_check.h"
+#include "verify/memory_estimate.h"
 #include "verify/verified_design.h"
 
 namespace tbridge {
@@ -167,6 +168,17 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
   row.candidate = candidate;
   try {
     const Config config = CandidateConfig(spec, candidate);
+    // A candidate whose verified design would exceed design.memory_limit_bytes is a row not
+    // designed, its note the refusal, and the grid goes on: the other candidates are what the
+    // sweep is for, and `tbridge design` refuses the same config with exit 2.
+    if (sw.verified) {
+      if (std::string refusal = MemoryRefusal(config); !refusal.empty()) {
+        row.ok = false;
+        row.note = std::move(refusal);
+        row.feasible = false;
+        return row;
+      }
+    }
     // As tbridge design: an unstable candidate is no design (its note says why).
     Design design = sw.verified ? DesignAndVerify(config) : RunDesign(config);
     RequireStable(design);

@@ -14,6 +14,7 @@
 #include "tools/output.h"
 #include "truss/truss_design.h"
 #include "truss/truss_report.h"
+#include "verify/memory_estimate.h"
 #include "verify/verified_design.h"
 
 namespace tbridge::cli {
@@ -71,6 +72,9 @@ int RunDesignCommand(const std::vector<std::string>& args) {
                      ? std::string("the design of the structure")
                      : "the design of the bridge at n = " + std::to_string(config.bridge.n));
   if (config.structure) return RunStructureDesign(config, parsed, out_path);
+  // Before anything is staged: a design too large for the memory is refused at once (exit 2),
+  // not found an hour later to be an out-of-memory (exit 4), and OUT.json is left as it was.
+  RefuseOverMemoryLimit(config);
   // Staged before the design, so an output that cannot be written fails at once; nothing
   // replaces OUT.json before Commit().
   OutputTransaction outputs;

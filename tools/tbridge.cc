@@ -156,12 +156,14 @@ int main(int argc, char** argv) {
   } catch (const tbridge::ModelError& e) {
     return Fail(e.what(), kExitNoDesign);
   } catch (const std::bad_alloc&) {
-    // The limits checked before a run (dynamics.limits) keep configs from getting here; a
-    // design's size is not estimated beforehand, so this names where the memory ran out.
+    // The limits checked before a run (dynamics.limits, design.memory_limit_bytes) keep most
+    // configs from getting here; an estimate under the memory can still be wrong, or the memory
+    // taken by others meanwhile, so this names where the memory ran out: the stage and n.
     const std::string where = tbridge::WorkInProgress();
     return Fail("out of memory" + (where.empty() ? std::string() : " in " + where) +
                     ": a bridge's sizing and checks grow about fourfold per level of bridge.n; a "
-                    "smaller bridge.n, or a machine with more memory",
+                    "smaller bridge.n, or a machine with more memory (design.memory_limit_bytes "
+                    "refuses a design before its work where its estimate is over the limit)",
                 kExitOther);
   } catch (const std::exception& e) {
     return Fail(e.what(), kExitOther);
