@@ -143,7 +143,8 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
                                std::to_string(record.trials.size() + 1) + "): ");
     }
     try {
-      const Design d = DesignAndVerify(at, progress, NearestStart(starts, beta));
+      const Design d =
+          DesignAndVerify(at, progress, NearestStart(starts, beta), PieceBelowTrial::kNotTried);
       const Verdict verdict = DesignVerdict(d);
       t.mass_kg = d.mass.structure;
       t.pass = verdict.pass;
@@ -182,7 +183,8 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
   GoldenSection(record, best->beta_deg, span / steps, trial);
   ChooseAngle(record);
   // The design at the angle chosen, with the config's own solver settings: the same design as
-  // the config with that angle given.
+  // the config with that angle given, the only one of the search that tries a binding comfort
+  // row's piece below (the trials' masses are their first runs').
   Config chosen = config;
   chosen.bridge.beta_auto = false;
   chosen.bridge.beta_deg = record.chosen_deg;

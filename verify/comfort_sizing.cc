@@ -266,7 +266,7 @@ ComfortRow ComfortRowOf(const Design& d, const DynamicModel& model, const Mode& 
 }
 
 std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
-                                      const std::set<std::string>& below) {
+                                      const std::set<std::string>& below, BelowPassing passing) {
   std::vector<ComfortRow> out;
   if (!d.config.comfort.sizing_constraint || !a.check.done) return out;
   // Each row follows its mode (ComfortRow::follow) from the models it was found in.
@@ -317,7 +317,7 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
     std::ostringstream what;
     what << m.direction << " mode " << m.index << " (" << m.frequency_hz << " Hz crowded, "
          << m.frequency_empty_hz << " Hz empty, " << (m.pass ? "passes" : "fails") << ")";
-    if (below.count(name) != 0) {
+    if (below.count(name) != 0 && !(m.pass && passing == BelowPassing::kHeldInItsWindow)) {
       // The piece below: the mode held under its top, on its empty frequency where it has one
       // (the higher of the two), as the sizing that tries it asks (ComfortRowsOf).
       if (const std::optional<double> top = PieceBelow(m, a.check, d)) {

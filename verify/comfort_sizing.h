@@ -32,9 +32,14 @@ namespace tbridge {
 // direction and rank among the modes of that direction: "vertical 1", as ComfortRow::key begins)
 // is held under the top of the passing piece below the one it is in or sent up to, where there is
 // one (the sizing tries that piece when the mode's row binds, and keeps the lighter passing
-// design); its row is marked `below`. Changes nothing.
+// design); its row is marked `below`. With `passing` kHeldInItsWindow (the trial's later
+// sizings) such a mode that passes is held in the window it reached, as any passing mode: sent
+// below it again, it went on to the next piece down (the cables footbridge's vertical 1, passing
+// at 2.63 Hz, was asked for 1.06 Hz, and the trial's next sizing weighed 16 t). Changes nothing.
+enum class BelowPassing { kSentBelow, kHeldInItsWindow };
 std::vector<ComfortRow> ComfortRowsOf(const Design& design, const ComfortAnalysis& analysis,
-                                      const std::set<std::string>& below = {});
+                                      const std::set<std::string>& below = {},
+                                      BelowPassing passing = BelowPassing::kSentBelow);
 
 // How far the last sizing's comfort rows foretold the design it gave, and the outer correction of
 // the next rows: each row of `next` (built from that design's modes) whose mode the last sizing
