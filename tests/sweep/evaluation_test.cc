@@ -95,6 +95,33 @@ TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its n
   CHECK_THAT(skipped.note, Catch::Contains("skipped"));
 }
 
+TEST_CASE("a candidate over its memory limit is not designed, its note the refusal; the others are",
+          "[sweep]") {
+  // design.memory_limit_bytes 50 MB: the default bridge at n = 6 is estimated at 112 MB
+  // (verify/memory_estimate.h) and refused before any work; at n = 1 (21 MB) it is designed.
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"design", {{"memory_limit_bytes", 5e7}}},
+               {"sweep",
+                {{"n", {1, 6}},
+                 {"constraints",
+                  {{"bar_capacity_during_motion", false}, {"no_slack_under_service", false}}}}}};
+  const SweepSpec spec = ParseSweepSpec(root);
+  const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
+  REQUIRE(grid.size() == 2);
+  const CandidateRow small = EvaluateCandidate(spec, grid[0]);
+  const CandidateRow large = EvaluateCandidate(spec, grid[1]);
+  REQUIRE(small.candidate.n == 1);
+  REQUIRE(large.candidate.n == 6);
+  CHECK(small.ok);
+  CHECK(small.structure > 0);
+  CHECK_FALSE(large.ok);
+  CHECK_FALSE(large.feasible);
+  CHECK(large.structure == 0);  // nothing was designed
+  CHECK_THAT(large.note, Catch::Contains("'design.memory_limit_bytes' = 5e+07") &&
+                             Catch::Contains("bridge.n = 6") &&
+                             Catch::Contains("would take an estimated"));
+}
+
 TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass",
           "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}},
