@@ -31,6 +31,11 @@ constexpr double kBytesPerMember = 60e3;
 // Per entry, a member in a combination in a state of the prestress [B]: the static check's
 // solutions and reactions, the sizing program's rows, margins and forces.
 constexpr double kBytesPerEntry = 750.0;
+// Per member of a design checked as designed, not resized (the paper's switches: the
+// `"paper"` case alone) [B]: no sizing program, no designs kept. The paper's design at n = 12,
+// 14 and 16 peaks at 36.7, 124 and 463 MB of 2^20 B, 1.8 kB per member over the 8.6 MB it
+// takes at n = 3; 1.5 kB with the entry's 750 B puts the estimate 1.25 times above at n = 16.
+constexpr double kBytesPerMemberChecked = 1.5e3;
 // Rows posed per member and state in the verified sizing's program: its closest strength row,
 // and its taut or serviceability row (verify/verified_design.cc, NearLimits).
 constexpr double kPosedRowsPerMember = 2.0;
@@ -69,8 +74,11 @@ MemoryEstimate EstimateDesignMemory(const Config& config) {
   e.combinations = CombinationsOf(config, topology);
   e.states = static_cast<long long>(PrestressStatesOf(config).size());
   e.entries = e.members * e.combinations * e.states;
-  e.model_bytes = kBytesPerMember * static_cast<double>(e.members);
+  e.sized = !KeepsPaperSwitches(config);
+  e.model_bytes =
+      (e.sized ? kBytesPerMember : kBytesPerMemberChecked) * static_cast<double>(e.members);
   e.work_bytes = kBytesPerEntry * static_cast<double>(e.entries);
+  if (!e.sized) return e;
   // Dense: every posed row reads every variable (an area per mirror group, at most half the
   // members plus the middle ones, and the symmetric self-stresses).
   const double rows = kPosedRowsPerMember * static_cast<double>(e.members * e.states);

@@ -34,6 +34,7 @@ struct MemoryEstimate {
   long long combinations = 0;  // c: cases, a travelling family once per loaded station
   long long states = 0;        // s: the prestress's states the design must pass in
   long long entries = 0;       // m·c·s
+  bool sized = true;           // resized by the verified sizing; false: checked as designed
   double process_bytes = 0;    // [B] the process before the work: code, libraries
   double model_bytes = 0;      // [B] the models and the designs kept: members x cost
   double work_bytes = 0;       // [B] the checks' solutions and the sizing's rows: entries x cost
@@ -41,7 +42,9 @@ struct MemoryEstimate {
   double total_bytes() const { return process_bytes + model_bytes + work_bytes + jacobian_bytes; }
 };
 
-// The estimate of a bridge config's verified design (tbridge design); throws ConfigError where
+// The estimate of a bridge config's verified design (tbridge design): with the paper's switches
+// (KeepsPaperSwitches) the design is checked as designed, not resized, and costs no sizing
+// program and less per member. Throws ConfigError where
 // the config's bridge cannot be built (as the design would). A `structure` config is a small
 // program of its own (truss/): its estimate is the process alone.
 MemoryEstimate EstimateDesignMemory(const Config& config);
