@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -24,6 +26,15 @@ constexpr const char* NameIn(const std::array<Named<E>, N>& table, E value) {
     if (n.value == value) return n.name;
   }
   return "";
+}
+
+// The value `text` names in `table`; nullopt when no entry spells it.
+template <class E, std::size_t N>
+constexpr std::optional<E> ValueIn(const std::array<Named<E>, N>& table, std::string_view text) {
+  for (const Named<E>& n : table) {
+    if (text == n.name) return n.value;
+  }
+  return std::nullopt;
 }
 
 // A choice key whose field is an enum: the visitor (core/config_visitors.h) sees the text, so

@@ -193,7 +193,8 @@ Verdict DesignVerdict(const Design& d) {
   std::vector<std::string> fails, not_done;
   if (worst) {
     v.utilisation_max = worst->utilisation;
-    v.governing = "member " + worst->name + " (" + worst->mode + ", " + worst->governing_case + ")";
+    v.governing =
+        "member " + worst->name + " (" + NameOf(worst->mode) + ", " + worst->governing_case + ")";
     if (worst->utilisation > 1.0 + 1e-9) {
       std::ostringstream os;
       os << "utilisation " << worst->utilisation << " > 1 in " << v.governing;
@@ -381,22 +382,22 @@ void Utilise(MemberSizing& m, double largest, double smallest, const BarRule& ru
     const double u_yield = cap.yield > 0 ? largest / cap.yield : 0.0;
     const double u_buckling = cap.buckling > 0 ? largest / cap.buckling : 0.0;
     if (u_buckling > u_yield) {
-      Govern(m, largest, cap.buckling, "buckling");
+      Govern(m, largest, cap.buckling, LimitMode::kBuckling);
     } else {
-      Govern(m, largest, cap.yield, "yield");
+      Govern(m, largest, cap.yield, LimitMode::kYield);
     }
     // A bar pulled in some case (the paper's designs; the minimum-mass program keeps bars in
     // compression): at least 1, the tension over the largest compression above it.
     if (smallest < 0) {
       const double scale = std::max(largest, 1.0), tension = 1.0 + (-smallest) / scale;
       if (tension > m.utilisation) {
-        Govern(m, scale - smallest, scale, "tension");
+        Govern(m, scale - smallest, scale, LimitMode::kTension);
       } else {
-        m.mode = "tension";
+        m.mode = LimitMode::kTension;
       }
     }
   } else {
-    Govern(m, largest, m.area * sigma_w, smallest < 0 ? "slack" : "yield");
+    Govern(m, largest, m.area * sigma_w, smallest < 0 ? LimitMode::kSlack : LimitMode::kYield);
   }
 }
 
@@ -455,7 +456,7 @@ double SizeMembers(Design& d, const DesignInputs& in, const BarRule& rule, const
   for (int b = 0; b < nb; ++b) {
     MemberSizing m =
         SizeBar(s.Length(s.bars[b]), largest[b], settings.bar_min_area[b], rule, settings.bars);
-    if (floor(b) > 0 && m.area == floor(b)) m.governed_by = "resized";
+    if (floor(b) > 0 && m.area == floor(b)) m.governed_by = LimitMode::kResized;
     m.kind = MemberKind::kBar;
     m.i = s.bars[b].i;
     m.j = s.bars[b].j;
@@ -468,7 +469,8 @@ double SizeMembers(Design& d, const DesignInputs& in, const BarRule& rule, const
   for (int k = 0; k < s.num_strings(); ++k) {
     MemberSizing m = SizeString(s.Length(s.strings[k]), largest[nb + k], reference_forces[nb + k],
                                 std::max(in.string_min_area[k], floor(nb + k)), settings.strings);
-    if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k)) m.governed_by = "resized";
+    if (floor(nb + k) > in.string_min_area[k] && m.area == floor(nb + k))
+      m.governed_by = LimitMode::kResized;
     m.kind = StringKind(s.strings[k]);
     m.i = s.strings[k].i;
     m.j = s.strings[k].j;
@@ -563,7 +565,7 @@ void UtiliseMembers(Design& d, const MinMassSolution& solution, const BarRule& r
     Utilise(m, largest[j], least[j], rule, sigma_w, settings.bars.youngs_modulus);
     m.force_min = least[j];
     m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);
-    if (m.mode == "slack" || m.mode == "tension")
+    if (m.mode == LimitMode::kSlack || m.mode == LimitMode::kTension)
       m.governing_case = CaseLabel(d.cases, d.actions, env.min[j]);
   }
 }

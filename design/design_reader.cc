@@ -5,8 +5,10 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -15,6 +17,7 @@
 #include "design/design_loads.h"
 #include "design/design_report.h"
 #include "design/equilibrium.h"
+#include "design/limit_mode.h"
 #include "statics/static_solve.h"
 
 namespace tbridge {
@@ -133,16 +136,29 @@ void RequireDeck(const json& file, const Deck& deck) {
   }
 }
 
+// file[key] as the mode its text names, kNone when it is absent or null; anything else that
+// names no mode is a ConfigError naming the key, the value and the texts tbridge writes.
+LimitMode ModeIn(const json& j, const char* key, const std::string& where) {
+  if (!j.contains(key) || j.at(key).is_null()) return LimitMode::kNone;
+  const json& v = j.at(key);
+  if (v.is_string()) {
+    if (const std::optional<LimitMode> mode = LimitModeNamed(v.get<std::string>())) return *mode;
+  }
+  std::vector<std::string> allowed;
+  for (const Named<LimitMode>& n : kLimitModeNames) allowed.emplace_back(n.name);
+  throw ConfigError(where + "." + key, Show(v), "must be one of " + ChoiceText(allowed));
+}
+
 // Whether a bar's area was edited: a bar has no stiffness or rest length that would tell, but
 // its resistance in the file (`m.resistance`, of its governing `m.mode`) is what its check found
 // at the area it was designed with (yield A sigma_w, buckling chi A f_y / gamma_M1, a run's peak
 // against the smaller of the two); 1e-9 relative allows the file's digits and no real edit.
 bool BarAreaEdited(const MemberSizing& m, const BarRule& rule, double youngs_modulus) {
   const BarCapacity cap = BarResistance(m.area, m.length, rule, youngs_modulus);
-  const double now = m.mode == "yield"      ? cap.yield
-                     : m.mode == "buckling" ? cap.buckling
-                     : m.mode == "dynamic"  ? std::min(cap.yield, cap.buckling)
-                                            : std::numeric_limits<double>::quiet_NaN();
+  const double now = m.mode == LimitMode::kYield      ? cap.yield
+                     : m.mode == LimitMode::kBuckling ? cap.buckling
+                     : m.mode == LimitMode::kDynamic  ? std::min(cap.yield, cap.buckling)
+                                                      : std::numeric_limits<double>::quiet_NaN();
   return m.resistance > 0 && std::isfinite(now) &&
          std::abs(now - m.resistance) > 1e-9 * m.resistance;
 }
@@ -395,7 +411,7 @@ MemberSizing ReadMember(const json& file, int k, const Structure& s,
   RequireSection(j, m, mat, bar, where);
   // Its governing finding as written (check recomputes it): written again, as WithAreas writes a
   // design, its resistance still tells an edited bar.
-  m.mode = j.contains("mode") && j.at("mode").is_string() ? j.at("mode").get<std::string>() : "";
+  m.mode = ModeIn(j, "mode", where);
   m.resistance = j.contains("resistance") && j.at("resistance").is_number()
                      ? j.at("resistance").get<double>()
                      : 0.0;
@@ -403,7 +419,7 @@ MemberSizing ReadMember(const json& file, int k, const Structure& s,
   m.force = m.reference_force;
   m.force_density = m.force / m.length;
   m.stress = m.area > 0 ? m.force / m.area : 0.0;
-  m.governed_by = j.value("governed_by", "");
+  m.governed_by = ModeIn(j, "governed_by", where);
   return m;
 }
 

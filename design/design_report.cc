@@ -229,20 +229,27 @@ json AttributionJson(const Design& d) {
 std::string ClauseOf(const MemberSizing& m, const Config& config) {
   const bool bar = m.kind == MemberKind::kBar;
   const bool euler = config.design.bar_resistance == "euler";
-  const std::string& mode = m.mode;
-  if (mode == "slack" || mode == "taut" || mode == "reference_taut")
-    return "taut under service (tbridge)";
-  if (mode == "tension") return "bar in tension (tbridge)";
-  if (mode == "deflection") return "EN 1990 A2.4.1 (deflection), stiffness";
-  if (mode == "buckling") return euler ? "Euler load (paper eq. 46)" : "EN 1993-1-1 6.3.1";
-  if (mode == "yield") return bar ? "EN 1993-1-1 6.2.4" : StringMaterial(config).TensionClause();
-  if (mode == "serviceability")
-    return StringMaterial(config).ServiceClause() + std::string(", characteristic combination");
-  if (mode == "dynamic") {
-    if (!bar) return StringMaterial(config).TensionClause() + std::string(" at the run's peak");
-    return euler ? "Euler load at the run's peak" : "EN 1993-1-1 6.2.4/6.3.1 at the run's peak";
+  switch (m.mode) {
+    case LimitMode::kSlack:
+    case LimitMode::kTaut:
+    case LimitMode::kReferenceTaut:
+      return "taut under service (tbridge)";
+    case LimitMode::kTension:
+      return "bar in tension (tbridge)";
+    case LimitMode::kDeflection:
+      return "EN 1990 A2.4.1 (deflection), stiffness";
+    case LimitMode::kBuckling:
+      return euler ? "Euler load (paper eq. 46)" : "EN 1993-1-1 6.3.1";
+    case LimitMode::kYield:
+      return bar ? "EN 1993-1-1 6.2.4" : StringMaterial(config).TensionClause();
+    case LimitMode::kServiceability:
+      return StringMaterial(config).ServiceClause() + std::string(", characteristic combination");
+    case LimitMode::kDynamic:
+      if (!bar) return StringMaterial(config).TensionClause() + std::string(" at the run's peak");
+      return euler ? "Euler load at the run's peak" : "EN 1993-1-1 6.2.4/6.3.1 at the run's peak";
+    default:
+      return "";
   }
-  return "";
 }
 
 void AppendMember(std::string& out, const MemberSizing& m, const Member& topology_member,
@@ -277,12 +284,12 @@ void AppendMember(std::string& out, const MemberSizing& m, const Member& topolog
   number("force", m.force);
   number("force_density", m.force_density);
   number("force_min", m.force_min);
-  text("governed_by", m.governed_by);
+  text("governed_by", NameOf(m.governed_by));
   text("governing_case", m.governing_case);
   text("group", topology_member.group);
   number("length", m.length);
   number("mass", m.mass);
-  text("mode", m.mode);
+  text("mode", NameOf(m.mode));
   text("name", m.name);
   out.append(", \"nodes\": [")
       .append(std::to_string(m.i + 1))
@@ -1006,8 +1013,8 @@ void AppendSummaryMembers(std::string& out, const Design& d, int max_member_rows
         "  %-9s %-11s %9.4f %11.2f %8.2f %9s %11s %9.4f  %-11s %11.6g %11.6g %6.3f  %s (%s; %s)",
         m.name.c_str(), KindName(m.kind), m.length, m.force, m.radius * 1e3,
         bar ? "-" : Format("%.4f", m.rest_length).c_str(),
-        bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, m.governed_by.c_str(), m.demand,
-        m.resistance, m.utilisation, m.governing_case.c_str(), m.mode.c_str(),
+        bar ? "-" : Format("%.4e", m.stiffness).c_str(), m.mass, NameOf(m.governed_by), m.demand,
+        m.resistance, m.utilisation, m.governing_case.c_str(), NameOf(m.mode),
         ClauseOf(m, d.config).c_str()));
   }
   if (shown < rows.size()) {

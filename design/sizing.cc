@@ -63,10 +63,10 @@ MemberSizing SizeString(double length, double tension, double reference_tension,
   // solver's tolerance on that bound.
   if (min_area > 0 && yield_area <= min_area * (1 + 1e-9)) {
     s.area = min_area;
-    s.governed_by = "min_radius";
+    s.governed_by = LimitMode::kMinRadius;
   } else {
     s.area = yield_area;
-    s.governed_by = "yield";
+    s.governed_by = LimitMode::kYield;
   }
   s.radius = RadiusOfArea(s.area);
   s.stress = s.area > 0 ? s.force / s.area : 0.0;
@@ -78,7 +78,7 @@ MemberSizing SizeString(double length, double tension, double reference_tension,
   return s;
 }
 
-void Govern(MemberSizing& m, double demand, double resistance, const char* mode) {
+void Govern(MemberSizing& m, double demand, double resistance, LimitMode mode) {
   m.demand = demand;
   m.resistance = resistance;
   m.utilisation = resistance > 0 ? demand / resistance : 0.0;
@@ -86,7 +86,7 @@ void Govern(MemberSizing& m, double demand, double resistance, const char* mode)
 }
 
 void RaiseUtilisation(MemberSizing& m, double demand, double resistance,
-                      const std::string& governing_case, const char* mode) {
+                      const std::string& governing_case, LimitMode mode) {
   if (!(resistance > 0) || demand / resistance <= m.utilisation) return;
   Govern(m, demand, resistance, mode);
   m.governing_case = governing_case;
@@ -163,14 +163,14 @@ MemberSizing SizeBar(double length, double compression, double min_area, const B
       rule.column_curve ? ColumnCurveArea(length, b.force, rule, m.youngs_modulus)
                         : EulerArea(length, rule.buckling_factor * b.force, m.youngs_modulus);
   b.area = yield_area;
-  b.governed_by = "yield";
+  b.governed_by = LimitMode::kYield;
   if (buckling_area > b.area) {
     b.area = buckling_area;
-    b.governed_by = "buckling";
+    b.governed_by = LimitMode::kBuckling;
   }
   if (min_area > b.area) {
     b.area = min_area;
-    b.governed_by = "min_radius";
+    b.governed_by = LimitMode::kMinRadius;
   }
   b.radius = RadiusOfArea(b.area);
   b.stress = b.area > 0 ? b.force / b.area : 0.0;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/material.h"
+#include "design/limit_mode.h"
 
 namespace tbridge {
 
@@ -23,8 +24,9 @@ struct MemberSizing {
   double rest_length = 0;    // strings: L0 = s / (1 + sigma/E) [m]; bars: length
   double stiffness = 0;      // strings: k = E A / L0 [N/m]; bars: 0 (rigid)
   double stress = 0;         // force / area [Pa]
-  std::string governed_by;   // bars: "yield" | "buckling" | "min_radius"; strings: "yield" |
-                             // "min_radius"
+  // What bounds the area: bars yield, buckling or min_radius, strings yield or min_radius as
+  // sized; resized, prestress or stiffness (or the governing mode) once resized or verified.
+  LimitMode governed_by = LimitMode::kNone;
   // The force of the reference state (design/design.h), which sets the rest length [N].
   double reference_force = 0;
   double force_min = 0;    // smallest force over every case [N]; < 0: slack or in tension
@@ -35,8 +37,8 @@ struct MemberSizing {
   // (working strain - strain) and the working strain sigma_w / E instead.
   double demand = 0;
   double resistance = 0;
-  std::string governing_case;  // the case of that largest utilisation
-  std::string mode;            // "yield" | "buckling" | "slack" | "tension" | "dynamic"
+  std::string governing_case;         // the case of that largest utilisation
+  LimitMode mode = LimitMode::kNone;  // yield, buckling, slack, tension, dynamic, or a row's
 };
 
 // String working at its material's design stress under `tension`, or at the minimum area when
@@ -55,11 +57,11 @@ struct BarRule {
 };
 
 // Sets m's utilisation to demand / resistance (0 for a resistance of 0), with both and `mode`.
-void Govern(MemberSizing& m, double demand, double resistance, const char* mode);
+void Govern(MemberSizing& m, double demand, double resistance, LimitMode mode);
 // Raises m's utilisation to demand / resistance when that is larger, naming where
 // (`governing_case`) and how.
 void RaiseUtilisation(MemberSizing& m, double demand, double resistance,
-                      const std::string& governing_case, const char* mode);
+                      const std::string& governing_case, LimitMode mode);
 
 // chi(lambda) of EN 1993-1-1 eq 6.49: Phi = 0.5 [1 + alpha (lambda - 0.2) + lambda^2],
 // chi = 1 / (Phi + sqrt(Phi^2 - lambda^2)), at most 1.

@@ -93,31 +93,32 @@ std::vector<int> MirrorGroups(const Structure& s, double span) {
   return group;
 }
 
-const char* SizingRowKindName(SizingRow::Kind kind) {
+LimitMode ModeOfRow(SizingRow::Kind kind) {
   switch (kind) {
     case SizingRow::kStrength:
-      return "yield";
-    case SizingRow::kBuckling:
-      return "buckling";
     case SizingRow::kYield:
-      return "yield";
+      return LimitMode::kYield;
+    case SizingRow::kBuckling:
+      return LimitMode::kBuckling;
     case SizingRow::kTaut:
-      return "taut";
+      return LimitMode::kTaut;
     case SizingRow::kDeflectionDown:
     case SizingRow::kDeflectionUp:
-      return "deflection";
+      return LimitMode::kDeflection;
     case SizingRow::kReferenceTaut:
-      return "reference_taut";
+      return LimitMode::kReferenceTaut;
     case SizingRow::kServiceStress:
-      return "serviceability";
+      return LimitMode::kServiceability;
     case SizingRow::kSupportHorizontal:
     case SizingRow::kSupportVertical:
-      return "supports";
+      return LimitMode::kSupports;
     case SizingRow::kComfort:
       break;
   }
-  return "comfort";
+  return LimitMode::kComfort;
 }
+
+const char* SizingRowKindName(SizingRow::Kind kind) { return NameOf(ModeOfRow(kind)); }
 
 struct SizingProblem::Impl {
   // The model: constant once built.

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "design/design.h"
+#include "design/limit_mode.h"
 #include "design/nlp.h"
 #include "design/prestress_states.h"
 
@@ -115,6 +116,9 @@ struct SizingRow {
   // designed); `combination` is that state's.
   int state = 0;
 };
+// The mode a row of `kind` limits (yield for both strength rows, deflection for both
+// directions, supports for both components), and its text.
+LimitMode ModeOfRow(SizingRow::Kind kind);
 const char* SizingRowKindName(SizingRow::Kind kind);
 
 // One combination of a case and (for a travelling family) a station.

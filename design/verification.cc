@@ -33,7 +33,7 @@ const char* CheckStatusName(CheckStatus status) {
 }
 
 void RaiseFinding(MemberFinding& f, double demand, double resistance,
-                  const std::string& governing_case, const char* mode) {
+                  const std::string& governing_case, LimitMode mode) {
   const double u = demand / resistance;
   if (!(u > f.utilisation)) return;
   f.utilisation = u;
@@ -46,7 +46,7 @@ void RaiseFinding(MemberFinding& f, double demand, double resistance,
 void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress,
                        double youngs_modulus, const std::string& governing_case) {
   const double working_strain = working_stress / youngs_modulus;
-  RaiseFinding(f, working_strain - strain, working_strain, governing_case, "slack");
+  RaiseFinding(f, working_strain - strain, working_strain, governing_case, LimitMode::kSlack);
 }
 
 CheckStatus StaticCheck::Status() const {

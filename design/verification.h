@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "design/limit_mode.h"
+
 namespace tbridge {
 
 // What a check found: it ran and everything it checks holds, it ran and something fails, it
@@ -23,15 +25,15 @@ const char* CheckStatusName(
 // the string lacks to be taut, so utilisation = 1 + lacking / working, SlackUtilisation of
 // design/sizing.h).
 struct MemberFinding {
-  double utilisation = 0;      // 0: the check found nothing for this member
-  double demand = 0;           // [N], or the strain for "slack"
-  double resistance = 0;       // [N], or the working strain for "slack"
-  std::string governing_case;  // "uls_travelling at node 5", "dynamic: moving_load"
-  std::string mode;            // "yield" | "buckling" | "dynamic" | "slack"
+  double utilisation = 0;             // 0: the check found nothing for this member
+  double demand = 0;                  // [N], or the strain for "slack"
+  double resistance = 0;              // [N], or the working strain for "slack"
+  std::string governing_case;         // "uls_travelling at node 5", "dynamic: moving_load"
+  LimitMode mode = LimitMode::kNone;  // yield, buckling, serviceability, dynamic or slack
 };
 // Keeps the larger of `f` and the finding (utilisation, demand, resistance, case, mode).
 void RaiseFinding(MemberFinding& f, double demand, double resistance,
-                  const std::string& governing_case, const char* mode);
+                  const std::string& governing_case, LimitMode mode);
 
 // The finding of a string that must stay taut and is slack by `strain` (< 0), working at
 // `working_stress` [Pa] with modulus `youngs_modulus` [Pa] (mode "slack").

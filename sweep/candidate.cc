@@ -27,7 +27,7 @@ double GrowDeckStrings(Design& design, double ratio) {
     const double tension = mat.youngs_modulus * s.area * (1 / ratio - 1);
     const double area = std::max(s.area, tension / sigma_w);
     factor = std::max(factor, area / s.area);
-    if (area > s.area) s.governed_by = "prestress";
+    if (area > s.area) s.governed_by = LimitMode::kPrestress;
     s.area = area;
     s.radius = RadiusOfArea(area);
     s.force = tension;
@@ -47,7 +47,7 @@ void ReadDynamicCheck(const DynamicCheck& check, size_t num_bars, CandidateRow& 
   double bars = 0, strings = 0;
   for (size_t j = 0; j < check.members.size(); ++j) {
     const MemberFinding& f = check.members[j];
-    if (f.mode != "dynamic") continue;  // "slack" is counted below
+    if (f.mode != LimitMode::kDynamic) continue;  // "slack" is counted below
     double& largest = j < num_bars ? bars : strings;
     largest = std::max(largest, f.utilisation);
   }

@@ -234,9 +234,9 @@ void RaiseDynamicFinding(const Design& d, int j, const MemberSizing& m, double d
   MemberFinding& f = out.members[j];
   if (bar) {
     const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-    RaiseFinding(f, demand, std::min(cap.yield, cap.buckling), label, "dynamic");
+    RaiseFinding(f, demand, std::min(cap.yield, cap.buckling), label, LimitMode::kDynamic);
   } else {
-    if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, "dynamic");
+    if (m.area > 0) RaiseFinding(f, demand, m.area * sigma_w, label, LimitMode::kDynamic);
     const double strain = summary.min_string_strain[j - nb];
     if (strain < 0 && MustStayTaut(d, j - nb)) {
       RaiseSlackFinding(f, strain, sigma_w, strings.youngs_modulus, label);

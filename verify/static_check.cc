@@ -325,14 +325,14 @@ void RaiseUltimateFindings(const Design& d, const StaticResult& result, const Ca
     const MemberSizing& m = d.bars[b];
     const double force = result.state.bar_compression[b];
     const BarCapacity cap = BarResistance(m.area, m.length, rule, E);
-    RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, "yield");
-    if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, "buckling");
+    RaiseFinding(out.members[b], std::abs(force), cap.yield, r.label, LimitMode::kYield);
+    if (force > 0) RaiseFinding(out.members[b], force, cap.buckling, r.label, LimitMode::kBuckling);
   }
   for (size_t k = 0; k < d.strings.size(); ++k) {
     const MemberSizing& m = d.strings[k];
     if (m.area > 0)
       RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_w, r.label,
-                   "yield");
+                   LimitMode::kYield);
   }
 }
 
@@ -347,7 +347,7 @@ void RaiseServiceFindings(const Design& d, const StaticResult& result, const Cas
     const MemberSizing& m = d.strings[k];
     if (m.area > 0) {
       RaiseFinding(out.members[nb + k], result.state.string_tension[k], m.area * sigma_ser, r.label,
-                   "serviceability");
+                   LimitMode::kServiceability);
     }
   }
   for (size_t k = 0; k < d.strings.size(); ++k) {

@@ -44,8 +44,7 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
     for (int j = 0; j < static_cast<int>(found->size()); ++j) {
       const MemberFinding& f = (*found)[j];
       MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
-      if (f.utilisation > 0)
-        RaiseUtilisation(m, f.demand, f.resistance, f.governing_case, f.mode.c_str());
+      if (f.utilisation > 0) RaiseUtilisation(m, f.demand, f.resistance, f.governing_case, f.mode);
     }
   }
   d.statics = std::move(statics);
@@ -152,7 +151,7 @@ void CheckAgain(Design& design, ProgressReporter* progress) {
   for (auto* list : {&design.bars, &design.strings}) {
     for (MemberSizing& m : *list) {
       m.utilisation = m.demand = m.resistance = 0;
-      m.mode.clear();
+      m.mode = LimitMode::kNone;
       m.governing_case.clear();
     }
   }
@@ -174,7 +173,7 @@ std::vector<double> MendedAreas(const Design& d, const std::vector<int>& group_o
     areas[j] = m.area;
     double needed = m.area;
     if (m.utilisation > 1) {
-      if (m.mode == "slack" || !(m.demand > 0)) return {};
+      if (m.mode == LimitMode::kSlack || !(m.demand > 0)) return {};
       const double target = m.demand * (1 + kMargin);
       if (j >= nb) {
         needed = m.area * m.utilisation * (1 + kMargin);
@@ -183,7 +182,9 @@ std::vector<double> MendedAreas(const Design& d, const std::vector<int>& group_o
         // faster), so the area lies between its own and the ratio's.
         const auto resistance = [&](double area) {
           const BarCapacity c = BarResistance(area, m.length, rule, bar_modulus);
-          return m.mode == "yield" || m.mode == "tension" ? c.yield : std::min(c.yield, c.buckling);
+          return m.mode == LimitMode::kYield || m.mode == LimitMode::kTension
+                     ? c.yield
+                     : std::min(c.yield, c.buckling);
         };
         double lo = m.area, hi = m.area * m.utilisation * (1 + kMargin) * 1.01;
         if (resistance(hi) < target) return {};
@@ -231,14 +232,14 @@ void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd
     if (dm.row >= 0) {
       const SizingRow& row = problem.rows()[dm.row];
       m.force = std::max(dm.demand, 0.0);
-      Govern(m, std::max(dm.demand, 0.0), dm.resistance, SizingRowKindName(row.kind));
+      Govern(m, std::max(dm.demand, 0.0), dm.resistance, ModeOfRow(row.kind));
       m.governing_case = problem.RowLabel(dm.row);
     }
     // What sizes it: its floor (within the solver's tolerance), its own strength where that
     // is used up, else the stiffness it gives (the deflection and taut-string rows).
-    m.governed_by = m.area <= floor[j] * (1 + 1e-6) ? "min_radius"
+    m.governed_by = m.area <= floor[j] * (1 + 1e-6) ? LimitMode::kMinRadius
                     : m.utilisation >= 1 - 1e-3     ? m.mode
-                                                    : "stiffness";
+                                                    : LimitMode::kStiffness;
   }
 }
 
@@ -617,7 +618,7 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
     const MemberSizing& m = static_cast<int>(j) < nb ? d.bars[j] : d.strings[j - nb];
     double checked = 0;
     for (const MemberFinding* f : {&statics.members[j], &dynamics.members[j]}) {
-      if (f->mode == "slack") {
+      if (f->mode == LimitMode::kSlack) {
         corrections.taut_margin_n[j] +=
             string_modulus * m.area * (f->demand - f->resistance) * 1.05;
         ++taut;

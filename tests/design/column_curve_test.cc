@@ -47,7 +47,7 @@ TEST_CASE("column-curve sizing gives the least area that carries the force") {
   // A slender bar (3 m, 100 kN: lambda 3.8) so buckling governs.
   const double length = 3.0, force = 1e5;
   const MemberSizing b = SizeBar(length, force, 0.0, rule, BarMaterial(steel, 1.1));
-  CHECK(b.governed_by == "buckling");
+  CHECK(b.governed_by == LimitMode::kBuckling);
   const double carried = BarResistance(b.area, length, rule, steel.youngs_modulus).buckling;
   // The bisection stops at a 1e-15 relative bracket in area; the resistance grows like A^2
   // at most, so it lands within a few 1e-15 of the force, above it.

@@ -43,7 +43,7 @@ TEST_CASE("cable strings are sized, weighed and stiffened as the hand calculatio
   for (const MemberSizing& m : d.strings) {
     INFO("string " << m.name);
     // 1e-12: the sizer divides once and the design writes what it computed; only rounding.
-    if (m.governed_by == "yield") {
+    if (m.governed_by == LimitMode::kYield) {
       CHECK(m.area == Approx(m.force / kCableStressPa).epsilon(1e-12));
       ++yielding;
     }

@@ -142,7 +142,7 @@ TEST_CASE("Buckling governs a long, lightly loaded, steep bridge", "[design][buc
   c.design.gravity = 0.0;
   const Design d = RunDesign(c);
   const MemberSizing& bar = d.bars.at(0);
-  REQUIRE(bar.governed_by == "buckling");
+  REQUIRE(bar.governed_by == LimitMode::kBuckling);
   // By hand: bar length (L/2) tan(beta/2) = 30 tan(20 deg); it carries the whole node load.
   const double l = 30.0 * std::tan(20.0 * kPi / 180.0);
   const double C = d.deck.node_load;

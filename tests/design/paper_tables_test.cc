@@ -83,7 +83,7 @@ TEST_CASE("Tables 2-4: bar radius and mass", "[paper][tables2-4]") {
     INFO("r = " << m->radius * 1e3 << " mm, m = " << m->mass << " kg");
     CHECK(std::abs(m->radius * 1e3 - std::stod(r)) <= 0.05);  // 0.1 mm rounding (SPEC §5)
     CHECK(std::abs(m->mass - std::stod(mb)) <= PrintedTolerance(mb));
-    CHECK(m->governed_by == "yield");  // SPEC §4: buckling governs no bar in Tables 2-4
+    CHECK(m->governed_by == LimitMode::kYield);  // SPEC §4: buckling governs no bar in Tables 2-4
     ++checked;
   }
   CHECK(checked == 7);

@@ -34,7 +34,7 @@ TEST_CASE("mending gives a failing member the area its checked demand asks, its 
   const int s = nb + static_cast<int>(d.strings.size()) - 1;
   MemberSizing& string = d.strings.back();
   const double sigma_w = StringMaterial(config).DesignStress();
-  Govern(string, 1.01 * sigma_w * string.area, sigma_w * string.area, "yield");
+  Govern(string, 1.01 * sigma_w * string.area, sigma_w * string.area, LimitMode::kYield);
   // A bar over its buckling resistance by 2 %.
   const int b = 0;
   MemberSizing& bar = d.bars[b];
@@ -42,7 +42,7 @@ TEST_CASE("mending gives a failing member the area its checked demand asks, its 
   const double E = BarMaterial(config).youngs_modulus;
   const BarCapacity c = BarResistance(bar.area, bar.length, rule, E);
   const double resistance = std::min(c.yield, c.buckling);
-  Govern(bar, 1.02 * resistance, resistance, "buckling");
+  Govern(bar, 1.02 * resistance, resistance, LimitMode::kBuckling);
   const double string_area = string.area, bar_area = bar.area, bar_demand = bar.demand;
 
   int mended = 0;
@@ -71,7 +71,7 @@ TEST_CASE("mending gives a failing member the area its checked demand asks, its 
     CHECK(areas[j] == Approx(m.area).epsilon(1e-12));
   }
   // A taut string gone slack is no matter of area: nothing is mended.
-  Govern(string, 2e-4, 1e-4, "slack");
+  Govern(string, 2e-4, 1e-4, LimitMode::kSlack);
   CHECK(MendedAreas(d, group_of, &mended).empty());
 }
 

@@ -61,7 +61,7 @@ TEST_CASE("a cable bridge is sized to its strings' serviceability stress", "[ver
   double most = 0;
   for (size_t k = 0; k < d.strings.size(); ++k) {
     const MemberFinding& f = d.statics.members[static_cast<size_t>(nb) + k];
-    if (f.mode == "serviceability" && f.utilisation > most)
+    if (f.mode == LimitMode::kServiceability && f.utilisation > most)
       most = f.utilisation, governing = static_cast<int>(k);
   }
   REQUIRE(governing >= 0);

@@ -25,8 +25,8 @@ TEST_CASE(
   bool deck_slack = false;
   for (int k = 0; k < static_cast<int>(d.strings.size()); ++k) {
     const MemberSizing& m = d.strings[k];
-    INFO("string " << m.name << ": " << m.mode << " " << m.utilisation);
-    if (m.mode != "slack") continue;
+    INFO("string " << m.name << ": " << NameOf(m.mode) << " " << m.utilisation);
+    if (m.mode != LimitMode::kSlack) continue;
     // Only a string that must stay taut is failed for going slack, and then by more than 1.
     CHECK(MustStayTaut(d, k));
     CHECK(m.utilisation > 1.0);

@@ -45,11 +45,11 @@ void CheckAgainstHandStatics(const Config& config, const std::string& governs) {
   }
   const double yield = area * sigma_w;
   INFO("bar: demand " << found.demand << " N (f = " << f << "), resistance " << found.resistance
-                      << " N (" << found.mode << "); yield " << yield << ", buckling " << buckling
-                      << " N");
+                      << " N (" << NameOf(found.mode) << "); yield " << yield << ", buckling "
+                      << buckling << " N");
   CHECK(bar.length == Approx(l).epsilon(1e-12));  // the drawn geometry, to round-off
   CHECK(found.demand == Approx(f).epsilon(tol));
-  CHECK(found.mode == governs);
+  CHECK(NameOf(found.mode) == governs);
   CHECK(found.resistance == Approx(governs == "yield" ? yield : buckling).epsilon(tol));
   // Sized to its governing resistance under this one load: utilisation 1.
   CHECK(found.utilisation == Approx(1.0).epsilon(tol));

@@ -63,7 +63,7 @@ TEST_CASE("the verified design is locally minimal: a lighter member group fails 
       if (group[j] != g) continue;
       const MemberSizing& m = static_cast<int>(j) < nb ? d.bars[j] : d.strings[j - nb];
       group_mass += m.mass;
-      at_floor = at_floor || m.governed_by == "min_radius";
+      at_floor = at_floor || m.governed_by == LimitMode::kMinRadius;
     }
     // A group at its configured minimum may not be thinner; one lighter than 0.5 % of the
     // structure cannot take 0.5 % off it.
