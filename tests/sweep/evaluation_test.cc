@@ -95,8 +95,9 @@ TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its n
   CHECK_THAT(skipped.note, Catch::Contains("skipped"));
 }
 
-TEST_CASE("a candidate over its memory limit is not designed, its note the refusal; the others are",
-          "[sweep]") {
+TEST_CASE(
+    "a candidate over its memory limit is not designed, its note the refusal, and the others are",
+    "[sweep]") {
   // design.memory_limit_bytes 50 MB: the default bridge at n = 6 is estimated at 112 MB
   // (verify/memory_estimate.h) and refused before any work; at n = 1 (21 MB) it is designed.
   json root = {{"bridge", {{"beta_deg", 10}}},
