@@ -933,10 +933,10 @@ std::optional<Eigen::VectorXd> SecondStart(const Config& config, const Design& c
 // one bound sit together in frequency and move together: the 20 m cables footbridge with its
 // prestress loss binds vertical 1 and 2 at 4.71 and 4.78 Hz, and with only vertical 1 sent down
 // vertical 2 fails where it stays (no design of that trial passed), while both sent down pass at
-// 1 212 kg against the 2 777 kg of the first run. Empty where no such row binds. 1 % of omega^2:
-// the kept design is often a mended one, or its row's target was raised by the last correction,
-// so the row it was sized by reads a little slack (the default at n = 3: 2e-3) where the polished
-// program holds it active.
+// 1 100.5 kg against the 2 777.1 kg of the first run. Empty where no such row binds. 1 % of
+// omega^2: the kept design is often a mended one, or its row's target was raised by the last
+// correction, so the row it was sized by reads a little slack (the default at n = 3: 2e-3) where
+// the polished program holds it active.
 constexpr double kBindingComfort = 1e-2;
 std::set<std::string> BindingComfortModes(const BestSizing& kept) {
   std::set<std::string> modes;
