@@ -133,7 +133,7 @@ void ApplyPaperSwitches(Config& c) {
   c.design.self_weight = false;
   c.design.yield_safety_factor = 10.0;
   c.design.buckling_safety_factor = 1.0;
-  c.design.bar_resistance = "euler";
+  c.design.bar_resistance = BarResistanceRule::kEuler;
   c.loads.cases = {"paper"};
   if (c.dynamics) {
     c.dynamics->deck_inertia = false;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/design_choices.h"
 #include "core/dynamics_config.h"
 #include "core/material.h"
 #include "core/structure_config.h"
@@ -50,7 +51,7 @@ struct DesignConfig {
   bool self_weight = true;
   // "column_curve": N <= chi(lambda) A f_y / gamma_M1 (EN 1993-1-1 6.3.1.2); "euler": the
   // paper's A >= 2 l sqrt(SF C / (pi E)) with SF = buckling_safety_factor.
-  std::string bar_resistance = "column_curve";
+  BarResistanceRule bar_resistance = BarResistanceRule::kColumnCurve;
   double imperfection_factor = 0.49;  // alpha of the column curve (curve c: solid sections)
   int max_sizings = 25;               // the verified sizing's designs at most (outer iterations)
   // The static utilisation above which the verified sizing does not run the dynamic runs on
@@ -97,7 +98,7 @@ struct LoadsConfig {
   double dynamic_max_member_steps = 2e9;
   // How the walking load runs: "modal" (verify/modal_run.h: the modes to
   // dynamic_modal_cutoff_hz, the nonlinear run where a string changes state) or "rk4".
-  std::string dynamic_method = "modal";
+  DynamicMethod dynamic_method = DynamicMethod::kModal;
   double dynamic_modal_cutoff_hz = 100.0;  // [Hz]
   // The modal run is done where the bridge's linear deck response to a station's load is within
   // this fraction of its nonlinear one; beyond it the nonlinear run.
@@ -120,11 +121,13 @@ struct LoadsConfig {
 // (2006) and HiVoSS (2008) load models, and EN 1990 A2.4.3.2's triggers and limits. Each
 // constant's source is beside it in design/pedestrian_loads.h.
 struct ComfortConfig {
-  bool check = true;                    // checked (never with the paper's switches)
-  bool sizing_constraint = true;        // the verified sizing designs to it
-  std::string traffic_class = "II";     // Sétra Stage 1: "I" | "II" | "III" | "IV"
-  std::string comfort_level = "mean";   // Sétra Stage 2: "maximum" | "mean" | "minimum"
-  std::string construction = "steel";   // the damping ratio's default (Sétra, HiVoSS 4.4.2)
+  bool check = true;                               // checked (never with the paper's switches)
+  bool sizing_constraint = true;                   // the verified sizing designs to it
+  TrafficClass traffic_class = TrafficClass::kII;  // Sétra Stage 1: "I" | "II" | "III" | "IV"
+  ComfortLevel comfort_level =
+      ComfortLevel::kMean;  // Sétra Stage 2: "maximum" | "mean" | "minimum"
+  Construction construction =
+      Construction::kSteel;             // the damping ratio's default (Sétra, HiVoSS 4.4.2)
   std::optional<double> damping_ratio;  // xi, (0, 1); absent: the construction's
   double pedestrian_mass_kg = 70.0;     // one pedestrian's mass [kg] (Sétra: 700 N)
   double vertical_trigger_hz = 5.0;     // EN 1990 A2.4.3.2(2): check below this (vertical)

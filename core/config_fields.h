@@ -300,17 +300,19 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                  "sizing until the mass changes by less than 1e-12 of itself. The paper leaves it "
                  "out (false)"},
          d.self_weight);
-  v.Choice(KeyInfo{"bar_resistance", "–",
-                   "`\"column_curve\"`: a bar of a solid circular section resists "
-                   "chi(lambda)·A·sigma_yield / "
-                   "`buckling_safety_factor` with the EN 1993-1-1 6.3.1.2 curve (Phi = 0.5[1 + "
-                   "alpha(lambda − 0.2) + "
-                   "lambda²], chi = 1/(Phi + sqrt(Phi² − lambda²)) ≤ 1, lambda = "
-                   "sqrt(A·sigma_yield/N_cr)) and A·sigma_w "
-                   "in yield. `\"euler\"`: the paper's bare Euler load. Either way the 3D bridge's "
-                   "program prices "
-                   "bars by Euler and the bars are then sized by this rule"},
-           d.bar_resistance, {"column_curve", "euler"});
+  EnumChoice(
+      v,
+      KeyInfo{"bar_resistance", "–",
+              "`\"column_curve\"`: a bar of a solid circular section resists "
+              "chi(lambda)·A·sigma_yield / "
+              "`buckling_safety_factor` with the EN 1993-1-1 6.3.1.2 curve (Phi = 0.5[1 + "
+              "alpha(lambda − 0.2) + "
+              "lambda²], chi = 1/(Phi + sqrt(Phi² − lambda²)) ≤ 1, lambda = "
+              "sqrt(A·sigma_yield/N_cr)) and A·sigma_w "
+              "in yield. `\"euler\"`: the paper's bare Euler load. Either way the 3D bridge's "
+              "program prices "
+              "bars by Euler and the bars are then sized by this rule"},
+      d.bar_resistance, kBarResistanceNames);
   v.Number(KeyInfo{"imperfection_factor", "–",
                    "alpha of the column curve: 0.49 (curve c, solid sections), 0.34 (b), 0.21 (a), "
                    "0.76 (d)"},
@@ -541,7 +543,8 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
           "setting of "
           "the check"},
       l.dynamic_max_member_steps, Range::Positive());
-  v.Choice(
+  EnumChoice(
+      v,
       KeyInfo{"dynamic_method", "–",
               "how the dynamic check runs the walking load (the `\"travelling\"` case). "
               "`\"modal\"`: by "
@@ -555,7 +558,7 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
               "run's note "
               "says why. `\"rk4\"`: the nonlinear run (RK4 at `dynamic_dt_s`) always. The paper's "
               "travelling load and the wind gust always run nonlinearly"},
-      l.dynamic_method, {"modal", "rk4"});
+      l.dynamic_method, kDynamicMethodNames);
   v.Number(KeyInfo{"dynamic_modal_cutoff_hz", "Hz",
                    "the modal run's modes: those at or below this frequency (at least the first). "
                    "A mode far "
@@ -627,30 +630,34 @@ void DescribeFields(C& c, V& v) requires std::is_same_v<std::remove_const_t<C>, 
                  "a row holding a mode above a failing band binds, the passing piece below the "
                  "band is tried too and the lighter passing design kept"},
          c.sizing_constraint);
-  v.Choice(KeyInfo{"traffic_class", "–",
-                   "Sétra Stage 1 class, and its crowd density d: `\"IV\"` seldom used (no check), "
-                   "`\"III\"` "
-                   "standard use (0.5 pedestrian/m², load case 1 in frequency range 1), `\"II\"` "
-                   "urban (0.8/m², "
-                   "case 1 in ranges 1 and 2, case 3 in range 3), `\"I\"` very dense crowds "
-                   "(1.0/m², case 2 in "
-                   "ranges 1 and 2, case 3 in range 3)"},
-           c.traffic_class, {"I", "II", "III", "IV"});
-  v.Choice(KeyInfo{"comfort_level", "–",
-                   "Sétra Stage 2 level asked for; its upper acceleration bound is a limit beside "
-                   "EN 1990's: "
-                   "`\"maximum\"` (vertical 0.5 m/s², horizontal 0.15), `\"mean\"` (1.0, 0.3), "
-                   "`\"minimum\"` "
-                   "(2.5, 0.8)"},
-           c.comfort_level, {"maximum", "mean", "minimum"});
-  v.Choice(KeyInfo{"construction", "–",
-                   "sets the structural damping ratio when `damping_ratio` is not given (Sétra; "
-                   "HiVoSS 4.4.2 "
-                   "mean values): steel 0.4 %, composite 0.6 %, prestressed concrete 1.0 %, "
-                   "reinforced concrete "
-                   "1.3 %, timber 1.0 % (HiVoSS 1.5 %)"},
-           c.construction,
-           {"steel", "composite", "prestressed_concrete", "reinforced_concrete", "timber"});
+  EnumChoice(
+      v,
+      KeyInfo{"traffic_class", "–",
+              "Sétra Stage 1 class, and its crowd density d: `\"IV\"` seldom used (no check), "
+              "`\"III\"` "
+              "standard use (0.5 pedestrian/m², load case 1 in frequency range 1), `\"II\"` "
+              "urban (0.8/m², "
+              "case 1 in ranges 1 and 2, case 3 in range 3), `\"I\"` very dense crowds "
+              "(1.0/m², case 2 in "
+              "ranges 1 and 2, case 3 in range 3)"},
+      c.traffic_class, kTrafficClassNames);
+  EnumChoice(
+      v,
+      KeyInfo{"comfort_level", "–",
+              "Sétra Stage 2 level asked for; its upper acceleration bound is a limit beside "
+              "EN 1990's: "
+              "`\"maximum\"` (vertical 0.5 m/s², horizontal 0.15), `\"mean\"` (1.0, 0.3), "
+              "`\"minimum\"` "
+              "(2.5, 0.8)"},
+      c.comfort_level, kComfortLevelNames);
+  EnumChoice(v,
+             KeyInfo{"construction", "–",
+                     "sets the structural damping ratio when `damping_ratio` is not given (Sétra; "
+                     "HiVoSS 4.4.2 "
+                     "mean values): steel 0.4 %, composite 0.6 %, prestressed concrete 1.0 %, "
+                     "reinforced concrete "
+                     "1.3 %, timber 1.0 % (HiVoSS 1.5 %)"},
+             c.construction, kConstructionNames);
   v.OptionalNumber(
       KeyInfo{
           "damping_ratio", "–",

@@ -51,8 +51,8 @@ nlohmann::json ComfortJson(const Design& d) {
           {"done", c.done},
           {"required", c.required},
           {"note", c.note},
-          {"traffic_class", c.traffic_class},
-          {"comfort_level", c.comfort_level},
+          {"traffic_class", NameOf(c.traffic_class)},
+          {"comfort_level", NameOf(c.comfort_level)},
           {"damping_ratio", c.damping_ratio},
           {"density_per_m2", c.density_per_m2},
           {"pedestrians", c.pedestrians},
@@ -95,8 +95,8 @@ std::vector<std::string> ComfortSummaryLines(const Design& d) {
                 "comfort: %s; traffic class %s (%.3g pedestrians/m^2, %.4g on the deck, %.4g kg), "
                 "comfort level %s, "
                 "damping ratio %.3g; comfort class reached: %s%s%s",
-                CheckStatusName(c.Status()), c.traffic_class.c_str(), c.density_per_m2,
-                c.pedestrians, c.crowd_mass_kg, c.comfort_level.c_str(), c.damping_ratio,
+                CheckStatusName(c.Status()), NameOf(c.traffic_class), c.density_per_m2,
+                c.pedestrians, c.crowd_mass_kg, NameOf(c.comfort_level), c.damping_ratio,
                 ComfortClassReached(c).c_str(), c.note.empty() ? "" : "; ", c.note.c_str());
   out.push_back(text);
   if (!c.required)

@@ -362,7 +362,7 @@ DesignInputs PrepareDesign(const Config& config) {
 
 BarRule BarRuleOf(const Config& c) {
   BarRule r;
-  r.column_curve = c.design.bar_resistance == "column_curve";
+  r.column_curve = c.design.bar_resistance == BarResistanceRule::kColumnCurve;
   const MemberMaterial bars = BarMaterial(c);
   r.yield_stress = bars.yield_stress;
   r.yield_factor = bars.partial_factor;

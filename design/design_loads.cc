@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
+#include <type_traits>
 
 #include "core/error.h"
 
@@ -24,13 +26,19 @@ void ForEachLoad(C& config, F f) {
 }
 
 json ValueJson(double v) { return v; }
-json ValueJson(const std::string& v) { return v; }
+template <class E>
+json ValueJson(E v) requires std::is_enum_v<E> {
+  return NameOf(v);
+}
 json ValueJson(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
 std::string ValueText(double v, const char* unit) {
   return NumberText(v) + (*unit ? " " : "") + unit;
 }
-std::string ValueText(const std::string& v, const char*) { return "\"" + v + "\""; }
+template <class E>
+std::string ValueText(E v, const char*) requires std::is_enum_v<E> {
+  return std::string("\"") + NameOf(v) + "\"";
+}
 std::string ValueText(const std::optional<double>& v, const char* unit) {
   return v ? ValueText(*v, unit) : "null (unlimited)";
 }
@@ -39,9 +47,17 @@ void Read(const json& j, const std::string& key, double& field) {
   if (!j.is_number()) throw ConfigError(key, j.dump(), "a number, as tbridge design writes it");
   field = j.get<double>();
 }
-void Read(const json& j, const std::string& key, std::string& field) {
-  if (!j.is_string()) throw ConfigError(key, j.dump(), "a string, as tbridge design writes it");
-  field = j.get<std::string>();
+// A choice (comfort.traffic_class, comfort.comfort_level) by its text in the enum's table.
+template <class E>
+void Read(const json& j, const std::string& key, E& field) requires std::is_enum_v<E> {
+  std::string allowed;
+  for (const auto& n : NamesOf(field))
+    allowed += (allowed.empty() ? "\"" : ", \"") + std::string(n.name) + "\"";
+  const std::optional<E> value =
+      j.is_string() ? ValueIn(NamesOf(field), j.get<std::string>()) : std::nullopt;
+  if (!value)
+    throw ConfigError(key, j.dump(), "one of " + allowed + ", as tbridge design writes it");
+  field = *value;
 }
 void Read(const json& j, const std::string& key, std::optional<double>& field) {
   if (j.is_null()) {

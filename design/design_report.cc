@@ -228,7 +228,7 @@ json AttributionJson(const Design& d) {
 // the deck chain (and the 3D bridge's transverse strings) stay taut (README: "The slack measure").
 std::string ClauseOf(const MemberSizing& m, const Config& config) {
   const bool bar = m.kind == MemberKind::kBar;
-  const bool euler = config.design.bar_resistance == "euler";
+  const bool euler = config.design.bar_resistance == BarResistanceRule::kEuler;
   switch (m.mode) {
     case LimitMode::kSlack:
     case LimitMode::kTaut:

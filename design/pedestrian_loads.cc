@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace tbridge {
 
@@ -46,13 +47,20 @@ Ranges RangesOf(LoadAxis axis) {
 
 }  // namespace
 
-double TrafficDensity(const std::string& traffic_class) {
+double TrafficDensity(TrafficClass traffic_class) {
   // Sétra Stage 1, the classes and their crowd densities (load cases 1 and 2).
-  if (traffic_class == "I") return 1.0;
-  if (traffic_class == "II") return 0.8;
-  if (traffic_class == "III") return 0.5;
-  if (traffic_class == "IV") return 0.0;
-  throw std::invalid_argument("TrafficDensity: no traffic class '" + traffic_class + "'");
+  switch (traffic_class) {
+    case TrafficClass::kI:
+      return 1.0;
+    case TrafficClass::kII:
+      return 0.8;
+    case TrafficClass::kIII:
+      return 0.5;
+    case TrafficClass::kIV:
+      return 0.0;
+  }
+  throw std::invalid_argument("TrafficDensity: no traffic class " +
+                              std::to_string(static_cast<int>(traffic_class)));
 }
 
 int RiskRange(LoadAxis axis, double f) {
@@ -116,11 +124,11 @@ double EquivalentPedestrians(double xi, double n, bool very_dense) {
   return very_dense ? 1.85 * std::sqrt(n) : 10.8 * std::sqrt(xi * n);
 }
 
-std::optional<CrowdLoadCase> LoadCaseFor(const std::string& traffic_class, int range) {
+std::optional<CrowdLoadCase> LoadCaseFor(TrafficClass traffic_class, int range) {
   // Sétra Stage 4, its table of the load cases to check per class and range.
   const bool dense = TrafficDensity(traffic_class) >= 1.0;
-  if (traffic_class == "III" && range == 1) return CrowdLoadCase{1, 1, false};
-  if (traffic_class == "II" || traffic_class == "I") {
+  if (traffic_class == TrafficClass::kIII && range == 1) return CrowdLoadCase{1, 1, false};
+  if (traffic_class == TrafficClass::kII || traffic_class == TrafficClass::kI) {
     if (range == 1 || range == 2) return CrowdLoadCase{dense ? 2 : 1, 1, dense};
     if (range == 3) return CrowdLoadCase{3, 2, dense};
   }
@@ -152,22 +160,36 @@ const char* ComfortLevelName(int level) {
   return "unacceptable";
 }
 
-double ComfortLevelBound(LoadAxis axis, const std::string& level) {
+double ComfortLevelBound(LoadAxis axis, ComfortLevel level) {
   const bool vertical = axis == LoadAxis::kVertical;
-  if (level == "maximum") return vertical ? 0.5 : 0.15;
-  if (level == "mean") return vertical ? 1.0 : 0.3;
-  if (level == "minimum") return vertical ? 2.5 : 0.8;
-  throw std::invalid_argument("ComfortLevelBound: no comfort level '" + level + "'");
+  switch (level) {
+    case ComfortLevel::kMaximum:
+      return vertical ? 0.5 : 0.15;
+    case ComfortLevel::kMean:
+      return vertical ? 1.0 : 0.3;
+    case ComfortLevel::kMinimum:
+      return vertical ? 2.5 : 0.8;
+  }
+  throw std::invalid_argument("ComfortLevelBound: no comfort level " +
+                              std::to_string(static_cast<int>(level)));
 }
 
-double ConstructionDamping(const std::string& construction) {
+double ConstructionDamping(Construction construction) {
   // Sétra Stage 4, structural damping for the serviceability check (HiVoSS 4.4.2, mean).
-  if (construction == "steel") return 0.004;
-  if (construction == "composite") return 0.006;
-  if (construction == "prestressed_concrete") return 0.010;
-  if (construction == "reinforced_concrete") return 0.013;
-  if (construction == "timber") return 0.010;
-  throw std::invalid_argument("ConstructionDamping: no construction '" + construction + "'");
+  switch (construction) {
+    case Construction::kSteel:
+      return 0.004;
+    case Construction::kComposite:
+      return 0.006;
+    case Construction::kPrestressedConcrete:
+      return 0.010;
+    case Construction::kReinforcedConcrete:
+      return 0.013;
+    case Construction::kTimber:
+      return 0.010;
+  }
+  throw std::invalid_argument("ConstructionDamping: no construction " +
+                              std::to_string(static_cast<int>(construction)));
 }
 
 double LockInPedestrians(double xi, double f_hz, double modal_mass_kg) {

@@ -13,17 +13,19 @@
 #include <string>
 #include <vector>
 
+#include "core/design_choices.h"
+
 namespace tbridge {
 
 // The direction a crowd load acts in and an acceleration is measured along. A torsional deck
 // mode is loaded, and measured, vertically.
 enum class LoadAxis { kVertical, kLongitudinal, kLateral };
 
-// Sétra Stage 1: the crowd density d [pedestrians/m²] of a traffic class ("I", "II", "III",
-// "IV"): 1.0, 0.8, 0.5 and 0 (class IV, seldom used: no check). HiVoSS 4.3.1 names five
-// classes instead (TC1-TC5: 15 pedestrians, 0.2, 0.5, 1.0, 1.5 /m²). Throws
-// std::invalid_argument for another name (the config refuses it first).
-double TrafficDensity(const std::string& traffic_class);
+// Sétra Stage 1: the crowd density d [pedestrians/m²] of a traffic class (I, II, III, IV):
+// 1.0, 0.8, 0.5 and 0 (class IV, seldom used: no check). HiVoSS 4.3.1 names five classes
+// instead (TC1-TC5: 15 pedestrians, 0.2, 0.5, 1.0, 1.5 /m²). Throws std::invalid_argument for a
+// value outside the enum (the config refuses it first).
+double TrafficDensity(TrafficClass traffic_class);
 
 // Sétra Stage 3: the frequency range of resonance risk of f [Hz] (1 maximum, 2 medium, 3 low,
 // 4 negligible). Vertical and longitudinal: 1 in [1.7, 2.1], 2 in [1, 1.7) and (2.1, 2.6],
@@ -65,7 +67,7 @@ struct CrowdLoadCase {
   int harmonic = 1;         // 1; 2 for case 3
   bool very_dense = false;  // d >= 1: 1.85 sqrt(n), else 10.8 sqrt(xi n)
 };
-std::optional<CrowdLoadCase> LoadCaseFor(const std::string& traffic_class, int range);
+std::optional<CrowdLoadCase> LoadCaseFor(TrafficClass traffic_class, int range);
 
 // Sétra Stage 2: the comfort level an acceleration reaches along `axis` (1 maximum, 2 mean,
 // 3 minimum, 4 unacceptable). Vertical: < 0.5, 0.5-1, 1-2.5, above 2.5 m/s². Horizontal
@@ -73,14 +75,14 @@ std::optional<CrowdLoadCase> LoadCaseFor(const std::string& traffic_class, int r
 // counts as vertical.
 int ComfortLevelReached(LoadAxis axis, double acceleration_m_s2);
 const char* ComfortLevelName(int level);  // "maximum" | "mean" | "minimum" | "unacceptable"
-// The upper acceleration bound of a comfort level by name ("maximum", "mean", "minimum") [m/s²].
-double ComfortLevelBound(LoadAxis axis, const std::string& level);
+// The upper acceleration bound of a comfort level asked for [m/s²].
+double ComfortLevelBound(LoadAxis axis, ComfortLevel level);
 
 // The damping ratio of a construction (Sétra's table of structural damping for the
 // serviceability check, which are HiVoSS 4.4.2's mean values but for timber, 1.5 % there):
 // steel 0.004, composite 0.006, prestressed_concrete 0.010, reinforced_concrete 0.013,
-// timber 0.010. Throws std::invalid_argument for another name.
-double ConstructionDamping(const std::string& construction);
+// timber 0.010. Throws std::invalid_argument for a value outside the enum.
+double ConstructionDamping(Construction construction);
 
 // Lateral lock-in (Sétra; HiVoSS 4.6): the critical number of pedestrians on the deck above
 // which the lateral mode of frequency f [Hz], modal mass M* [kg] and damping ratio xi locks

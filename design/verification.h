@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/design_choices.h"
 #include "design/limit_mode.h"
 
 namespace tbridge {
@@ -205,7 +206,8 @@ struct ComfortCheck {
   bool done = false;      // carried out (not with the paper's switches or comfort.check false)
   bool required = false;  // a deck frequency below EN 1990 A2's trigger for its motion
   std::string note;       // why not done, or what it left out
-  std::string traffic_class, comfort_level;
+  TrafficClass traffic_class = TrafficClass::kII;
+  ComfortLevel comfort_level = ComfortLevel::kMean;
   double damping_ratio = 0;
   double density_per_m2 = 0;       // the class's crowd density d
   double pedestrians = 0;          // n = d x deck area

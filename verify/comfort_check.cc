@@ -39,7 +39,7 @@ constexpr double kLateralLockInAcceleration = 0.10;
 double Limit(const ComfortConfig& c, LoadAxis axis) {
   const double level = ComfortLevelBound(axis, c.comfort_level);
   if (axis == LoadAxis::kVertical) return std::min(level, c.vertical_limit_m_s2);
-  const bool crowd = c.traffic_class == "I" || c.traffic_class == "II";
+  const bool crowd = c.traffic_class == TrafficClass::kI || c.traffic_class == TrafficClass::kII;
   return std::min(level, crowd ? c.crowd_horizontal_limit_m_s2 : c.horizontal_limit_m_s2);
 }
 
@@ -114,8 +114,8 @@ void RespondAt(ComfortMode& m, const ComfortCheck& check, const Design& d, doubl
           << pedestrians << " pedestrians x psi " << psi << " over " << DeckArea(d) << " m^2";
   }
   if (!loaded)
-    model << "none: Sétra asks no load case of class " << check.traffic_class << " in range "
-          << riskiest;
+    model << "none: Sétra asks no load case of class " << NameOf(check.traffic_class)
+          << " in range " << riskiest;
   m.load_model = model.str();
   m.comfort_class = ComfortLevelName(ComfortLevelReached(axis, m.acceleration_m_s2));
   m.pass = m.acceleration_m_s2 <= m.limit_m_s2;

@@ -168,7 +168,7 @@ Eigen::VectorXd StaticPeaks(const Design& d, const DynamicModel& model, const St
 // Whether `run` is tried by modal superposition first: the walking load, where the config
 // asks for it.
 bool Modal(const LoadRun& run, const LoadsConfig& l) {
-  return run.walking && l.dynamic_method == "modal";
+  return run.walking && l.dynamic_method == DynamicMethod::kModal;
 }
 
 // The walking load by modal superposition (verify/modal_run.h), into the summary the

@@ -74,7 +74,7 @@ TEST_CASE("absent optional keys take their documented defaults") {
   CHECK(c.design.yield_safety_factor == 1.1);
   CHECK(c.design.buckling_safety_factor == 1.1);
   CHECK(c.design.self_weight);
-  CHECK(c.design.bar_resistance == "column_curve");
+  CHECK(c.design.bar_resistance == BarResistanceRule::kColumnCurve);
   CHECK(c.loads.gamma_g_sup == 1.35);
   CHECK(c.loads.gamma_q == 1.5);
   CHECK(c.design.deck_string_min_radius == 0.01);

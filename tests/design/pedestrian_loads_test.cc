@@ -73,11 +73,12 @@ TEST_CASE("the equivalent pedestrian numbers at the guide's worked values", "[co
 
 TEST_CASE("classes, ranges, load cases, comfort levels and damping as the guide tabulates them",
           "[comfort]") {
-  CHECK(TrafficDensity("I") == 1.0);
-  CHECK(TrafficDensity("II") == 0.8);
-  CHECK(TrafficDensity("III") == 0.5);
-  CHECK(TrafficDensity("IV") == 0.0);
-  CHECK_THROWS_AS(TrafficDensity("V"), std::invalid_argument);
+  CHECK(TrafficDensity(TrafficClass::kI) == 1.0);
+  CHECK(TrafficDensity(TrafficClass::kII) == 0.8);
+  CHECK(TrafficDensity(TrafficClass::kIII) == 0.5);
+  CHECK(TrafficDensity(TrafficClass::kIV) == 0.0);
+  CHECK_THROWS_AS(TrafficDensity(static_cast<TrafficClass>(-1)),
+                  std::invalid_argument);  // outside the enum
   // Vertical ranges: 1 [1.7, 2.1]; 2 [1, 1.7) and (2.1, 2.6]; 3 (2.6, 5]; 4 else.
   CHECK(RiskRange(LoadAxis::kVertical, 1.9) == 1);
   CHECK(RiskRange(LoadAxis::kVertical, 1.2) == 2);
@@ -93,27 +94,27 @@ TEST_CASE("classes, ranges, load cases, comfort levels and damping as the guide 
   CHECK(RiskRangeOver(LoadAxis::kVertical, 2.3, 3.0) == 2);
   CHECK(RiskRangeOver(LoadAxis::kVertical, 1.5, 2.5) == 1);
   // Sétra's table of load cases.
-  CHECK(LoadCaseFor("III", 1)->number == 1);
-  CHECK(!LoadCaseFor("III", 2));
-  CHECK(!LoadCaseFor("III", 3));
-  CHECK(LoadCaseFor("II", 2)->number == 1);
-  CHECK(LoadCaseFor("II", 3)->number == 3);
-  CHECK(LoadCaseFor("II", 3)->harmonic == 2);
-  CHECK(LoadCaseFor("I", 1)->number == 2);
-  CHECK(LoadCaseFor("I", 1)->very_dense);
-  CHECK(!LoadCaseFor("I", 4));
-  CHECK(!LoadCaseFor("IV", 1));
+  CHECK(LoadCaseFor(TrafficClass::kIII, 1)->number == 1);
+  CHECK(!LoadCaseFor(TrafficClass::kIII, 2));
+  CHECK(!LoadCaseFor(TrafficClass::kIII, 3));
+  CHECK(LoadCaseFor(TrafficClass::kII, 2)->number == 1);
+  CHECK(LoadCaseFor(TrafficClass::kII, 3)->number == 3);
+  CHECK(LoadCaseFor(TrafficClass::kII, 3)->harmonic == 2);
+  CHECK(LoadCaseFor(TrafficClass::kI, 1)->number == 2);
+  CHECK(LoadCaseFor(TrafficClass::kI, 1)->very_dense);
+  CHECK(!LoadCaseFor(TrafficClass::kI, 4));
+  CHECK(!LoadCaseFor(TrafficClass::kIV, 1));
   // Comfort levels: vertical 0.5 / 1 / 2.5 m/s^2, horizontal 0.15 / 0.3 / 0.8.
   CHECK(ComfortLevelReached(LoadAxis::kVertical, 0.4) == 1);
   CHECK(ComfortLevelReached(LoadAxis::kVertical, 0.7) == 2);
   CHECK(ComfortLevelReached(LoadAxis::kVertical, 2.0) == 3);
   CHECK(ComfortLevelReached(LoadAxis::kVertical, 3.0) == 4);
   CHECK(ComfortLevelReached(LoadAxis::kLateral, 0.2) == 2);
-  CHECK(ComfortLevelBound(LoadAxis::kLateral, "minimum") == 0.8);
+  CHECK(ComfortLevelBound(LoadAxis::kLateral, ComfortLevel::kMinimum) == 0.8);
   CHECK(std::string(ComfortLevelName(4)) == "unacceptable");
-  CHECK(ConstructionDamping("steel") == 0.004);
-  CHECK(ConstructionDamping("reinforced_concrete") == 0.013);
-  CHECK_THROWS_AS(ConstructionDamping("glass"), std::invalid_argument);
+  CHECK(ConstructionDamping(Construction::kSteel) == 0.004);
+  CHECK(ConstructionDamping(Construction::kReinforcedConcrete) == 0.013);
+  CHECK_THROWS_AS(ConstructionDamping(static_cast<Construction>(-1)), std::invalid_argument);
 }
 
 }  // namespace tbridge

@@ -93,7 +93,7 @@ TEST_CASE("the checks change nothing in the design they check", "[verify]") {
 TEST_CASE("a design with a check not run is INCOMPLETE, never PASS", "[verify]") {
   Config config;
   config.bridge.n = 2;
-  config.loads.dynamic_method = "rk4";  // the nonlinear run, whose budget this is
+  config.loads.dynamic_method = DynamicMethod::kRk4;  // the nonlinear run, whose budget this is
   Design d = DesignAndVerify(config);
   REQUIRE(DesignVerdict(d).outcome == VerdictOutcome::kPass);
   // The same design with its dynamic runs skipped (a budget of one member-step).

@@ -104,7 +104,7 @@ struct MovingLoadCheck {
 MovingLoadCheck CheckMovingLoad(int n) {
   MovingLoadCheck c;
   c.config.bridge.n = n;
-  c.config.loads.dynamic_method = "rk4";
+  c.config.loads.dynamic_method = DynamicMethod::kRk4;
   c.design = RunDesign(c.config);
   c.check = CheckDynamics(c.design);
   REQUIRE(c.check.runs.size() == 1);
@@ -162,7 +162,7 @@ TEST_CASE("a dynamic run over the budget at its asked step is skipped before its
           "[verify][dynamics]") {
   Config config;
   config.bridge.n = 2;
-  config.loads.dynamic_method = "rk4";  // the budget is the nonlinear run's
+  config.loads.dynamic_method = DynamicMethod::kRk4;  // the budget is the nonlinear run's
   const Design d = RunDesign(config);
   const DynamicCheck full = CheckDynamics(d);
   REQUIRE(full.runs.size() == 1);

@@ -102,7 +102,7 @@ TEST_CASE("a slowly rising wind gives the static wind's forces", "[verify][dynam
   // The 3D design found with the paper's factors (SPEC's 3D bridge) and every engineering case.
   config.design.yield_safety_factor = 10;
   config.design.buckling_safety_factor = 1;
-  config.design.bar_resistance = "euler";
+  config.design.bar_resistance = BarResistanceRule::kEuler;
   config.loads.wind_rise_s = 20;
   Design d = RunDesign(config);
   const DynamicCheck check = CheckDynamics(d);

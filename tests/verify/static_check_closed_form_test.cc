@@ -37,7 +37,7 @@ void CheckAgainstHandStatics(const Config& config, const std::string& governs) {
   const double l = config.bridge.span / 2 * std::tan(half_slope);  // the V's depth (SPEC §2)
   const double n_cr = M_PI * M_PI * E * (M_PI * std::pow(bar.radius, 4) / 4) / (l * l);
   double buckling = n_cr / config.design.buckling_safety_factor;
-  if (config.design.bar_resistance == "column_curve") {
+  if (config.design.bar_resistance == BarResistanceRule::kColumnCurve) {
     const double lambda = std::sqrt(area * fy / n_cr), alpha = 0.49;  // curve c: solid sections
     const double phi = 0.5 * (1 + alpha * (lambda - 0.2) + lambda * lambda);
     const double chi = std::min(1.0, 1 / (phi + std::sqrt(phi * phi - lambda * lambda)));
@@ -81,7 +81,7 @@ TEST_CASE("the static check finds the n = 1 bridge's member forces and resistanc
     Config c = test::PaperConfig(1);
     c.bridge.beta_deg = 60;
     c.bridge.payload = 1000;
-    c.design.bar_resistance = "column_curve";
+    c.design.bar_resistance = BarResistanceRule::kColumnCurve;
     c.design.buckling_safety_factor = 1.1;
     CheckAgainstHandStatics(c, "buckling");
   }

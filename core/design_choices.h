@@ -1,0 +1,56 @@
+// The choices of a design's config (design.bar_resistance, loads.dynamic_method, comfort.*) as
+// enums with their texts: parsed once at the config boundary, compared as values past it. The
+// texts are those of the config file and of every output, unchanged: scripts read them.
+#pragma once
+
+#include <array>
+
+#include "core/named_choice.h"
+
+namespace tbridge {
+
+// design.bar_resistance: see DesignConfig::bar_resistance.
+enum class BarResistanceRule { kColumnCurve, kEuler };
+inline constexpr std::array<Named<BarResistanceRule>, 2> kBarResistanceNames{
+    {{BarResistanceRule::kColumnCurve, "column_curve"}, {BarResistanceRule::kEuler, "euler"}}};
+
+// loads.dynamic_method: see LoadsConfig::dynamic_method.
+enum class DynamicMethod { kModal, kRk4 };
+inline constexpr std::array<Named<DynamicMethod>, 2> kDynamicMethodNames{
+    {{DynamicMethod::kModal, "modal"}, {DynamicMethod::kRk4, "rk4"}}};
+
+// comfort.traffic_class: Sétra's Stage 1 classes, from very dense crowds (I) to seldom used (IV).
+enum class TrafficClass { kI, kII, kIII, kIV };
+inline constexpr std::array<Named<TrafficClass>, 4> kTrafficClassNames{{{TrafficClass::kI, "I"},
+                                                                        {TrafficClass::kII, "II"},
+                                                                        {TrafficClass::kIII, "III"},
+                                                                        {TrafficClass::kIV, "IV"}}};
+
+// comfort.comfort_level: Sétra's Stage 2 level asked for.
+enum class ComfortLevel { kMaximum, kMean, kMinimum };
+inline constexpr std::array<Named<ComfortLevel>, 3> kComfortLevelNames{
+    {{ComfortLevel::kMaximum, "maximum"},
+     {ComfortLevel::kMean, "mean"},
+     {ComfortLevel::kMinimum, "minimum"}}};
+
+// comfort.construction: what sets the damping ratio's default (Sétra, HiVoSS 4.4.2).
+enum class Construction { kSteel, kComposite, kPrestressedConcrete, kReinforcedConcrete, kTimber };
+inline constexpr std::array<Named<Construction>, 5> kConstructionNames{
+    {{Construction::kSteel, "steel"},
+     {Construction::kComposite, "composite"},
+     {Construction::kPrestressedConcrete, "prestressed_concrete"},
+     {Construction::kReinforcedConcrete, "reinforced_concrete"},
+     {Construction::kTimber, "timber"}}};
+
+inline const char* NameOf(BarResistanceRule k) { return NameIn(kBarResistanceNames, k); }
+inline const char* NameOf(DynamicMethod k) { return NameIn(kDynamicMethodNames, k); }
+inline const char* NameOf(TrafficClass k) { return NameIn(kTrafficClassNames, k); }
+inline const char* NameOf(ComfortLevel k) { return NameIn(kComfortLevelNames, k); }
+inline const char* NameOf(Construction k) { return NameIn(kConstructionNames, k); }
+
+// Each enum's table, by its type: for code that reads or writes any of them alike (the design
+// file's record of the loads, design/design_loads.cc).
+inline constexpr const auto& NamesOf(TrafficClass) { return kTrafficClassNames; }
+inline constexpr const auto& NamesOf(ComfortLevel) { return kComfortLevelNames; }
+
+}  // namespace tbridge
