@@ -1,7 +1,7 @@
 // Numbers as printf's "%.12g" writes them, byte for byte, about six times faster than
 // std::to_chars(general, 12) (tests/tools/fast_g12_test.cc holds it to snprintf;
-// BENCHMARKS.md has the timing): a history row of the MOTES prism is 73 numbers every 10
-// steps, and formatting them cost more than the steps.
+// docs/benchmarks-history.md has the timing): a history row of the MOTES prism is 73 numbers every
+// 10 steps, and formatting them cost more than the steps.
 //
 // How: the 12 significant digits are the value scaled by a power of ten and rounded to an
 // integer. The scaling's rounding error is below 2e-4 of the last digit; a value whose
