@@ -8,7 +8,7 @@
 namespace tbridge {
 
 ModalScene ModalSceneOf(const Config& config, ProgressReporter* progress,
-                        const std::string& mass_model) {
+                        ModalMassModel mass_model) {
   const ModelOptions options = ModalModelOptions(config);
   ModalScene scene;
   if (config.structure) {
@@ -16,8 +16,9 @@ ModalScene ModalSceneOf(const Config& config, ProgressReporter* progress,
     return scene;
   }
   scene.design = DesignAndVerify(config, progress);
-  scene.model = mass_model == "design" ? BuildDynamicModel(*scene.design, options)
-                                       : ComfortModel(*scene.design, mass_model == "crowd");
+  scene.model = mass_model == ModalMassModel::kDesign
+                    ? BuildDynamicModel(*scene.design, options)
+                    : ComfortModel(*scene.design, mass_model == ModalMassModel::kCrowd);
   return scene;
 }
 

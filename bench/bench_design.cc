@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,14 +13,20 @@
 
 int main(int argc, char** argv) {
   const int max_n = argc > 1 ? std::atoi(argv[1]) : 16;
-  const std::string solver = argc > 2 ? argv[2] : "auto";
+  const std::optional<tbridge::SolverKind> solver =
+      tbridge::ValueIn(tbridge::kSolverChoiceNames, argc > 2 ? argv[2] : "auto");
+  if (!solver) {
+    std::fprintf(stderr, "bench_design: solver '%s': one of %s\n", argv[2],
+                 tbridge::QuotedNames(tbridge::kSolverChoiceNames).c_str());
+    return 2;
+  }
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
   std::printf("%3s %6s %7s %9s %10s %12s %12s\n", "n", "bars", "strings", "iters", "mass_kg",
               "best_ms", "median_ms");
   for (int n = 1; n <= max_n; ++n) {
     tbridge::Config c;
     c.bridge.n = n;
-    c.design.solver = solver;
+    c.design.solver = *solver;
     c.design.buckling_safety_factor = 1.0;  // Euler constraint active in the problem
     std::vector<double> ms;
     tbridge::Design d;

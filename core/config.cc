@@ -48,13 +48,13 @@ void CheckMaterialRules(const Material& m) {
 // loads: the rules across keys (kLoadsSection.rules).
 void CheckLoadsRules(const LoadsConfig& l) {
   const auto& c = l.cases;
-  if (c.size() > 1 && std::find(c.begin(), c.end(), "paper") != c.end()) {
+  if (c.size() > 1 && l.Asks(LoadFamily::kPaper)) {
     throw ConfigError(
         "loads.cases", "[\"paper\", ...]",
         "\"paper\" stands alone: it is the paper's one unfactored case, which replaces the others");
   }
   if (c.empty()) throw ConfigError("loads.cases", "[]", "must list at least one case");
-  const bool temperature = std::find(c.begin(), c.end(), "temperature") != c.end();
+  const bool temperature = l.Asks(LoadFamily::kTemperature);
   if (temperature && !(l.temperature_delta_k > 0)) {
     throw ConfigError("loads.temperature_delta_k", NumberText(l.temperature_delta_k),
                       "must be > 0 with \"temperature\" in loads.cases: the change either way [K]");
@@ -87,7 +87,7 @@ void CheckDesignRules(const DesignConfig& d) {
 }
 
 void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
-  if (b.beta_auto && l.cases == std::vector<std::string>{"paper"}) {
+  if (b.beta_auto && l.cases == std::vector<LoadFamily>{LoadFamily::kPaper}) {
     throw ConfigError(
         "bridge.beta_deg", "\"auto\"",
         "must be a number with loads.cases [\"paper\"]: the paper's design is checked, not "
@@ -97,9 +97,11 @@ void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
 
 void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
   // The temperature only accompanies: it leaves no case of its own.
-  const auto wind = [](const std::string& c) { return c == "wind" || c == "temperature"; };
+  const auto wind = [](LoadFamily c) {
+    return c == LoadFamily::kWind || c == LoadFamily::kTemperature;
+  };
   if (b.planes == 1 && std::all_of(l.cases.begin(), l.cases.end(), wind)) {
-    throw ConfigError("loads.cases", nlohmann::json(l.cases).dump(),
+    throw ConfigError("loads.cases", nlohmann::json(NamesIn(kLoadFamilyNames, l.cases)).dump(),
                       "leaves no load case to design for: a planar bridge (bridge.planes = 1) "
                       "carries no transverse load, so \"wind\" is left out; list at least one of "
                       "\"paper\", \"permanent\", \"payload\", \"travelling\", "
@@ -134,7 +136,7 @@ void ApplyPaperSwitches(Config& c) {
   c.design.yield_safety_factor = 10.0;
   c.design.buckling_safety_factor = 1.0;
   c.design.bar_resistance = BarResistanceRule::kEuler;
-  c.loads.cases = {"paper"};
+  c.loads.cases = {LoadFamily::kPaper};
   if (c.dynamics) {
     c.dynamics->deck_inertia = false;
     c.dynamics->gravity_on_structure = false;
@@ -142,7 +144,7 @@ void ApplyPaperSwitches(Config& c) {
 }
 
 bool KeepsPaperSwitches(const Config& c) {
-  return c.loads.cases == std::vector<std::string>{"paper"};
+  return c.loads.cases == std::vector<LoadFamily>{LoadFamily::kPaper};
 }
 
 Config ParseConfig(const nlohmann::json& root) {

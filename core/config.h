@@ -4,6 +4,7 @@
 // from there.
 #pragma once
 
+#include <algorithm>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
@@ -44,7 +45,7 @@ struct DesignConfig {
   // "auto" | "direct" | "ipopt" | "nlopt": how the self-stress coefficients are found. "direct"
   // applies when there is at most one self-stress and it loads no bar (every planar bridge);
   // "auto" takes it there and Ipopt elsewhere (the 3D bridge).
-  std::string solver = "auto";
+  SolverKind solver = SolverKind::kAuto;
   double tolerance = 1e-10;   // relative optimality tolerance of the solver
   int max_iterations = 3000;  // solver iteration limit
   // Members' own weight in the permanent load, iterated with the sizing to a fixed point.
@@ -82,11 +83,16 @@ struct DesignConfig {
 // each half), a travelling point load Q_t, transverse wind W (3D bridge) and the paper's
 // travelling load (eqs 50-51). Prestress is not factored.
 struct LoadsConfig {
-  // Which actions enter the design: "paper" (the paper's one case: deck and payload at the
-  // drawn geometry, unfactored) or any of "permanent", "payload", "travelling",
-  // "paper_travelling", "wind". The paper's travelling load (eqs 50-51) is the paper's, not a
-  // code's action: it is checked when asked for, and is not among the defaults.
-  std::vector<std::string> cases{"permanent", "payload", "travelling", "wind"};
+  // Which actions enter the design: kPaper (the paper's one case: deck and payload at the
+  // drawn geometry, unfactored) or any of the others. The paper's travelling load (eqs 50-51)
+  // is the paper's, not a code's action: it is checked when asked for, and is not among the
+  // defaults.
+  std::vector<LoadFamily> cases{LoadFamily::kPermanent, LoadFamily::kPayload,
+                                LoadFamily::kTravelling, LoadFamily::kWind};
+  // Whether `cases` lists `family`.
+  bool Asks(LoadFamily family) const {
+    return std::find(cases.begin(), cases.end(), family) != cases.end();
+  }
   double superimposed_dead_n_per_m = 0.0;  // surfacing, railings [N/m], on the deck
   double travelling_load_n = 10000.0;      // Q_t [N]: EN 1991-2 5.3.2.2 Q_fwk for footbridges
   double travelling_speed_m_s = 1.5;       // v [m/s]: walking pace

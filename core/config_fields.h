@@ -246,7 +246,8 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
                    "9.80665 changes 18 "
                    "of their printed numbers"},
            d.gravity, Range::Closed(0.0, 100.0));
-  v.Choice(
+  EnumChoice(
+      v,
       KeyInfo{
           "solver", "–",
           "how the minimum-mass problem is solved in its self-stress coefficients (every "
@@ -282,7 +283,7 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
           "(`solver.name` `\"sqp\"`, always built in) under `\"auto\"` and `\"direct\"`; "
           "`\"ipopt\"` "
           "and `\"nlopt\"` take those solvers for it too (docs/verified_sizing.md)"},
-      d.solver, {"auto", "direct", "ipopt", "nlopt"});
+      d.solver, kSolverChoiceNames);
   v.Number(
       KeyInfo{"tolerance", "–",
               "relative optimality and constraint tolerance passed to the iterative solvers (Ipopt "
@@ -414,7 +415,8 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
 
 template <class L, class V>
 void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, LoadsConfig> {
-  v.Choices(
+  EnumChoices(
+      v,
       KeyInfo{
           "cases", "–",
           "the actions the design is checked and sized for. `\"permanent\"`: G = deck beams + "
@@ -441,8 +443,7 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
           "are posed again warmer and colder, as the bridge's rest lengths and bar lengths then "
           "are "
           "(`material.thermal_expansion`)"},
-      l.cases,
-      {"paper", "permanent", "payload", "travelling", "paper_travelling", "wind", "temperature"});
+      l.cases, kLoadFamilyNames);
   v.Number(KeyInfo{"superimposed_dead_n_per_m", "N/m",
                    "surfacing and railings, part of G, spread over the deck"},
            l.superimposed_dead_n_per_m, Range::Closed(0.0, 1e8));

@@ -1,6 +1,7 @@
-// The choices of a design's config (design.bar_resistance, loads.dynamic_method, comfort.*) as
-// enums with their texts: parsed once at the config boundary, compared as values past it. The
-// texts are those of the config file and of every output, unchanged: scripts read them.
+// The choices of a design's config (design.bar_resistance, design.solver, loads.dynamic_method,
+// comfort.*) as enums with their texts: parsed once at the config boundary, compared as values
+// past it. The texts are those of the config file and of every output, unchanged: scripts read
+// them.
 #pragma once
 
 #include <array>
@@ -42,11 +43,49 @@ inline constexpr std::array<Named<Construction>, 5> kConstructionNames{
      {Construction::kReinforcedConcrete, "reinforced_concrete"},
      {Construction::kTimber, "timber"}}};
 
+// The solvers: design.solver's values (kSolverChoiceNames) and the one that ran, in the outputs'
+// `solver.name` (kSolverNames: also "sqp", the verified sizing's own, and "none", a design read
+// from its file). One enum for both, as the config's choice is the solver that runs wherever it
+// names one.
+enum class SolverKind { kAuto, kNone, kDirect, kSqp, kIpopt, kNlopt };
+inline constexpr std::array<Named<SolverKind>, 4> kSolverChoiceNames{
+    {{SolverKind::kAuto, "auto"},
+     {SolverKind::kDirect, "direct"},
+     {SolverKind::kIpopt, "ipopt"},
+     {SolverKind::kNlopt, "nlopt"}}};
+inline constexpr std::array<Named<SolverKind>, 6> kSolverNames{{{SolverKind::kAuto, "auto"},
+                                                                {SolverKind::kNone, "none"},
+                                                                {SolverKind::kDirect, "direct"},
+                                                                {SolverKind::kSqp, "sqp"},
+                                                                {SolverKind::kIpopt, "ipopt"},
+                                                                {SolverKind::kNlopt, "nlopt"}}};
+
+// loads.cases: see LoadsConfig::cases.
+enum class LoadFamily {
+  kPaper,
+  kPermanent,
+  kPayload,
+  kTravelling,
+  kPaperTravelling,
+  kWind,
+  kTemperature
+};
+inline constexpr std::array<Named<LoadFamily>, 7> kLoadFamilyNames{
+    {{LoadFamily::kPaper, "paper"},
+     {LoadFamily::kPermanent, "permanent"},
+     {LoadFamily::kPayload, "payload"},
+     {LoadFamily::kTravelling, "travelling"},
+     {LoadFamily::kPaperTravelling, "paper_travelling"},
+     {LoadFamily::kWind, "wind"},
+     {LoadFamily::kTemperature, "temperature"}}};
+
 inline const char* NameOf(BarResistanceRule k) { return NameIn(kBarResistanceNames, k); }
 inline const char* NameOf(DynamicMethod k) { return NameIn(kDynamicMethodNames, k); }
 inline const char* NameOf(TrafficClass k) { return NameIn(kTrafficClassNames, k); }
 inline const char* NameOf(ComfortLevel k) { return NameIn(kComfortLevelNames, k); }
 inline const char* NameOf(Construction k) { return NameIn(kConstructionNames, k); }
+inline const char* NameOf(SolverKind k) { return NameIn(kSolverNames, k); }
+inline const char* NameOf(LoadFamily k) { return NameIn(kLoadFamilyNames, k); }
 
 // Each enum's table, by its type: for code that reads or writes any of them alike (the design
 // file's record of the loads, design/design_loads.cc).

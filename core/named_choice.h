@@ -37,6 +37,15 @@ constexpr std::optional<E> ValueIn(const std::array<Named<E>, N>& table, std::st
   return std::nullopt;
 }
 
+// The table's texts quoted and listed, for an error's "one of ...": "\"a\", \"b\"".
+template <class E, std::size_t N>
+std::string QuotedNames(const std::array<Named<E>, N>& table) {
+  std::string list;
+  for (const Named<E>& n : table)
+    list += (list.empty() ? "\"" : ", \"") + std::string(n.name) + "\"";
+  return list;
+}
+
 // A choice key whose field is an enum: the visitor (core/config_visitors.h) sees the text, so
 // the parse, the echo, Validate() and the README's table are those of a text choice among the
 // table's names, and the parse writes the enum back. A visitor that writes a text outside the
@@ -55,6 +64,34 @@ void EnumChoice(V& v, const auto& key, F& field,
     field = it != allowed.end() ? table[static_cast<std::size_t>(it - allowed.begin())].value
                                 : static_cast<std::remove_const_t<F>>(-1);
   }
+}
+
+// EnumChoice for a list key whose field is a vector of enums (each one of the table's names,
+// none twice: the visitor's Choices).
+template <class V, class F, std::size_t N>
+void EnumChoices(V& v, const auto& key, F& field,
+                 const std::array<Named<typename std::remove_const_t<F>::value_type>, N>& table) {
+  using E = typename std::remove_const_t<F>::value_type;
+  std::vector<std::string> allowed, texts;
+  for (const auto& n : table) allowed.emplace_back(n.name);
+  for (const E e : field) texts.emplace_back(NameIn(table, e));
+  if constexpr (std::is_const_v<F>) {
+    v.Choices(key, static_cast<const std::vector<std::string>&>(texts), allowed);
+  } else {
+    v.Choices(key, texts, allowed);
+    field.clear();
+    for (const std::string& t : texts)
+      field.push_back(ValueIn(table, t).value_or(static_cast<E>(-1)));
+  }
+}
+
+// The texts of `values` in `table`, in order.
+template <class E, std::size_t N>
+std::vector<std::string> NamesIn(const std::array<Named<E>, N>& table,
+                                 const std::vector<E>& values) {
+  std::vector<std::string> out;
+  for (const E e : values) out.emplace_back(NameIn(table, e));
+  return out;
 }
 
 }  // namespace tbridge

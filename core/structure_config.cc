@@ -104,8 +104,8 @@ void RejectDesignKeysWithoutMembers(const StructureConfig& c) {
   if (!c.groups.empty()) refuse("groups");
   if (!c.load_cases.empty()) refuse("load_cases");
   if (!c.limits.displacements.empty() || !c.limits.min_frequencies_hz.empty()) refuse("limits");
-  if (c.prestress != "none") refuse("prestress");
-  if (c.analysis != "linear") refuse("analysis");
+  if (c.prestress != StructurePrestress::kNone) refuse("prestress");
+  if (c.analysis != TrussAnalysisKind::kLinear) refuse("analysis");
 }
 
 void CheckGroups(const StructureConfig& c) {
@@ -131,12 +131,14 @@ void CheckGroups(const StructureConfig& c) {
       throw ConfigError(path + ".max_area_m2", Show(*group.max_area_m2),
                         "must be >= min_area_m2 = " + Show(group.min_area_m2));
     }
-    const bool tension = group.kind != "bar", compression = group.kind != "string";
+    const bool tension = group.kind != TrussKind::kBar,
+               compression = group.kind != TrussKind::kString;
     // Without load cases (frequency limits alone) no stress is checked, and none is needed.
     const bool loaded = !c.load_cases.empty();
     if (loaded && tension && !group.allowed_tension_pa) {
       throw ConfigError(path + ".allowed_tension_pa", "(missing)",
-                        "required (a stress > 0, Pa) for a group of kind \"" + group.kind + "\"");
+                        "required (a stress > 0, Pa) for a group of kind \"" +
+                            std::string(NameOf(group.kind)) + "\"");
     }
     if (!tension && group.allowed_tension_pa) {
       throw ConfigError(path + ".allowed_tension_pa", Show(*group.allowed_tension_pa),
@@ -144,14 +146,15 @@ void CheckGroups(const StructureConfig& c) {
     }
     if (loaded && compression && !group.allowed_compression_pa) {
       throw ConfigError(path + ".allowed_compression_pa", "(missing)",
-                        "required (a stress > 0, Pa) for a group of kind \"" + group.kind + "\"");
+                        "required (a stress > 0, Pa) for a group of kind \"" +
+                            std::string(NameOf(group.kind)) + "\"");
     }
     if (!compression && group.allowed_compression_pa) {
       throw ConfigError(
           path + ".allowed_compression_pa", Show(*group.allowed_compression_pa),
           "not allowed for a group of kind \"string\": a string carries tension only");
     }
-    if (group.kind == "string" && group.buckling == "euler") {
+    if (group.kind == TrussKind::kString && group.buckling == BucklingRule::kEuler) {
       throw ConfigError(path + ".buckling", "\"euler\"",
                         "a string carries no compression: \"auto\" or \"none\"");
     }
@@ -197,12 +200,12 @@ void CheckDisplacementLimits(const StructureConfig& c) {
       throw ConfigError(path + ".node", std::to_string(list[k].node),
                         "is pinned: a displacement limit is on a free node");
     }
-    if (c.dim == 2 && list[k].axis == "z") {
+    if (c.dim == 2 && list[k].axis == Axis::kZ) {
       throw ConfigError(path + ".axis", "\"z\"", "must be \"x\" or \"y\": structure.dim is 2");
     }
     for (size_t h = 0; h < k; ++h) {
       if (list[h].node == list[k].node && list[h].axis == list[k].axis) {
-        throw ConfigError(path, std::to_string(list[k].node) + " " + list[k].axis,
+        throw ConfigError(path, std::to_string(list[k].node) + " " + NameOf(list[k].axis),
                           "each node and axis once: structure.limits.displacements[" +
                               std::to_string(h) + "] has it");
       }

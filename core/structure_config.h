@@ -11,9 +11,45 @@
 #include <string>
 #include <vector>
 
+#include "core/named_choice.h"
+
 namespace tbridge {
 
 class JsonSection;
+
+// structure.groups[].kind: what a designed group may carry.
+enum class TrussKind { kString, kBar, kTruss };
+inline constexpr std::array<Named<TrussKind>, 3> kTrussKindNames{
+    {{TrussKind::kString, "string"}, {TrussKind::kBar, "bar"}, {TrussKind::kTruss, "truss"}}};
+
+// structure.groups[].buckling: see StructureGroupConfig::buckling.
+enum class BucklingRule { kAuto, kEuler, kNone };
+inline constexpr std::array<Named<BucklingRule>, 3> kBucklingRuleNames{
+    {{BucklingRule::kAuto, "auto"},
+     {BucklingRule::kEuler, "euler"},
+     {BucklingRule::kNone, "none"}}};
+
+// structure.limits.displacements[].axis; its value is the coordinate's index.
+enum class Axis { kX = 0, kY = 1, kZ = 2 };
+inline constexpr std::array<Named<Axis>, 3> kAxisNames{
+    {{Axis::kX, "x"}, {Axis::kY, "y"}, {Axis::kZ, "z"}}};
+
+// structure.prestress: see StructureConfig::prestress.
+enum class StructurePrestress { kNone, kVariable };
+inline constexpr std::array<Named<StructurePrestress>, 2> kStructurePrestressNames{
+    {{StructurePrestress::kNone, "none"}, {StructurePrestress::kVariable, "variable"}}};
+
+// structure.analysis: the statics of every case linear about the drawn (prestressed) state, or
+// geometrically nonlinear (truss/truss_nonlinear.h). The modes are the drawn state's either way.
+enum class TrussAnalysisKind { kLinear, kNonlinear };
+inline constexpr std::array<Named<TrussAnalysisKind>, 2> kTrussAnalysisNames{
+    {{TrussAnalysisKind::kLinear, "linear"}, {TrussAnalysisKind::kNonlinear, "nonlinear"}}};
+
+inline const char* NameOf(TrussKind k) { return NameIn(kTrussKindNames, k); }
+inline const char* NameOf(BucklingRule k) { return NameIn(kBucklingRuleNames, k); }
+inline const char* NameOf(Axis k) { return NameIn(kAxisNames, k); }
+inline const char* NameOf(StructurePrestress k) { return NameIn(kStructurePrestressNames, k); }
+inline const char* NameOf(TrussAnalysisKind k) { return NameIn(kTrussAnalysisNames, k); }
 
 // A rigid bar between two distinct nodes; its length is held at the given node positions.
 struct StructureBarConfig {
@@ -55,14 +91,14 @@ struct StructureGroupConfig {
   std::string name;
   // "string": tension only (a compression row keeps it taut); "bar": compression only, with
   // Euler buckling unless `buckling` is "none"; "truss": either sign, elastic E A / L.
-  std::string kind = "truss";
+  TrussKind kind = TrussKind::kTruss;
   double min_area_m2 = 0;                        // [m^2], > 0
   std::optional<double> max_area_m2;             // [m^2]; none: unbounded
   std::optional<double> allowed_tension_pa;      // [Pa]; strings and trusses
   std::optional<double> allowed_compression_pa;  // [Pa]; bars and trusses
   // "auto": Euler for bars, none for trusses; "euler": a solid round section's Euler load
   // pi^2 E I / L^2 with I = A^2 / (4 pi), divided by design.buckling_safety_factor; "none".
-  std::string buckling = "auto";
+  BucklingRule buckling = BucklingRule::kAuto;
 };
 
 // A load case of a designed structure: its node forces times `factor` (with the members'
@@ -75,9 +111,9 @@ struct StructureLoadCase {
 
 // A displacement limit of a designed structure: |u_axis(node)| <= max_m in every case.
 struct StructureDisplacementLimit {
-  int node = 1;            // 1-based, a free node
-  std::string axis = "y";  // "x" | "y" | "z"
-  double max_m = 0;        // [m], > 0
+  int node = 1;  // 1-based, a free node
+  Axis axis = Axis::kY;
+  double max_m = 0;  // [m], > 0
 };
 
 struct StructureLimits {
@@ -108,11 +144,11 @@ struct StructureConfig {
   StructureLimits limits;
   // "none": each member's rest length is its drawn length; "variable": the amplitudes of the
   // structure's self-stress states are variables of the sizing beside the areas.
-  std::string prestress = "none";
+  StructurePrestress prestress = StructurePrestress::kNone;
   // "linear": each case's statics small-displacement about the drawn state; "nonlinear":
   // geometrically nonlinear (large displacements, the members' forces along their turned
   // directions).
-  std::string analysis = "linear";
+  TrussAnalysisKind analysis = TrussAnalysisKind::kLinear;
 
   // Whether this is the designable form (`members` given).
   bool Designable() const { return !members.empty(); }

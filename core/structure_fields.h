@@ -41,7 +41,7 @@ void DescribeFields(S& c, V& v) requires std::is_same_v<std::remove_const_t<S>, 
          c.displacements, [&](auto& d, auto& e) {
            e.Integer(KeyInfo{"node", "–", "a free node", true, "integer in [1, node count]"},
                      d.node, 1, kMaxStructureNodes);
-           e.Choice(KeyInfo{"axis", "–", "the displacement's direction"}, d.axis, {"x", "y", "z"});
+           EnumChoice(e, KeyInfo{"axis", "–", "the displacement's direction"}, d.axis, kAxisNames);
            e.Number(KeyInfo{"max_m", "m", "the displacement's magnitude at most this", true},
                     d.max_m, Range::Positive());
          });
@@ -69,10 +69,11 @@ void DescribeDesignable(S& c, V& v, const N& nodes) {
   v.List(KeyInfo{"groups", "–", "families of members designed to one area each"}, c.groups,
          [&](auto& g, auto& e) {
            e.Text(KeyInfo{"name", "–", "the group's name, each once", true}, g.name);
-           e.Choice(KeyInfo{"kind", "–",
-                            "`\"string\"`: tension only (a row keeps it taut); `\"bar\"`: "
-                            "compression only; `\"truss\"`: either sign. All elastic, E·A / L"},
-                    g.kind, {"string", "bar", "truss"});
+           EnumChoice(e,
+                      KeyInfo{"kind", "–",
+                              "`\"string\"`: tension only (a row keeps it taut); `\"bar\"`: "
+                              "compression only; `\"truss\"`: either sign. All elastic, E·A / L"},
+                      g.kind, kTrussKindNames);
            e.Number(KeyInfo{"min_area_m2", "m²", "the smallest area the design may give", true},
                     g.min_area_m2, Range::Positive());
            e.OptionalNumber(KeyInfo{"max_area_m2", "m²", "the largest area; none: unbounded"},
@@ -86,12 +87,13 @@ void DescribeDesignable(S& c, V& v, const N& nodes) {
                        "the allowed compressive stress (a magnitude); required for bars "
                        "and trusses, not given for strings"},
                g.allowed_compression_pa, Range::Positive(), Absent::kOmitted);
-           e.Choice(KeyInfo{"buckling", "–",
-                            "`\"euler\"`: the compression is held to a solid round section's "
-                            "Euler load π²·E·I / L², I = A² / (4π), over "
-                            "`design.buckling_safety_factor`; `\"none\"`; `\"auto\"`: Euler for "
-                            "bars, none for trusses (strings take none)"},
-                    g.buckling, {"auto", "euler", "none"});
+           EnumChoice(e,
+                      KeyInfo{"buckling", "–",
+                              "`\"euler\"`: the compression is held to a solid round section's "
+                              "Euler load π²·E·I / L², I = A² / (4π), over "
+                              "`design.buckling_safety_factor`; `\"none\"`; `\"auto\"`: Euler for "
+                              "bars, none for trusses (strings take none)"},
+                      g.buckling, kBucklingRuleNames);
          });
   v.List(KeyInfo{"load_cases", "–",
                  "the design's load cases; each member's weight (`design.self_weight`) is in "
@@ -106,20 +108,23 @@ void DescribeDesignable(S& c, V& v, const N& nodes) {
            });
          });
   v.Section("limits", c.limits);
-  v.Choice(KeyInfo{"prestress", "–",
-                   "`\"none\"`: each member's rest length is its drawn length; `\"variable\"`: "
-                   "the amplitudes of the structure's self-stress states (member forces that "
-                   "balance at every node without load, no support taking any) are sized with "
-                   "the areas, their geometric stiffness N0 / L in every analysis; the design "
-                   "file gives each member's `prestress_n` and `rest_length_m`"},
-           c.prestress, {"none", "variable"});
-  v.Choice(KeyInfo{"analysis", "–",
-                   "each load case's statics in the sizing and the check: `\"linear\"`, small "
-                   "displacements about the drawn (prestressed) state, as the classic sizing "
-                   "problems assume; `\"nonlinear\"`, geometrically nonlinear (each member's "
-                   "force N0 + E·A·(l − L) / L along its turned direction, Newton in load steps), "
-                   "with its own derivatives. The modes are the drawn state's either way"},
-           c.analysis, {"linear", "nonlinear"});
+  EnumChoice(v,
+             KeyInfo{"prestress", "–",
+                     "`\"none\"`: each member's rest length is its drawn length; `\"variable\"`: "
+                     "the amplitudes of the structure's self-stress states (member forces that "
+                     "balance at every node without load, no support taking any) are sized with "
+                     "the areas, their geometric stiffness N0 / L in every analysis; the design "
+                     "file gives each member's `prestress_n` and `rest_length_m`"},
+             c.prestress, kStructurePrestressNames);
+  EnumChoice(
+      v,
+      KeyInfo{"analysis", "–",
+              "each load case's statics in the sizing and the check: `\"linear\"`, small "
+              "displacements about the drawn (prestressed) state, as the classic sizing "
+              "problems assume; `\"nonlinear\"`, geometrically nonlinear (each member's "
+              "force N0 + E·A·(l − L) / L along its turned direction, Newton in load steps), "
+              "with its own derivatives. The modes are the drawn state's either way"},
+      c.analysis, kTrussAnalysisNames);
 }
 
 template <class S, class V>

@@ -29,7 +29,7 @@ nlohmann::json ComfortJson(const Design& d) {
   nlohmann::json modes = nlohmann::json::array();
   for (const ComfortMode& m : c.modes) {
     modes.push_back({{"index", m.index},
-                     {"direction", m.direction},
+                     {"direction", NameOf(m.direction)},
                      {"share", m.share},
                      {"frequency_hz", m.frequency_hz},
                      {"frequency_empty_hz", m.frequency_empty_hz},
@@ -106,7 +106,7 @@ std::vector<std::string> ComfortSummaryLines(const Design& d) {
                   "  mode %d %s: f = %.4g Hz (empty %.4g Hz), modal mass %.5g kg, range %d; %s; "
                   "peak acceleration "
                   "%.4g m/s^2 at node %d, limit %.3g m/s^2: %s (%s)",
-                  m.index, m.direction.c_str(), m.frequency_hz, m.frequency_empty_hz,
+                  m.index, NameOf(m.direction), m.frequency_hz, m.frequency_empty_hz,
                   m.modal_mass_kg, m.range, m.load_model.c_str(), m.acceleration_m_s2, m.node + 1,
                   m.limit_m_s2, m.pass ? "passes" : "FAILS", m.comfort_class.c_str());
     out.push_back(text);

@@ -66,7 +66,8 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
                              const DesignConfig& config, SolverOutcome& outcome,
                              std::string& form) {
   const bool applies = problem && problem->DirectApplies();
-  const bool direct = config.solver == "direct" || (config.solver == "auto" && applies);
+  const bool direct =
+      config.solver == SolverKind::kDirect || (config.solver == SolverKind::kAuto && applies);
   form = "self-stress";
   Eigen::VectorXd x;
   MinMassSolution out;
@@ -90,9 +91,9 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
     return reduced_forces();
   }
   // "auto" takes the first iterative solver built in (Ipopt before NLopt).
-  std::string name = config.solver;
-  if (name == "auto") {
-    const std::vector<std::string> built = BuiltInIterativeSolvers();
+  SolverKind solver = config.solver;
+  if (solver == SolverKind::kAuto) {
+    const std::vector<SolverKind> built = BuiltInIterativeSolvers();
     if (built.empty()) {
       throw ConfigError(
           "design.solver", "\"auto\"",
@@ -100,12 +101,12 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
               " self-stress states and needs an iterative solver, but this build has neither "
               "Ipopt nor NLopt (rebuild with -DTBRIDGE_WITH_IPOPT=ON or -DTBRIDGE_WITH_NLOPT=ON)");
     }
-    name = built.front();
+    solver = built.front();
   }
   SolverOptions options;
   options.tolerance = config.tolerance;
   options.max_iterations = config.max_iterations;
-  auto solve = [&](const NlpProblem& nlp) { return SolveNlp(name, nlp, options, x); };
+  auto solve = [&](const NlpProblem& nlp) { return SolveNlp(solver, nlp, options, x); };
   // The full problem holds one load case; several cases need the self-stress form.
   if (single_loads == nullptr && problem == nullptr) {
     throw ModelError(
@@ -121,7 +122,7 @@ MinMassSolution SolveMinMass(const ReducedMinMassProblem* problem, int states, c
       return static_cast<double>(p.num_constraints()) * p.num_variables();
     };
     const bool take_full =
-        !problem || (config.solver == "nlopt"
+        !problem || (config.solver == SolverKind::kNlopt
                          ? dense(*problem) > dense(full)
                          : problem->JacobianPattern().size() > full.JacobianPattern().size());
     if (take_full) {
@@ -536,7 +537,7 @@ void RequireDesignFound(const Design& d, const Config& config, const Equilibrium
       d.equilibrium_residual > 1e-6 * load_scale || smallest < -1e-6 * load_scale) {
     std::ostringstream os;
     os << "no minimum-mass design found for n = " << config.bridge.n << ", p = " << config.bridge.p
-       << ", beta = " << config.bridge.beta_deg << " deg: solver " << d.solver.solver
+       << ", beta = " << config.bridge.beta_deg << " deg: solver " << NameOf(d.solver.solver)
        << " returned status " << d.solver.status << " after " << d.solver.iterations
        << " iterations (equilibrium residual " << d.equilibrium_residual << " N)";
     if (d.topology.planes == 2) {

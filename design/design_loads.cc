@@ -50,13 +50,11 @@ void Read(const json& j, const std::string& key, double& field) {
 // A choice (comfort.traffic_class, comfort.comfort_level) by its text in the enum's table.
 template <class E>
 void Read(const json& j, const std::string& key, E& field) requires std::is_enum_v<E> {
-  std::string allowed;
-  for (const auto& n : NamesOf(field))
-    allowed += (allowed.empty() ? "\"" : ", \"") + std::string(n.name) + "\"";
   const std::optional<E> value =
       j.is_string() ? ValueIn(NamesOf(field), j.get<std::string>()) : std::nullopt;
   if (!value)
-    throw ConfigError(key, j.dump(), "one of " + allowed + ", as tbridge design writes it");
+    throw ConfigError(key, j.dump(),
+                      "one of " + QuotedNames(NamesOf(field)) + ", as tbridge design writes it");
   field = *value;
 }
 void Read(const json& j, const std::string& key, std::optional<double>& field) {

@@ -520,7 +520,7 @@ Design ReadDesign(const json& file) {
     RecordAsBuilt(file, d, drawn);
   }
   AssessReferenceState(d);
-  d.solver.solver = "none";
+  d.solver.solver = SolverKind::kNone;
   d.solver.status = kReadFromFile;
   d.solver.success = true;
   d.solver_form = kReadFromFile;

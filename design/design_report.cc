@@ -266,11 +266,11 @@ void AppendMember(std::string& out, const MemberSizing& m, const Member& topolog
   out += "{\"area\": ";
   AppendNumber(out, m.area);
   // The constraint that costs the member's group most, and its multiplier (mass attribution).
-  if (binding && !binding->kind.empty()) {
+  if (binding && binding->kind) {
     out += ", \"binding\": {\"case\": ";
     AppendString(out, binding->case_label);
     out += ", \"kind\": ";
-    AppendString(out, binding->kind);
+    AppendString(out, kConstraintKinds[*binding->kind]);
     out += ", \"multiplier\": ";
     AppendNumber(out, binding->multiplier);
     out += ", \"unit\": ";
@@ -640,9 +640,11 @@ std::string WhatMovesIt(const Design& d, const Verdict& v) {
         m.acceleration_m_s2 > m.limit_m_s2 && m.limit_m_s2 > 0
             ? m.acceleration_m_s2 / m.limit_m_s2 - 1
             : (m.lock_in_pedestrians > 0 ? d.comfort.pedestrians / m.lock_in_pedestrians - 1 : 0);
-    found.push_back({over, "comfort (" + m.direction + " mode " + std::to_string(m.index) + ")",
-                     "comfort.comfort_level, comfort.traffic_class, bridge.beta_deg, bridge.n, "
-                     "design.max_sizings"});
+    found.push_back(
+        {over,
+         "comfort (" + std::string(NameOf(m.direction)) + " mode " + std::to_string(m.index) + ")",
+         "comfort.comfort_level, comfort.traffic_class, bridge.beta_deg, bridge.n, "
+         "design.max_sizings"});
   }
   if (!d.stability.stable) {
     found.push_back({std::numeric_limits<double>::infinity(), "stability",
@@ -709,7 +711,7 @@ json MassJson(const Design& d) {
 // The solver section, with its optimality certificate when one was computed.
 json SolverJson(const Design& d) {
   const Resizing::Kkt& kkt = d.resizing.kkt;
-  return {{"name", d.solver.solver},
+  return {{"name", NameOf(d.solver.solver)},
           {"status", d.solver.status},
           {"iterations", d.solver.iterations},
           {"problem", d.solver_form},
@@ -825,7 +827,7 @@ void AppendSummaryDesign(std::string& out, const Design& d, const DeckBeamCheck&
     line(Format(
         "solver: %s on the %s problem, status %s after %d iterations; equilibrium residual %.2e N; "
         "self-stress states: %d",
-        d.solver.solver.c_str(), d.solver_form.c_str(), d.solver.status.c_str(),
+        NameOf(d.solver.solver), d.solver_form.c_str(), d.solver.status.c_str(),
         d.solver.iterations, d.equilibrium_residual, d.self_stress_states));
   }
   const StabilityVerdict& v = d.stability;

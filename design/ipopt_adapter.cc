@@ -239,7 +239,7 @@ SolverOutcome SolveHere(const NlpProblem& problem, const SolverOptions& options,
     app->Options()->SetStringValue("hessian_approximation", "limited-memory");
 
   SolverOutcome out;
-  out.solver = "ipopt";
+  out.solver = SolverKind::kIpopt;
   Ipopt::ApplicationReturnStatus status = app->Initialize();
   if (status != Ipopt::Solve_Succeeded) {
     out.status = StatusName(status);

@@ -98,7 +98,7 @@ SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& opt
   opt.set_maxeval(options.max_iterations);
 
   SolverOutcome out;
-  out.solver = "nlopt";
+  out.solver = SolverKind::kNlopt;
   std::vector<double> xs(x.data(), x.data() + n);
   double f = 0;
   try {

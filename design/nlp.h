@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/design_choices.h"
+
 namespace tbridge {
 
 class NlpProblem {
@@ -48,9 +50,9 @@ class NlpProblem {
 
 // What a solver reports back: a value, not a getter.
 struct SolverOutcome {
-  std::string solver;   // "direct" | "ipopt" | "nlopt"
-  std::string status;   // the solver's own status name
-  std::string message;  // human-readable detail
+  SolverKind solver = SolverKind::kNone;  // kDirect, kSqp, kIpopt or kNlopt
+  std::string status;                     // the solver's own status name
+  std::string message;                    // human-readable detail
   int iterations = 0;
   bool success = false;
   double objective = 0;  // f at the returned x

@@ -43,7 +43,7 @@ std::vector<PrestressStateSpec> PrestressStatesOf(const Config& config) {
     other.push_back({PrestressState::kLowest, 1.0 - loss, tolerance > 0 ? -1 : 0, 0.0, suffix});
   }
   const LoadsConfig& l = config.loads;
-  if (std::find(l.cases.begin(), l.cases.end(), "temperature") != l.cases.end()) {
+  if (l.Asks(LoadFamily::kTemperature)) {
     other = WarmerAndColder(other.empty() ? std::vector<PrestressStateSpec>{designed} : other,
                             l.gamma_t * l.psi0_temperature * l.temperature_delta_k);
   }

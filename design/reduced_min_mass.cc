@@ -232,7 +232,7 @@ SolverOutcome ReducedMinMassProblem::SolveDirect(Eigen::VectorXd& x) const {
   if (!DirectApplies())
     throw ModelError("min-mass: the direct solve needs at most one self-stress, loading no bar");
   SolverOutcome out;
-  out.solver = "direct";
+  out.solver = SolverKind::kDirect;
   x = Eigen::VectorXd::Zero(num_variables());
   if (s_ == 1) {
     // The objective is linear in alpha (strings only: each area is its largest case tension,

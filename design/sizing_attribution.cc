@@ -8,23 +8,9 @@
 namespace tbridge {
 namespace {
 
-enum KindIndex {
-  kStrengthKind,
-  kBucklingKind,
-  kYieldKind,
-  kDeflectionKind,
-  kTautKind,
-  kMinimumKind,
-  kDynamicsKind,
-  kComfortKind,
-  kSupportsKind,
-  kServiceStressKind,
-  kRobustnessKind
-};
-
 // The row's kind; a strength row's share that the dynamic runs add (`dynamic` of its member)
 // goes to "dynamics" (DynamicShare).
-int KindOf(const SizingRow& row) {
+ConstraintKind KindOf(const SizingRow& row) {
   // Whatever its kind, a row of another state of the prestress: what the loss and the rest-length
   // tolerance cost.
   if (row.state != 0) return kRobustnessKind;
@@ -53,7 +39,7 @@ int KindOf(const SizingRow& row) {
 }
 
 double DynamicShare(const SizingRow& row, const std::vector<double>& dynamic) {
-  const int kind = KindOf(row);
+  const ConstraintKind kind = KindOf(row);
   const bool strength = kind == kStrengthKind || kind == kBucklingKind || kind == kYieldKind;
   return strength && row.member >= 0 && row.member < static_cast<int>(dynamic.size())
              ? dynamic[row.member]
@@ -63,13 +49,13 @@ double DynamicShare(const SizingRow& row, const std::vector<double>& dynamic) {
 // The multiplier of a row in physical units: the rows are scaled (problem.h), utilisation and
 // deflection rows as fractions of their limits, tension rows by the force scale, areas by
 // the group's area scale.
-double Physical(int kind, double lambda, const SizingProblem& p, int group) {
+double Physical(ConstraintKind kind, double lambda, const SizingProblem& p, int group) {
   if (kind == kTautKind) return lambda * p.mass_scale_kg() / p.force_scale_n();
   if (kind == kMinimumKind) return lambda * p.mass_scale_kg() / p.area_scale_m2(group);
   return lambda * p.mass_scale_kg();
 }
 
-const char* UnitOf(int kind) {
+const char* UnitOf(ConstraintKind kind) {
   return kind == kTautKind         ? "kg/N"
          : kind == kDeflectionKind ? "kg per unit deflection / limit"
          : kind == kMinimumKind    ? "kg/m^2"
@@ -120,7 +106,7 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x,
                                                             : Eigen::VectorXd();
   for (int r = 0; r < nr; ++r) {
     const double f = DynamicShare(p.rows()[r], dynamic);
-    const int kind = KindOf(p.rows()[r]);
+    const ConstraintKind kind = KindOf(p.rows()[r]);
     const double scale = z[r] * p.mass_scale_kg();
     out.mass_by_kind_kg[kind] += (1 - f) * scale * along_x[r];
     out.mass_by_kind_kg[kDynamicsKind] += f * scale * along_x[r];
@@ -158,14 +144,14 @@ MassAttribution AttributeMass(const SizingProblem& p, const Eigen::VectorXd& x,
     const int v = group_of[j], r = best_row[v];
     MemberBinding& b = out.members[j];
     if (r >= 0) {
-      const int kind =
+      const ConstraintKind kind =
           DynamicShare(p.rows()[r], dynamic) > 0.5 ? kDynamicsKind : KindOf(p.rows()[r]);
-      b.kind = kConstraintKinds[kind];
+      b.kind = kind;
       b.case_label = p.RowLabel(r);
       b.multiplier = Physical(kind, z[r], p, v);
       b.unit = UnitOf(kind);
     } else if (r <= -2) {
-      b.kind = kConstraintKinds[kMinimumKind];
+      b.kind = kMinimumKind;
       b.multiplier = Physical(kMinimumKind, z[nr - 2 - r], p, v);
       b.unit = UnitOf(kMinimumKind);
     }

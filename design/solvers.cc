@@ -42,56 +42,62 @@ SolveFunction LoadAdapter(const std::string& name) {
       "its module " + file + " is not next to the executable nor in " TBRIDGE_MODULE_DIR + errors);
 }
 
-SolveFunction Adapter(const std::string& name) {
+SolveFunction Adapter(SolverKind solver) {
   static std::mutex mutex;
   static SolveFunction ipopt = nullptr, nlopt = nullptr;
   const std::lock_guard<std::mutex> lock(mutex);
-  SolveFunction& f = name == "ipopt" ? ipopt : nlopt;
-  if (f == nullptr) f = LoadAdapter(name);
+  SolveFunction& f = solver == SolverKind::kIpopt ? ipopt : nlopt;
+  if (f == nullptr) f = LoadAdapter(NameOf(solver));
   return f;
 }
 
 }  // namespace
 
-std::vector<std::string> BuiltInIterativeSolvers() {
-  std::vector<std::string> names;
+std::vector<SolverKind> BuiltInIterativeSolvers() {
+  std::vector<SolverKind> solvers;
 #ifdef TBRIDGE_HAVE_IPOPT
-  names.push_back("ipopt");
+  solvers.push_back(SolverKind::kIpopt);
 #endif
 #ifdef TBRIDGE_HAVE_NLOPT
-  names.push_back("nlopt");
+  solvers.push_back(SolverKind::kNlopt);
 #endif
-  return names;
+  return solvers;
 }
 
-std::vector<std::string> BuiltInSolvers() {
-  std::vector<std::string> names{"auto", "direct"};
-  for (const std::string& s : BuiltInIterativeSolvers()) names.push_back(s);
-  return names;
+std::vector<SolverKind> BuiltInSolvers() {
+  std::vector<SolverKind> solvers{SolverKind::kAuto, SolverKind::kDirect};
+  for (SolverKind s : BuiltInIterativeSolvers()) solvers.push_back(s);
+  return solvers;
 }
 
-bool SolverBuiltIn(const std::string& name) {
-  const std::vector<std::string> names = BuiltInSolvers();
-  return std::find(names.begin(), names.end(), name) != names.end();
+bool SolverBuiltIn(SolverKind solver) {
+  if (solver == SolverKind::kSqp) return true;
+  const std::vector<SolverKind> solvers = BuiltInSolvers();
+  return std::find(solvers.begin(), solvers.end(), solver) != solvers.end();
 }
 
-void RequireSolverBuiltIn(const std::string& name) {
-  if (SolverBuiltIn(name)) return;
+void RequireSolverBuiltIn(SolverKind solver) {
+  if (SolverBuiltIn(solver)) return;
   std::string list;
-  for (const std::string& s : BuiltInSolvers()) list += (list.empty() ? "\"" : ", \"") + s + "\"";
-  const std::string option = name == "ipopt" ? "TBRIDGE_WITH_IPOPT" : "TBRIDGE_WITH_NLOPT";
+  for (SolverKind s : BuiltInSolvers())
+    list += (list.empty() ? "\"" : ", \"") + std::string(NameOf(s)) + "\"";
+  const std::string name = NameOf(solver);
+  const std::string option =
+      solver == SolverKind::kIpopt ? "TBRIDGE_WITH_IPOPT" : "TBRIDGE_WITH_NLOPT";
   throw ConfigError(
-      "design.solver", "\"" + Printable(name) + "\"",
+      "design.solver", "\"" + name + "\"",
       "this build has no " + name + " (built in: " + list + "; rebuild with -D" + option + "=ON)");
 }
 
-SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem,
-                       const SolverOptions& options, Eigen::VectorXd& x) {
-  if (name == "sqp") return SolveWithSqp(problem, options, x);
-  RequireSolverBuiltIn(name);
-  if (name == "ipopt" || name == "nlopt") return Adapter(name)(problem, options, x);
-  throw ConfigError("design.solver", "\"" + Printable(name) + "\"",
-                    "not an iterative solver (\"ipopt\" or \"nlopt\")");
+SolverOutcome SolveNlp(SolverKind solver, const NlpProblem& problem, const SolverOptions& options,
+                       Eigen::VectorXd& x) {
+  if (solver == SolverKind::kSqp) return SolveWithSqp(problem, options, x);
+  if (solver != SolverKind::kIpopt && solver != SolverKind::kNlopt) {
+    throw ConfigError("design.solver", "\"" + std::string(NameOf(solver)) + "\"",
+                      "not an iterative solver (\"ipopt\" or \"nlopt\")");
+  }
+  RequireSolverBuiltIn(solver);
+  return Adapter(solver)(problem, options, x);
 }
 
 }  // namespace tbridge

@@ -6,29 +6,29 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <string>
 #include <vector>
 
 #include "design/nlp.h"
 
 namespace tbridge {
 
-// The values of design.solver this build accepts, in order: "auto", "direct", then "ipopt"
-// and "nlopt" when built in. "auto" and "direct" need no library.
-std::vector<std::string> BuiltInSolvers();
-// The iterative solvers built in ("ipopt", "nlopt"), possibly none.
-std::vector<std::string> BuiltInIterativeSolvers();
-bool SolverBuiltIn(const std::string& name);
+// The values of design.solver this build accepts, in order: kAuto, kDirect, then kIpopt and
+// kNlopt when built in. kAuto and kDirect need no library.
+std::vector<SolverKind> BuiltInSolvers();
+// The iterative solvers built in (kIpopt, kNlopt), possibly none.
+std::vector<SolverKind> BuiltInIterativeSolvers();
+// Whether this build has `solver`: kSqp (the verified sizing's own) always, kNone never.
+bool SolverBuiltIn(SolverKind solver);
 
-// Throws ConfigError naming design.solver, the value and the solvers built in when `name`
+// Throws ConfigError naming design.solver, the value and the solvers built in when `solver`
 // (a value of design.solver) needs a library this build lacks.
-void RequireSolverBuiltIn(const std::string& name);
+void RequireSolverBuiltIn(SolverKind solver);
 
-// Solves `problem` with the iterative solver `name` ("ipopt" or "nlopt", or "sqp": the
-// verified sizing's own, design/sqp_solver.h, always built in and not a value of
-// design.solver); `x` is the start on entry and the solution on return. Throws ConfigError
-// (design.solver) when `name` is not built in.
-SolverOutcome SolveNlp(const std::string& name, const NlpProblem& problem,
-                       const SolverOptions& options, Eigen::VectorXd& x);
+// Solves `problem` with the iterative solver `solver` (kIpopt or kNlopt, or kSqp: the verified
+// sizing's own, design/sqp_solver.h, always built in and not a value of design.solver); `x` is
+// the start on entry and the solution on return. Throws ConfigError (design.solver) when
+// `solver` is not built in or not iterative.
+SolverOutcome SolveNlp(SolverKind solver, const NlpProblem& problem, const SolverOptions& options,
+                       Eigen::VectorXd& x);
 
 }  // namespace tbridge

@@ -413,7 +413,7 @@ SolverOutcome SolveWithSqp(const NlpProblem& problem, const SolverOptions& optio
   ReadBounds(problem, lo, hi, g_lo, g_hi);
   const double tol = options.tolerance;
   SolverOutcome out;
-  out.solver = "sqp";
+  out.solver = SolverKind::kSqp;
 
   Evaluator eval(problem);
   Point cur, trial;

@@ -79,7 +79,7 @@ std::string ComfortCheck::Failures() const {
   for (const ComfortMode& m : modes) {
     if (m.pass) continue;
     if (os.tellp() > 0) os << "; ";
-    os << m.direction << " mode " << m.index << " at " << m.frequency_hz << " Hz: ";
+    os << NameOf(m.direction) << " mode " << m.index << " at " << m.frequency_hz << " Hz: ";
     if (m.acceleration_m_s2 > m.limit_m_s2) {
       os << m.acceleration_m_s2 << " m/s^2 > " << m.limit_m_s2 << " m/s^2 (" << m.load_model << ")";
     } else {

@@ -4,9 +4,11 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/deck_motion_kind.h"
 #include "core/design_choices.h"
 #include "design/limit_mode.h"
 
@@ -149,15 +151,30 @@ struct DynamicCheck {
 };
 
 // What drives the verified sizing's mass (design/sizing_attribution.h).
-// The kinds of constraint, in the order the outputs list them.
-inline constexpr const char* kConstraintKinds[] = {
+// The kinds of constraint, in the order the outputs list them: each indexes kConstraintKinds,
+// their texts, and the by-kind arrays below.
+enum ConstraintKind : int {
+  kStrengthKind,
+  kBucklingKind,
+  kYieldKind,
+  kDeflectionKind,
+  kTautKind,
+  kMinimumKind,
+  kDynamicsKind,
+  kComfortKind,
+  kSupportsKind,
+  kServiceStressKind,
+  kRobustnessKind,
+  kNumConstraintKinds
+};
+inline constexpr const char* kConstraintKinds[kNumConstraintKinds] = {
     "strength",      "buckling", "yield",   "deflection", "taut_strings",
     "minimum_sizes", "dynamics", "comfort", "supports",   "serviceability_stress",
     "robustness"};
-inline constexpr int kNumConstraintKinds = 11;
 
 struct MemberBinding {
-  std::string kind;        // one of kConstraintKinds: the constraint that costs its group most
+  // The constraint that costs its group most; none where nothing binds it.
+  std::optional<ConstraintKind> kind;
   std::string case_label;  // its combination ("uls_travelling at node 3"), empty for a size
   double multiplier = 0;   // lambda of that constraint, in `unit`
   std::string
@@ -180,10 +197,10 @@ struct MassAttribution {
 // One deck mode of the comfort check (verify/comfort_check.h): its motion, frequencies, modal
 // mass and, in a range of resonance risk, its steady peak acceleration under the crowd load.
 struct ComfortMode {
-  int index = 0;            // 1-based, in ascending frequency with the pedestrians on the deck
-  std::string direction;    // "vertical" | "lateral" | "longitudinal" | "torsional"
-  double share = 0;         // of the deck's motion in `direction` (DeckMotionReport)
-  double frequency_hz = 0;  // with the class's pedestrians on the deck
+  int index = 0;  // 1-based, in ascending frequency with the pedestrians on the deck
+  DeckMotion direction = DeckMotion::kVertical;  // never kLocal
+  double share = 0;               // of the deck's motion in `direction` (DeckMotionReport)
+  double frequency_hz = 0;        // with the class's pedestrians on the deck
   double frequency_empty_hz = 0;  // without them
   double modal_mass_kg =
       0;  // for the shape scaled to a largest deck displacement of 1 along its axis

@@ -8,22 +8,6 @@
 
 namespace tbridge {
 
-const char* DeckMotionName(DeckMotion motion) {
-  switch (motion) {
-    case DeckMotion::kVertical:
-      return "vertical";
-    case DeckMotion::kLateral:
-      return "lateral";
-    case DeckMotion::kLongitudinal:
-      return "longitudinal";
-    case DeckMotion::kTorsional:
-      return "torsional";
-    case DeckMotion::kLocal:
-      break;
-  }
-  return "local";
-}
-
 DeckMotionReport ProjectOnDeckMotions(const DynamicModel& model, const Eigen::Matrix3Xd& shape) {
   if (model.deck_nodes.empty()) throw ModelError("deck motions: the model has no deck nodes");
   if (shape.cols() != model.num_nodes())

@@ -18,13 +18,10 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "core/deck_motion_kind.h"
 #include "dynamics/model.h"
 
 namespace tbridge {
-
-enum class DeckMotion { kVertical, kLateral, kLongitudinal, kTorsional, kLocal };
-const char* DeckMotionName(
-    DeckMotion motion);  // "vertical" | "lateral" | "longitudinal" | "torsional" | "local"
 
 inline constexpr double kLocalDeckShare = 1e-3;
 inline constexpr double kSectionShare = 0.5;

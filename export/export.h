@@ -1,23 +1,29 @@
 // The FE formats a design is exported to, by name, and the writer of each.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 
+#include "core/named_choice.h"
 #include "design/design.h"
 #include "export/calculix.h"
 
 namespace tbridge {
 
+enum class ExportFormat { kCalculix, kOpenSees };
+inline constexpr std::array<Named<ExportFormat>, 2> kExportFormatNames{
+    {{ExportFormat::kCalculix, "calculix"}, {ExportFormat::kOpenSees, "opensees"}}};
 inline constexpr const char* kExportFormats = "calculix or opensees";
 
-// Whether `format` names a format: "calculix" or "opensees".
-bool IsExportFormat(const std::string& format);
+// The format `text` names ("calculix" or "opensees"); nullopt for any other text.
+inline std::optional<ExportFormat> ExportFormatOf(const std::string& text) {
+  return ValueIn(kExportFormatNames, text);
+}
 
-// Writes `design` in `format` (`options.modes` is CalculiX's). Throws ConfigError naming the
-// key "format" for an unknown format, before anything is written; ModelError when the
+// Writes `design` in `format` (`options.modes` is CalculiX's). Throws ModelError when the
 // reference state does not stand.
-void WriteExport(const Design& design, const std::string& format, const CalculixOptions& options,
+void WriteExport(const Design& design, ExportFormat format, const CalculixOptions& options,
                  std::ostream& os);
 
 }  // namespace tbridge

@@ -428,8 +428,13 @@ PYBIND11_MODULE(tbridge, m) {
         CalculixOptions options;
         options.rigid_bars = rigid_bars;
         options.modes = modes;
+        const std::optional<ExportFormat> chosen = ExportFormatOf(format);
+        if (!chosen) {
+          throw ConfigError("format", "'" + format + "'",
+                            std::string("expected ") + kExportFormats);
+        }
         std::ostringstream os;
-        WriteExport(design, format, options, os);
+        WriteExport(design, *chosen, options, os);
         return os.str();
       },
       py::arg("design"), py::arg("format"), py::arg("rigid_bars") = false, py::arg("modes") = 10,

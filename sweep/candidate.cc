@@ -205,7 +205,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
     // keep_area's rest lengths go to the models (dynamics.prestrain), as tbridge simulate takes
     // them.
     std::vector<StringPrestrain> prestrain;
-    if (prestrained && sw.prestrain_sizing == "grow_area") {
+    if (prestrained && sw.prestrain_sizing == PrestrainSizing::kGrowArea) {
       row.deck_string_area_factor = GrowDeckStrings(design, candidate.deck_prestrain);
       row.prestress = DeckStress(design);
     } else if (prestrained) {

@@ -11,8 +11,14 @@
 #include <vector>
 
 #include "core/config.h"
+#include "core/named_choice.h"
 
 namespace tbridge {
+
+// sweep.prestrain_sizing: see SweepConfig::prestrain_sizing.
+enum class PrestrainSizing { kGrowArea, kKeepArea };
+inline constexpr std::array<Named<PrestrainSizing>, 2> kPrestrainSizingNames{
+    {{PrestrainSizing::kGrowArea, "grow_area"}, {PrestrainSizing::kKeepArea, "keep_area"}}};
 
 // Joint (node) mass added to the objective, after Carpentieri, Skelton and Fraternali's
 // parametric design: per_node_kg for every free node, plus per_force_kg_per_N times the
@@ -59,7 +65,7 @@ struct SweepConfig {
   // the design area A0; the area grows to tension / sigma_w (never shrinks) so the prestress
   // stays allowed, and the mass shows it. "keep_area": A0 is kept, rest length = r x length
   // (the paper's Table 6 experiment); the implied stress E (1/r - 1) may exceed sigma_w.
-  std::string prestrain_sizing = "grow_area";
+  PrestrainSizing prestrain_sizing = PrestrainSizing::kGrowArea;
   // Each candidate is the verified design (verify/verified_design.h: its static and dynamic
   // checks, and the resizing of what fails), as tbridge design writes it; false: the
   // minimum-mass design alone.

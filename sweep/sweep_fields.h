@@ -88,7 +88,8 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
                     "rest/stretched length r of the deck strings; 1.0 = the design state "
                     "(prestressed at sigma_w by the minimum radius)"},
             s.deck_prestrain, Range{0.0, 1.0, true, false});
-  v.Choice(
+  EnumChoice(
+      v,
       KeyInfo{
           "prestrain_sizing", "–",
           "r < 1 asks for the deck-string tension T = E·A0·(1/r − 1), A0 the design area. "
@@ -96,7 +97,7 @@ void DescribeFields(S& s, V& v) requires std::is_same_v<std::remove_const_t<S>, 
           "the prestress stays allowed and `mass.deck_strings` (and structure, total) show it. "
           "`keep_area`: A0 kept, L0 = r·s (Table 6's experiment); the stress E·(1/r − 1) may "
           "exceed sigma_w. The design itself is unchanged; only the candidate's copy is"},
-      s.prestrain_sizing, {"grow_area", "keep_area"});
+      s.prestrain_sizing, kPrestrainSizingNames);
   v.Bool(
       KeyInfo{
           "verified", "–",

@@ -16,16 +16,16 @@ namespace tbridge::test {
 // TBRIDGE_WITH_NLOPT). A test that needs one is tagged [ipopt] or [nlopt], which ctest leaves
 // out of a build without it (tests/CMakeLists.txt), and REQUIREs it: it never passes having
 // run nothing.
-inline bool HaveSolvers(std::initializer_list<const char*> names) {
-  for (const char* name : names) {
-    if (!SolverBuiltIn(name)) return false;
+inline bool HaveSolvers(std::initializer_list<SolverKind> solvers) {
+  for (SolverKind solver : solvers) {
+    if (!SolverBuiltIn(solver)) return false;
   }
   return true;
 }
 
 // The paper's planar bridge (SPEC §1): L = 12 m, F = 12000 N, beta = 10 deg, solver as given
 // ("auto": the direct solve).
-inline Config PaperConfig(int n, const std::string& solver = "auto") {
+inline Config PaperConfig(int n, SolverKind solver = SolverKind::kAuto) {
   Config c;
   ApplyPaperSwitches(c);
   c.bridge.n = n;

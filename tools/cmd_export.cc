@@ -49,7 +49,8 @@ int RunExportCommand(const std::vector<std::string>& args) {
     return 0;
   }
   const std::string format = parsed.Required("-f");
-  if (!IsExportFormat(format))
+  const std::optional<ExportFormat> chosen = ExportFormatOf(format);
+  if (!chosen)
     throw OptionError("--format", "'" + format + "'", std::string("expected ") + kExportFormats);
   CalculixOptions options;
   options.rigid_bars = parsed.Flag("--rigid-bars");
@@ -78,7 +79,7 @@ int RunExportCommand(const std::vector<std::string>& args) {
   OutputTransaction outputs;
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& out = outputs.Stage(out_path);
-  WriteExport(design, format, options, out);
+  WriteExport(design, *chosen, options, out);
   outputs.Commit();
   std::cout << "wrote " << out_path << " (" << format << ")\n";
   return kExitOk;

@@ -125,7 +125,7 @@ nlohmann::json ModesToJson(const Config& config, const DynamicModel& model,
         {"period_s", m.period_s}, {"symmetry", nullptr},          {"symmetry_correlation", nullptr},
         {"motion", nullptr},      {"motion_share", nullptr}};
     if (motion[k]) {
-      entry["motion"] = DeckMotionName(motion[k]->motion);
+      entry["motion"] = NameOf(motion[k]->motion);
       const int which = static_cast<int>(motion[k]->motion);
       entry["motion_share"] = which < 4 ? motion[k]->share[which] : 0.0;
     }
@@ -184,7 +184,7 @@ std::string ModesTable(const ModalResult& result,
     std::snprintf(line, sizeof line, "%6zu %15.4g %11.4g %11.4g  %-13s  %s\n", k + 1, m.omega_rad_s,
                   m.frequency_hz, m.period_s,
                   symmetry[k] ? SymmetryName(symmetry[k]->symmetry) : "-",
-                  motion[k] ? DeckMotionName(motion[k]->motion) : "-");
+                  motion[k] ? NameOf(motion[k]->motion) : "-");
     out << line;
   }
   if (static_cast<int>(result.modes.size()) > max_rows) {
@@ -209,12 +209,14 @@ int RunModesCommand(const std::vector<std::string>& args) {
   outputs.ProtectInput(parsed.positionals[0]);
   std::ostream& json = outputs.Stage(out_path);
   ProgressReporter progress(ProgressReporter::Wanted(parsed.Flag("--progress")));
-  const std::string mass_model = parsed.Value("-M").value_or("design");
-  if (mass_model != "design" && mass_model != "crowd" && mass_model != "empty") {
-    throw UsageError("--mass expects design, crowd or empty, got '" + mass_model + "'");
+  const std::string mass_text = parsed.Value("-M").value_or("design");
+  const std::optional<ModalMassModel> parsed_mass = ValueIn(kModalMassModelNames, mass_text);
+  if (!parsed_mass) {
+    throw UsageError("--mass expects design, crowd or empty, got '" + mass_text + "'");
   }
-  if (mass_model != "design" && config.structure) {
-    throw UsageError("--mass " + mass_model +
+  const ModalMassModel mass_model = *parsed_mass;
+  if (mass_model != ModalMassModel::kDesign && config.structure) {
+    throw UsageError("--mass " + mass_text +
                      " needs a bridge config (a custom structure gives its own masses)");
   }
   // The verified bridge tbridge design writes, so that the modes are those of the bridge the
@@ -229,7 +231,7 @@ int RunModesCommand(const std::vector<std::string>& args) {
   const auto symmetry = Symmetries(model, result);
   const auto motion = Motions(model, result);
   json << ModesToJson(config, model, result, symmetry, motion, shapes,
-                      config.structure ? "structure" : mass_model)
+                      config.structure ? "structure" : NameOf(mass_model))
               .dump(2)
        << "\n";
   outputs.Commit();

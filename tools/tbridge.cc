@@ -70,7 +70,7 @@ namespace {
 // "auto, direct, ipopt, nlopt", or fewer when a solver was left out of the build.
 std::string SolverList() {
   std::string list;
-  for (const std::string& s : BuiltInSolvers()) list += (list.empty() ? "" : ", ") + s;
+  for (SolverKind s : BuiltInSolvers()) list += (list.empty() ? "" : ", ") + std::string(NameOf(s));
   return list;
 }
 

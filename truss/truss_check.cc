@@ -15,8 +15,6 @@ constexpr double kPi = std::numbers::pi;
 // The frequencies reported where no limit asks for more.
 constexpr int kReportedModes = 6;
 
-const char* kAxes[] = {"x", "y", "z"};
-
 // Member e's utilisation and its mode of failure under force n (tension > 0) at area a.
 std::pair<double, std::string> MemberUtilisation(const TrussModel& m, int e, double n, double a) {
   const TrussMember& member = m.members[static_cast<size_t>(e)];
@@ -82,7 +80,9 @@ void CheckMembers(const TrussModel& m, const Eigen::VectorXd& areas, TrussCheck&
 
 void CheckDisplacements(const TrussModel& m, TrussCheck& out) {
   for (const TrussDisplacementLimit& d : m.displacement_limits) {
-    TrussLimitCheck lc{"node " + std::to_string(d.node + 1) + " " + kAxes[d.axis], 0, d.max, 0, 0};
+    TrussLimitCheck lc{
+        "node " + std::to_string(d.node + 1) + " " + NameOf(static_cast<Axis>(d.axis)), 0, d.max, 0,
+        0};
     for (int c = 0; c < static_cast<int>(out.cases.size()); ++c) {
       const double u = std::abs(out.cases[static_cast<size_t>(c)].u[d.dof]);
       if (u > lc.value) lc.value = u, lc.governing_case = c;

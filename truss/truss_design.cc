@@ -12,7 +12,7 @@
 namespace tbridge {
 
 TrussDesign DesignTruss(const Config& config) {
-  if (config.design.solver == "direct") {
+  if (config.design.solver == SolverKind::kDirect) {
     throw ConfigError(
         "design.solver", "\"direct\"",
         "a structure is sized by an iterative solver: \"auto\", or one of those built in");
@@ -47,7 +47,14 @@ TrussSizing SizingOf(const nlohmann::json& file, const TrussModel& m) {
                                 "groups[" + std::to_string(g) + "].area");
   }
   const nlohmann::json& solver = file.at("solver");
-  s.outcome.solver = solver.value("name", "");
+  const std::string name = solver.value("name", "");
+  const std::optional<SolverKind> kind = ValueIn(kSolverNames, name);
+  if (!kind) {
+    throw ConfigError("solver.name",
+                      solver.contains("name") ? Show(solver.at("name")) : "(missing)",
+                      "one of " + QuotedNames(kSolverNames) + ", as tbridge design writes it");
+  }
+  s.outcome.solver = *kind;
   s.outcome.status = solver.value("status", "");
   s.outcome.iterations = solver.value("iterations", 0);
   s.start = solver.value("start", "");

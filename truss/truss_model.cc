@@ -11,37 +11,18 @@
 
 namespace tbridge {
 
-const char* TrussKindName(TrussKind kind) {
-  switch (kind) {
-    case TrussKind::kString:
-      return "string";
-    case TrussKind::kBar:
-      return "bar";
-    case TrussKind::kTruss:
-      return "truss";
-  }
-  return "truss";
-}
-
 namespace {
-
-TrussKind KindOf(const std::string& name) {
-  if (name == "string") return TrussKind::kString;
-  if (name == "bar") return TrussKind::kBar;
-  return TrussKind::kTruss;
-}
-
-int AxisOf(const std::string& axis) { return axis == "x" ? 0 : axis == "y" ? 1 : 2; }
 
 TrussGroup GroupOf(const StructureGroupConfig& g) {
   TrussGroup out;
   out.name = g.name;
-  out.kind = KindOf(g.kind);
+  out.kind = g.kind;
   out.min_area = g.min_area_m2;
   out.max_area = g.max_area_m2 ? *g.max_area_m2 : std::numeric_limits<double>::infinity();
   out.allowed_tension = g.allowed_tension_pa.value_or(0.0);
   out.allowed_compression = g.allowed_compression_pa.value_or(0.0);
-  out.euler = g.buckling == "euler" || (g.buckling == "auto" && out.kind == TrussKind::kBar);
+  out.euler = g.buckling == BucklingRule::kEuler ||
+              (g.buckling == BucklingRule::kAuto && out.kind == TrussKind::kBar);
   return out;
 }
 
@@ -144,14 +125,13 @@ TrussModel BuildTrussModel(const Config& config) {
     m.cases.push_back(std::move(tc));
   }
   for (const StructureDisplacementLimit& d : s.limits.displacements) {
-    TrussDisplacementLimit limit{d.node - 1, AxisOf(d.axis), 0, d.max_m};
+    TrussDisplacementLimit limit{d.node - 1, static_cast<int>(d.axis), 0, d.max_m};
     limit.dof = m.dof[static_cast<size_t>(limit.node * m.dim + limit.axis)];
     m.displacement_limits.push_back(limit);
   }
   m.min_frequencies_hz = s.limits.min_frequencies_hz;
-  if (s.prestress == "variable") m.self_stress = SelfStressStates(m);
-  m.analysis =
-      s.analysis == "nonlinear" ? TrussAnalysisKind::kNonlinear : TrussAnalysisKind::kLinear;
+  if (s.prestress == StructurePrestress::kVariable) m.self_stress = SelfStressStates(m);
+  m.analysis = s.analysis;
   return m;
 }
 

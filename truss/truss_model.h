@@ -19,18 +19,9 @@
 
 namespace tbridge {
 
-enum class TrussKind { kString, kBar, kTruss };
-
-// structure.analysis: the statics of every case linear about the drawn (prestressed) state, or
-// geometrically nonlinear (truss/truss_nonlinear.h). The modes are the drawn state's either way.
-enum class TrussAnalysisKind { kLinear, kNonlinear };
-
 // The most members whose self-stress states are found (a dense SVD of the equilibrium matrix,
 // O(members^3): 3000 take a few seconds here).
 inline constexpr int kTrussMaxSelfStressMembers = 3000;
-
-// "string", "bar", "truss": the config's and the design file's word for a kind.
-const char* TrussKindName(TrussKind kind);
 
 struct TrussGroup {
   std::string name;

@@ -59,7 +59,7 @@ json Members(const TrussDesign& d) {
         {{"name", m.MemberName(e)},
          {"nodes", {member.i + 1, member.j + 1}},
          {"group", g.name},
-         {"kind", TrussKindName(g.kind)},
+         {"kind", NameOf(g.kind)},
          {"length", member.length},
          {"area", c.area},
          {"mass", MassOfArea(m.density, c.area, member.length)},
@@ -118,7 +118,7 @@ json Limits(const TrussDesign& d) {
 
 json Solver(const TrussSizing& s) {
   const KktCertificate& k = s.kkt;
-  return {{"name", s.outcome.solver},
+  return {{"name", NameOf(s.outcome.solver)},
           {"status", s.outcome.status},
           {"iterations", s.outcome.iterations},
           {"start", s.start},
@@ -177,7 +177,7 @@ void WriteTrussDesignJson(const TrussDesign& d, std::ostream& os) {
   for (int g = 0; g < m.num_groups(); ++g) {
     const TrussGroup& group = m.groups[static_cast<size_t>(g)];
     groups.push_back({{"name", group.name},
-                      {"kind", TrussKindName(group.kind)},
+                      {"kind", NameOf(group.kind)},
                       {"area", d.sizing.group_areas[g]},
                       {"members", group.members.size()},
                       {"mass", MassOfArea(m.density, d.sizing.group_areas[g], group.length_sum)}});
@@ -234,8 +234,7 @@ std::string PrestressLine(const TrussDesign& d) {
       const double n = d.check.prestress[e] / 1e3;
       lo = any ? std::min(lo, n) : n, hi = any ? std::max(hi, n) : n, any = true;
     }
-    if (any)
-      os << " " << TrussKindName(kind) << "s " << Format("%.4g", lo) << Format(" to %.4g", hi);
+    if (any) os << " " << NameOf(kind) << "s " << Format("%.4g", lo) << Format(" to %.4g", hi);
   }
   return os.str() + "\n";
 }
@@ -252,8 +251,9 @@ std::string TrussDesignSummary(const TrussDesign& d) {
   const double mass = m.MassOfMembers(d.check.Areas());
   os << "mass of the members: " << Format("%.6g kg", mass)
      << Format(" (%.6g lb)", mass / 0.45359237) << "\n";
-  os << "solver: " << d.sizing.outcome.solver << ", status " << d.sizing.outcome.status << " after "
-     << d.sizing.outcome.iterations << " iterations, from the start " << d.sizing.start << "\n";
+  os << "solver: " << NameOf(d.sizing.outcome.solver) << ", status " << d.sizing.outcome.status
+     << " after " << d.sizing.outcome.iterations << " iterations, from the start " << d.sizing.start
+     << "\n";
   const KktCertificate& k = d.sizing.kkt;
   os << (k.proved_local_optimum
              ? "optimality: first- and second-order conditions hold (stationarity " +
@@ -270,7 +270,7 @@ std::string TrussDesignSummary(const TrussDesign& d) {
   os << "groups (area [m^2], mass [kg]):\n";
   for (int g = 0; g < m.num_groups(); ++g) {
     const TrussGroup& group = m.groups[static_cast<size_t>(g)];
-    os << "  " << group.name << " (" << TrussKindName(group.kind) << ", " << group.members.size()
+    os << "  " << group.name << " (" << NameOf(group.kind) << ", " << group.members.size()
        << " members): " << Format("%.6g", d.sizing.group_areas[g])
        << Format(", %.6g", MassOfArea(m.density, d.sizing.group_areas[g], group.length_sum))
        << "\n";

@@ -450,7 +450,7 @@ bool Better(const Attempt& a, const Attempt& b) {
 }
 
 Attempt Solve(const TrussModel& m, const std::vector<TrussRow>& rows, const Eigen::VectorXd& start,
-              const std::string& solver, const SolverOptions& options, const std::string& label) {
+              SolverKind solver, const SolverOptions& options, const std::string& label) {
   const TrussProblem problem(m, rows, start);
   Eigen::VectorXd x = problem.Start();
   Attempt a;
@@ -613,7 +613,7 @@ TrussMassAttribution AttributeMass(const TrussModel& m, const std::vector<TrussR
 
 }  // namespace
 
-TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tolerance,
+TrussSizing SizeTruss(const TrussModel& m, SolverKind solver, double tolerance,
                       int max_iterations) {
   const std::vector<TrussRow> rows = TrussRows(m);
   SolverOptions options;
@@ -638,14 +638,14 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
   // (from that point), or from every start of a non-convex program: the two reach different
   // local optima there (the 10-bar displacement problem: the SQP 5076.67 lb from every start,
   // Ipopt the published 5060.85 lb from two of four, each proved).
-  const bool ipopt = solver == "auto" && SolverBuiltIn("ipopt");
+  const bool ipopt = solver == SolverKind::kAuto && SolverBuiltIn(SolverKind::kIpopt);
   const bool non_convex = starts.size() > 1;
-  const std::string first = solver == "auto" ? "sqp" : solver;
+  const SolverKind first = solver == SolverKind::kAuto ? SolverKind::kSqp : solver;
   TrussSizing out;
   Attempt best;
   bool any = false;
   const auto record = [&out](const Attempt& a) {
-    out.tries.push_back(a.start + ": " + a.outcome.solver + " " + a.outcome.status +
+    out.tries.push_back(a.start + ": " + NameOf(a.outcome.solver) + " " + a.outcome.status +
                         Format(", %.6g kg, ", a.mass) +
                         (a.kkt.proved_local_optimum ? "proved" : "not proved: " + a.kkt.failed));
   };
@@ -660,7 +660,7 @@ TrussSizing SizeTruss(const TrussModel& m, const std::string& solver, double tol
       SolverOptions second = options;
       if (non_convex)
         second.max_iterations = std::min(options.max_iterations, kSecondOpinionIterations);
-      Attempt b = Solve(m, rows, from_sqp ? a.variables : start, "ipopt", second,
+      Attempt b = Solve(m, rows, from_sqp ? a.variables : start, SolverKind::kIpopt, second,
                         label + (from_sqp ? ", then ipopt" : ", ipopt"));
       record(b);
       if (Better(b, a)) a = std::move(b);

@@ -93,14 +93,14 @@ struct TrussSizing {
   TrussMassAttribution attribution;
 };
 
-// The sizing of `model` with design.solver (`solver`: "auto" takes the SQP, then Ipopt where the
+// The sizing of `model` with design.solver (`solver`: kAuto takes the SQP, then Ipopt where the
 // SQP's point is not proved optimal), `tolerance` and `max_iterations`. Displacement and
 // frequency limits make the program non-convex: it is then solved from several starts, by both
-// solvers under "auto", and of the feasible points the lightest proved one is kept (the
+// solvers under kAuto, and of the feasible points the lightest proved one is kept (the
 // lightest where none is proved). Where no start gives a feasible point, the least infeasible
 // is kept: its check fails and names the row. Throws ModelError where the structure is a
 // mechanism.
-TrussSizing SizeTruss(const TrussModel& model, const std::string& solver, double tolerance,
+TrussSizing SizeTruss(const TrussModel& model, SolverKind solver, double tolerance,
                       int max_iterations);
 
 }  // namespace tbridge

@@ -56,7 +56,7 @@ int NthOf(const DeckModes& modes, DeckMotion motion, int rank) {
 ComfortMode Assess(const Design& d, const ComfortCheck& check, const Mode& mode,
                    const DeckMotionReport& motion, double empty_hz) {
   ComfortMode m;
-  m.direction = DeckMotionName(motion.motion);
+  m.direction = motion.motion;
   m.share = motion.share[static_cast<int>(motion.motion)];
   m.node = motion.peak_node;
   m.modal_mass_kg = 1.0 / (motion.peak_displacement * motion.peak_displacement);
@@ -69,9 +69,9 @@ ComfortMode Assess(const Design& d, const ComfortCheck& check, const Mode& mode,
 
 }  // namespace
 
-LoadAxis LoadAxisOf(const std::string& direction) {
-  if (direction == "lateral") return LoadAxis::kLateral;
-  if (direction == "longitudinal") return LoadAxis::kLongitudinal;
+LoadAxis LoadAxisOf(DeckMotion direction) {
+  if (direction == DeckMotion::kLateral) return LoadAxis::kLateral;
+  if (direction == DeckMotion::kLongitudinal) return LoadAxis::kLongitudinal;
   return LoadAxis::kVertical;
 }
 

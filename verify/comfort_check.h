@@ -49,9 +49,9 @@ struct DeckModes {
 };
 DeckModes ComputeDeckModes(const DynamicModel& model, double above_hz = 0);
 
-// The axis a deck motion ("vertical", "lateral", "longitudinal", "torsional") is loaded and
+// The axis a deck motion (any but kLocal) is loaded and
 // measured along (torsion: vertical).
-LoadAxis LoadAxisOf(const std::string& direction);
+LoadAxis LoadAxisOf(DeckMotion direction);
 
 // Steps 3-4 of one mode (its modal mass and load weight set) as if its frequencies were
 // `crowd_hz` and `empty_hz`: its range, load model, psi, modal force, acceleration, limit,

@@ -294,13 +294,14 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
     };
     return row;
   };
-  std::map<std::string, int> rank;  // how many modes of each motion came before
+  std::map<DeckMotion, int> rank;  // how many modes of each motion came before
   for (size_t i = 0; i < a.modes.size(); ++i) {
     const ComfortMode& m = a.modes[i];
     const Mode& crowded = a.crowded.modal.modes[static_cast<size_t>(a.crowded_mode[i])];
     if (!(crowded.omega_squared > 0))
       continue;  // an unstable design: the sizing's stability rows hold it
-    const std::string name = m.direction + " " + std::to_string(++rank[m.direction]);
+    const std::string name =
+        std::string(NameOf(m.direction)) + " " + std::to_string(++rank[m.direction]);
     const int empty = a.empty_mode[i];
     // The rows on the crowded frequency (lower bounds: its interval's lower end) and on the empty
     // one (upper bounds).
@@ -315,7 +316,7 @@ std::vector<ComfortRow> ComfortRowsOf(const Design& d, const ComfortAnalysis& a,
       return row;
     };
     std::ostringstream what;
-    what << m.direction << " mode " << m.index << " (" << m.frequency_hz << " Hz crowded, "
+    what << NameOf(m.direction) << " mode " << m.index << " (" << m.frequency_hz << " Hz crowded, "
          << m.frequency_empty_hz << " Hz empty, " << (m.pass ? "passes" : "fails") << ")";
     if (below.count(name) != 0 && !(m.pass && passing == BelowPassing::kHeldInItsWindow)) {
       // The piece below: the mode held under its top, on its empty frequency where it has one

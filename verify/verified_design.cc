@@ -213,11 +213,13 @@ namespace {
 // n = 6 sized in 4.6 s against 11.7 s, n = 5 in 0.5 s against 3.4 s, each of its subproblems
 // at or below SLSQP's optimum from the same start (tests/design/sqp_solver_test.cc). Ipopt
 // took 60 s at n = 4, where its sparse factorisation of the dense rows dominates (perf).
-std::string SizingSolver(const Config& config) {
-  if (config.design.solver == "ipopt" || config.design.solver == "nlopt") {
-    return SolverBuiltIn(config.design.solver) ? config.design.solver : "";
+// kNone where the config names one the build lacks.
+SolverKind SizingSolver(const Config& config) {
+  const SolverKind named = config.design.solver;
+  if (named == SolverKind::kIpopt || named == SolverKind::kNlopt) {
+    return SolverBuiltIn(named) ? named : SolverKind::kNone;
   }
-  return "sqp";
+  return SolverKind::kSqp;
 }
 
 // The members' sizes and states of the design the sizing found: the linear analysis's
@@ -332,7 +334,7 @@ struct ActiveSet {
 // the feasible set is the whole problem's. Both images posed, as before, doubled the rows, the
 // adjoint solves and the subproblem's scans (n = 8: 2 300 rows where 1 150 say the same).
 SolverOutcome SolveSizing(const Design& current, const SizingCorrections& corrections,
-                          const std::string& solver, const SolverOptions& options,
+                          SolverKind solver, const SolverOptions& options,
                           const SizingProblem& full, Eigen::VectorXd& x, ActiveSet& active) {
   const int rows = full.num_constraints();
   const Eigen::VectorXd start = x;
@@ -488,7 +490,7 @@ Verdict SizingVerdict(const Design& d) {
 // solver's outcome in its `solver` field; RunChecks then checks it. `active`: as SolveSizing's;
 // `tolerance`: the solver's, on the mass and the step (relative) and on the rows.
 Design Size(const Config& config, const Design& current, const SizingCorrections& corrections,
-            const std::string& solver, const SizingProblem& problem, Eigen::VectorXd& x,
+            SolverKind solver, const SizingProblem& problem, Eigen::VectorXd& x,
             Resizing::Times& time_s, ProgressReporter* progress, ActiveSet& active,
             double tolerance) {
   Eigen::VectorXd lo, hi;
@@ -816,10 +818,10 @@ struct BestSizing {
 };
 
 // The solver a failed sizing is tried with again: Ipopt for the SQP or NLopt, the SQP for Ipopt;
-// "" where the build has no other.
-std::string OtherSolver(const std::string& solver) {
-  if (solver != "ipopt" && SolverBuiltIn("ipopt")) return "ipopt";
-  return solver == "sqp" ? "" : "sqp";
+// kNone where the build has no other.
+SolverKind OtherSolver(SolverKind solver) {
+  if (solver != SolverKind::kIpopt && SolverBuiltIn(SolverKind::kIpopt)) return SolverKind::kIpopt;
+  return solver == SolverKind::kSqp ? SolverKind::kNone : SolverKind::kSqp;
 }
 
 // The polish's solver: Ipopt where it is built in, as its stop is a test of the KKT conditions
@@ -828,8 +830,8 @@ std::string OtherSolver(const std::string& solver) {
 // outer sizings keep the sizing's solver: Ipopt took 4-17 times as long for them. The comfort rows
 // follow their modes (ComfortRow::follow), so a program with them is polished alike (the default
 // at n = 3 to 5: stationarity 3e-5 after the SQP, 1e-7 to 4e-9 after Ipopt).
-std::string PolishSolver(const std::string& solver) {
-  return SolverBuiltIn("ipopt") ? "ipopt" : solver;
+SolverKind PolishSolver(SolverKind solver) {
+  return SolverBuiltIn(SolverKind::kIpopt) ? SolverKind::kIpopt : solver;
 }
 
 // The kept design's own program solved again from its solution at kPolishTolerance and checked:
@@ -842,13 +844,13 @@ std::string PolishSolver(const std::string& solver) {
 // to `record.optima`.
 constexpr int kPolishRounds = 3;
 
-void Polish(const Config& config, const std::string& solver, BestSizing& kept, Design& best,
+void Polish(const Config& config, SolverKind solver, BestSizing& kept, Design& best,
             Resizing& record, ProgressReporter* progress) {
   if (progress != nullptr) progress->SetStagePrefix("polish: ");
-  const std::string polisher = PolishSolver(solver);
+  const SolverKind polisher = PolishSolver(solver);
   BestSizing at = kept;
   std::ostringstream os;
-  os << "polish (" << polisher << ", to " << kPolishTolerance << "):";
+  os << "polish (" << NameOf(polisher) << ", to " << kPolishTolerance << "):";
   const auto say = [&] { record.optima += (record.optima.empty() ? "" : "; ") + os.str(); };
   std::string failed;
   for (int round = 0; round < kPolishRounds && failed.empty(); ++round) {
@@ -890,9 +892,9 @@ void Polish(const Config& config, const std::string& solver, BestSizing& kept, D
 // either way `record` says what the second start found.
 // Returns its solution where it replaced `best`.
 std::optional<Eigen::VectorXd> SecondStart(const Config& config, const Design& current,
-                                           const SizingCorrections& corrections,
-                                           const std::string& solver, const SizingProblem& problem,
-                                           const FirstSizes& first, Design& best, Resizing& record,
+                                           const SizingCorrections& corrections, SolverKind solver,
+                                           const SizingProblem& problem, const FirstSizes& first,
+                                           Design& best, Resizing& record,
                                            ProgressReporter* progress, std::vector<char> posed) {
   // Its own start: the rows the last sizing posed, its multipliers estimated afresh.
   ActiveSet active{std::move(posed), Eigen::VectorXd()};
@@ -1085,8 +1087,8 @@ struct SizingStep {
 };
 
 // The sizing about the current design's weight, from the current sizes and prestress.
-SizingStep SizeOnce(const Config& config, const std::string& solver, SizingLoop& loop,
-                    Resizing& record, ProgressReporter* progress) {
+SizingStep SizeOnce(const Config& config, SolverKind solver, SizingLoop& loop, Resizing& record,
+                    ProgressReporter* progress) {
   SizingStep step;
   // A sizing whose comfort rows ask more than it can hold fails: it is solved again with each
   // comfort row's step halved (in log frequency), then without them, and the next design goes
@@ -1109,14 +1111,15 @@ SizingStep SizeOnce(const Config& config, const std::string& solver, SizingLoop&
   // before the loop stops on it (the SQP's failures are its own: a subproblem it could not
   // solve, a step limit), and the record says what was tried.
   if (!step.d.solver.success) {
-    const std::string other = OtherSolver(solver);
-    if (!other.empty()) {
+    const SolverKind other = OtherSolver(solver);
+    if (other != SolverKind::kNone) {
       const std::string failed = step.d.solver.status;
       step.x = step.posed->VariablesOf(loop.areas, loop.alpha);
       step.active = ActiveSet{};
       step.d = Size(config, loop.current, loop.corrections, other, *step.posed, step.x,
                     record.time_s, progress, step.active, kSizingTolerance);
-      step.retried = solver + " stopped with " + failed + "; " + other + " from the same start " +
+      step.retried = std::string(NameOf(solver)) + " stopped with " + failed + "; " +
+                     NameOf(other) + " from the same start " +
                      (step.d.solver.success ? "solved it" : "stopped with " + step.d.solver.status);
     }
   }
@@ -1198,7 +1201,7 @@ bool StartPieceBelow(bool settled, const Verdict& verdict, SizingStep& step, Siz
 
 // The end of the loop: the lighter passing design of the trial of the piece below and the first
 // run, its second start, polish, attribution and certificate, and the record.
-Design EndOfLoop(const Config& config, const std::string& solver, const FirstSizes& first_sizes,
+Design EndOfLoop(const Config& config, SolverKind solver, const FirstSizes& first_sizes,
                  bool settled, const Verdict& verdict, const SizingStep& step, SizingLoop& loop,
                  Resizing& record, ProgressReporter* progress) {
   // The end of the trial of the piece below: the lighter passing design of the two runs.
@@ -1304,14 +1307,14 @@ Design DesignAndVerify(const Config& config, ProgressReporter* progress, const S
                        PieceBelowTrial piece_below) {
   if (config.bridge.beta_auto) return DesignAtBestAngle(config, progress);
   const int max_iterations = config.design.max_sizings;
-  const std::string solver = SizingSolver(config);
+  const SolverKind solver = SizingSolver(config);
   Resizing record;
   record.tolerance = kSettled;
   // The paper's design is the paper's: with its switches the checks report, and resize
   // nothing. A build without an iterative solver checks the first design as it is, and so
   // does a bridge with more self-stress states than the sizing takes as variables (the 3D
   // bridge from n = 4), saying so.
-  if (KeepsPaperSwitches(config) || solver.empty()) {
+  if (KeepsPaperSwitches(config) || solver == SolverKind::kNone) {
     Design d = Timed(record.time_s.first_design, [&] { return RunDesign(config, progress); });
     return CheckedAsDesigned(std::move(d), record, progress);
   }

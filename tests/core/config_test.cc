@@ -53,7 +53,7 @@ TEST_CASE("the good config parses to the paper's values") {
   CHECK(c.bridge.beta_deg == 10.0);
   CHECK(c.bridge.span == 12.0);
   CHECK(c.material.yield_stress == 6.9e8);
-  CHECK(c.design.solver == "ipopt");
+  CHECK(c.design.solver == SolverKind::kIpopt);
   CHECK_FALSE(c.dynamics.has_value());
 }
 
@@ -79,7 +79,7 @@ TEST_CASE("absent optional keys take their documented defaults") {
   CHECK(c.loads.gamma_q == 1.5);
   CHECK(c.design.deck_string_min_radius == 0.01);
   CHECK(c.design.gravity == 9.81);
-  CHECK(c.design.solver == "auto");
+  CHECK(c.design.solver == SolverKind::kAuto);
 }
 
 TEST_CASE("the resolved config parses back to itself") {

@@ -51,7 +51,7 @@ TEST_CASE("the wind case alone is a case list for the 3D bridge") {
   // The control of the rule above: the 3D bridge carries wind, so the same list parses.
   json root = WithLoads(json::parse(R"({"cases": ["wind"]})"));
   root["bridge"]["planes"] = 2;
-  CHECK(ParseConfig(root).loads.cases == std::vector<std::string>{"wind"});
+  CHECK(ParseConfig(root).loads.cases == std::vector<LoadFamily>{LoadFamily::kWind});
 }
 
 }  // namespace

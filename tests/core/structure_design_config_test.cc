@@ -57,11 +57,11 @@ TEST_CASE("structure to design: read as written, echoed back to itself", "[confi
   const StructureConfig& s = *c.structure;
   CHECK(s.Designable());
   CHECK(s.members.size() == 2);
-  CHECK(s.groups[0].kind == "bar");
+  CHECK(s.groups[0].kind == TrussKind::kBar);
   CHECK(*s.groups[0].max_area_m2 == 1e-2);
   CHECK(!s.groups[1].max_area_m2);
   CHECK(s.load_cases[0].factor == 1.5);
-  CHECK(s.limits.displacements[0].axis == "y");
+  CHECK(s.limits.displacements[0].axis == Axis::kY);
   CHECK(c.material.youngs_modulus == 2.1e11);
   const json echoed = ToJson(c);
   CHECK(ToJson(ParseConfig(echoed)) == echoed);

@@ -100,14 +100,15 @@ TEST_CASE("Exactly one self-stress for p = 1: the deck-string chain", "[design][
 }
 
 TEST_CASE("Ipopt and NLopt agree on the total mass", "[design][solvers][ipopt][nlopt]") {
-  REQUIRE(test::HaveSolvers({"ipopt", "nlopt"}));  // tagged: left out of a build without them
+  REQUIRE(test::HaveSolvers(
+      {SolverKind::kIpopt, SolverKind::kNlopt}));  // tagged: left out of a build without them
   for (int n = 1; n <= 5; ++n) {
-    const Design a = RunDesign(test::PaperConfig(n, "ipopt"));
-    const Design b = RunDesign(test::PaperConfig(n, "nlopt"));
+    const Design a = RunDesign(test::PaperConfig(n, SolverKind::kIpopt));
+    const Design b = RunDesign(test::PaperConfig(n, SolverKind::kNlopt));
     INFO("n = " << n << ": ipopt " << a.mass.total << " kg, nlopt " << b.mass.total << " kg ("
                 << b.solver.status << ")");
-    CHECK(a.solver.solver == "ipopt");
-    CHECK(b.solver.solver == "nlopt");
+    CHECK(a.solver.solver == SolverKind::kIpopt);
+    CHECK(b.solver.solver == SolverKind::kNlopt);
     // The acceptance bound: 1e-6 relative in total mass.
     CHECK(b.mass.total == Approx(a.mass.total).epsilon(1e-6));
     CHECK(b.mass.bars + b.mass.strings == Approx(a.mass.bars + a.mass.strings).epsilon(1e-6));
@@ -117,13 +118,15 @@ TEST_CASE("Ipopt and NLopt agree on the total mass", "[design][solvers][ipopt][n
 TEST_CASE("Designs may run on several threads at once", "[design][solvers][ipopt][nlopt]") {
   // Ipopt's sequential MUMPS keeps global state; unserialised concurrent solves crash it.
   // Every thread must get the single-threaded answer, bit for bit (same start, same solver).
-  REQUIRE(test::HaveSolvers({"ipopt", "nlopt"}));  // tagged: left out of a build without them
-  const double expected = RunDesign(test::PaperConfig(4, "ipopt")).mass.total;
+  REQUIRE(test::HaveSolvers(
+      {SolverKind::kIpopt, SolverKind::kNlopt}));  // tagged: left out of a build without them
+  const double expected = RunDesign(test::PaperConfig(4, SolverKind::kIpopt)).mass.total;
   std::vector<double> masses(4, 0.0);
   std::vector<std::thread> threads;
   for (size_t t = 0; t < masses.size(); ++t) {
     threads.emplace_back([&masses, t] {
-      masses[t] = RunDesign(test::PaperConfig(4, t % 2 ? "nlopt" : "ipopt")).mass.total;
+      masses[t] = RunDesign(test::PaperConfig(4, t % 2 ? SolverKind::kNlopt : SolverKind::kIpopt))
+                      .mass.total;
     });
   }
   for (std::thread& th : threads) th.join();
@@ -164,12 +167,13 @@ TEST_CASE("A solver that cannot finish is a clear error, never a silent answer",
           "[design][errors]") {
   Config c = test::PaperConfig(3);
   c.design.max_iterations = 1;
-  for (const char* solver : {"ipopt", "nlopt"}) {
-    if (!test::HaveSolvers({solver})) {
+  for (const SolverKind kind : {SolverKind::kIpopt, SolverKind::kNlopt}) {
+    const char* solver = NameOf(kind);
+    if (!test::HaveSolvers({kind})) {
       WARN("skipped for " << solver << ": not built in (its TBRIDGE_WITH_ option is off)");
       continue;
     }
-    c.design.solver = solver;
+    c.design.solver = kind;
     INFO(solver);
     try {
       RunDesign(c);

@@ -97,7 +97,8 @@ TEST_CASE("A self-stress basis too large to form is counted and not formed",
         1e-12 * scale);
   CHECK_THROWS_AS(ReducedMinMassProblem(in.topology.structure, counted, in.settings), ModelError);
 
-  REQUIRE(test::HaveSolvers({"ipopt"}));  // tagged [ipopt]: ctest leaves it out of a build without
+  REQUIRE(test::HaveSolvers(
+      {SolverKind::kIpopt}));  // tagged [ipopt]: ctest leaves it out of a build without
   const Design d = RunDesign(Variant(8, 1, 2));  // 5102 members x 2042 states: over the limit
   CHECK(d.self_stress_states == (1 << 11) - 6);
   CHECK(d.solver_form == "full");
@@ -116,14 +117,14 @@ struct Optimum {
 // SLSQP stops when the objective changes by less than ftol_rel = tolerance in a step: at
 // 1e-12 it stops on the 3D n = 6 bridge 5e-5 above the optimum after a short step, at 1e-14 it
 // reaches it (1.5e-11 from Ipopt's). Ipopt's tolerance is on the KKT conditions.
-SolverOptions OptionsFor(const std::string& solver) {
+SolverOptions OptionsFor(SolverKind solver) {
   SolverOptions options;
-  options.tolerance = solver == "nlopt" ? 1e-14 : 1e-12;
+  options.tolerance = solver == SolverKind::kNlopt ? 1e-14 : 1e-12;
   options.max_iterations = 3000;
   return options;
 }
 
-Optimum SolveFull(const DesignInputs& in, const std::string& solver) {
+Optimum SolveFull(const DesignInputs& in, SolverKind solver) {
   const MinMassProblem full(in.topology.structure, in.loads, in.settings);
   Eigen::VectorXd x = full.StartingPoint();
   const SolverOptions options = OptionsFor(solver);
@@ -131,11 +132,11 @@ Optimum SolveFull(const DesignInputs& in, const std::string& solver) {
   return {full.Objective(x) * full.MassScale(), full.MemberForces(x), out.status};
 }
 
-Optimum SolveReduced(const DesignInputs& in, const std::string& solver) {
+Optimum SolveReduced(const DesignInputs& in, SolverKind solver) {
   const ReducedMinMassProblem reduced(in.topology.structure, BasisOf(in), in.settings);
   Eigen::VectorXd x;
   SolverOutcome out;
-  if (solver == "direct") {
+  if (solver == SolverKind::kDirect) {
     out = reduced.SolveDirect(x);
   } else {
     x = reduced.StartingPoint();
@@ -152,23 +153,24 @@ TEST_CASE("The self-stress form and the full NLP find the same optimum",
     const bool planar = c.config.bridge.planes == 1;
     const int full_variables =
         2 * in.topology.structure.num_bars() + in.topology.structure.num_strings();
-    for (const std::string solver : {"ipopt", "nlopt"}) {
+    for (const SolverKind solver : {SolverKind::kIpopt, SolverKind::kNlopt}) {
       // SLSQP's dense quadratic subproblems cost (variables)^3 per iteration: the full problem
       // goes to NLopt up to 600 variables (planar p = 1 up to n = 6, 3D up to n = 4); beyond,
       // NLopt's self-stress solution is held to the full problem solved by Ipopt.
-      const std::string full_solver = solver == "nlopt" && full_variables > 600 ? "ipopt" : solver;
-      if (!test::HaveSolvers({solver.c_str(), full_solver.c_str()})) {
-        WARN("skipped for " << solver << ": " << full_solver << " or " << solver
-                            << " not built in (its TBRIDGE_WITH_ option is off)");
+      const SolverKind full_solver =
+          solver == SolverKind::kNlopt && full_variables > 600 ? SolverKind::kIpopt : solver;
+      if (!test::HaveSolvers({solver, full_solver})) {
+        WARN("skipped for " << NameOf(solver) << ": " << NameOf(full_solver) << " or "
+                            << NameOf(solver) << " not built in (its TBRIDGE_WITH_ option is off)");
         continue;
       }
-      INFO(c.label << ", " << solver << " (full problem: " << full_solver << ")");
+      INFO(c.label << ", " << NameOf(solver) << " (full problem: " << NameOf(full_solver) << ")");
       const Optimum full = SolveFull(in, full_solver);
       // The direct solve (planar) or the product's own self-stress NLP (3D: the same as below).
-      const Optimum reduced = SolveReduced(in, planar ? "direct" : solver);
+      const Optimum reduced = SolveReduced(in, planar ? SolverKind::kDirect : solver);
       const Optimum reduced_nlp = planar ? SolveReduced(in, solver) : reduced;
       INFO("full " << full.mass << " kg (" << full.status << "), reduced " << reduced.mass
-                   << " kg, reduced " << solver << " " << reduced_nlp.mass << " kg ("
+                   << " kg, reduced " << NameOf(solver) << " " << reduced_nlp.mass << " kg ("
                    << reduced_nlp.status << ")");
       // The acceptance bound, 1e-9 relative: both forms are solved to 1e-12, so only the
       // solvers' tolerance separates them.
@@ -276,9 +278,9 @@ TEST_CASE("A load case that only repeats another changes nothing", "[design][sel
   SolverOptions options;
   options.tolerance = 1e-12;
   options.max_iterations = 3000;
-  const std::string solver =
-      BuiltInIterativeSolvers().empty() ? "" : BuiltInIterativeSolvers().front();
-  if (solver.empty()) return;  // a build with neither Ipopt nor NLopt
+  const SolverKind solver =
+      BuiltInIterativeSolvers().empty() ? SolverKind::kNone : BuiltInIterativeSolvers().front();
+  if (solver == SolverKind::kNone) return;  // a build with neither Ipopt nor NLopt
   REQUIRE(SolveNlp(solver, one, options, x1).success);
   REQUIRE(SolveNlp(solver, two, options, x2).success);
   CHECK(two.Objective(x2) * two.MassScale() ==
@@ -287,17 +289,17 @@ TEST_CASE("A load case that only repeats another changes nothing", "[design][sel
 
 TEST_CASE("design.solver: direct where it applies, a named error where it does not",
           "[design][self-stress]") {
-  Config planar = test::PaperConfig(3, "direct");
+  Config planar = test::PaperConfig(3, SolverKind::kDirect);
   const Design d = RunDesign(planar);
-  CHECK(d.solver.solver == "direct");
+  CHECK(d.solver.solver == SolverKind::kDirect);
   CHECK(d.solver.iterations == 0);
-  CHECK(RunDesign(test::PaperConfig(3)).solver.solver == "direct");  // "auto"
+  CHECK(RunDesign(test::PaperConfig(3)).solver.solver == SolverKind::kDirect);  // "auto"
   Config spatial = Variant(2, 1, 2);
   // "auto" on the 3D bridge: the first iterative solver built in (Ipopt, else NLopt).
   if (!BuiltInIterativeSolvers().empty()) {
     CHECK(RunDesign(spatial).solver.solver == BuiltInIterativeSolvers().front());
   }
-  spatial.design.solver = "direct";
+  spatial.design.solver = SolverKind::kDirect;
   try {
     RunDesign(spatial);
     FAIL("expected a ConfigError");
@@ -310,8 +312,8 @@ TEST_CASE("design.solver names only the solvers built in", "[design][solvers]") 
   // Each iterative solver either designs the 3D bridge (26 self-stresses: the direct solve
   // does not apply) under its own name, or, in a build without it, is refused before any work
   // with the key, the value and the solvers this build has.
-  for (const std::string solver : {"ipopt", "nlopt"}) {
-    INFO(solver);
+  for (const SolverKind solver : {SolverKind::kIpopt, SolverKind::kNlopt}) {
+    INFO(NameOf(solver));
     Config c = Variant(2, 1, 2);
     c.design.solver = solver;
     if (SolverBuiltIn(solver)) {

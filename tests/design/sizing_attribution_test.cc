@@ -78,7 +78,7 @@ Optimum Solve(Design d, double limit, const Eigen::VectorXd* start) {
   SolverOptions options;
   options.tolerance = 1e-12;
   options.max_iterations = 3000;
-  REQUIRE(SolveNlp("nlopt", problem, options, x).success);
+  REQUIRE(SolveNlp(SolverKind::kNlopt, problem, options, x).success);
   return {problem.Objective(x), x};
 }
 

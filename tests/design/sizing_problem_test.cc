@@ -142,7 +142,7 @@ TEST_CASE("the sizing problem's Jacobian agrees with central differences", "[des
   SECTION("planar, n = 2, the temperature either way") {
     Config config = SmallDesign().config;
     config.design.prestress_loss = 0;
-    config.loads.cases.push_back("temperature");
+    config.loads.cases.push_back(LoadFamily::kTemperature);
     config.loads.temperature_delta_k = 40;
     CheckJacobian(RunDesign(config));
   }

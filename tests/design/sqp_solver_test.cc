@@ -137,8 +137,8 @@ TEST_CASE("SQP: a row that no point meets is reported, not chased", "[sqp]") {
 
 TEST_CASE("SQP: the verified sizing problem solved as SLSQP solves it, or lighter",
           "[sqp][nlopt]") {
-  REQUIRE(SolverBuiltIn("nlopt"));  // the second algorithm is NLopt's (tagged [nlopt])
-  Config config;                    // the engineering defaults at n = 3: every case and station
+  REQUIRE(SolverBuiltIn(SolverKind::kNlopt));  // the second algorithm is NLopt's (tagged [nlopt])
+  Config config;  // the engineering defaults at n = 3: every case and station
   config.bridge.n = 3;
   const Design d = RunDesign(config);
   SizingCorrections corrections;
@@ -150,7 +150,7 @@ TEST_CASE("SQP: the verified sizing problem solved as SLSQP solves it, or lighte
   options.tolerance = 1e-6;  // as the verified sizing asks
   Eigen::VectorXd x_sqp = start, x_slsqp = start;
   const SolverOutcome sqp = SolveWithSqp(problem, options, x_sqp);
-  const SolverOutcome slsqp = SolveNlp("nlopt", problem, options, x_slsqp);
+  const SolverOutcome slsqp = SolveNlp(SolverKind::kNlopt, problem, options, x_slsqp);
   REQUIRE(sqp.success);
   REQUIRE(slsqp.success);
   Eigen::VectorXd g(problem.num_constraints()), lo, hi;

@@ -19,14 +19,14 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Config MultiBarConfig(int n, int p, const std::string& solver = "auto") {
+Config MultiBarConfig(int n, int p, SolverKind solver = SolverKind::kAuto) {
   Config c = test::PaperConfig(n, solver);
   c.bridge.p = p;
   return c;
 }
 
 // The paper's 3D bridge (Sect. 7.3): n = 2, beta = 20 deg, two planes.
-Config Bridge3DConfig(const std::string& solver = "auto") {
+Config Bridge3DConfig(SolverKind solver = SolverKind::kAuto) {
   Config c = test::PaperConfig(2, solver);
   c.bridge.beta_deg = 20.0;
   c.bridge.planes = 2;
@@ -250,12 +250,14 @@ TEST_CASE("3D bridge design: equilibrium, prestressed transverse strings", "[des
 
 TEST_CASE("Ipopt and NLopt agree on p = 2 and the 3D bridge", "[design][solvers][ipopt][nlopt]") {
   for (const auto& [name, a, b] :
-       {std::tuple{"p = 2, n = 2", MultiBarConfig(2, 2, "ipopt"), MultiBarConfig(2, 2, "nlopt")},
-        std::tuple{"3D", Bridge3DConfig("ipopt"), Bridge3DConfig("nlopt")}}) {
-    REQUIRE(test::HaveSolvers({"ipopt", "nlopt"}));  // tagged: left out of a build without them
+       {std::tuple{"p = 2, n = 2", MultiBarConfig(2, 2, SolverKind::kIpopt),
+                   MultiBarConfig(2, 2, SolverKind::kNlopt)},
+        std::tuple{"3D", Bridge3DConfig(SolverKind::kIpopt), Bridge3DConfig(SolverKind::kNlopt)}}) {
+    REQUIRE(test::HaveSolvers(
+        {SolverKind::kIpopt, SolverKind::kNlopt}));  // tagged: left out of a build without them
     const Design da = RunDesign(a), db = RunDesign(b);
     INFO(name << ": ipopt " << da.mass.total << " kg, nlopt " << db.mass.total << " kg");
-    CHECK(db.solver.solver == "nlopt");
+    CHECK(db.solver.solver == SolverKind::kNlopt);
     // The acceptance bound: 1e-6 relative in total mass.
     CHECK(db.mass.total == Approx(da.mass.total).epsilon(1e-6));
   }

@@ -72,7 +72,7 @@ TEST_CASE("deck motions of a hand-built two-plane deck: names, frequencies and m
   int local = 0;
   for (const Mode& mode : modes.modes) {
     const DeckMotionReport r = ProjectOnDeckMotions(model, mode.shape);
-    const std::string name = DeckMotionName(r.motion);
+    const std::string name = NameOf(r.motion);
     if (r.motion == DeckMotion::kLocal) {
       ++local;
       continue;
@@ -114,9 +114,8 @@ TEST_CASE("deck motions: a planar deck has vertical and longitudinal modes only"
   }
   const ModalResult modes = ComputeModes(m);
   REQUIRE(modes.modes.size() == 2);
-  CHECK(std::string(DeckMotionName(ProjectOnDeckMotions(m, modes.modes[0].shape).motion)) ==
-        "vertical");
-  CHECK(std::string(DeckMotionName(ProjectOnDeckMotions(m, modes.modes[1].shape).motion)) ==
+  CHECK(std::string(NameOf(ProjectOnDeckMotions(m, modes.modes[0].shape).motion)) == "vertical");
+  CHECK(std::string(NameOf(ProjectOnDeckMotions(m, modes.modes[1].shape).motion)) ==
         "longitudinal");
   // 2T/a / m and 2k / m, to the eigensolver's accuracy.
   CHECK(modes.modes[0].omega_squared == Approx(2 * kT / kMass).epsilon(1e-9));

@@ -136,7 +136,8 @@ TEST_CASE("a small load deflects the planar bridge as its linear stiffness predi
 }
 
 TEST_CASE("a small load deflects the 3D bridge as its linear stiffness predicts", "[ipopt]") {
-  REQUIRE(test::HaveSolvers({"ipopt"}));  // the 3D bridge's design needs it (tagged [ipopt])
+  REQUIRE(
+      test::HaveSolvers({SolverKind::kIpopt}));  // the 3D bridge's design needs it (tagged [ipopt])
   const Design d = RunDesign(LoadConfig(TBRIDGE_SOURCE_DIR "/configs/paper_3d.json"));
   // Down and sideways: the transverse strings and the out-of-plane motion take part.
   CheckSmallLoad(d, Eigen::Vector3d(0, -1, 0.5));

@@ -111,7 +111,8 @@ TEST_CASE("an unreadable config exits 2 and names the file") {
 TEST_CASE("a design the solver cannot finish exits 3 with its status and writes nothing",
           "[ipopt]") {
   // One Ipopt iteration cannot converge on the 3D bridge's 26 self-stresses (it needs about 20).
-  REQUIRE(tbridge::SolverBuiltIn("ipopt"));  // tagged [ipopt]: left out of a build without
+  REQUIRE(tbridge::SolverBuiltIn(
+      tbridge::SolverKind::kIpopt));  // tagged [ipopt]: left out of a build without
   ExpectCleanFailure(
       "no_design",
       R"({"bridge": {"n": 2, "planes": 2, "beta_deg": 20}, "design": {"solver": "ipopt", "max_iterations": 1}})",

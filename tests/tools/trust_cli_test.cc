@@ -352,9 +352,9 @@ TEST_CASE("defect 7: the exit codes are listed once with 1 and --version names t
   CHECK_THAT(version.out, Catch::StartsWith("tbridge 0.") && Catch::Contains("(git "));
   // The solvers the build has (CMake options TBRIDGE_WITH_IPOPT/NLOPT), each named iff built in.
   CHECK_THAT(version.out, Catch::Contains("design solvers built in: auto, direct"));
-  for (const char* solver : {"ipopt", "nlopt"}) {
-    INFO(solver);
-    CHECK((version.out.find(solver) != std::string::npos) == SolverBuiltIn(solver));
+  for (const SolverKind solver : {SolverKind::kIpopt, SolverKind::kNlopt}) {
+    INFO(NameOf(solver));
+    CHECK((version.out.find(NameOf(solver)) != std::string::npos) == SolverBuiltIn(solver));
   }
 }
 

@@ -73,11 +73,11 @@ TEST_CASE("truss sizing: every row's derivative agrees with central differences"
     const TrussModel weighed = BuildTrussModel(c);
     CHECK(JacobianError(weighed, Spread(weighed, 2e-3)) < 1e-6);
     // And with every member's Euler buckling row (TrussModel::EulerLoad, quadratic in the area).
-    for (StructureGroupConfig& g : c.structure->groups) g.buckling = "euler";
+    for (StructureGroupConfig& g : c.structure->groups) g.buckling = BucklingRule::kEuler;
     const TrussModel buckling = BuildTrussModel(c);
     CHECK(JacobianError(buckling, Spread(buckling, 2e-3)) < 1e-6);
     // And the nonlinear statics' rows (truss/truss_nonlinear.h), their own derivatives.
-    c.structure->analysis = "nonlinear";
+    c.structure->analysis = TrussAnalysisKind::kNonlinear;
     const TrussModel nonlinear = BuildTrussModel(c);
     CHECK(JacobianError(nonlinear, Spread(nonlinear, 2e-3)) < 1e-6);
   }
@@ -100,7 +100,7 @@ TEST_CASE("truss sizing: a prestress's rows and their derivatives in its amplitu
   v << Spread(m, 2e-4), 5e4 / m.self_stress.col(0).head(3).cwiseAbs().maxCoeff();
   if (m.self_stress(0, 0) > 0) v[m.num_groups()] = -v[m.num_groups()];  // bars in compression
   CHECK(JacobianError(m, v, 1e-3) < 1e-5);
-  c.structure->analysis = "nonlinear";
+  c.structure->analysis = TrussAnalysisKind::kNonlinear;
   const TrussModel nonlinear = BuildTrussModel(c);
   CHECK(JacobianError(nonlinear, v, 1e-3) < 1e-5);
   // Without the prestress the prism is a mechanism on its pinned base: the analysis says so.

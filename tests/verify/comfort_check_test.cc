@@ -100,7 +100,7 @@ TEST_CASE("comfort enters the verdict: a failing footbridge FAILS, naming comfor
   REQUIRE(check.required);  // the light deck's first vertical mode is well below 5 Hz
   CHECK(check.planar);
   for (const ComfortMode& m : check.modes) {
-    CHECK((m.direction == "vertical" || m.direction == "longitudinal"));
+    CHECK((m.direction == DeckMotion::kVertical || m.direction == DeckMotion::kLongitudinal));
     CHECK(m.frequency_hz < m.frequency_empty_hz);  // the pedestrians' mass lowers it
   }
   // The same report with its first mode over the limit fails the design.
@@ -135,11 +135,11 @@ TEST_CASE(
   const ComfortCheck& check = d.comfort;
   REQUIRE(check.done);
   CHECK_FALSE(check.planar);
-  std::map<std::string, int> seen;
+  std::map<DeckMotion, int> seen;
   const double xi = check.damping_ratio;
   for (const ComfortMode& m : check.modes) {
     ++seen[m.direction];
-    if (m.direction != "lateral") continue;
+    if (m.direction != DeckMotion::kLateral) continue;
     // Sétra's critical number (Arup's Millennium Bridge measurements, k = 300 N s/m):
     // N_L = 8 pi xi f M* / k, typed here from the closed form with the report's own frequency
     // and modal mass; 1e-12 relative: the same five products.
@@ -148,13 +148,13 @@ TEST_CASE(
         Approx(8 * std::numbers::pi * xi * m.frequency_hz * m.modal_mass_kg / 300).epsilon(1e-12));
     CHECK(m.frequency_hz < config.comfort.horizontal_trigger_hz);
   }
-  CHECK(seen["lateral"] >= 1);
+  CHECK(seen[DeckMotion::kLateral] >= 1);
   // The torsional mode near the vertical one (about 4.75 Hz) is above EN 1990's 2.5 Hz but in
   // Sétra's vertical ranges: comfort.torsional_trigger_hz (5 Hz) sends it through the vertical
   // load and limit.
-  CHECK(seen["torsional"] >= 1);
+  CHECK(seen[DeckMotion::kTorsional] >= 1);
   for (const ComfortMode& m : check.modes) {
-    if (m.direction != "torsional") continue;
+    if (m.direction != DeckMotion::kTorsional) continue;
     CHECK(m.frequency_hz < config.comfort.torsional_trigger_hz);
     CHECK(m.limit_m_s2 ==
           std::min(config.comfort.vertical_limit_m_s2,
@@ -169,7 +169,8 @@ TEST_CASE(
     return CheckComfort(again);
   }();
   int torsional = 0;
-  for (const ComfortMode& m : lenient.modes) torsional += m.direction == "torsional" ? 1 : 0;
+  for (const ComfortMode& m : lenient.modes)
+    torsional += m.direction == DeckMotion::kTorsional ? 1 : 0;
   CHECK(torsional == 0);
   CHECK(strict.modes.size() > lenient.modes.size());
 
@@ -178,7 +179,7 @@ TEST_CASE(
   // N_L: a light deck (M* = 2 t: N_L = 0.6) fails whatever its acceleration, a heavy one
   // (M* = 200 t: N_L = 60) does not lock in, and then passes or fails by acceleration alone.
   ComfortMode sway;
-  sway.direction = "lateral";
+  sway.direction = DeckMotion::kLateral;
   sway.load_weight_m2 = 0;  // no crowd force: only lock-in can fail it
   for (const double modal_mass_kg : {2e3, 2e5}) {
     sway.modal_mass_kg = modal_mass_kg;
@@ -205,8 +206,8 @@ TEST_CASE("the verified sizing designs to comfort as rows of its own, and the ma
   // The sizing that gave it posed comfort rows, and one of them binds: comfort costs mass, booked
   // to its own kind (the multipliers' split, design/sizing_attribution.h).
   CHECK(!d.resizing.comfort_rows.empty());
-  CHECK(d.attribution.mass_by_kind_kg[7] > 0.0);
-  CHECK(std::string(kConstraintKinds[7]) == "comfort");
+  CHECK(d.attribution.mass_by_kind_kg[kComfortKind] > 0.0);
+  CHECK(std::string(kConstraintKinds[kComfortKind]) == "comfort");
   // Complementary slackness: the split is the multipliers', so it adds up to the structure's mass
   // (to the stationarity residual, 1e-6 on a proved design; 1e-5 of the mass allows for it), and a
   // kind none of whose rows is active holds none of it. The deflections are far inside their
@@ -215,8 +216,8 @@ TEST_CASE("the verified sizing designs to comfort as rows of its own, and the ma
   for (const double kg : d.attribution.mass_by_kind_kg) booked += kg;
   CHECK(booked == Approx(d.attribution.structure_kg).epsilon(1e-5));
   REQUIRE(d.statics.deflection_max_m < 0.9 * d.statics.deflection_limit_m);
-  CHECK(std::string(kConstraintKinds[3]) == "deflection");
-  CHECK(d.attribution.mass_by_kind_kg[3] == 0.0);
+  CHECK(std::string(kConstraintKinds[kDeflectionKind]) == "deflection");
+  CHECK(d.attribution.mass_by_kind_kg[kDeflectionKind] == 0.0);
   // Without the constraint the lightest design fails comfort: the rows cost something.
   config.comfort.sizing_constraint = false;
   const Design unconstrained = DesignAndVerify(config);

@@ -249,7 +249,7 @@ TEST_CASE("a binding comfort row's piece below is tried, and the lighter passing
   REQUIRE(a.check.done);
   REQUIRE(!a.modes.empty());
   const ComfortMode& mode = a.modes[0];
-  REQUIRE(mode.direction == "vertical");
+  REQUIRE(mode.direction == DeckMotion::kVertical);
   REQUIRE(mode.pass);
   // The piece below: the mode passes at its top and fails just above it, and between it and the
   // mode's own window the mode fails (a piece of its own, not the window it is in).

@@ -41,7 +41,7 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
   INFO("config " << name);
   Config config = LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/" + name + ".json");
   // The paper's travelling load is checked when a config asks for it, as this one now does.
-  config.loads.cases.push_back("paper_travelling");
+  config.loads.cases.push_back(LoadFamily::kPaperTravelling);
   const Design d = DesignAndVerify(config);
   REQUIRE(d.dynamics.ran());
   const DynamicRun& check = d.dynamics.runs.front();

@@ -35,7 +35,8 @@ constexpr double kSaving = 0.005;
 // utilisation, the largest deflection over its limit, and each deck mode's acceleration over its
 // limit (or its pedestrians over its lock-in number where that fails it). The modes by direction
 // and rank, so that a probe's line up with the start's.
-const char* const kDirections[] = {"vertical", "lateral", "longitudinal", "torsional"};
+const DeckMotion kDirections[] = {DeckMotion::kVertical, DeckMotion::kLateral,
+                                  DeckMotion::kLongitudinal, DeckMotion::kTorsional};
 constexpr int kModesPerDirection = 3;
 
 struct Checked {

@@ -78,9 +78,8 @@ TEST_CASE("a cable bridge is sized to its strings' serviceability stress", "[ver
   // mass attribution books a share to it.
   CHECK(f.utilisation <= 1 + 1e-9);
   CHECK(f.utilisation >= 0.99);
-  constexpr int kServiceStress = 9;
-  REQUIRE(std::string(kConstraintKinds[kServiceStress]) == "serviceability_stress");
-  CHECK(d.attribution.mass_by_kind_kg[kServiceStress] > 0.0);
+  REQUIRE(std::string(kConstraintKinds[kServiceStressKind]) == "serviceability_stress");
+  CHECK(d.attribution.mass_by_kind_kg[kServiceStressKind] > 0.0);
   CHECK(d.resizing.kkt.proved_local_optimum);
   // Without the limit (f_const at f_uk, above the design stress) the same bridge is lighter: the
   // limit is what the share above pays for.

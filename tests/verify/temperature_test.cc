@@ -27,7 +27,7 @@ Config TemperatureOnly(double delta_k) {
   config.comfort.check = false;
   config.design.prestress_loss = 0;
   config.design.self_weight = false;
-  config.loads.cases.push_back("temperature");
+  config.loads.cases.push_back(LoadFamily::kTemperature);
   config.loads.temperature_delta_k = delta_k;
   return config;
 }

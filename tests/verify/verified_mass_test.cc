@@ -132,7 +132,7 @@ TEST_CASE("a sizing the solver cannot finish is tried again by another solver, a
   INFO(d.resizing.why);
   CHECK_FALSE(d.resizing.converged);
   CHECK_THAT(d.resizing.why, Catch::Contains("the sizing's solver stopped with"));
-  if (SolverBuiltIn("ipopt")) {
+  if (SolverBuiltIn(SolverKind::kIpopt)) {
     CHECK_THAT(d.resizing.why,
                Catch::Contains("sqp stopped with MAXEVAL_REACHED; ipopt from the same start"));
   } else {
@@ -154,12 +154,13 @@ TEST_CASE("three solvers give the same verified mass", "[verify]") {
   // design carries, is the polish's (Ipopt where the build has it, verify/verified_design.cc).
   const Design sqp = DesignAndVerify(config);
   CHECK(DesignVerdict(sqp).pass);
-  for (const char* solver : {"nlopt", "ipopt"}) {
-    if (!SolverBuiltIn(solver)) {
+  for (const SolverKind kind : {SolverKind::kNlopt, SolverKind::kIpopt}) {
+    const char* solver = NameOf(kind);
+    if (!SolverBuiltIn(kind)) {
       WARN("skipped for " << solver << ": not built in (its TBRIDGE_WITH_ option is off)");
       continue;
     }
-    config.design.solver = solver;
+    config.design.solver = kind;
     const Design other = DesignAndVerify(config);
     INFO(solver << ": " << other.mass.structure << " kg against " << sqp.mass.structure << " kg");
     CHECK(DesignVerdict(other).pass);
@@ -268,7 +269,7 @@ TEST_CASE(
       LoadConfig(std::string(TBRIDGE_SOURCE_DIR) + "/configs/footbridge_steel_40m.json");
   config.bridge.planes = 2;
   config.bridge.n = 2;
-  config.loads.cases.push_back("wind");
+  config.loads.cases.push_back(LoadFamily::kWind);
   config.comfort.check = false;
   const Design d = DesignAndVerify(config);
   INFO(d.resizing.optima);
