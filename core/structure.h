@@ -48,6 +48,9 @@ struct Structure {
   int num_nodes() const { return static_cast<int>(nodes.cols()); }
   int num_bars() const { return static_cast<int>(bars.size()); }
   int num_strings() const { return static_cast<int>(strings.size()); }
+  int num_members() const { return num_bars() + num_strings(); }
+  // Member j of the members' one order, [bars; strings], which every member vector follows.
+  const Member& MemberAt(int j) const { return j < num_bars() ? bars[j] : strings[j - num_bars()]; }
   int num_free_nodes() const;
   // Spatial dimension of the motion: 2 for planar structures, 3 otherwise.
   int dim() const { return planar ? 2 : 3; }

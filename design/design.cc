@@ -562,7 +562,7 @@ void UtiliseMembers(Design& d, const MinMassSolution& solution, const BarRule& r
   const Eigen::VectorXd& largest = solution.forces.col(0);
   const Eigen::VectorXd& least = solution.forces.col(solution.forces.cols() - 1);
   for (int j = 0; j < members; ++j) {
-    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    MemberSizing& m = d.MemberAt(j);
     Utilise(m, largest[j], least[j], rule, sigma_w, settings.bars.youngs_modulus);
     m.force_min = least[j];
     m.governing_case = single ? d.cases[0].name : CaseLabel(d.cases, d.actions, env.uls_max[j]);

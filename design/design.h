@@ -77,6 +77,15 @@ struct Design {
   ComfortCheck comfort;  // the footbridge comfort check, when it was run (verify/)
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
+  // Member j's sizing in the members' one order, [bars; strings] (Structure::MemberAt).
+  const MemberSizing& MemberAt(int j) const {
+    const int nb = static_cast<int>(bars.size());
+    return j < nb ? bars[j] : strings[j - nb];
+  }
+  MemberSizing& MemberAt(int j) {
+    const int nb = static_cast<int>(bars.size());
+    return j < nb ? bars[j] : strings[j - nb];
+  }
   MassBreakdown mass;
   SolverOutcome solver;
   std::string solver_form;          // "self-stress" (the reduced problem), "full", or kReadFromFile

@@ -175,10 +175,9 @@ const json& MemberOf(const json& file, std::size_t index, const Structure& s) {
   const std::string where = "members[" + std::to_string(index) + "]";
   if (index >= list.size())
     throw ConfigError("members", std::to_string(list.size()) + " members",
-                      "the config draws " + std::to_string(s.num_bars() + s.num_strings()));
+                      "the config draws " + std::to_string(s.num_members()));
   const json& m = list[index];
-  const int nb = s.num_bars();
-  const ::tbridge::Member& e = static_cast<int>(index) < nb ? s.bars[index] : s.strings[index - nb];
+  const ::tbridge::Member& e = s.MemberAt(static_cast<int>(index));
   const json want = {e.i + 1, e.j + 1};
   if (!m.is_object() || !m.contains("nodes") || m.at("nodes") != want) {
     throw ConfigError(where + ".nodes",
@@ -196,8 +195,8 @@ void WeighMembers(Design& d, std::vector<double>& masses) {
                string_density = StringMaterial(d.config).density;
   for (int k = 0; k < nb + s.num_strings(); ++k) {
     const bool bar = k < nb;
-    MemberSizing& m = bar ? d.bars[k] : d.strings[k - nb];
-    m.length = s.Length(bar ? s.bars[k] : s.strings[k - nb]);
+    MemberSizing& m = d.MemberAt(k);
+    m.length = s.Length(s.MemberAt(k));
     m.mass = MassOfArea(bar ? bar_density : string_density, m.area, m.length);
     masses[k] = m.mass;
   }
@@ -275,7 +274,7 @@ void SolveAsBuilt(Design& d, std::vector<double>& masses, std::vector<std::strin
     if (move > a.node_move_m) a.node_move_m = move, a.node = v;
   }
   for (int k = 0; k < nb + ns; ++k) {
-    MemberSizing& m = k < nb ? d.bars[k] : d.strings[k - nb];
+    MemberSizing& m = d.MemberAt(k);
     const double change = std::abs(d.reference_forces[k] - file_forces[k]);
     if (change > a.force_change_n) a.force_change_n = change, a.force_member = m.name;
     m.reference_force = m.force = d.reference_forces[k];
@@ -371,7 +370,7 @@ MemberSizing ReadMember(const json& file, int k, const Structure& s,
   const json& j = MemberOf(file, k, s);
   const std::string where = "members[" + std::to_string(k) + "]";
   const bool bar = k < nb;
-  const ::tbridge::Member& e = bar ? s.bars[k] : s.strings[k - nb];
+  const ::tbridge::Member& e = s.MemberAt(k);
   MemberSizing m;
   m.name = Structure::Name(e);
   m.kind = bar                 ? MemberKind::kBar

@@ -760,12 +760,10 @@ void WriteMembersAndNodes(const Design& d, std::ostream& os) {
   };
   text += "  \"members\": [";
   const char* separator = "\n    ";
-  for (size_t j = 0; j < d.bars.size() + d.strings.size(); ++j) {
+  for (int j = 0; j < s.num_members(); ++j) {
     text += separator;
-    const bool bar = j < d.bars.size();
-    const size_t k = bar ? j : j - d.bars.size();
-    AppendMember(text, bar ? d.bars[k] : d.strings[k], bar ? s.bars[k] : s.strings[k],
-                 BindingOf(d, j), d.config);
+    AppendMember(text, d.MemberAt(j), s.MemberAt(j), BindingOf(d, static_cast<size_t>(j)),
+                 d.config);
     separator = ",\n    ";
     flush(false);
   }

@@ -22,7 +22,7 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
   dof_ = FreeDofs(s_.fixed, dim_, ndof_);
   k_ = string_stiffness;
   for (int j = 0; j < nb_ + ns_; ++j) {
-    const Member& m = j < nb_ ? s_.bars[j] : s_.strings[j - nb_];
+    const Member& m = s_.MemberAt(j);
     Eigen::Vector3d e = Eigen::Vector3d::Zero();
     e.head(dim_) = (s_.nodes.col(m.j) - s_.nodes.col(m.i)).head(dim_);
     length_.push_back(e.norm());
@@ -33,7 +33,7 @@ LinearResponse::LinearResponse(const Structure& structure, const Eigen::VectorXd
   I.topLeftCorner(dim_, dim_).setIdentity();
   for (int j = 0; j < nb_ + ns_; ++j) {
     const bool bar = j < nb_;
-    const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
+    const Member& m = s_.MemberAt(j);
     const double q = reference_forces[j] / length_[j];
     const Eigen::Matrix3d g =
         bar ? Eigen::Matrix3d(-q * I) : StringTangentBlock(unit_[j], k_[j - nb_], q, dim_);
@@ -181,7 +181,7 @@ Eigen::MatrixXd LinearResponse::StiffnessAction(const Eigen::MatrixXd& u,
     const double dk = bar ? 0.0 : dp.stiffness[j - nb_];
     const double dq = dp.forces[j] / length_[j];
     if (dk == 0 && dq == 0) continue;
-    const Member& m = bar ? s_.bars[j] : s_.strings[j - nb_];
+    const Member& m = s_.MemberAt(j);
     // The string block is linear in (k, q): at (dk, dq) it is its own derivative.
     const Eigen::Matrix3d g =
         bar ? Eigen::Matrix3d(-dq * I) : StringTangentBlock(unit_[j], dk, dq, dim_);

@@ -91,7 +91,7 @@ Eigen::Matrix3Xd SelfWeightLoads(const Structure& s, const std::vector<double>& 
   Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
   const int nb = s.num_bars();
   for (int k = 0; k < nb + s.num_strings(); ++k) {
-    const Member& m = k < nb ? s.bars[k] : s.strings[k - nb];
+    const Member& m = s.MemberAt(k);
     const double half = 0.5 * mass[k] * g;
     out(1, m.i) -= half;
     out(1, m.j) -= half;

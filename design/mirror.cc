@@ -70,7 +70,7 @@ std::vector<Mirror> Mirrors(const Structure& s, double span) {
   const double z_mid = 0.5 * (s.nodes.row(2).minCoeff() + s.nodes.row(2).maxCoeff());
   std::map<std::pair<int, int>, int> member_at;
   for (int j = 0; j < nm; ++j) {
-    const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+    const Member& m = s.MemberAt(j);
     member_at[{std::min(m.i, m.j), std::max(m.i, m.j)}] = j;
   }
   std::vector<Mirror> out;
@@ -90,7 +90,7 @@ std::vector<Mirror> Mirrors(const Structure& s, double span) {
     }
     mirror.member.assign(static_cast<size_t>(nm), -1);
     for (int j = 0; j < nm; ++j) {
-      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+      const Member& m = s.MemberAt(j);
       const int a = mirror.node[static_cast<size_t>(m.i)],
                 b = mirror.node[static_cast<size_t>(m.j)];
       if (a < 0 || b < 0) continue;

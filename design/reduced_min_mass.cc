@@ -67,7 +67,7 @@ ReducedMinMassProblem::ReducedMinMassProblem(const Structure& s, const Equilibri
   std::vector<double> envelope_cost;
   for (int j = 0; j < members; ++j) {
     const bool bar = j < nb_;
-    const Member& m = bar ? s.bars[j] : s.strings[j - nb_];
+    const Member& m = s.MemberAt(j);
     const double weight = (bar ? bar_mass_ratio : 1.0) * s.Length(m) / length_ref;
     const double lo = bar ? 0.0 : settings_.string_min_tension[j - nb_] / force_ref_;
     const double kappa =

@@ -28,7 +28,7 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas,
   std::vector<double> masses(nb + ns);
   for (int j = 0; j < nb + ns; ++j) {
     masses[j] = MassOfArea((j < nb ? bar_material : string_material).density, areas[j],
-                           s.Length(j < nb ? s.bars[j] : s.strings[j - nb]));
+                           s.Length(s.MemberAt(j)));
   }
   if (config.design.self_weight)
     d.actions.base[kSelfWeight] = SelfWeightLoads(s, masses, config.design.gravity);
@@ -45,7 +45,7 @@ Design SizedDesign(const Config& config, const std::vector<double>& areas,
   const BarRule rule = BarRuleOf(config);
   for (int j = 0; j < nb + ns; ++j) {
     const bool bar = j < nb;
-    const Member& e = bar ? s.bars[j] : s.strings[j - nb];
+    const Member& e = s.MemberAt(j);
     const double force = d.reference_forces[j];
     // The sizers at zero force with the area as the floor give that area and what follows
     // from it (radius, mass, rest length from the reference force, stiffness).
@@ -76,7 +76,7 @@ Design WithPrestressLoss(const Design& design, double loss) {
   const MemberMaterial string_material = StringMaterial(d.config);
   for (int j = 0; j < static_cast<int>(d.reference_forces.size()); ++j) {
     const double force = d.reference_forces[j];
-    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    MemberSizing& m = d.MemberAt(j);
     if (j >= nb) {
       // The sizer at zero demand with the area as its floor: that area, and the rest length that
       // carries `force` at the string's length.

@@ -668,7 +668,7 @@ struct SizingProblem::Impl {
     const Eigen::Matrix3Xd no_loads = Eigen::Matrix3Xd::Zero(3, s.num_nodes());
     Eigen::VectorXd unit = Eigen::VectorXd::Zero(nm);
     for (int j = 0; j < nm; ++j) {
-      const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+      const Member& m = s.MemberAt(j);
       const int ends[] = {abutment_of_node[static_cast<size_t>(m.i)],
                           abutment_of_node[static_cast<size_t>(m.j)]};
       if (ends[0] < 0 && ends[1] < 0) continue;
@@ -693,7 +693,7 @@ struct SizingProblem::Impl {
       for (int a = 0; a < 2; ++a) {
         std::vector<double>& share = weight_share[static_cast<size_t>(a)];
         for (int j = 0; j < nm; ++j) {
-          const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+          const Member& m = s.MemberAt(j);
           const double x_mid = 0.5 * (s.nodes(0, m.i) + s.nodes(0, m.j));
           share.push_back(rho[static_cast<size_t>(j)] * d.config.design.gravity *
                           length[static_cast<size_t>(j)] *
@@ -1112,7 +1112,7 @@ struct SizingProblem::Impl {
     p.corrections = std::move(corrections);
     const DesignInputs in = PrepareDesign(config);
     for (int j = 0; j < p.nm; ++j) {
-      const Member& m = j < p.nb ? s.bars[j] : s.strings[j - p.nb];
+      const Member& m = s.MemberAt(j);
       p.length.push_back(s.Length(m));
       const double floor = j < p.nb ? in.settings.bar_min_area[j] : in.string_min_area[j - p.nb];
       p.min_area.push_back(std::max(floor, kAreaFloor));
@@ -1124,7 +1124,7 @@ struct SizingProblem::Impl {
     for (int j = 0; j < p.nm; ++j) p.members_of[p.group_of[j]].push_back(j);
     p.area_scale.assign(p.groups, 0.0);
     for (int j = 0; j < p.nm; ++j) {
-      const double area = j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area;
+      const double area = d.MemberAt(j).area;
       double& scale = p.area_scale[p.group_of[j]];
       scale = std::max({scale, area, p.min_area[j]});
     }
@@ -1157,8 +1157,7 @@ struct SizingProblem::Impl {
     // The minimum-norm particular forces of symmetric loads are symmetric themselves.
     p.x_g = solver.Particular(FreeLoads(eq, d.loads)).col(0);
     p.force_scale = std::max(d.reference_forces.cwiseAbs().maxCoeff(), 1.0);
-    for (int j = 0; j < p.nm; ++j)
-      p.area0.push_back(j < p.nb ? d.bars[j].area : d.strings[j - p.nb].area);
+    for (int j = 0; j < p.nm; ++j) p.area0.push_back(d.MemberAt(j).area);
     // The design's reference forces as the problem reads them: G's particular forces and the
     // symmetric part of its prestress.
     p.xr0 = p.states

@@ -385,8 +385,8 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
       std::map<std::string, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {
         const bool bar = j < nb;
-        const MemberSizing& m = bar ? d.bars[j] : d.strings[j - nb];
-        const std::string& group = bar ? s.bars[j].group : s.strings[j - nb].group;
+        const MemberSizing& m = d.MemberAt(j);
+        const std::string& group = s.MemberAt(j).group;
         const double peak =
             bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
         // The prestress as it is, gamma_G on the permanent load's share of the reference

@@ -28,12 +28,11 @@
 namespace tbridge {
 
 void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, ComfortCheck comfort) {
-  const int nb = static_cast<int>(d.bars.size());
   // Each member's force is what the nonlinear static check found: its largest over the
   // ultimate cases and its smallest over every case (design and check alike).
   if (statics.done && statics.force_max.size() == d.bars.size() + d.strings.size()) {
     for (size_t j = 0; j < statics.force_max.size(); ++j) {
-      MemberSizing& m = static_cast<int>(j) < nb ? d.bars[j] : d.strings[j - nb];
+      MemberSizing& m = d.MemberAt(static_cast<int>(j));
       m.force = statics.force_max[j];
       m.force_min = statics.force_min[j];
       m.force_density = m.force / m.length;
@@ -43,7 +42,7 @@ void RecordChecks(Design& d, StaticCheck statics, DynamicCheck dynamics, Comfort
   for (const std::vector<MemberFinding>* found : {&statics.members, &dynamics.members}) {
     for (int j = 0; j < static_cast<int>(found->size()); ++j) {
       const MemberFinding& f = (*found)[j];
-      MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+      MemberSizing& m = d.MemberAt(j);
       if (f.utilisation > 0) RaiseUtilisation(m, f.demand, f.resistance, f.governing_case, f.mode);
     }
   }
@@ -169,7 +168,7 @@ std::vector<double> MendedAreas(const Design& d, const std::vector<int>& group_o
   std::vector<double> group_area(static_cast<size_t>(members), 0.0);
   *mended = 0;
   for (int j = 0; j < members; ++j) {
-    const MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    const MemberSizing& m = d.MemberAt(j);
     areas[j] = m.area;
     double needed = m.area;
     if (m.utilisation > 1) {
@@ -227,9 +226,8 @@ SolverKind SizingSolver(const Config& config) {
 void RecordSizing(Design& d, const SizingProblem& problem, const Eigen::VectorXd& x,
                   const std::vector<double>& floor) {
   const std::vector<SizingProblem::MemberDemand> demands = problem.Demands(x);
-  const int nb = static_cast<int>(d.bars.size());
   for (int j = 0; j < static_cast<int>(demands.size()); ++j) {
-    MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    MemberSizing& m = d.MemberAt(j);
     const SizingProblem::MemberDemand& dm = demands[j];
     if (dm.row >= 0) {
       const SizingRow& row = problem.rows()[dm.row];
@@ -608,7 +606,6 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
                     const Eigen::VectorXd& x, const Design& d, const StaticCheck& statics,
                     const DynamicCheck& dynamics, bool passes) {
   const std::vector<SizingProblem::MemberDemand> linear = problem.Demands(x);
-  const int nb = static_cast<int>(d.bars.size());
   const size_t members = linear.size();
   corrections.demand_factor.resize(members, 1.0);
   corrections.taut_margin_n.resize(members, 0.0);
@@ -617,7 +614,7 @@ std::string Correct(SizingCorrections& corrections, const SizingProblem& problem
   double most_up = 1, most_down = 1;
   std::string up_name, down_name;
   for (size_t j = 0; j < members; ++j) {
-    const MemberSizing& m = static_cast<int>(j) < nb ? d.bars[j] : d.strings[j - nb];
+    const MemberSizing& m = d.MemberAt(static_cast<int>(j));
     double checked = 0;
     for (const MemberFinding* f : {&statics.members[j], &dynamics.members[j]}) {
       if (f->mode == LimitMode::kSlack) {

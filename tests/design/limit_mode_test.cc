@@ -75,9 +75,9 @@ TEST_CASE("limit mode: a design file reads its modes back, and an unknown text i
   const Design read = ReadDesign(file);
   REQUIRE(read.bars.size() == d.bars.size());
   REQUIRE(read.strings.size() == d.strings.size());
-  for (size_t k = 0; k < d.bars.size() + d.strings.size(); ++k) {
-    const MemberSizing& was = k < d.bars.size() ? d.bars[k] : d.strings[k - d.bars.size()];
-    const MemberSizing& now = k < d.bars.size() ? read.bars[k] : read.strings[k - d.bars.size()];
+  for (int k = 0; k < d.topology.structure.num_members(); ++k) {
+    const MemberSizing& was = d.MemberAt(k);
+    const MemberSizing& now = read.MemberAt(k);
     INFO("member " << was.name);
     CHECK(now.mode == was.mode);
     CHECK(now.governed_by == was.governed_by);

@@ -243,10 +243,10 @@ TEST_CASE("the sizing's mirror images share an area, and its stations are the lo
   // Every member's mirror image about mid-span (found here by coordinates) is in its group.
   const double span = d.config.bridge.span;
   for (int j = 0; j < nb + s.num_strings(); ++j) {
-    const Member& m = j < nb ? s.bars[j] : s.strings[j - nb];
+    const Member& m = s.MemberAt(j);
     const double xi = span - s.nodes(0, m.i), xj = span - s.nodes(0, m.j);
     for (int k = 0; k < nb + s.num_strings(); ++k) {
-      const Member& o = k < nb ? s.bars[k] : s.strings[k - nb];
+      const Member& o = s.MemberAt(k);
       const bool same_ends =
           (std::abs(s.nodes(0, o.i) - xi) < 1e-9 && std::abs(s.nodes(0, o.j) - xj) < 1e-9 &&
            std::abs(s.nodes(1, o.i) - s.nodes(1, m.i)) < 1e-9 &&

@@ -85,7 +85,7 @@ class JointSearch {
     kind_.assign(groups_, 0);
     name_.assign(groups_, "");
     for (int j = nm_ - 1; j >= 0; --j) {
-      const MemberSizing& m = j < nb_ ? start.bars[j] : start.strings[j - nb_];
+      const MemberSizing& m = start.MemberAt(j);
       const int g = problem_.group_of()[j];
       kind_[g] = j < nb_                             ? kBarGroup
                  : m.kind == MemberKind::kDeckString ? kDeckGroup
@@ -161,8 +161,7 @@ class JointSearch {
       out.mass = probe.mass.structure;
       CheckAgain(probe);
       out.pass = DesignVerdict(probe).outcome == VerdictOutcome::kPass;
-      for (int j = 0; j < nm_; ++j)
-        out.q[j] = j < nb_ ? probe.bars[j].utilisation : probe.strings[j - nb_].utilisation;
+      for (int j = 0; j < nm_; ++j) out.q[j] = probe.MemberAt(j).utilisation;
       if (probe.statics.deflection_limit_m > 0)
         out.q[nm_] = probe.statics.deflection_max_m / probe.statics.deflection_limit_m;
       out.q.tail(modes).setZero();  // a mode above its trigger is not checked

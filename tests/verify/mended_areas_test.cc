@@ -66,7 +66,7 @@ TEST_CASE("mending gives a failing member the area its checked demand asks, its 
   }
   for (int j = 0; j < static_cast<int>(areas.size()); ++j) {
     if (group_of[j] == group_of[s] || group_of[j] == group_of[b]) continue;
-    const MemberSizing& m = j < nb ? d.bars[j] : d.strings[j - nb];
+    const MemberSizing& m = d.MemberAt(j);
     // Its group's largest: mirror images of the equilibrium design agree to rounding (1e-12).
     CHECK(areas[j] == Approx(m.area).epsilon(1e-12));
   }

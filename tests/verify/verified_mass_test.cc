@@ -53,7 +53,6 @@ TEST_CASE("the verified design is locally minimal: a lighter member group fails 
   const SizingProblem problem(d, {});
   const std::vector<int>& group = problem.group_of();
   const std::vector<double> areas = MemberAreas(d);
-  const int nb = static_cast<int>(d.bars.size());
   const int groups = *std::max_element(group.begin(), group.end()) + 1;
   int probed = 0;
   for (int g = 0; g < groups; ++g) {
@@ -61,7 +60,7 @@ TEST_CASE("the verified design is locally minimal: a lighter member group fails 
     bool at_floor = false;
     for (size_t j = 0; j < areas.size(); ++j) {
       if (group[j] != g) continue;
-      const MemberSizing& m = static_cast<int>(j) < nb ? d.bars[j] : d.strings[j - nb];
+      const MemberSizing& m = d.MemberAt(static_cast<int>(j));
       group_mass += m.mass;
       at_floor = at_floor || m.governed_by == LimitMode::kMinRadius;
     }
