@@ -11,7 +11,7 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/reduced_min_mass.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 
 namespace tbridge {
 

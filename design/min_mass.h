@@ -22,7 +22,7 @@
 #include "core/material.h"
 #include "core/structure.h"
 #include "design/equilibrium.h"
-#include "design/nlp.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 

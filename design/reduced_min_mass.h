@@ -31,7 +31,7 @@
 #include "core/structure.h"
 #include "design/equilibrium_basis.h"
 #include "design/min_mass.h"
-#include "design/nlp.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "design/nnls.h"
+#include "optim/nnls.h"
 
 namespace tbridge {
 namespace {

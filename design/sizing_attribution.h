@@ -5,7 +5,7 @@
 // At a minimum of f(x) subject to g_r(x) >= l_r and x >= x_min, the gradient of the mass is
 // a non-negative combination of the active constraints' gradients:
 //   grad f = sum_r lambda_r grad g_r + mu,   lambda, mu >= 0.
-// The multipliers come from that equation by non-negative least squares (design/nnls.h), for
+// The multipliers come from that equation by non-negative least squares (optim/nnls.h), for
 // any solver. The mass is linear in the variables and zero at zero, so f = grad f . x and a
 // change df = grad f . dx exactly; the terms lambda_r grad g_r . x of the rows of a kind K
 // (and mu . x of the minimum sizes) are the mass that K costs, the prestress included (more

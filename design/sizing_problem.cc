@@ -19,8 +19,8 @@
 #include "design/equilibrium_basis.h"
 #include "design/linear_response.h"
 #include "design/mirror.h"
-#include "design/reciprocal_curvature.h"
 #include "design/stability.h"
+#include "optim/reciprocal_curvature.h"
 
 namespace tbridge {
 
@@ -1476,7 +1476,7 @@ const NlpProblem::Pattern& SizingProblem::HessianPattern() const {
   return p.hessian;
 }
 
-// The reciprocal diagonal the SQP takes (design/reciprocal_curvature.h), in NlpProblem's sign:
+// The reciprocal diagonal the SQP takes (optim/reciprocal_curvature.h), in NlpProblem's sign:
 // its Lagrangian is sigma f + sum lambda_r g_r, where a binding row g_r >= lo_r has lambda_r <= 0
 // (Ipopt's), so the curvature's multipliers are -lambda. The prestress variables get none: the
 // SQP's secant there is learnt along its own path, which another solver does not walk, and the

@@ -25,7 +25,7 @@
 // static check and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut
 // margin they ask. The members' weight in G is held at the design the problem was built from (the
 // outer iterations update it). Gradients are exact (adjoint sensitivities); the Hessian is the
-// reciprocal diagonal of design/reciprocal_curvature.h, the SQP's own curvature (NLopt's SLSQP
+// reciprocal diagonal of optim/reciprocal_curvature.h, the SQP's own curvature (NLopt's SLSQP
 // approximates it instead).
 #pragma once
 
@@ -39,8 +39,8 @@
 
 #include "design/design.h"
 #include "design/limit_mode.h"
-#include "design/nlp.h"
 #include "design/prestress_states.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 

@@ -270,7 +270,7 @@ struct Resizing {
   // mode's bound on its frequency, and why.
   std::vector<std::string> comfort_rows;
   // The certificate of local optimality of the program whose solution is the design
-  // (design/kkt_certificate.h), in its scaled variables, every row of the whole program counted.
+  // (optim/kkt_certificate.h), in its scaled variables, every row of the whole program counted.
   struct Kkt {
     bool computed = false;  // false where nothing was sized
     double stationarity = 0, feasibility = 0, complementarity = 0;

@@ -8,7 +8,7 @@
 
 #include "core/config.h"
 #include "design/design.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 
 namespace tbridge::test {
 

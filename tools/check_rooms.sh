@@ -11,17 +11,18 @@ cd "$(dirname "$0")/.."
 # through the libraries it links (CMakeLists.txt's target_link_libraries).
 declare -A below=(
   [core]=""
+  [optim]="core"
   [statics]="core"
-  [design]="core statics"
-  [truss]="core statics design"
+  [design]="core optim statics"
+  [truss]="core optim statics design"
   [dynamics]="core"
-  [bridge]="core statics design dynamics"
-  [verify]="core statics design dynamics bridge"
-  [sweep]="core statics design dynamics bridge verify"
-  [export]="core statics design truss dynamics bridge"
-  [app]="core statics design truss dynamics bridge verify sweep export"
-  [tools]="core statics design truss dynamics bridge verify sweep export app"
-  [python]="core statics design truss dynamics bridge verify sweep export app"
+  [bridge]="core optim statics design dynamics"
+  [verify]="core optim statics design dynamics bridge"
+  [sweep]="core optim statics design dynamics bridge verify"
+  [export]="core optim statics design truss dynamics bridge"
+  [app]="core optim statics design truss dynamics bridge verify sweep export"
+  [tools]="core optim statics design truss dynamics bridge verify sweep export app"
+  [python]="core optim statics design truss dynamics bridge verify sweep export app"
 )
 
 status=0

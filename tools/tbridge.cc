@@ -14,7 +14,7 @@
 #include "core/error.h"
 #include "core/json_reader.h"
 #include "core/progress.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 #include "tbridge_version.h"  // generated at build time (tools/version.cmake)
 #include "tools/commands.h"
 #include "tools/output.h"

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 
 namespace tbridge {
 

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "core/error.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 #include "truss/truss_nonlinear.h"
 
 namespace tbridge {
@@ -418,7 +418,7 @@ KktInput CertificateInput(const TrussProblem& problem, const Eigen::VectorXd& x)
   return in;
 }
 
-// The certificate of x on `problem` (design/kkt_certificate.h).
+// The certificate of x on `problem` (optim/kkt_certificate.h).
 KktCertificate Certify(const TrussProblem& problem, const Eigen::VectorXd& x) {
   KktInput in = CertificateInput(problem, x);
   const int n = problem.num_variables();

@@ -1,7 +1,7 @@
 // The minimum-mass sizing of a pin-jointed structure (truss/truss_model.h): one area per group,
 // every member's stresses and buckling in every load case, the displacement limits and the
 // lowest natural frequencies as rows of one nonlinear program, solved by the verified sizing's
-// solvers (design/solvers.h) and certified by the same KKT test (design/kkt_certificate.h).
+// solvers (optim/solvers.h) and certified by the same KKT test (optim/kkt_certificate.h).
 //
 //   min  sum_g rho A_g L_g   over  min_area_g <= A_g <= max_area_g (and, where the prestress is
 //        variable, the amplitudes of the self-stress states, free), subject to, in every case:
@@ -21,8 +21,8 @@
 #include <utility>
 #include <vector>
 
-#include "design/kkt_certificate.h"
-#include "design/nlp.h"
+#include "optim/kkt_certificate.h"
+#include "optim/nlp.h"
 #include "truss/truss_analysis.h"
 #include "truss/truss_model.h"
 

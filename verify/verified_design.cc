@@ -14,11 +14,11 @@
 #include "core/error.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
-#include "design/kkt_certificate.h"
 #include "design/prestress_states.h"
 #include "design/sizing_attribution.h"
 #include "design/sizing_problem.h"
-#include "design/solvers.h"
+#include "optim/kkt_certificate.h"
+#include "optim/solvers.h"
 #include "verify/angle_search.h"
 #include "verify/comfort_check.h"
 #include "verify/comfort_sizing.h"
@@ -205,7 +205,7 @@ std::vector<double> MendedAreas(const Design& d, const std::vector<int>& group_o
 
 namespace {
 
-// The solver of the sizing: the sequential quadratic programming of design/sqp_solver.h,
+// The solver of the sizing: the sequential quadratic programming of optim/sqp_solver.h,
 // unless the config asks for Ipopt or NLopt (a second algorithm on the same program). It knows
 // the rows' curvature in the areas from the first gradient, where NLopt's SLSQP learns it over
 // about as many iterations as there are variables from an identity Hessian: the default at
@@ -735,7 +735,7 @@ constexpr int kMostActiveRows = 2000;
 // dimension of the null space; beyond this many free directions it is left out and said so.
 constexpr int kSecondOrderMaxFree = 64;
 
-// The certificate of local optimality of x (design/kkt_certificate.h) on the program the sizing
+// The certificate of local optimality of x (optim/kkt_certificate.h) on the program the sizing
 // solved about `current`: every row of the whole program, each orbit's rows under the mirror
 // symmetries alike (ImageCorrections), as the sizing poses them; every row counts in the
 // feasibility.

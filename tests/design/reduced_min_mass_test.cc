@@ -13,7 +13,7 @@
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/min_mass.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 #include "test_support.h"
 
 namespace tbridge {

@@ -10,8 +10,8 @@
 #include <limits>
 
 #include "design/design.h"
-#include "design/nnls.h"
-#include "design/solvers.h"
+#include "optim/nnls.h"
+#include "optim/solvers.h"
 
 namespace tbridge {
 namespace {

@@ -1,7 +1,7 @@
 // The sizing's sequential quadratic programming against closed-form optima and against a
 // second algorithm (NLopt's SLSQP) on the verified sizing problem itself.
 
-#include "design/sqp_solver.h"
+#include "optim/sqp_solver.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "design/design.h"
 #include "design/sizing_problem.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 
 namespace tbridge {
 namespace {

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "cli_support.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 
 namespace {
 

@@ -21,9 +21,9 @@
 #include "cli_support.h"
 #include "core/config.h"
 #include "design/design.h"
-#include "design/solvers.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "optim/solvers.h"
 #include "test_support.h"
 
 namespace tbridge {

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "core/config.h"
-#include "design/dense_qp.h"
 #include "design/sizing_problem.h"
+#include "optim/dense_qp.h"
 #include "verify/comfort_check.h"
 #include "verify/comfort_sizing.h"
 #include "verify/verified_design.h"

@@ -7,7 +7,7 @@
 
 #include "core/config.h"
 #include "design/sizing_problem.h"
-#include "design/solvers.h"
+#include "optim/solvers.h"
 #include "verify/comfort_check.h"
 #include "verify/dynamic_check.h"
 #include "verify/static_check.h"
@@ -88,7 +88,7 @@ TEST_CASE("the polished design carries a certificate that proves it locally opti
   // 1e-9 (by Ipopt where built in) and checked; at n = 4 the loop ends on a mended design, whose
   // program gives back the design that failed by a hair, and the polish corrects its rows once
   // more (verify/verified_design.cc, Polish). Proved means every measure within 1e-6 and the
-  // second-order test passed (design/kkt_certificate.h).
+  // second-order test passed (optim/kkt_certificate.h).
   for (const int n : {3, 4}) {
     Config config;
     config.bridge.n = n;

@@ -11,7 +11,7 @@
 // costs O(n q) with q active constraints, plus the scan of the rows, O(m n). The original
 // keeps the whole n x n basis J = L^-T Q and rotates all of it at every step, O(n^2); the
 // sizing's subproblems (n = 512, q about 260) spent most of their time there. The sequential
-// quadratic programming of design/sqp_solver.h solves one per iteration; the bounds are its
+// quadratic programming of optim/sqp_solver.h solves one per iteration; the bounds are its
 // move limits and are scanned without forming their rows.
 #pragma once
 

@@ -10,7 +10,7 @@
 #include <mutex>
 #include <thread>
 
-#include "design/nlp.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 
@@ -265,7 +265,7 @@ SolverOutcome SolveWithIpopt(const NlpProblem& problem, const SolverOptions& opt
 
 }  // namespace tbridge
 
-// The module's entry point, looked up by design/solvers.cc: the adapter's solve function.
+// The module's entry point, looked up by optim/solvers.cc: the adapter's solve function.
 extern "C" __attribute__((visibility("default"))) void* tbridge_solver_entry() {
   return reinterpret_cast<void*>(&tbridge::SolveWithIpopt);
 }

@@ -2,7 +2,7 @@
 // in closed form, and on points that must fail it: not stationary, infeasible, a saddle, a
 // multiplier on a row with slack, a violated row deep among many.
 
-#include "design/kkt_certificate.h"
+#include "optim/kkt_certificate.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -8,7 +8,7 @@
 // 2 (-df/dx_j) / x_j; a row that falls with x_j is linear in it (conservative). The sum is
 // never negative, so the diagonal it forms is a convex model.
 //
-// The one statement of it: the SQP's Hessian (design/sqp_solver.cc) and the sizing program's
+// The one statement of it: the SQP's Hessian (optim/sqp_solver.cc) and the sizing program's
 // HessianValues, which Ipopt reads (design/sizing_problem.cc).
 #pragma once
 

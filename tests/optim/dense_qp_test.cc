@@ -1,7 +1,7 @@
 // The dense quadratic program (Goldfarb-Idnani) against closed forms and against a second
 // algorithm: every active set enumerated, each solved as a linear KKT system.
 
-#include "design/dense_qp.h"
+#include "optim/dense_qp.h"
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>

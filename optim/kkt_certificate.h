@@ -6,7 +6,7 @@
 //
 // At a local minimum grad f = J_A^T lambda + mu_lo - mu_hi with lambda, mu >= 0 on the active
 // rows and bounds (mu_lo on lower bounds, mu_hi on upper). The multipliers come from that
-// equation by non-negative least squares (design/nnls.h), so a solver's own multipliers are
+// equation by non-negative least squares (optim/nnls.h), so a solver's own multipliers are
 // neither needed nor trusted; what remains of the equation is the stationarity residual. The
 // second-order condition is checked on the Lagrangian's Hessian reduced to the tangent space
 // of the strongly active constraints, from finite differences of its gradient; at a vertex

@@ -6,7 +6,7 @@
 #include <nlopt.hpp>
 #include <stdexcept>
 
-#include "design/nlp.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 
@@ -143,7 +143,7 @@ SolverOutcome SolveWithNlopt(const NlpProblem& problem, const SolverOptions& opt
 
 }  // namespace tbridge
 
-// The module's entry point, looked up by design/solvers.cc: the adapter's solve function.
+// The module's entry point, looked up by optim/solvers.cc: the adapter's solve function.
 extern "C" __attribute__((visibility("default"))) void* tbridge_solver_entry() {
   return reinterpret_cast<void*>(&tbridge::SolveWithNlopt);
 }

@@ -1,4 +1,4 @@
-#include "design/dense_qp.h"
+#include "optim/dense_qp.h"
 
 #include <Eigen/Jacobi>
 #include <algorithm>

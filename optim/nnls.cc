@@ -1,4 +1,4 @@
-#include "design/nnls.h"
+#include "optim/nnls.h"
 
 #include <algorithm>
 #include <cmath>

@@ -78,7 +78,7 @@ struct SolverOptions {
 
 // Adapters: each is the only file that includes its solver's headers, and each is its own
 // module (tbridge_ipopt.so, tbridge_nlopt.so), present only when built in and loaded on first
-// use: call them through SolveNlp (design/solvers.h), which knows which are. `x` is the start on
+// use: call them through SolveNlp (optim/solvers.h), which knows which are. `x` is the start on
 // entry and the solution on return. Both may be called from several threads; Ipopt solves
 // then run one at a time, all on one thread of the adapter (its sequential MUMPS is not
 // reentrant).

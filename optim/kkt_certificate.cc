@@ -1,4 +1,4 @@
-#include "design/kkt_certificate.h"
+#include "optim/kkt_certificate.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "design/nnls.h"
+#include "optim/nnls.h"
 
 namespace tbridge {
 namespace {

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "design/nlp.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 
@@ -25,7 +25,7 @@ bool SolverBuiltIn(SolverKind solver);
 void RequireSolverBuiltIn(SolverKind solver);
 
 // Solves `problem` with the iterative solver `solver` (kIpopt or kNlopt, or kSqp: the verified
-// sizing's own, design/sqp_solver.h, always built in and not a value of design.solver); `x` is
+// sizing's own, optim/sqp_solver.h, always built in and not a value of design.solver); `x` is
 // the start on entry and the solution on return. Throws ConfigError (design.solver) when
 // `solver` is not built in or not iterative.
 SolverOutcome SolveNlp(SolverKind solver, const NlpProblem& problem, const SolverOptions& options,

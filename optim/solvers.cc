@@ -1,4 +1,4 @@
-#include "design/solvers.h"
+#include "optim/solvers.h"
 
 #include <dlfcn.h>
 
@@ -7,7 +7,7 @@
 #include <mutex>
 
 #include "core/error.h"
-#include "design/sqp_solver.h"
+#include "optim/sqp_solver.h"
 
 namespace tbridge {
 

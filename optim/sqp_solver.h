@@ -7,7 +7,7 @@
 // behave so in its members' areas. Their second derivatives, -2 (dg/dx_j) / x_j, weighted by
 // the last multipliers, give the Lagrangian's diagonal Hessian, or a diagonal secant estimate
 // where that is larger (alone for a free variable). The quadratic subproblem
-// (design/dense_qp.h) carries the rows' linearisation and a move limit per variable (a trust
+// (optim/dense_qp.h) carries the rows' linearisation and a move limit per variable (a trust
 // region: x_j / (1 + r_j) .. x_j (1 + r_j) for a positive one), and an l1 merit function, with
 // a second-order correction, accepts or shortens its step.
 //
@@ -19,7 +19,7 @@
 
 #include <Eigen/Core>
 
-#include "design/nlp.h"
+#include "optim/nlp.h"
 
 namespace tbridge {
 

@@ -1,4 +1,4 @@
-#include "design/sqp_solver.h"
+#include "optim/sqp_solver.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "design/dense_qp.h"
-#include "design/nnls.h"
-#include "design/reciprocal_curvature.h"
+#include "optim/dense_qp.h"
+#include "optim/nnls.h"
+#include "optim/reciprocal_curvature.h"
 
 namespace tbridge {
 
