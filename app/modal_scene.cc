@@ -1,9 +1,9 @@
 #include "app/modal_scene.h"
 
 #include "bridge/design_model.h"
+#include "checks/comfort_check.h"
 #include "dynamics/structure_model.h"
-#include "verify/comfort_check.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 

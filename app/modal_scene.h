@@ -15,7 +15,7 @@ namespace tbridge {
 
 // A bridge's mass model for its modes (tbridge modes --mass): the deck and payload as the runs
 // have them, or the comfort check's deck with the traffic class's pedestrians or with none
-// (verify/comfort_check.h).
+// (checks/comfort_check.h).
 enum class ModalMassModel { kDesign, kCrowd, kEmpty };
 inline constexpr std::array<Named<ModalMassModel>, 3> kModalMassModelNames{
     {{ModalMassModel::kDesign, "design"},

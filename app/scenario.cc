@@ -4,7 +4,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "dynamics/structure_model.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 

@@ -1,6 +1,6 @@
 // The dynamic check's moving load (Q_t crossing the deck, deck inertia on) by each method
 // against RK4 at the check's stable step, on the default bridge's first design at each n (or
-// on design files): SDIRK3 at four steps, and the modal run (verify/modal_run.h) at five
+// on design files): SDIRK3 at four steps, and the modal run (checks/modal_run.h) at five
 // cutoffs, done whatever the bridge's nonlinearity (which its line names) so that its error
 // can be read against it.
 //
@@ -25,6 +25,8 @@
 #include <string>
 
 #include "bridge/design_model.h"
+#include "checks/load_scenarios.h"
+#include "checks/modal_run.h"
 #include "core/config.h"
 #include "design/design.h"
 #include "design/design_reader.h"
@@ -33,8 +35,6 @@
 #include "dynamics/integrator_policy.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
-#include "verify/load_scenarios.h"
-#include "verify/modal_run.h"
 
 namespace {
 
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     };
     line("rk4_reference", ref_scene, ref);
-    // The modal run (verify/modal_run.h) at each cutoff, its station solves timed apart: the
+    // The modal run (checks/modal_run.h) at each cutoff, its station solves timed apart: the
     // check does them for its static counterparts whichever way the run goes.
     const StaticModel statics = StaticModelOf(d);
     StaticState standing;

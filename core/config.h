@@ -26,7 +26,7 @@ struct BridgeConfig {
   double deck_width = 1.5;   // w_d, deck beam width and distance between planes [m]
   int planes = 1;            // 1 = planar bridge, 2 = 3D bridge of two coupled planes
   // beta_deg given as "auto": the verified design chooses it in design.beta_range_deg
-  // (verify/angle_search.h), and beta_deg then holds the angle chosen.
+  // (sizing/angle_search.h), and beta_deg then holds the angle chosen.
   bool beta_auto = false;
 };
 
@@ -72,7 +72,7 @@ struct DesignConfig {
   // design passes with the prestress at its highest and its lowest so made
   // (design/prestress_states.h).
   double rest_length_tolerance = 0.0;
-  // [B]: a design whose estimated peak memory (verify/memory_estimate.h) exceeds this is refused
+  // [B]: a design whose estimated peak memory (sizing/memory_estimate.h) exceeds this is refused
   // before any work. Absent: the memory available when the design starts (MemAvailable).
   std::optional<double> memory_limit_bytes;
 };
@@ -102,7 +102,7 @@ struct LoadsConfig {
   // A run of more member-steps (steps x members) is not done: the dynamic check is then not
   // run, and the design INCOMPLETE.
   double dynamic_max_member_steps = 2e9;
-  // How the walking load runs: "modal" (verify/modal_run.h: the modes to
+  // How the walking load runs: "modal" (checks/modal_run.h: the modes to
   // dynamic_modal_cutoff_hz, the nonlinear run where a string changes state) or "rk4".
   DynamicMethod dynamic_method = DynamicMethod::kModal;
   double dynamic_modal_cutoff_hz = 100.0;  // [Hz]
@@ -123,7 +123,7 @@ struct LoadsConfig {
   double station_margin = 1.0;      // the static check's nonlinear stations (config_fields.h)
 };
 
-// Footbridge comfort under pedestrians (verify/comfort_check.h): the Sétra footbridge guide
+// Footbridge comfort under pedestrians (checks/comfort_check.h): the Sétra footbridge guide
 // (2006) and HiVoSS (2008) load models, and EN 1990 A2.4.3.2's triggers and limits. Each
 // constant's source is beside it in design/pedestrian_loads.h.
 struct ComfortConfig {
@@ -144,7 +144,7 @@ struct ComfortConfig {
   double crowd_horizontal_limit_m_s2 = 0.4;  // EN 1990 A2.4.3.2(1), exceptional crowd conditions
 };
 
-// The abutments' capacities (verify/static_check.h checks them, the verified sizing designs to
+// The abutments' capacities (checks/static_check.h checks them, the verified sizing designs to
 // them). Unset: rigid hinges of unlimited capacity, the paper's supports.
 struct SupportsConfig {
   std::optional<double> horizontal_capacity_n;  // [N], per abutment, in-plan vector sum

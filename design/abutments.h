@@ -1,7 +1,7 @@
 // The bridge's two abutments: its support nodes at each end of the span (one per end on a
 // planar bridge, one per plane on the 3D bridge), and what one abutment takes of the support
-// reactions. The static check's findings (verify/static_check.h), the sizing's support rows
-// (design/sizing_problem.h) and the thrust warning (design/plausibility.h) read them here.
+// reactions. The static check's findings (checks/static_check.h), the sizing's support rows
+// (sizing/sizing_problem.h) and the thrust warning (design/plausibility.h) read them here.
 #pragma once
 
 #include <Eigen/Core>

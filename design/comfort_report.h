@@ -1,5 +1,5 @@
 // The comfort check's part of a design's outputs: the design JSON's `comfort` section and the
-// summary's comfort lines (verify/comfort_check.h fills the report they read).
+// summary's comfort lines (checks/comfort_check.h fills the report they read).
 #pragma once
 
 #include <nlohmann/json.hpp>

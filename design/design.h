@@ -68,13 +68,13 @@ struct Design {
   Eigen::VectorXd alpha;             // self-stress coefficients [N]; empty when not computed
   int self_weight_iterations = 0;    // sizings of the self-weight fixed point
   bool unchecked_cases = false;      // some asked-for cases were left out (notes say which)
-  StaticCheck statics;               // the nonlinear static check, when it was run (verify/)
-  Resizing resizing;                 // the verification's resizing, when it was run (verify/)
-  AngleSearch angle;      // the angle's search, where bridge.beta_deg is "auto" (verify/)
-  DynamicCheck dynamics;  // the dynamic check, when it was run (verify/)
+  StaticCheck statics;               // the nonlinear static check, when it was run (checks/)
+  Resizing resizing;                 // the verification's resizing, when it was run (sizing/)
+  AngleSearch angle;      // the angle's search, where bridge.beta_deg is "auto" (sizing/)
+  DynamicCheck dynamics;  // the dynamic check, when it was run (checks/)
   MassAttribution
       attribution;       // what drives the verified sizing's mass; members empty when not sized
-  ComfortCheck comfort;  // the footbridge comfort check, when it was run (verify/)
+  ComfortCheck comfort;  // the footbridge comfort check, when it was run (checks/)
   std::vector<MemberSizing> bars;     // in structure bar order
   std::vector<MemberSizing> strings;  // in structure string order
   // Member j's sizing in the members' one order, [bars; strings] (Structure::MemberAt).
@@ -123,7 +123,7 @@ DesignInputs PrepareDesign(const Config& config);
 // `progress` (may be null) is told the fraction done at each stage: topology, equilibrium
 // factorisation, solve, sizing.
 // `area_floor` (may be null) gives each member [bars; strings] an area it may not go below
-// [m^2]: the verification's resizing (verify/verified_design.h). A member held there reports
+// [m^2]: the verification's resizing (sizing/verified_design.h). A member held there reports
 // `governed_by` = "resized".
 Design RunDesign(const Config& config, ProgressReporter* progress = nullptr,
                  const std::vector<double>* area_floor = nullptr);

@@ -1,8 +1,8 @@
 // The mirror symmetries of a bridge: each node's and member's image across one of its planes
 // of symmetry (x = span / 2; between the planes of a 3D bridge), and what a mirror does to its
 // loads, its cases, its deck stations and a static state. The sizing poses one row of each
-// mirrored pair (design/sizing_problem.h) and the checks solve one station of each
-// (verify/static_check.h, verify/modal_run.h): a symmetric bridge under a mirrored load is in
+// mirrored pair (sizing/sizing_problem.h) and the checks solve one station of each
+// (checks/static_check.h, checks/modal_run.h): a symmetric bridge under a mirrored load is in
 // the mirrored equilibrium.
 #pragma once
 

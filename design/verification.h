@@ -1,5 +1,6 @@
-// What the checks of a sized design found (filled by verify/, written by the design report):
-// plain data, so that the design's outputs can carry it without knowing how it was checked.
+// What the checks of a sized design found (filled by checks/ and sizing/, written by the design
+// report): plain data, so that the design's outputs can carry it without knowing how it was
+// checked.
 #pragma once
 
 #include <Eigen/Core>
@@ -43,7 +44,7 @@ void RaiseFinding(MemberFinding& f, double demand, double resistance,
 void RaiseSlackFinding(MemberFinding& f, double strain, double working_stress,
                        double youngs_modulus, const std::string& governing_case);
 
-// One load case solved as a nonlinear static problem (verify/static_check.h).
+// One load case solved as a nonlinear static problem (checks/static_check.h).
 struct CaseResponse {
   std::string
       label;  // the case, with its station for a travelling family ("sls_travelling at node 5")
@@ -101,7 +102,7 @@ struct StaticCheck {
   CheckStatus Status() const;
 };
 
-// The dynamic check (verify/dynamic_check.h): each dynamic load run at service level.
+// The dynamic check (checks/dynamic_check.h): each dynamic load run at service level.
 struct GroupAmplification {
   std::string group;         // member group ("deck", "substructure", "vertical", ...)
   double static_peak = 0;    // largest force of the group's members over the static counterpart [N]
@@ -150,7 +151,7 @@ struct DynamicCheck {
   }
 };
 
-// What drives the verified sizing's mass (design/sizing_attribution.h).
+// What drives the verified sizing's mass (sizing/sizing_attribution.h).
 // The kinds of constraint, in the order the outputs list them: each indexes kConstraintKinds,
 // their texts, and the by-kind arrays below.
 enum ConstraintKind : int {
@@ -190,11 +191,11 @@ struct MassAttribution {
   double stationarity_residual = 0;  // |grad f - J^T lambda - mu| / |grad f|
   int active_rows = 0;
   // lambda per posed row, then mu per variable at its floor, in the program's scaled units
-  // (design/sizing_problem.h): the raw multipliers, for checks of the split.
+  // (sizing/sizing_problem.h): the raw multipliers, for checks of the split.
   Eigen::VectorXd multipliers;
 };
 
-// One deck mode of the comfort check (verify/comfort_check.h): its motion, frequencies, modal
+// One deck mode of the comfort check (checks/comfort_check.h): its motion, frequencies, modal
 // mass and, in a range of resonance risk, its steady peak acceleration under the crowd load.
 struct ComfortMode {
   int index = 0;  // 1-based, in ascending frequency with the pedestrians on the deck
@@ -218,7 +219,7 @@ struct ComfortMode {
   bool pass = true;  // acceleration within the limit (and, lateral, fewer pedestrians than N_L)
 };
 
-// The comfort check: plain data filled by verify/comfort_check.h.
+// The comfort check: plain data filled by checks/comfort_check.h.
 struct ComfortCheck {
   bool done = false;      // carried out (not with the paper's switches or comfort.check false)
   bool required = false;  // a deck frequency below EN 1990 A2's trigger for its motion
@@ -238,8 +239,8 @@ struct ComfortCheck {
   std::string Failures() const;
 };
 
-// The resizing loop's record (verify/verified_design.h).
-// The angle chosen where bridge.beta_deg is "auto" (verify/angle_search.h).
+// The resizing loop's record (sizing/verified_design.h).
+// The angle chosen where bridge.beta_deg is "auto" (sizing/angle_search.h).
 struct AngleSearch {
   bool done = false;  // the angle was searched
   double low_deg = 0, high_deg = 0, chosen_deg = 0;
@@ -266,7 +267,7 @@ struct Resizing {
   double second_start_kg = 0;        // the last sizing from twice the first design's areas
   std::string optima;                // what that second start found, and which design was kept
   std::string why;                   // when not converged: the last verdict
-  // The comfort rows of the sizing that gave the design (verify/comfort_sizing.h): each deck
+  // The comfort rows of the sizing that gave the design (sizing/comfort_sizing.h): each deck
   // mode's bound on its frequency, and why.
   std::vector<std::string> comfort_rows;
   // The certificate of local optimality of the program whose solution is the design

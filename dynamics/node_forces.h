@@ -14,7 +14,7 @@ namespace tbridge {
 
 // A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads,
 // ramped up over rise_s and down over fall_s (LoadStepConfig); with omega_rad_s > 0 it is
-// harmonic, force sin(omega_rad_s t) (a pedestrian crowd's load, verify/comfort_check.h).
+// harmonic, force sin(omega_rad_s t) (a pedestrian crowd's load, checks/comfort_check.h).
 struct TimedLoad {
   double t_start = 0, t_end = 0;
   int node = 0;

@@ -9,7 +9,7 @@
 // never negative, so the diagonal it forms is a convex model.
 //
 // The one statement of it: the SQP's Hessian (optim/sqp_solver.cc) and the sizing program's
-// HessianValues, which Ipopt reads (design/sizing_problem.cc).
+// HessianValues, which Ipopt reads (sizing/sizing_problem.cc).
 #pragma once
 
 #include <Eigen/Core>

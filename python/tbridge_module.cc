@@ -21,6 +21,7 @@
 #include "app/scenario.h"
 #include "app/simulation_report.h"
 #include "bridge/design_model.h"
+#include "checks/static_check.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -30,11 +31,10 @@
 #include "design/design_report.h"
 #include "dynamics/modal.h"
 #include "export/export.h"
+#include "sizing/verified_design.h"
 #include "sweep/sweep.h"
 #include "truss/truss_design.h"
 #include "truss/truss_report.h"
-#include "verify/static_check.h"
-#include "verify/verified_design.h"
 
 namespace py = pybind11;
 

@@ -4,13 +4,13 @@
 #include <cmath>
 
 #include "bridge/design_model.h"
+#include "checks/dynamic_check.h"
 #include "core/error.h"
 #include "core/member_area.h"
 #include "dynamics/model.h"
+#include "sizing/memory_estimate.h"
+#include "sizing/verified_design.h"
 #include "sweep/first_frequency.h"
-#include "verify/dynamic_check.h"
-#include "verify/memory_estimate.h"
-#include "verify/verified_design.h"
 
 namespace tbridge {
 

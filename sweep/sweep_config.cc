@@ -135,7 +135,7 @@ SweepSpec ParseSweepSpec(const nlohmann::json& root) {
                       "a sweep designs bridges: give a \"bridge\" section instead");
   }
   CheckSweepRules(spec.sweep, spec.base.bridge);
-  // With "auto" each candidate searches its own angle (verify/angle_search.h): a list of angles
+  // With "auto" each candidate searches its own angle (sizing/angle_search.h): a list of angles
   // would design the same bridges again.
   if (spec.base.bridge.beta_auto && root["sweep"].is_object() &&
       root["sweep"].contains("beta_deg")) {

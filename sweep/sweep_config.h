@@ -30,7 +30,7 @@ struct JointMassConfig {
 };
 
 // Each constraint is off when absent. The dynamic ones read the design's dynamic check
-// (verify/dynamic_check.h): the runs its loads section asks for, each member's factored demand
+// (checks/dynamic_check.h): the runs its loads section asks for, each member's factored demand
 // over its resistance. A candidate whose check left a run undone cannot show them and is
 // infeasible (dynamic_check_done).
 struct SweepConstraints {
@@ -66,7 +66,7 @@ struct SweepConfig {
   // stays allowed, and the mass shows it. "keep_area": A0 is kept, rest length = r x length
   // (the paper's Table 6 experiment); the implied stress E (1/r - 1) may exceed sigma_w.
   PrestrainSizing prestrain_sizing = PrestrainSizing::kGrowArea;
-  // Each candidate is the verified design (verify/verified_design.h: its static and dynamic
+  // Each candidate is the verified design (sizing/verified_design.h: its static and dynamic
   // checks, and the resizing of what fails), as tbridge design writes it; false: the
   // minimum-mass design alone.
   bool verified = true;

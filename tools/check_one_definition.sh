@@ -42,7 +42,7 @@ define "member from area (stiffness (E A + T) / L)" core/member_area.h \
 define "member from area (rest length)" core/member_area.h \
   "/ \\(1(\\.0)? \\+ [^;]*${modulus}"
 
-rooms=(core optim statics design truss dynamics bridge verify sweep export app tools python)
+rooms=(core optim statics design truss dynamics bridge checks sizing sweep export app tools python)
 
 # Checks the tree at $1; names each formula written more than once or not at all, and returns 1
 # when there is one.
@@ -86,10 +86,10 @@ self_test() {
     echo "check_one_definition --self-test: the definitions alone do not pass" >&2
     return 1
   fi
-  mkdir -p "$scratch/verify"
+  mkdir -p "$scratch/checks"
   for i in "${!names[@]}"; do
     line=$(sed 's://.*$::' "$source/${homes[$i]}" | grep -E -- "${patterns[$i]}" | sed -n 1p)
-    printf '%s\n' "$line" > "$scratch/verify/planted.cc"
+    printf '%s\n' "$line" > "$scratch/checks/planted.cc"
     if out=$(check "$scratch" 2>&1); then
       echo "check_one_definition --self-test: a second ${names[$i]} was not caught" >&2
       failed=1
@@ -98,7 +98,7 @@ self_test() {
       failed=1
     fi
   done
-  rm -f "$scratch/verify/planted.cc"
+  rm -f "$scratch/checks/planted.cc"
   [ "$failed" -eq 0 ] && echo "check_one_definition --self-test: each of ${#names[@]} second copies caught"
   return "$failed"
 }

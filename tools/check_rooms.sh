@@ -17,12 +17,13 @@ declare -A below=(
   [truss]="core optim statics design"
   [dynamics]="core"
   [bridge]="core optim statics design dynamics"
-  [verify]="core optim statics design dynamics bridge"
-  [sweep]="core optim statics design dynamics bridge verify"
+  [checks]="core optim statics design dynamics bridge"
+  [sizing]="core optim statics design dynamics bridge checks"
+  [sweep]="core optim statics design dynamics bridge checks sizing"
   [export]="core optim statics design truss dynamics bridge"
-  [app]="core optim statics design truss dynamics bridge verify sweep export"
-  [tools]="core optim statics design truss dynamics bridge verify sweep export app"
-  [python]="core optim statics design truss dynamics bridge verify sweep export app"
+  [app]="core optim statics design truss dynamics bridge checks sizing sweep export"
+  [tools]="core optim statics design truss dynamics bridge checks sizing sweep export app"
+  [python]="core optim statics design truss dynamics bridge checks sizing sweep export app"
 )
 
 status=0

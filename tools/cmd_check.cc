@@ -12,11 +12,11 @@
 #include "design/design_reader.h"
 #include "design/design_report.h"
 #include "design/plausibility.h"
+#include "sizing/verified_design.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 #include "truss/truss_design.h"
 #include "truss/truss_report.h"
-#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 

@@ -10,12 +10,12 @@
 #include "design/design.h"
 #include "design/design_report.h"
 #include "design/plausibility.h"
+#include "sizing/memory_estimate.h"
+#include "sizing/verified_design.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 #include "truss/truss_design.h"
 #include "truss/truss_report.h"
-#include "verify/memory_estimate.h"
-#include "verify/verified_design.h"
 
 namespace tbridge::cli {
 

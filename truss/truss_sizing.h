@@ -70,7 +70,7 @@ Eigen::VectorXd TrussRowValues(const TrussModel& model, const std::vector<TrussR
                                const Eigen::VectorXd& variables, Eigen::MatrixXd* jacobian);
 
 // What the members' mass pays for, by the sizing's Lagrange multipliers at its point (as the
-// bridge's mass_attribution: design/sizing_attribution.h). The mass is linear in the areas,
+// bridge's mass_attribution: sizing/sizing_attribution.h). The mass is linear in the areas,
 // zero at zero and free of the prestress, so mass = grad(mass) . v = sum_r lambda_r grad g_r . v
 // + mu . v: each active row's term (its kind's share) and each bound's, adding up to the mass
 // up to the stationarity residual. Kinds: "strength" (tension, compression), "buckling",

@@ -14,7 +14,7 @@
 #include "design/design.h"
 #include "design/design_reader.h"
 #include "design/design_report.h"
-#include "design/sizing_problem.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge {
 namespace {

@@ -2,7 +2,7 @@
 // enumerating every active set, the multipliers against the change of the optimum when a limit
 // moves (the envelope theorem), and the split against the mass it splits.
 
-#include "design/sizing_attribution.h"
+#include "sizing/sizing_attribution.h"
 
 #include <Eigen/QR>
 #include <catch2/catch.hpp>

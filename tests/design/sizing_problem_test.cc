@@ -1,7 +1,7 @@
 // The verified sizing problem: its gradients against central differences, its rows against
 // their margins, its combinations against the load cases, and its mirror-image groups.
 
-#include "design/sizing_problem.h"
+#include "sizing/sizing_problem.h"
 
 #include <Eigen/QR>
 #include <algorithm>

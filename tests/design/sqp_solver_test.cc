@@ -9,8 +9,8 @@
 #include <limits>
 
 #include "design/design.h"
-#include "design/sizing_problem.h"
 #include "optim/solvers.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge {
 namespace {

@@ -27,7 +27,7 @@
 #include "design/design_reader.h"
 #include "design/design_report.h"
 #include "design/plausibility.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

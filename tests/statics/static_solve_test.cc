@@ -8,10 +8,10 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
+#include "checks/static_check.h"
 #include "core/config.h"
 #include "design/static_model.h"
 #include "test_support.h"
-#include "verify/static_check.h"
 
 namespace tbridge {
 namespace {

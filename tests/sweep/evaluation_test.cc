@@ -12,10 +12,10 @@
 #include "design/equilibrium_basis.h"
 #include "dynamics/modal.h"
 #include "dynamics/model.h"
+#include "sizing/verified_design.h"
 #include "sweep/candidate.h"
 #include "sweep/first_frequency.h"
 #include "test_support.h"
-#include "verify/verified_design.h"
 
 namespace tbridge {
 namespace {
@@ -99,7 +99,7 @@ TEST_CASE(
     "a candidate over its memory limit is not designed, its note the refusal, and the others are",
     "[sweep]") {
   // design.memory_limit_bytes 50 MB: the default bridge at n = 6 is estimated at 112 MB
-  // (verify/memory_estimate.h) and refused before any work; at n = 1 (21 MB) it is designed.
+  // (sizing/memory_estimate.h) and refused before any work; at n = 1 (21 MB) it is designed.
   json root = {{"bridge", {{"beta_deg", 10}}},
                {"design", {{"memory_limit_bytes", 5e7}}},
                {"sweep",

@@ -54,7 +54,7 @@ TEST_CASE("design: an out-of-memory names the stage and n, exit 4, nothing writt
 }
 
 TEST_CASE("design: a design over its memory limit is refused at once, exit 2, output kept") {
-  // The default bridge at n = 6 is estimated at 112 MB (verify/memory_estimate.h); a limit of
+  // The default bridge at n = 6 is estimated at 112 MB (sizing/memory_estimate.h); a limit of
   // 50 MB refuses it before any work, and OUT.json keeps what it held.
   const test::fs::path dir = test::FreshDir("guard_memory_limit");
   const test::fs::path config = dir / "config.json", out = dir / "design.json";

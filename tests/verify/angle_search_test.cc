@@ -1,7 +1,7 @@
 // bridge.beta_deg "auto": the angle chosen by the verified design's mass, held to designs at
 // angles given, and a design file that draws its geometry from the angle chosen.
 
-#include "verify/angle_search.h"
+#include "sizing/angle_search.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "design/design_reader.h"
 #include "design/design_report.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

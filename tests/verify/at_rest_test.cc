@@ -7,7 +7,7 @@
 #include "bridge/design_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

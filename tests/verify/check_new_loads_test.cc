@@ -10,7 +10,7 @@
 #include "design/design_loads.h"
 #include "design/design_reader.h"
 #include "design/design_report.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

@@ -6,13 +6,13 @@
 #include <sstream>
 
 #include "bridge/design_model.h"
+#include "checks/comfort_check.h"
+#include "checks/dynamic_check.h"
+#include "checks/static_check.h"
 #include "design/design_report.h"
 #include "design/equilibrium.h"
 #include "design/static_model.h"
-#include "verify/comfort_check.h"
-#include "verify/dynamic_check.h"
-#include "verify/static_check.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

@@ -1,7 +1,7 @@
-// The footbridge comfort check (verify/comfort_check.h) against independent truths: the steady
+// The footbridge comfort check (checks/comfort_check.h) against independent truths: the steady
 // resonant response of the modal equation against a damped time-history run of the nonlinear
 // model; the verdict it enters; the paper's switches; bad input.
-#include "verify/comfort_check.h"
+#include "checks/comfort_check.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include "core/config.h"
 #include "core/error.h"
 #include "dynamics/simulation.h"
-#include "verify/comfort_sizing.h"
-#include "verify/verified_design.h"
+#include "sizing/comfort_sizing.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 
@@ -204,7 +204,7 @@ TEST_CASE("the verified sizing designs to comfort as rows of its own, and the ma
   INFO(DesignVerdict(d).summary);
   CHECK(d.comfort.Status() == CheckStatus::kPassed);
   // The sizing that gave it posed comfort rows, and one of them binds: comfort costs mass, booked
-  // to its own kind (the multipliers' split, design/sizing_attribution.h).
+  // to its own kind (the multipliers' split, sizing/sizing_attribution.h).
   CHECK(!d.resizing.comfort_rows.empty());
   CHECK(d.attribution.mass_by_kind_kg[kComfortKind] > 0.0);
   CHECK(std::string(kConstraintKinds[kComfortKind]) == "comfort");

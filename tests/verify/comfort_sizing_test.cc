@@ -1,6 +1,6 @@
 // The comfort rows' eigenvalue sensitivities (dynamics/modal_sensitivity.h,
-// verify/comfort_sizing.h) against finite differences of the modal analysis itself.
-#include "verify/comfort_sizing.h"
+// sizing/comfort_sizing.h) against finite differences of the modal analysis itself.
+#include "sizing/comfort_sizing.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "checks/comfort_check.h"
 #include "core/config.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
-#include "design/sizing_problem.h"
 #include "dynamics/modal.h"
 #include "dynamics/modal_sensitivity.h"
-#include "verify/comfort_check.h"
-#include "verify/verified_design.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

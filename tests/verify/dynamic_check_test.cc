@@ -2,7 +2,7 @@
 // simulate's path (RunScenario with the verified design): the paper's travelling load on the
 // design that tbridge design writes.
 
-#include "verify/dynamic_check.h"
+#include "checks/dynamic_check.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -10,12 +10,12 @@
 
 #include "app/scenario.h"
 #include "bridge/design_model.h"
+#include "checks/load_scenarios.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "design/static_model.h"
 #include "dynamics/simulation.h"
-#include "verify/load_scenarios.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {
@@ -206,7 +206,7 @@ TEST_CASE("a dynamic check whose bridge has no standing equilibrium says so for 
 
 TEST_CASE("a dynamic check not run says so for each run and its design never passes",
           "[verify][dynamics]") {
-  // The sizing's record of a design whose static check fails by far (verify/verified_design.cc):
+  // The sizing's record of a design whose static check fails by far (sizing/verified_design.cc):
   // every run the check would do, not done, with the reason; every member without a finding.
   Config config;
   config.bridge.n = 2;

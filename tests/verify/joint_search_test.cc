@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
+#include "checks/comfort_check.h"
 #include "core/config.h"
-#include "design/sizing_problem.h"
 #include "optim/dense_qp.h"
-#include "verify/comfort_check.h"
-#include "verify/comfort_sizing.h"
-#include "verify/verified_design.h"
+#include "sizing/comfort_sizing.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {
@@ -28,7 +28,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The saving the search looks for: the verified mass is to be at most 0.5 % over any lighter
-// design the checks pass (ten times the sizing's settling tolerance, verify/verified_design.cc).
+// design the checks pass (ten times the sizing's settling tolerance, sizing/verified_design.cc).
 constexpr double kSaving = 0.005;
 
 // What the verdict reads, as measures that are at most 1 on a passing design: every member's

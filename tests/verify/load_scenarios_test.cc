@@ -2,16 +2,16 @@
 // and the moving load and the wind gust, run slowly, against their static counterparts (the
 // quasi-static limit of a dynamic run).
 
-#include "verify/load_scenarios.h"
+#include "checks/load_scenarios.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "bridge/design_model.h"
+#include "checks/dynamic_check.h"
 #include "dynamics/model.h"
 #include "dynamics/node_forces.h"
 #include "sweep/first_frequency.h"
-#include "verify/dynamic_check.h"
 
 namespace tbridge {
 namespace {

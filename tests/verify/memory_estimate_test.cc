@@ -1,8 +1,8 @@
-// The memory estimate of a design (verify/memory_estimate.h): its counts against the bridge's
+// The memory estimate of a design (sizing/memory_estimate.h): its counts against the bridge's
 // closed forms, its growth per level of n, its place above the peaks measured, and the refusal
 // it makes.
 
-#include "verify/memory_estimate.h"
+#include "sizing/memory_estimate.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -6,8 +6,8 @@
 
 #include "design/design.h"
 #include "design/sizing.h"
-#include "design/sizing_problem.h"
-#include "verify/verified_design.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

@@ -1,8 +1,8 @@
-// The walking load by modal superposition (verify/modal_run.h) against the nonlinear run (RK4 at
+// The walking load by modal superposition (checks/modal_run.h) against the nonlinear run (RK4 at
 // its stable step, the bar lengths stabilised, as the dynamic check ran it before): the second
 // algorithm is the model the modal run linearises.
 
-#include "verify/modal_run.h"
+#include "checks/modal_run.h"
 
 #include <algorithm>
 #include <array>
@@ -10,14 +10,14 @@
 #include <cmath>
 
 #include "bridge/design_model.h"
+#include "checks/dynamic_check.h"
+#include "checks/load_scenarios.h"
 #include "core/config.h"
 #include "design/sizing.h"
 #include "design/static_model.h"
 #include "dynamics/integrator_policy.h"
 #include "dynamics/simulation.h"
-#include "verify/dynamic_check.h"
-#include "verify/load_scenarios.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

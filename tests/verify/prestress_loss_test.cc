@@ -9,8 +9,8 @@
 #include "core/string_law.h"
 #include "design/design.h"
 #include "design/equilibrium.h"
-#include "design/sizing_problem.h"
-#include "verify/verified_design.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "design/design.h"
-#include "design/sizing_problem.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge::test {
 

@@ -1,4 +1,4 @@
-// The progress of a verified design (core/progress.h through verify/verified_design.h): each
+// The progress of a verified design (core/progress.h through sizing/verified_design.h): each
 // sizing's stages drawn with the sizing's number, the static check and the run counted (a
 // percentage), and a cancel hook that stops the design where it throws.
 
@@ -8,7 +8,7 @@
 
 #include "core/config.h"
 #include "core/progress.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 

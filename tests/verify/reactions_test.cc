@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "checks/static_check.h"
 #include "core/config.h"
 #include "design/design.h"
-#include "verify/static_check.h"
 
 namespace tbridge {
 namespace {

@@ -5,10 +5,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "checks/static_check.h"
 #include "core/string_law.h"
 #include "design/design.h"
-#include "verify/static_check.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

@@ -8,11 +8,11 @@
 #include <catch2/catch.hpp>
 
 #include "bridge/design_model.h"
+#include "checks/static_check.h"
 #include "design/static_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
 #include "test_support.h"
-#include "verify/static_check.h"
 
 namespace tbridge {
 namespace {

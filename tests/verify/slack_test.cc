@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/config.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

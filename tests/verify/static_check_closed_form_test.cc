@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
+#include "checks/static_check.h"
 #include "design/design.h"
 #include "test_support.h"
-#include "verify/static_check.h"
 
 namespace tbridge {
 namespace {

@@ -6,11 +6,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "checks/static_check.h"
 #include "core/config.h"
 #include "design/sizing.h"
 #include "design/static_model.h"
-#include "verify/static_check.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

@@ -5,10 +5,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "checks/static_check.h"
 #include "design/design.h"
-#include "design/sizing_problem.h"
-#include "verify/static_check.h"
-#include "verify/verified_design.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {

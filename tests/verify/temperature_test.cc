@@ -11,10 +11,10 @@
 #include "design/design_reader.h"
 #include "design/design_report.h"
 #include "design/prestress_states.h"
-#include "design/sizing_problem.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 #include "statics/static_solve.h"
 #include "verify/prestress_state_support.h"
-#include "verify/verified_design.h"
 
 namespace tbridge {
 namespace {

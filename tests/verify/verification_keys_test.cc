@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/config.h"
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <string>
 
+#include "checks/comfort_check.h"
+#include "checks/dynamic_check.h"
+#include "checks/static_check.h"
 #include "core/config.h"
-#include "design/sizing_problem.h"
 #include "optim/solvers.h"
-#include "verify/comfort_check.h"
-#include "verify/dynamic_check.h"
-#include "verify/static_check.h"
-#include "verify/verified_design.h"
+#include "sizing/sizing_problem.h"
+#include "sizing/verified_design.h"
 
 namespace tbridge {
 namespace {
@@ -46,7 +46,7 @@ TEST_CASE("the verified design is locally minimal: a lighter member group fails 
   Config config;
   config.bridge.n = 2;
   // The structural checks' minimum; the comfort correction's stiffness keeps a 2 % margin
-  // (verify/comfort_sizing.h), so comfort is held apart here.
+  // (sizing/comfort_sizing.h), so comfort is held apart here.
   config.comfort.check = false;
   const Design d = DesignAndVerify(config);
   REQUIRE(DesignVerdict(d).pass);
@@ -87,7 +87,7 @@ TEST_CASE("the polished design carries a certificate that proves it locally opti
   // The default with comfort off at n = 3 and 4: the kept design's own program solved again at
   // 1e-9 (by Ipopt where built in) and checked; at n = 4 the loop ends on a mended design, whose
   // program gives back the design that failed by a hair, and the polish corrects its rows once
-  // more (verify/verified_design.cc, Polish). Proved means every measure within 1e-6 and the
+  // more (sizing/verified_design.cc, Polish). Proved means every measure within 1e-6 and the
   // second-order test passed (optim/kkt_certificate.h).
   for (const int n : {3, 4}) {
     Config config;
@@ -150,7 +150,7 @@ TEST_CASE("three solvers give the same verified mass", "[verify]") {
   config.bridge.n = 2;
   config.comfort.check = false;
   // Each sizing's solver is design.solver's; the kept design's last solve, whose outcome the
-  // design carries, is the polish's (Ipopt where the build has it, verify/verified_design.cc).
+  // design carries, is the polish's (Ipopt where the build has it, sizing/verified_design.cc).
   const Design sqp = DesignAndVerify(config);
   CHECK(DesignVerdict(sqp).pass);
   for (const SolverKind kind : {SolverKind::kNlopt, SolverKind::kIpopt}) {

@@ -1,4 +1,4 @@
-#include "verify/modal_run.h"
+#include "checks/modal_run.h"
 
 #include <algorithm>
 #include <atomic>

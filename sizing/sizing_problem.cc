@@ -1,4 +1,4 @@
-#include "design/sizing_problem.h"
+#include "sizing/sizing_problem.h"
 
 #include <Eigen/SVD>
 #include <algorithm>

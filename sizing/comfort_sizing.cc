@@ -1,4 +1,4 @@
-#include "verify/comfort_sizing.h"
+#include "sizing/comfort_sizing.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "verify/memory_estimate.h"
+#include "sizing/memory_estimate.h"
 
 #include <algorithm>
 #include <fstream>
@@ -8,8 +8,8 @@
 #include "design/deck.h"
 #include "design/load_cases.h"
 #include "design/prestress_states.h"
-#include "design/sizing_problem.h"
 #include "design/topology.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge {
 
@@ -37,7 +37,7 @@ constexpr double kBytesPerEntry = 750.0;
 // takes at n = 3; 1.5 kB with the entry's 750 B puts the estimate 1.25 times above at n = 16.
 constexpr double kBytesPerMemberChecked = 1.5e3;
 // Rows posed per member and state in the verified sizing's program: its closest strength row,
-// and its taut or serviceability row (verify/verified_design.cc, NearLimits).
+// and its taut or serviceability row (sizing/verified_design.cc, NearLimits).
 constexpr double kPosedRowsPerMember = 2.0;
 
 // Each case once, a travelling family once per loaded deck station.

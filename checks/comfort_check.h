@@ -70,7 +70,7 @@ Eigen::Matrix3Xd CrowdModeLoad(const Design& design, const Mode& mode,
 ComfortCheck CheckComfort(const Design& design);
 
 // The same check with the models and modes it read, for the comfort rows of the sizing
-// (verify/comfort_sizing.h): `modes`, the deck modes below kNearTrigger times their trigger
+// (sizing/comfort_sizing.h): `modes`, the deck modes below kNearTrigger times their trigger
 // assessed as the check assesses them (check.modes are those below the trigger), and per entry
 // its mode among `crowded` and its match among `empty` (the mode of the same motion and rank; -1
 // where there is none). The sizing bounds the modes near the trigger too: a sizing that stiffens

@@ -1,13 +1,13 @@
 // The dynamic check of a sized design: its dynamic loads run on the bridge at service level.
 // The permanent load and the payload stand (their weight in the loads, the deck's and the
 // payload's mass at the deck nodes), and the bridge starts at rest in its static equilibrium
-// under them. The loads (verify/load_scenarios.h):
+// under them. The loads (checks/load_scenarios.h):
 // - the paper's travelling load (eqs 50-51), with the paper's switches or the
 //   "paper_travelling" case: f on each inner deck station for 0.25 s;
 // - with the "travelling" case, Q_t crossing the deck at loads.travelling_speed_m_s;
 // - with the "wind" case on a 3D bridge, the wind W as a gust rising over loads.wind_rise_s.
 // The walking load runs by modal superposition where loads.dynamic_method is "modal" (the
-// default; verify/modal_run.h): the quasi-static response from a nonlinear static solve at
+// default; checks/modal_run.h): the quasi-static response from a nonlinear static solve at
 // each station, the dynamic excess from the modes to loads.dynamic_modal_cutoff_hz, done where
 // the bridge is linear over the load to loads.dynamic_modal_max_nonlinearity and no string that
 // must stay taut goes slack. Elsewhere, and for the other loads, the nonlinear run: RK4 at
@@ -59,7 +59,7 @@ DynamicCheck CheckDynamics(const Design& design,
 
 // The check not carried out on `design`: each run it would do, not done, with `why` as its
 // note, and every member without a finding. The sizing's record of a design it does not run
-// (verify/verified_design.cc).
+// (sizing/verified_design.cc).
 DynamicCheck DynamicCheckNotRun(const Design& design, const std::string& why);
 
 }  // namespace tbridge

@@ -1,4 +1,4 @@
-#include "verify/dynamic_check.h"
+#include "checks/dynamic_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 #include <sstream>
 
 #include "bridge/design_model.h"
+#include "checks/load_scenarios.h"
+#include "checks/modal_run.h"
 #include "core/error.h"
 #include "design/static_model.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
-#include "verify/load_scenarios.h"
-#include "verify/modal_run.h"
 
 namespace tbridge {
 
@@ -168,7 +168,7 @@ bool Modal(const LoadRun& run, const LoadsConfig& l) {
   return run.walking && l.dynamic_method == DynamicMethod::kModal;
 }
 
-// The walking load by modal superposition (verify/modal_run.h), into the summary the
+// The walking load by modal superposition (checks/modal_run.h), into the summary the
 // nonlinear run would give; false, with the reason in the run's note, where it is not done.
 bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& statics, LoadRun& run,
               const StationResponses& stations, const StaticState& standing,

@@ -1,4 +1,4 @@
-#include "design/sizing_attribution.h"
+#include "sizing/sizing_attribution.h"
 
 #include <algorithm>
 #include <cmath>

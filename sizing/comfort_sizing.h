@@ -1,4 +1,4 @@
-// The comfort check as rows of the verified sizing (design/sizing_problem.h, ComfortRow).
+// The comfort check as rows of the verified sizing (sizing/sizing_problem.h, ComfortRow).
 //
 // At resonance a mode's steady acceleration F* / (2 xi M*) depends on its stiffness only through
 // where its frequency lies: Sétra's psi (piecewise linear in f, with kinks at its range ends) and
@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
+#include "checks/comfort_check.h"
 #include "design/design.h"
-#include "design/sizing_problem.h"
-#include "verify/comfort_check.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge {
 

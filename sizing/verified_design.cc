@@ -1,4 +1,4 @@
-#include "verify/verified_design.h"
+#include "sizing/verified_design.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,19 +11,19 @@
 #include <sstream>
 #include <tuple>
 
+#include "checks/comfort_check.h"
+#include "checks/dynamic_check.h"
+#include "checks/static_check.h"
 #include "core/error.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"
 #include "design/prestress_states.h"
-#include "design/sizing_attribution.h"
-#include "design/sizing_problem.h"
 #include "optim/kkt_certificate.h"
 #include "optim/solvers.h"
-#include "verify/angle_search.h"
-#include "verify/comfort_check.h"
-#include "verify/comfort_sizing.h"
-#include "verify/dynamic_check.h"
-#include "verify/static_check.h"
+#include "sizing/angle_search.h"
+#include "sizing/comfort_sizing.h"
+#include "sizing/sizing_attribution.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge {
 

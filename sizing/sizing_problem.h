@@ -22,7 +22,7 @@
 // (design/prestress_states.h: alpha -> (1 - loss) alpha -/+ the rest-length tolerance's change).
 //
 // kappa (per member), kappa_d and kappa_h, kappa_v correct the linear demand by what the nonlinear
-// static check and the dynamic runs found, either way (verify/verified_design.h); tau_s the taut
+// static check and the dynamic runs found, either way (sizing/verified_design.h); tau_s the taut
 // margin they ask. The members' weight in G is held at the design the problem was built from (the
 // outer iterations update it). Gradients are exact (adjoint sensitivities); the Hessian is the
 // reciprocal diagonal of optim/reciprocal_curvature.h, the SQP's own curvature (NLopt's SLSQP
@@ -44,7 +44,7 @@
 
 namespace tbridge {
 
-// One comfort row (verify/comfort_sizing.h builds them from a design's deck modes): a mode's
+// One comfort row (sizing/comfort_sizing.h builds them from a design's deck modes): a mode's
 // eigenvalue held above (or below) the frequency at which its Sétra acceleration meets its
 // limit or it leaves the risk ranges. The eigenvalue is the Rayleigh quotient of the mode's
 // shape at the design the problem is built from (x0),
@@ -71,7 +71,7 @@ struct ComfortRow {
   std::vector<double> mass_by_area;  // d(phi^T M phi) / dA [1/m^2]
   // Where set, the row follows its mode: the mode's own eigenvalue and coefficients at the areas
   // and reference forces given (per member [bars; strings]), its shape found again there with the
-  // static state held (verify/comfort_sizing.h). The row is then the eigenvalue itself, not the
+  // static state held (sizing/comfort_sizing.h). The row is then the eigenvalue itself, not the
   // quotient of a shape held: that quotient overestimates the eigenvalue after a move, and a
   // sizing left free with it concentrated stiffness where it overestimated most (the default at
   // n = 3: strings grown seven times, others to a tenth, its frequency foretold 4.0 Hz and found

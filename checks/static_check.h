@@ -1,7 +1,7 @@
 // The static check of a sized design: each load case solved as a nonlinear static problem
 // of the prestressed bridge (statics/static_solve.h: rigid bars, strings that go slack, large
 // displacements) from its reference state, for deflections, support reactions and member
-// forces. What it finds is a report; the design records it (verify/verified_design.h).
+// forces. What it finds is a report; the design records it (sizing/verified_design.h).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 // A design that holds under its own checks: the minimum-mass design, its static and dynamic
-// checks (verify/static_check.h, verify/dynamic_check.h), and a fully-stressed resizing of
+// checks (checks/static_check.h, checks/dynamic_check.h), and a fully-stressed resizing of
 // what fails, repeated.
 //
 // Each pass designs with per-member area floors (RunDesign's `area_floor`), so the self-weight

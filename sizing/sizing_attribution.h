@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "design/sizing_problem.h"
 #include "design/verification.h"
+#include "sizing/sizing_problem.h"
 
 namespace tbridge {
 

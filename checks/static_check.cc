@@ -1,4 +1,4 @@
-#include "verify/static_check.h"
+#include "checks/static_check.h"
 
 #include <algorithm>
 #include <atomic>

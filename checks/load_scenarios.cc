@@ -1,4 +1,4 @@
-#include "verify/load_scenarios.h"
+#include "checks/load_scenarios.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "verify/comfort_check.h"
+#include "checks/comfort_check.h"
 
 #include <algorithm>
 #include <cmath>

@@ -24,7 +24,7 @@
 // station or in the response). A string that may go slack does so in the quasi-static part
 // exactly, and its tension is read as at least 0; the excess sees it taut, an error the
 // nonlinearity measure includes (the deck's linear response is the taut one too). Where the
-// run is not done, the caller runs the nonlinear model instead (verify/dynamic_check.h).
+// run is not done, the caller runs the nonlinear model instead (checks/dynamic_check.h).
 #pragma once
 
 #include <Eigen/Core>
