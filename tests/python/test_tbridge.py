@@ -201,13 +201,12 @@ def seconds_to_interrupt(work, *args):
 
 
 def test_ctrl_c_stops_a_design():
-    # The default at n = 7 takes seconds to minutes (docs/benchmarks-history.md; n = 5 takes
-    # under one, and a quiet machine finishes it before the Ctrl-C at 1 s); the design polls
-    # Python's signals at every progress report (each iteration of a sizing, each static solve,
-    # every 1024 steps of a run), so it stops within a second of Ctrl-C (1.01 s measured, the
-    # Ctrl-C included). 5 s: far above a poll's interval on a loaded machine, and far below the
-    # design's own time, so a design that did not poll (and raised only on its return) fails
-    # here.
+    # The default at n = 7 takes over a quarter of an hour here (BENCHMARKS.md; n = 5 takes about
+    # 20 s); the design polls Python's signals at every progress report (each iteration of a
+    # sizing, each static solve, every 1024 steps of a run), so it stops within a second of
+    # Ctrl-C (1.01 s measured, the Ctrl-C included). 5 s: far above a poll's interval on a loaded
+    # machine, and far below the design's own time, so a design that did not poll (and raised
+    # only on its return) fails here.
     with open(DEFAULT) as f:
         config = json.load(f)
     config["bridge"]["n"] = 7
