@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/json_reader.h"
 #include "design/design.h"
 
 int main(int argc, char** argv) {
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
       tbridge::ValueIn(tbridge::kSolverChoiceNames, argc > 2 ? argv[2] : "auto");
   if (!solver) {
     std::fprintf(stderr, "bench_design: solver '%s': one of %s\n", argv[2],
-                 tbridge::QuotedNames(tbridge::kSolverChoiceNames).c_str());
+                 tbridge::ChoiceText(tbridge::AllNames(tbridge::kSolverChoiceNames)).c_str());
     return 2;
   }
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;

@@ -60,8 +60,7 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
   const LoadsConfig& l = d.config.loads;
   const double gamma_g_q = paper ? 1.0 : l.gamma_q;
   std::vector<LoadRun> runs;
-  const auto asked = [&l](LoadFamily family) { return l.Asks(family); };
-  if (paper || asked(LoadFamily::kPaperTravelling)) {
+  if (paper || l.Asks(LoadFamily::kPaperTravelling)) {
     const double paper_duration = 0.25 * static_cast<double>(d.actions.station_nodes.size());
     runs.push_back(
         MakeRun("paper_travelling",
@@ -70,7 +69,7 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
                                         d.deck.station_load),
                 d.deck.station_load, gamma_g_q));
   }
-  if (asked(LoadFamily::kTravelling) && l.travelling_load_n > 0) {
+  if (l.Asks(LoadFamily::kTravelling) && l.travelling_load_n > 0) {
     runs.push_back(
         MakeRun("moving_load",
                 Describe("Q_t = ", l.travelling_load_n, " N") +
@@ -79,7 +78,7 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
                 l.travelling_load_n, gamma_g_q));
     runs.back().walking = true;
   }
-  if (asked(LoadFamily::kWind) && d.topology.planes == 2 && l.wind_n_per_m > 0) {
+  if (l.Asks(LoadFamily::kWind) && d.topology.planes == 2 && l.wind_n_per_m > 0) {
     runs.push_back(MakeRun("wind_gust",
                            Describe("W = ", l.wind_n_per_m, " N/m") +
                                Describe(" rising over ", l.wind_rise_s, " s, then held"),

@@ -37,13 +37,22 @@ constexpr std::optional<E> ValueIn(const std::array<Named<E>, N>& table, std::st
   return std::nullopt;
 }
 
-// The table's texts quoted and listed, for an error's "one of ...": "\"a\", \"b\"".
+// Every text of the table, in its order (an error lists them with core/json_reader.h's
+// ChoiceText).
 template <class E, std::size_t N>
-std::string QuotedNames(const std::array<Named<E>, N>& table) {
-  std::string list;
-  for (const Named<E>& n : table)
-    list += (list.empty() ? "\"" : ", \"") + std::string(n.name) + "\"";
-  return list;
+std::vector<std::string> AllNames(const std::array<Named<E>, N>& table) {
+  std::vector<std::string> names;
+  for (const Named<E>& n : table) names.emplace_back(n.name);
+  return names;
+}
+
+// The texts of `values` in `table`, in order.
+template <class E, std::size_t N>
+std::vector<std::string> NamesIn(const std::array<Named<E>, N>& table,
+                                 const std::vector<E>& values) {
+  std::vector<std::string> out;
+  for (const E e : values) out.emplace_back(NameIn(table, e));
+  return out;
 }
 
 // A choice key whose field is an enum: the visitor (core/config_visitors.h) sees the text, so
@@ -53,8 +62,7 @@ std::string QuotedNames(const std::array<Named<E>, N>& table) {
 template <class V, class F, std::size_t N>
 void EnumChoice(V& v, const auto& key, F& field,
                 const std::array<Named<std::remove_const_t<F>>, N>& table) {
-  std::vector<std::string> allowed;
-  for (const auto& n : table) allowed.emplace_back(n.name);
+  const std::vector<std::string> allowed = AllNames(table);
   std::string text = NameIn(table, field);
   if constexpr (std::is_const_v<F>) {
     v.Choice(key, static_cast<const std::string&>(text), allowed);
@@ -72,9 +80,8 @@ template <class V, class F, std::size_t N>
 void EnumChoices(V& v, const auto& key, F& field,
                  const std::array<Named<typename std::remove_const_t<F>::value_type>, N>& table) {
   using E = typename std::remove_const_t<F>::value_type;
-  std::vector<std::string> allowed, texts;
-  for (const auto& n : table) allowed.emplace_back(n.name);
-  for (const E e : field) texts.emplace_back(NameIn(table, e));
+  const std::vector<std::string> allowed = AllNames(table);
+  std::vector<std::string> texts = NamesIn(table, static_cast<const std::vector<E>&>(field));
   if constexpr (std::is_const_v<F>) {
     v.Choices(key, static_cast<const std::vector<std::string>&>(texts), allowed);
   } else {
@@ -83,15 +90,6 @@ void EnumChoices(V& v, const auto& key, F& field,
     for (const std::string& t : texts)
       field.push_back(ValueIn(table, t).value_or(static_cast<E>(-1)));
   }
-}
-
-// The texts of `values` in `table`, in order.
-template <class E, std::size_t N>
-std::vector<std::string> NamesIn(const std::array<Named<E>, N>& table,
-                                 const std::vector<E>& values) {
-  std::vector<std::string> out;
-  for (const E e : values) out.emplace_back(NameIn(table, e));
-  return out;
 }
 
 }  // namespace tbridge

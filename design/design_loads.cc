@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "core/json_reader.h"
 
 namespace tbridge {
 namespace {
@@ -53,8 +54,9 @@ void Read(const json& j, const std::string& key, E& field) requires std::is_enum
   const std::optional<E> value =
       j.is_string() ? ValueIn(NamesOf(field), j.get<std::string>()) : std::nullopt;
   if (!value)
-    throw ConfigError(key, j.dump(),
-                      "one of " + QuotedNames(NamesOf(field)) + ", as tbridge design writes it");
+    throw ConfigError(
+        key, j.dump(),
+        "one of " + ChoiceText(AllNames(NamesOf(field))) + ", as tbridge design writes it");
   field = *value;
 }
 void Read(const json& j, const std::string& key, std::optional<double>& field) {

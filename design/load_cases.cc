@@ -113,7 +113,6 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
                                     std::vector<std::string>& notes) {
   const LoadsConfig& l = config.loads;
   const bool self = config.design.self_weight;
-  auto wants = [&l](LoadFamily family) { return l.Asks(family); };
   std::vector<LoadCase> cases;
   // G with factor g (deck, self-weight when on), and its text.
   auto permanent = [self](LoadCase& c, double g) {
@@ -127,7 +126,7 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
     c.combination = std::move(text);
     cases.push_back(c);
   };
-  if (wants(LoadFamily::kPaper)) {
+  if (l.Asks(LoadFamily::kPaper)) {
     LoadCase c;
     c.factor[kPaperLoad] = 1.0;
     c.factor[kSelfWeight] = self ? 1.0 : 0.0;
@@ -149,8 +148,8 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
     permanent(variable_s, 1.0);
     add("sls_" + name, LimitState::kServiceability, "G" + variable_sls, variable_s);
   };
-  if (wants(LoadFamily::kPermanent)) family("permanent", "", "", LoadCase{}, LoadCase{});
-  if (wants(LoadFamily::kPayload)) {
+  if (l.Asks(LoadFamily::kPermanent)) family("permanent", "", "", LoadCase{}, LoadCase{});
+  if (l.Asks(LoadFamily::kPayload)) {
     const char* parts[] = {"full", "left", "right"};
     for (int k = 0; k < 3; ++k) {
       LoadCase u, s;
@@ -160,14 +159,14 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
       family(std::string("payload_") + parts[k], " + " + Factor(gq) + " " + q, " + " + q, u, s);
     }
   }
-  if (wants(LoadFamily::kTravelling)) {
+  if (l.Asks(LoadFamily::kTravelling)) {
     LoadCase u, s;
     u.station_load = gq * l.travelling_load_n;
     s.station_load = l.travelling_load_n;
     family("travelling", " + " + Factor(gq) + " Q_t (each deck station in turn)",
            " + Q_t (each deck station in turn)", u, s);
   }
-  if (wants(LoadFamily::kPaperTravelling)) {
+  if (l.Asks(LoadFamily::kPaperTravelling)) {
     // Eqs 50-51: the deck node load f on each inner deck node in turn, on top of the payload.
     LoadCase u, s;
     u.factor[kPayloadFull] = gq;
@@ -177,7 +176,7 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
     family("paper_travelling", " + " + Factor(gq) + " (Q_full + f at each deck station in turn)",
            " + Q_full + f (each deck station in turn)", u, s);
   }
-  if (wants(LoadFamily::kWind)) {
+  if (l.Asks(LoadFamily::kWind)) {
     if (config.bridge.planes != 2) {
       notes.push_back("loads.cases: \"wind\" left out: a planar bridge carries no transverse load");
     } else {
@@ -185,7 +184,7 @@ std::vector<LoadCase> MakeLoadCases(const Config& config, const Deck& deck,
       u.factor[kWind] = l.gamma_w;
       s.factor[kWind] = 1.0;
       family("wind", " + " + Factor(l.gamma_w) + " W", " + W", u, s);
-      if (wants(LoadFamily::kPayload)) {
+      if (l.Asks(LoadFamily::kPayload)) {
         LoadCase uq, sq;
         uq.factor[kPayloadFull] = gq;
         uq.factor[kWind] = l.gamma_w * l.psi0_wind;

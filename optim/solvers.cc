@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "optim/sqp_solver.h"
 
 namespace tbridge {
@@ -78,9 +79,7 @@ bool SolverBuiltIn(SolverKind solver) {
 
 void RequireSolverBuiltIn(SolverKind solver) {
   if (SolverBuiltIn(solver)) return;
-  std::string list;
-  for (SolverKind s : BuiltInSolvers())
-    list += (list.empty() ? "\"" : ", \"") + std::string(NameOf(s)) + "\"";
+  const std::string list = ChoiceText(NamesIn(kSolverNames, BuiltInSolvers()));
   const std::string name = NameOf(solver);
   const std::string option =
       solver == SolverKind::kIpopt ? "TBRIDGE_WITH_IPOPT" : "TBRIDGE_WITH_NLOPT";

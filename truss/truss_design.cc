@@ -50,9 +50,9 @@ TrussSizing SizingOf(const nlohmann::json& file, const TrussModel& m) {
   const std::string name = solver.value("name", "");
   const std::optional<SolverKind> kind = ValueIn(kSolverNames, name);
   if (!kind) {
-    throw ConfigError("solver.name",
-                      solver.contains("name") ? Show(solver.at("name")) : "(missing)",
-                      "one of " + QuotedNames(kSolverNames) + ", as tbridge design writes it");
+    throw ConfigError(
+        "solver.name", solver.contains("name") ? Show(solver.at("name")) : "(missing)",
+        "one of " + ChoiceText(AllNames(kSolverNames)) + ", as tbridge design writes it");
   }
   s.outcome.solver = *kind;
   s.outcome.status = solver.value("status", "");
