@@ -23,7 +23,7 @@ nlohmann::json ModelMembersJson(const DynamicModel& model) {
   for (size_t k = 0; k < model.strings.size(); ++k) {
     const DynamicString s = model.strings[k];
     strings.push_back({{"nodes", {s.i + 1, s.j + 1}},
-                       {"group", model.names.string_group[k]},
+                       {"group", NameOf(model.names.string_group[k])},
                        {"rest_length_m", s.rest_length}});
   }
   std::vector<int> fixed;
@@ -140,7 +140,7 @@ nlohmann::json SummaryJson(const Config& config, const DynamicModel& model,
   if (!s.prestrain.empty()) {
     nlohmann::json p = nlohmann::json::array();
     for (const PrestrainReport& pr : s.prestrain) {
-      p.push_back({{"group", pr.group},
+      p.push_back({{"group", NameOf(pr.group)},
                    {"ratio", pr.ratio},
                    {"strings", pr.strings},
                    {"implied_stress_pa", pr.max_stress},

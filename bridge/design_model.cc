@@ -22,7 +22,7 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     bool found = false;
     for (const Member& m : st.strings) found = found || m.group == p.group;
     if (!found) {
-      throw ConfigError("dynamics.prestrain.group", "\"" + p.group + "\"",
+      throw ConfigError("dynamics.prestrain.group", std::string("\"") + NameOf(p.group) + "\"",
                         "this bridge has no string of that group");
     }
     if (!(p.ratio > 0 && p.ratio <= 1.5)) {
@@ -56,7 +56,7 @@ DynamicModel BuildDynamicModel(const Design& design, const ModelOptions& options
     ds.damping = options.damping;
     ds.mass = MassOfArea(strings.density, s.area, s.rest_length);
     ds.area = s.area;
-    const std::string& group = st.strings[k].group;
+    const MemberGroup group = st.strings[k].group;
     for (const StringPrestrain& p : options.prestrain) {
       if (p.group != group) continue;
       ds.rest_length = p.ratio * s.length;

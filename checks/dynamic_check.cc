@@ -245,7 +245,7 @@ void RaiseDynamicFinding(const Design& d, int j, const MemberSizing& m, double d
 }
 
 // The member's group: its static and dynamic peaks and the largest member's amplification.
-void TakeGroupPeak(std::map<std::string, GroupAmplification>& groups, const std::string& group,
+void TakeGroupPeak(std::map<MemberGroup, GroupAmplification>& groups, MemberGroup group,
                    const Eigen::VectorXd& static_peak, int j, double peak) {
   GroupAmplification& g = groups[group];
   g.group = group;
@@ -381,11 +381,11 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
       solve_stations();
       const Eigen::VectorXd static_peak =
           StaticPeaks(d, model, statics, stations ? &*stations : nullptr);
-      std::map<std::string, GroupAmplification> groups;
+      std::map<MemberGroup, GroupAmplification> groups;
       for (int j = 0; j < nb + s.num_strings(); ++j) {
         const bool bar = j < nb;
         const MemberSizing& m = d.MemberAt(j);
-        const std::string& group = s.MemberAt(j).group;
+        const MemberGroup group = s.MemberAt(j).group;
         const double peak =
             bar ? summary.peak_bar_compression[j] : summary.peak_string_tension[j - nb];
         // The prestress as it is, gamma_G on the permanent load's share of the reference

@@ -18,7 +18,8 @@ void CheckDynamicsRules(const DynamicsConfig& d) {
     for (size_t b = 0; b < a; ++b) {
       if (d.prestrain[a].group == d.prestrain[b].group) {
         throw ConfigError("dynamics.prestrain[" + std::to_string(a) + "].group",
-                          "\"" + d.prestrain[a].group + "\"", "each group at most once");
+                          std::string("\"") + NameOf(d.prestrain[a].group) + "\"",
+                          "each group at most once");
       }
     }
   }

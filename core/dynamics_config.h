@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/dynamics_choices.h"
+#include "core/member_group.h"
 
 namespace tbridge {
 
@@ -24,8 +25,8 @@ struct StabilisationConfig {
 
 // Rest length = ratio x stretched (design) length for every string of `group`; k = E A / L0.
 struct PrestrainConfig {
-  std::string group;   // "deck" | "substructure" | "transverse"
-  double ratio = 1.0;  // (0, 1.5]
+  MemberGroup group = MemberGroup::kDeck;  // one of kPrestrainGroupNames
+  double ratio = 1.0;                      // (0, 1.5]
 };
 
 // The paper's perturbation: both end nodes of every bar of one length class move down (-y)

@@ -31,8 +31,8 @@ void DescribeFields(S& s,
 
 template <class P, class V>
 void DescribeFields(P& p, V& v) requires std::is_same_v<std::remove_const_t<P>, PrestrainConfig> {
-  v.Choice(KeyInfo{"group", "–", "the strings whose rest length is set", true}, p.group,
-           {"deck", "substructure", "transverse"});
+  EnumChoice(v, KeyInfo{"group", "–", "the strings whose rest length is set", true}, p.group,
+             kPrestrainGroupNames);
   v.Number(KeyInfo{"ratio", "–",
                    "rest length = ratio × stretched length, k = E·A/L0 recomputed; the implied "
                    "stress E·(1/ratio − 1) is reported and flagged above the allowed stress",

@@ -9,16 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "core/member_group.h"
+
 namespace tbridge {
 
-// A bar or string between nodes i and j (0-based). `group` names a family of members that
-// can be addressed together from a config: strings "deck", "substructure", "transverse";
-// bars "vertical", "substructure" (leaning bars of p >= 2 modules), "transverse". A string in group
-// "deck" is a deck string.
+// A bar or string between nodes i and j (0-based). `group` is its family (core/member_group.h):
+// strings deck, substructure, transverse; bars vertical, substructure (leaning bars of p >= 2
+// modules), transverse. A string of the deck group is a deck string.
 struct Member {
   int i = 0;
   int j = 0;
-  std::string group;
+  MemberGroup group = MemberGroup::kNone;
 };
 
 // The representative node of each node's component, the nodes joined by `edges` (a range of

@@ -16,7 +16,7 @@
 namespace tbridge {
 
 MemberKind StringKind(const Member& m) {
-  return m.group == "deck" ? MemberKind::kDeckString : MemberKind::kString;
+  return m.group == MemberGroup::kDeck ? MemberKind::kDeckString : MemberKind::kString;
 }
 
 MassBreakdown MassesOf(const std::vector<MemberSizing>& bars,
@@ -279,7 +279,7 @@ LoadCase ReferenceCase(const Config& config, const std::vector<LoadCase>& cases)
 
 bool MustStayTaut(const Design& d, int k) {
   return d.strings[k].kind == MemberKind::kDeckString ||
-         d.topology.structure.strings[k].group == "transverse";
+         d.topology.structure.strings[k].group == MemberGroup::kTransverse;
 }
 
 void RequireStable(const Design& d) {
@@ -354,7 +354,7 @@ DesignInputs PrepareDesign(const Config& config) {
     }
     // Transverse strings (3D bridge) likewise: unloaded by symmetric vertical loads, they
     // stiffen the coupling only through this prestress.
-    if (s.strings[k].group == "transverse")
+    if (s.strings[k].group == MemberGroup::kTransverse)
       in.string_min_area[k] = circle(config.design.transverse_string_min_radius);
     settings.string_min_tension[k] = sigma_w * in.string_min_area[k];
   }

@@ -373,9 +373,9 @@ MemberSizing ReadMember(const json& file, int k, const Structure& s,
   const ::tbridge::Member& e = s.MemberAt(k);
   MemberSizing m;
   m.name = Structure::Name(e);
-  m.kind = bar                 ? MemberKind::kBar
-           : e.group == "deck" ? MemberKind::kDeckString
-                               : MemberKind::kString;
+  m.kind = bar                             ? MemberKind::kBar
+           : e.group == MemberGroup::kDeck ? MemberKind::kDeckString
+                                           : MemberKind::kString;
   m.i = e.i;
   m.j = e.j;
   m.length = s.Length(e);

@@ -286,7 +286,7 @@ void AppendMember(std::string& out, const MemberSizing& m, const Member& topolog
   number("force_min", m.force_min);
   text("governed_by", NameOf(m.governed_by));
   text("governing_case", m.governing_case);
-  text("group", topology_member.group);
+  text("group", NameOf(topology_member.group));
   number("length", m.length);
   number("mass", m.mass);
   text("mode", NameOf(m.mode));
@@ -521,7 +521,7 @@ json DynamicsJson(const Design& d) {
     }
     json groups = json::array();
     for (const GroupAmplification& g : r.groups) {
-      groups.push_back({{"group", g.group},
+      groups.push_back({{"group", NameOf(g.group)},
                         {"static_peak", g.static_peak},
                         {"dynamic_peak", g.dynamic_peak},
                         {"peak_ratio", PeakRatio(g)},
@@ -975,7 +975,7 @@ void AppendSummaryDynamics(std::string& out, const Design& d) {
     }
     std::string amp;
     for (const GroupAmplification& g : r.groups) {
-      amp += Format("%s %s %.3g (%.3g)", amp.empty() ? "" : ",", g.group.c_str(), PeakRatio(g),
+      amp += Format("%s %s %.3g (%.3g)", amp.empty() ? "" : ",", NameOf(g.group), PeakRatio(g),
                     g.amplification);
     }
     line(Format(

@@ -67,13 +67,14 @@ BridgeTopology CoupledBridge3D(int n, double beta_deg, double span, double deck_
       s.strings.push_back({node3(m.i, q), node3(m.j, q), m.group});
     }
   }
-  for (int v = 0; v < 2 * nb; ++v) s.bars.push_back({node3(v, 0), node3(v, 1), "transverse"});
+  for (int v = 0; v < 2 * nb; ++v)
+    s.bars.push_back({node3(v, 0), node3(v, 1), MemberGroup::kTransverse});
 
   // Planar pairs already joined in-plane, to skip bay diagonals that would repeat a brace.
   std::set<std::pair<int, int>> in_plane;
   auto brace = [&](int u, int v) {
-    s.strings.push_back({node3(u, 0), node3(v, 1), "transverse"});
-    s.strings.push_back({node3(u, 1), node3(v, 0), "transverse"});
+    s.strings.push_back({node3(u, 0), node3(v, 1), MemberGroup::kTransverse});
+    s.strings.push_back({node3(u, 1), node3(v, 0), MemberGroup::kTransverse});
   };
   for (const auto* members : {&ps.bars, &ps.strings}) {
     for (const Member& m : *members) {

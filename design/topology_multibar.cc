@@ -69,17 +69,19 @@ BridgeTopology PlanarMultiBar(int n, int p, double beta_deg, double span) {
       s.nodes(0, v) = a + width * xi;
       s.nodes(1, v) = -width * 2.0 * t * xi * (1.0 - xi);
       // An odd p has its middle bar vertical, as p = 1; the others lean.
-      s.bars.push_back({deck_node(k), v, 2 * i + 1 == p ? "vertical" : "substructure"});
+      s.bars.push_back(
+          {deck_node(k), v, 2 * i + 1 == p ? MemberGroup::kVertical : MemberGroup::kSubstructure});
       runs.emplace_back(prev, v);
       prev = v;
     }
     runs.emplace_back(prev, deck_node(k + half));
   }
-  for (int k = 0; k < stations; ++k) s.strings.push_back({deck_node(k), deck_node(k + 1), "deck"});
+  for (int k = 0; k < stations; ++k)
+    s.strings.push_back({deck_node(k), deck_node(k + 1), MemberGroup::kDeck});
   // Tolerance 1e-9 span: nodes that lie on a run do so to rounding (~1e-15 span); nodes off
   // a run are a fixed fraction of a module's depth W tan(beta/2) away from it.
   for (const auto& [u, v] : SplitAndMergeCables(s.nodes, runs, 1e-9 * span)) {
-    s.strings.push_back({u, v, "substructure"});
+    s.strings.push_back({u, v, MemberGroup::kSubstructure});
   }
 
   for (int k = 1; k < stations; ++k) topo.deck_nodes.push_back(deck_node(k));

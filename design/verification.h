@@ -11,6 +11,7 @@
 
 #include "core/deck_motion_kind.h"
 #include "core/design_choices.h"
+#include "core/member_group.h"
 #include "design/limit_mode.h"
 
 namespace tbridge {
@@ -104,7 +105,7 @@ struct StaticCheck {
 
 // The dynamic check (checks/dynamic_check.h): each dynamic load run at service level.
 struct GroupAmplification {
-  std::string group;         // member group ("deck", "substructure", "vertical", ...)
+  MemberGroup group = MemberGroup::kNone;  // the members' family
   double static_peak = 0;    // largest force of the group's members over the static counterpart [N]
   double dynamic_peak = 0;   // largest in the run [N]
   double amplification = 0;  // the largest dynamic / static ratio of a member of the group

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/dynamics_choices.h"
+#include "core/member_group.h"
 
 namespace tbridge {
 
@@ -95,11 +96,11 @@ struct StringColumns {
   RowIterator<StringColumns, DynamicString> end() const { return {this, size()}; }
 };
 
-// What only reports read: each string's name ("i-j", 1-based) and group ("deck",
-// "substructure", "transverse", or "string" in a structure scene), in the strings' order.
+// What only reports read: each string's name ("i-j", 1-based) and group (deck, substructure,
+// transverse, or string in a structure scene), in the strings' order.
 struct MemberNames {
   std::vector<std::string> string_name;
-  std::vector<std::string> string_group;
+  std::vector<MemberGroup> string_group;
 };
 
 struct DynamicModel {
@@ -127,10 +128,10 @@ struct DynamicModel {
 
   int num_nodes() const { return static_cast<int>(positions.cols()); }
   // Adds a string with its name and group.
-  void AddString(const DynamicString& s, std::string name, std::string group) {
+  void AddString(const DynamicString& s, std::string name, MemberGroup group) {
     strings.push_back(s);
     names.string_name.push_back(std::move(name));
-    names.string_group.push_back(std::move(group));
+    names.string_group.push_back(group);
   }
 };
 
@@ -144,7 +145,7 @@ void CheckModel(const DynamicModel& model, const std::string& where);
 // Rest length = ratio x stretched (design) length for every string of `group`, with
 // k = E A / L0 recomputed (SPEC.md §7).
 struct StringPrestrain {
-  std::string group;
+  MemberGroup group = MemberGroup::kDeck;
   double ratio = 1.0;  // (0, 1.5]
 };
 
@@ -162,7 +163,7 @@ struct ModelOptions {
 
 // What a prestrain implies (SPEC.md §7): the stress E (s - L0) / L0 at the design length s.
 struct PrestrainReport {
-  std::string group;
+  MemberGroup group = MemberGroup::kDeck;
   double ratio = 1.0;
   int strings = 0;               // strings in the group
   double max_stress = 0;         // [Pa], over the group's strings

@@ -12,7 +12,7 @@ namespace {
 void RejectBridgeOnlyOptions(const ModelOptions& options) {
   if (!options.prestrain.empty()) {
     throw ConfigError(
-        "dynamics.prestrain", "\"" + options.prestrain.front().group + "\"",
+        "dynamics.prestrain", std::string("\"") + NameOf(options.prestrain.front().group) + "\"",
         "not available with \"structure\" (its groups are a designed bridge's); give each string "
         "its rest_length_m or rest_ratio instead");
   }
@@ -85,7 +85,8 @@ DynamicModel BuildStructureModel(const StructureConfig& c, const ModelOptions& o
     ds.damping = s.damping_n_s_m;
     ds.mass = s.mass_kg;
     ds.area = s.area_m2.value_or(0.0);
-    m.AddString(ds, std::to_string(s.nodes[0]) + "-" + std::to_string(s.nodes[1]), "string");
+    m.AddString(ds, std::to_string(s.nodes[0]) + "-" + std::to_string(s.nodes[1]),
+                MemberGroup::kString);
   }
   ShareStringMass(m, options.string_mass);
   RequireMassAtFreeNodes(m);

@@ -209,7 +209,7 @@ CandidateRow EvaluateCandidate(const SweepSpec& spec, const Candidate& candidate
       row.deck_string_area_factor = GrowDeckStrings(design, candidate.deck_prestrain);
       row.prestress = DeckStress(design);
     } else if (prestrained) {
-      prestrain.push_back({"deck", candidate.deck_prestrain});
+      prestrain.push_back({MemberGroup::kDeck, candidate.deck_prestrain});
       row.prestress =
           StringMaterial(design.config).youngs_modulus * (1 / candidate.deck_prestrain - 1);
     } else {

@@ -162,8 +162,9 @@ void PrintSimulation(const DynamicModel& model, const SimulationSummary& s) {
   std::cout << "slack transitions " << s.slack.total << ", max bar-length error "
             << s.max_bar_length_error << ", energy drift " << s.energy.max_drift << "\n";
   for (const PrestrainReport& p : s.prestrain) {
-    std::cout << "prestrain " << p.group << " " << p.ratio << ": implied stress " << p.max_stress
-              << " Pa" << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ")
+    std::cout << "prestrain " << NameOf(p.group) << " " << p.ratio << ": implied stress "
+              << p.max_stress << " Pa"
+              << (p.exceeds_allowed ? " exceeds the allowed " : " within the allowed ")
               << p.allowed_stress << " Pa\n";
   }
 }

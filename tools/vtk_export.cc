@@ -54,7 +54,7 @@ void VtkHistory::Begin(const DynamicModel& model, const std::vector<int>& record
     connectivity.insert(connectivity.end(), {b.i, b.j}), types.push_back(0);
   for (size_t k = 0; k < model.strings.size(); ++k) {
     connectivity.insert(connectivity.end(), {model.strings[k].i, model.strings[k].j});
-    types.push_back(model.names.string_group[k] == "deck" ? 2 : 1);
+    types.push_back(model.names.string_group[k] == MemberGroup::kDeck ? 2 : 1);
   }
   WriteRaw(bin_, connectivity);
   types_offset_ = static_cast<long long>(connectivity.size() * sizeof(int));

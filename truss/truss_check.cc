@@ -16,18 +16,19 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kReportedModes = 6;
 
 // Member e's utilisation and its mode of failure under force n (tension > 0) at area a.
-std::pair<double, std::string> MemberUtilisation(const TrussModel& m, int e, double n, double a) {
+std::pair<double, TrussFailure> MemberUtilisation(const TrussModel& m, int e, double n, double a) {
   const TrussMember& member = m.members[static_cast<size_t>(e)];
   const TrussGroup& g = m.groups[static_cast<size_t>(member.group)];
   if (n >= 0) {
-    if (g.kind == TrussKind::kBar) return {1 + n / (g.allowed_compression * a), "tension in a bar"};
-    return {n / (g.allowed_tension * a), "tension"};
+    if (g.kind == TrussKind::kBar)
+      return {1 + n / (g.allowed_compression * a), TrussFailure::kTensionInBar};
+    return {n / (g.allowed_tension * a), TrussFailure::kTension};
   }
-  if (g.kind == TrussKind::kString) return {1 - n / (g.allowed_tension * a), "slack"};
-  std::pair<double, std::string> out{-n / (g.allowed_compression * a), "compression"};
+  if (g.kind == TrussKind::kString) return {1 - n / (g.allowed_tension * a), TrussFailure::kSlack};
+  std::pair<double, TrussFailure> out{-n / (g.allowed_compression * a), TrussFailure::kCompression};
   if (g.euler) {
     const double u = -n * m.buckling_factor / m.EulerLoad(e, a);
-    if (u > out.first) out = {u, "buckling"};
+    if (u > out.first) out = {u, TrussFailure::kBuckling};
   }
   return out;
 }
@@ -129,7 +130,7 @@ void Verdict(const TrussModel& m, TrussCheck& out) {
   for (int e = 0; e < m.num_members() && !out.cases.empty(); ++e) {
     const TrussMemberCheck& mc = out.members[static_cast<size_t>(e)];
     take(mc.utilisation,
-         "member " + m.MemberName(e) + " (" + mc.governed_by + ", case " +
+         "member " + m.MemberName(e) + " (" + NameOf(mc.governed_by) + ", case " +
              m.cases[static_cast<size_t>(mc.governing_case)].name + ")",
          MemberLever(m, e, mc.area));
   }

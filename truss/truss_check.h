@@ -4,9 +4,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
+#include "core/named_choice.h"
 #include "truss/truss_analysis.h"
 #include "truss/truss_model.h"
 
@@ -15,12 +17,29 @@ namespace tbridge {
 // A utilisation within this of 1 passes: the sizing's certificate holds its rows to 1e-6.
 inline constexpr double kTrussPassTolerance = 1e-6;
 
+// How a member of a structure fails, with its text in the report.
+enum class TrussFailure {
+  kNone,  // no load case (frequency limits only): its text is empty, as the report always had it
+  kTension,
+  kCompression,
+  kBuckling,
+  kSlack,         // a string in compression
+  kTensionInBar,  // a bar (compression only) pulled
+};
+inline constexpr std::array<Named<TrussFailure>, 6> kTrussFailureNames{
+    {{TrussFailure::kNone, ""},
+     {TrussFailure::kTension, "tension"},
+     {TrussFailure::kCompression, "compression"},
+     {TrussFailure::kBuckling, "buckling"},
+     {TrussFailure::kSlack, "slack"},
+     {TrussFailure::kTensionInBar, "tension in a bar"}}};
+inline const char* NameOf(TrussFailure f) { return NameIn(kTrussFailureNames, f); }
+
 struct TrussMemberCheck {
-  double area = 0;          // [m^2]
-  double force = 0;         // [N], tension > 0, in the governing case
-  double utilisation = 0;   // the largest over the cases and modes of failure
-  std::string governed_by;  // "tension", "compression", "buckling", "slack" (a string in
-                            // compression), "tension in a bar"
+  double area = 0;         // [m^2]
+  double force = 0;        // [N], tension > 0, in the governing case
+  double utilisation = 0;  // the largest over the cases and modes of failure
+  TrussFailure governed_by = TrussFailure::kNone;
   int governing_case = 0;
 };
 

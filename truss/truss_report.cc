@@ -68,7 +68,7 @@ json Members(const TrussDesign& d) {
          {"force", c.force},
          {"forces_by_case", forces},
          {"utilisation", c.utilisation},
-         {"governed_by", c.governed_by},
+         {"governed_by", NameOf(c.governed_by)},
          {"governing_case", d.check.cases.empty()
                                 ? json(nullptr)
                                 : json(m.cases[static_cast<size_t>(c.governing_case)].name)}});

@@ -156,7 +156,7 @@ TEST_CASE("Validate: a default config passes, the rules across keys hold in code
        [](Config& k) { k.dynamics->loads[0].rise_s = 0.08; }},
       {with(dynamics, "/dynamics/prestrain/1", json{{"group", "deck"}, {"ratio", 0.9}}),
        [](Config& k) {
-         k.dynamics->prestrain.push_back({"deck", 0.9});
+         k.dynamics->prestrain.push_back({MemberGroup::kDeck, 0.9});
        }},
       {with(scene, "/structure/nodes/2", json{0, 0, 0}),
        [](Config& k) {

@@ -141,8 +141,8 @@ TEST_CASE("3D bridge: the paper's counts, class 2, loads on both planes", "[topo
   CHECK(s.TensegrityClass() == 2);
   CHECK_FALSE(s.planar);
   int transverse_bars = 0, transverse_strings = 0;
-  for (const Member& m : s.bars) transverse_bars += m.group == "transverse";
-  for (const Member& m : s.strings) transverse_strings += m.group == "transverse";
+  for (const Member& m : s.bars) transverse_bars += m.group == MemberGroup::kTransverse;
+  for (const Member& m : s.strings) transverse_strings += m.group == MemberGroup::kTransverse;
   CHECK(transverse_bars == 6);
   CHECK(transverse_strings == 30);
   // Class 2 with every bar node meeting exactly one transverse bar: 2 bars at each of the
@@ -241,7 +241,7 @@ TEST_CASE("3D bridge design: equilibrium, prestressed transverse strings", "[des
   // (relative 1e-8: interior-point distance to an active bound).
   const Structure& s = d.topology.structure;
   for (int k = 0; k < s.num_strings(); ++k) {
-    if (s.strings[k].group != "transverse") continue;
+    if (s.strings[k].group != MemberGroup::kTransverse) continue;
     INFO(d.strings[k].name);
     CHECK(d.strings[k].radius >= 0.005 * (1 - 1e-8));
     CHECK(d.strings[k].stress == Approx(6.9e7).epsilon(1e-8));
@@ -272,8 +272,8 @@ Structure GuyedMast(bool planar, double a, double l) {
   s.nodes.col(2) << a, 0, 0;
   s.nodes.col(3) << -a, 0, 0;
   s.fixed = {true, false, true, true};
-  s.bars = {{0, 1, "vertical"}};
-  s.strings = {{1, 2, "substructure"}, {1, 3, "substructure"}};
+  s.bars = {{0, 1, MemberGroup::kVertical}};
+  s.strings = {{1, 2, MemberGroup::kSubstructure}, {1, 3, MemberGroup::kSubstructure}};
   s.planar = planar;
   s.Validate();
   return s;

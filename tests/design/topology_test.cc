@@ -43,7 +43,7 @@ TEST_CASE("p = 1 numbering and geometry", "[topology]") {
   // Every cable segment slopes at beta/2 (or is a horizontal deck cable).
   for (const Member& m : s.strings) {
     const Eigen::Vector3d d = s.nodes.col(m.j) - s.nodes.col(m.i);
-    if (m.group == "deck") {
+    if (m.group == MemberGroup::kDeck) {
       CHECK(d.y() == 0.0);
     } else {
       CHECK(std::abs(d.y() / d.x()) == Approx(slope).epsilon(1e-12));

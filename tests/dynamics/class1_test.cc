@@ -122,10 +122,10 @@ TEST_CASE("the model takes the design's members and eq. 27 string masses") {
 TEST_CASE("prestrain sets rest lengths, recomputes k and flags the implied stress") {
   const Design& d = test::PaperDesign(1);
   ModelOptions o;
-  o.prestrain = {{"deck", 0.95}};
+  o.prestrain = {{MemberGroup::kDeck, 0.95}};
   const DynamicModel m = BuildDynamicModel(d, o);
   for (size_t k = 0; k < m.strings.size(); ++k) {
-    if (m.names.string_group[k] != "deck") continue;
+    if (m.names.string_group[k] != MemberGroup::kDeck) continue;
     CHECK(m.strings[k].rest_length == Approx(0.95 * d.strings[k].length).epsilon(1e-15));
     CHECK(m.strings[k].stiffness ==
           Approx(m.youngs_modulus * d.strings[k].area / m.strings[k].rest_length).epsilon(1e-15));
@@ -135,7 +135,7 @@ TEST_CASE("prestrain sets rest lengths, recomputes k and flags the implied stres
   // E (1/0.95 - 1) = 1.084e10 Pa: 157 x sigma_w (SPEC.md §7), exact up to rounding.
   CHECK(reports[0].max_stress == Approx(2.06e11 * (1 / 0.95 - 1)).epsilon(1e-12));
   CHECK(reports[0].exceeds_allowed);
-  o.prestrain = {{"nothing", 0.9}};
+  o.prestrain = {{MemberGroup::kTransverse, 0.9}};  // a planar bridge has none
   CHECK_THROWS_AS(BuildDynamicModel(d, o), ConfigError);
 }
 
@@ -242,7 +242,7 @@ TEST_CASE("a mass on a V of two strings oscillates at sqrt(k_eff/m)") {
     st.j = 2;
     st.rest_length = s - stretch;
     st.stiffness = k;
-    m.AddString(st, std::to_string(end + 1) + "-3", "string");
+    m.AddString(st, std::to_string(end + 1) + "-3", MemberGroup::kString);
   }
   const double omega = std::sqrt(2 * (k * sin_t * sin_t + tension / s * cos_t * cos_t) / mass);
   const Class1System system(m);

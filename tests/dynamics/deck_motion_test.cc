@@ -47,7 +47,7 @@ DynamicModel TwoPlaneDeck() {
     d.j = j;
     d.stiffness = k;
     d.rest_length = s - tension / k;
-    m.AddString(d, std::to_string(i + 1) + "-" + std::to_string(j + 1), "string");
+    m.AddString(d, std::to_string(i + 1) + "-" + std::to_string(j + 1), MemberGroup::kString);
   };
   add(2, 0, kT, kK), add(0, 3, kT, kK), add(4, 1, kT, kK), add(1, 5, kT, kK);
   add(0, 1, kTt, kKt);
@@ -110,7 +110,7 @@ TEST_CASE("deck motions: a planar deck has vertical and longitudinal modes only"
     d.j = 0;
     d.stiffness = kK;
     d.rest_length = 1.0 - kT / kK;
-    m.AddString(d, "s", "string");
+    m.AddString(d, "s", MemberGroup::kString);
   }
   const ModalResult modes = ComputeModes(m);
   REQUIRE(modes.modes.size() == 2);

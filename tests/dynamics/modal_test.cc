@@ -30,7 +30,7 @@ namespace {
 // recomputing it as rho A p s would raise them by 0.2-0.9 %).
 DynamicModel ModelOf(const Design& d, double prestrain = 0) {
   ModelOptions options;
-  if (prestrain > 0) options.prestrain.push_back({"deck", prestrain});
+  if (prestrain > 0) options.prestrain.push_back({MemberGroup::kDeck, prestrain});
   return BuildDynamicModel(d, options);
 }
 
@@ -168,8 +168,8 @@ TEST_CASE("String-mass oscillator matches its closed forms", "[dynamics][modal]"
   m.fixed = {true, false, true};
   m.loads = Eigen::Matrix3Xd::Zero(3, 3);
   m.node_mass = Eigen::Vector3d(0, mass, 0);
-  m.AddString({0, 1, rest, k, 0, 0, 0}, "1-2", "deck");
-  m.AddString({1, 2, rest, k, 0, 0, 0}, "2-3", "deck");
+  m.AddString({0, 1, rest, k, 0, 0, 0}, "1-2", MemberGroup::kDeck);
+  m.AddString({1, 2, rest, k, 0, 0, 0}, "2-3", MemberGroup::kDeck);
   const ModalResult r = ComputeModes(m);
   REQUIRE(r.modes.size() == 3u);
   const double q = k * (s - rest) / s;
@@ -196,8 +196,8 @@ TEST_CASE("A loaded bar on prestressed strings matches its closed form", "[dynam
   m.loads(1, 1) = -load;
   m.node_mass = Eigen::VectorXd::Zero(4);
   m.bars.push_back({0, 1, mass, l});
-  m.AddString({1, 2, rest, k, 0, 0, 0}, "2-3", "substructure");
-  m.AddString({1, 3, rest, k, 0, 0, 0}, "2-4", "substructure");
+  m.AddString({1, 2, rest, k, 0, 0, 0}, "2-3", MemberGroup::kSubstructure);
+  m.AddString({1, 3, rest, k, 0, 0, 0}, "2-4", MemberGroup::kSubstructure);
   const ModalResult r = ComputeModes(m);
   REQUIRE(r.modes.size() == 1u);  // 2 DOFs minus the bar length
   CHECK(r.bar_force_density(0) == Approx(load / l).epsilon(1e-12));
@@ -274,7 +274,7 @@ TEST_CASE("Slack strings drop out of the tangent stiffness", "[dynamics][modal]"
   // Lengthen one substructure string's rest length past its length: it goes slack.
   int slack = -1;
   for (size_t k = 0; k < m.strings.size() && slack < 0; ++k) {
-    if (m.names.string_group[k] != "deck") slack = static_cast<int>(k);
+    if (m.names.string_group[k] != MemberGroup::kDeck) slack = static_cast<int>(k);
   }
   REQUIRE(slack >= 0);
   const LinearisedSystem taut = Linearise(m);

@@ -76,7 +76,7 @@ TEST_CASE("slack chatter: thousands of slack crossings, no spurious energy gain"
   ApplyPaperSwitches(c);
   c.bridge.n = 3;
   ModelOptions o;
-  o.prestrain = {{"deck", 1.0}};
+  o.prestrain = {{MemberGroup::kDeck, 1.0}};
   const DynamicModel m = BuildDynamicModel(RunDesign(c), o);
   const SimulationSummary s = Simulate(m, Run(1.0, 5e-6, 0.2)).summary;
   Describe("chatter", s);
@@ -93,7 +93,7 @@ TEST_CASE("extreme prestrain p = 0.9 runs at its own stable step", "[stress]") {
   ApplyPaperSwitches(c);
   c.bridge.n = 2;
   ModelOptions o;
-  o.prestrain = {{"deck", 0.9}};
+  o.prestrain = {{MemberGroup::kDeck, 0.9}};
   const DynamicModel m = BuildDynamicModel(RunDesign(c), o);
   const double limit = Rk4Limit(m);
   const SimulationSummary s = Simulate(m, Run(0.2, limit / 8, 0.05)).summary;

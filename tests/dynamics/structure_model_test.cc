@@ -78,7 +78,7 @@ TEST_CASE("structure model: the D-bar") {
 TEST_CASE("structure model: options only a designed bridge has are rejected by key") {
   const Config c = Scene("motes_dbar");
   ModelOptions prestrain;
-  prestrain.prestrain.push_back({"deck", 0.9});
+  prestrain.prestrain.push_back({MemberGroup::kDeck, 0.9});
   CHECK_THAT(test::ConfigErrorOf([&] { BuildStructureModel(*c.structure, prestrain); }),
              Catch::Contains("'dynamics.prestrain'"));
   ModelOptions damping;

@@ -22,7 +22,7 @@ StaticModel Planar(const Eigen::Matrix2Xd& xy, const std::vector<bool>& fixed) {
 }
 
 void AddString(StaticModel& m, int i, int j, double k, double rest_length) {
-  m.structure.strings.push_back({i, j, "string"});
+  m.structure.strings.push_back({i, j, MemberGroup::kString});
   m.string_stiffness.push_back(k);
   m.string_rest_length.push_back(rest_length);
 }
@@ -121,7 +121,7 @@ TEST_CASE("a boom held by a string rotates to its moment balance", "[statics]") 
   Eigen::Matrix2Xd xy(2, 3);
   xy << 0, b0.b.x(), c.x(), 0, b0.b.y(), c.y();
   StaticModel m = Planar(xy, {true, false, true});
-  m.structure.bars.push_back({0, 1, "boom"});
+  m.structure.bars.push_back({0, 1, MemberGroup::kNone});
   AddString(m, 1, 2, k, rest);
   const StaticState start = StateAt(
       m, m.structure.nodes, Eigen::VectorXd::Constant(1, b0.compression), Down(m, 1, b0.load));

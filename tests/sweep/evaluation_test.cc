@@ -29,7 +29,7 @@ TEST_CASE("The sparse solver finds the dense lowest frequency", "[sweep]") {
     const Design d = RunDesign(Planar(n));
     for (const double ratio : {1.0, 0.95}) {
       ModelOptions o;
-      if (ratio < 1) o.prestrain.push_back({"deck", ratio});
+      if (ratio < 1) o.prestrain.push_back({MemberGroup::kDeck, ratio});
       const DynamicModel model = BuildDynamicModel(d, o);
       const double dense = ComputeModes(model).modes.front().omega_rad_s;
       FirstFrequencyOptions force_sparse;
@@ -195,7 +195,8 @@ TEST_CASE(
     loads(1, station) -= d.deck.node_load;
     const Eigen::VectorXd x = FactorEquilibrium(eq, FreeLoads(eq, loads)).particular.col(0);
     for (int k = 0; k < s.num_strings(); ++k) {
-      if (s.strings[k].group == "deck") continue;  // the self-stress: not fixed by statics
+      if (s.strings[k].group == MemberGroup::kDeck)
+        continue;  // the self-stress: not fixed by statics
       static_ratio = std::max(static_ratio, x[s.num_bars() + k] / (sigma_w * d.strings[k].area));
     }
   }

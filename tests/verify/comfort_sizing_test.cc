@@ -37,7 +37,7 @@ DynamicModel StarModel(double k, double tension, double mass) {
     s.j = a + 1;
     s.stiffness = k;
     s.rest_length = 1.0 - tension / k;  // T = k (s - L0) at s = 1
-    m.AddString(s, std::to_string(a), "star");
+    m.AddString(s, std::to_string(a), MemberGroup::kNone);
   }
   return m;
 }

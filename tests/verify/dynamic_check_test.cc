@@ -22,7 +22,7 @@ namespace {
 
 // A run's largest member force in `group` (bar compression, string tension) [N], as the check
 // groups its peaks.
-double GroupPeak(const Structure& st, const SimulationSummary& s, const std::string& group) {
+double GroupPeak(const Structure& st, const SimulationSummary& s, MemberGroup group) {
   double peak = 0;
   for (int b = 0; b < st.num_bars(); ++b) {
     if (st.bars[b].group == group) peak = std::max(peak, s.peak_bar_compression[b]);
@@ -76,7 +76,7 @@ TEST_CASE("the design's dynamic check is what a separate run of the paper's trav
   const Structure& st = d.topology.structure;
   for (const GroupAmplification& g : check.groups) {
     const double peak = GroupPeak(st, s, g.group);
-    INFO("group " << g.group);
+    INFO("group " << NameOf(g.group));
     CHECK(peak == Approx(g.dynamic_peak).epsilon(1e-12));
   }
   // And the run confirms the design holds: no member past its resistance at service level
@@ -135,7 +135,7 @@ TEST_CASE("the dynamic check's static counterparts are the load standing at each
     loads.push_back(model.loads + d.actions.StationLoad(k, config.loads.travelling_load_n));
   }
   REQUIRE(loads.size() > 2);
-  std::map<std::string, double> peak;
+  std::map<MemberGroup, double> peak;
   for (const Eigen::Matrix3Xd& l : loads) {
     const StaticResult r = SolveStatic(statics, start, d.loads, l);
     REQUIRE(r.converged);
@@ -147,7 +147,7 @@ TEST_CASE("the dynamic check's static counterparts are the load standing at each
   }
   REQUIRE(run.groups.size() == peak.size());
   for (const GroupAmplification& g : run.groups) {
-    INFO("group " << g.group);
+    INFO("group " << NameOf(g.group));
     REQUIRE(peak.count(g.group) == 1);
     REQUIRE(g.static_peak > 0);
     // 1e-10 relative: the same loads (a + (-f) and a - f round alike), solved here from the
@@ -253,7 +253,7 @@ TEST_CASE("the dynamic check's stabilised bar lengths leave the peaks of a run t
   const Structure& st = d.topology.structure;
   for (const GroupAmplification& g : done.groups) {
     const double peak = GroupPeak(st, s, g.group);
-    INFO("group " << g.group << ": " << peak << " against " << g.dynamic_peak);
+    INFO("group " << NameOf(g.group) << ": " << peak << " against " << g.dynamic_peak);
     CHECK(peak == Approx(g.dynamic_peak).epsilon(1e-9));
   }
 }

@@ -87,7 +87,7 @@ TEST_CASE("a load crossing slowly gives its static peaks", "[verify][dynamics]")
   // Each group's dynamic peak against its static peak with Q_t standing at each station: equal
   // but for the overshoot bound (on the whole force, which the standing loads only dilute).
   for (const GroupAmplification& g : run.groups) {
-    INFO("group " << g.group);
+    INFO("group " << NameOf(g.group));
     CHECK(g.amplification <= 1 + bound);
     CHECK(g.amplification >= 1 - bound);
   }
@@ -113,8 +113,8 @@ TEST_CASE("a slowly rising wind gives the static wind's forces", "[verify][dynam
   INFO("quasi-static bound " << bound);
   REQUIRE(bound < 0.01);
   for (const GroupAmplification& g : run.groups) {
-    INFO("group " << g.group << ": static " << g.static_peak << " N, dynamic " << g.dynamic_peak
-                  << " N");
+    INFO("group " << NameOf(g.group) << ": static " << g.static_peak << " N, dynamic "
+                  << g.dynamic_peak << " N");
     CHECK(g.amplification <= 1 + bound);
     CHECK(g.amplification >= 1 - bound);
   }
