@@ -39,7 +39,7 @@ ScenarioResult RunSimulateScenario(const Config& config, const RunHooks& hooks =
 
 // `tbridge simulate DESIGN.json`: the scenario of the "dynamics" section of a written design's
 // own config (its `config`), run on the design as written, or as built where its members were
-// edited (design/design_reader.h). Throws ConfigError naming "config.dynamics" when the design's
+// edited (io/design_reader.h). Throws ConfigError naming "config.dynamics" when the design's
 // config has none.
 ScenarioResult RunDesignScenario(const Design& design, const RunHooks& hooks = {},
                                  const std::function<void(const Design&)>& on_design = {});

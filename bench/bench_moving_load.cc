@@ -29,12 +29,12 @@
 #include "checks/modal_run.h"
 #include "core/config.h"
 #include "design/design.h"
-#include "design/design_reader.h"
 #include "design/sizing.h"
 #include "design/static_model.h"
 #include "dynamics/integrator_policy.h"
 #include "dynamics/model.h"
 #include "dynamics/simulation.h"
+#include "io/design_reader.h"
 
 namespace {
 

@@ -88,7 +88,7 @@ inline const char* NameOf(SolverKind k) { return NameIn(kSolverNames, k); }
 inline const char* NameOf(LoadFamily k) { return NameIn(kLoadFamilyNames, k); }
 
 // Each enum's table, by its type: for code that reads or writes any of them alike (the design
-// file's record of the loads, design/design_loads.cc).
+// file's record of the loads, io/design_loads.cc).
 inline constexpr const auto& NamesOf(TrafficClass) { return kTrafficClassNames; }
 inline constexpr const auto& NamesOf(ComfortLevel) { return kComfortLevelNames; }
 

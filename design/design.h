@@ -34,11 +34,12 @@ struct MassBreakdown {
 MassBreakdown MassesOf(const std::vector<MemberSizing>& bars,
                        const std::vector<MemberSizing>& strings, double deck_beams);
 
-// Design::solver_form of a design read back from its file (design/design_reader.h).
+// Design::solver_form of a design read back from its file (io/design_reader.h).
 inline constexpr const char* kReadFromFile = "read from file";
 
-// What `tbridge check` re-derived of a design whose members were edited in its file
-// (design/design_reader.h): the reference state the members carry as built.
+// What was re-derived of a design whose members are not what it was sized with (an edited file,
+// io/design_reader.h; a tolerance or a temperature, design/as_built.h): the reference state the
+// members carry as built.
 struct AsBuilt {
   bool re_derived = false;
   // The members whose reference force in the file is not what they carry as read (an edited
@@ -99,7 +100,7 @@ struct Design {
   Eigen::Matrix3Xd reactions;
   AsBuilt as_built;  // what check re-derived, when it did
   // The config the bridge was designed under where `tbridge check` reads it under other loads
-  // (design/design_loads.h: `config` holds the loads checked, this the loads designed for, and
+  // (io/design_loads.h: `config` holds the loads checked, this the loads designed for, and
   // the deck plates sized for them); unset where they are `config`'s own.
   std::optional<Config> designed_for;
 };
@@ -149,24 +150,6 @@ Design WithPrestressLoss(const Design& design, double loss);
 // The verdicts that follow from a design's reference state, set again after it changed: its
 // stability (at its reference forces and its strings' stiffnesses) and its support reactions.
 void AssessReferenceState(Design& design);
-
-// The design's one verdict, built from its checks' reports. FAIL: a member's utilisation over
-// 1 (1e-9 allows for the rounding of a member sized exactly to its resistance), unstable, a
-// static case with no equilibrium, a deflection over its limit or a deck mode over its comfort
-// limit. Otherwise INCOMPLETE when a check, a run or an asked-for case was not done (comfort
-// counts when comfort.check asks for it and the paper's switches are off), else PASS.
-enum class VerdictOutcome { kPass, kFail, kIncomplete };
-const char* VerdictName(VerdictOutcome outcome);  // "PASS" | "FAIL" | "INCOMPLETE"
-struct Verdict {
-  VerdictOutcome outcome = VerdictOutcome::kIncomplete;
-  bool pass = false;  // outcome == kPass
-  double utilisation_max = 0;
-  std::string governing;     // "member 3-5 (buckling, uls_payload_full)"
-  std::string summary;       // "PASS: ...", "FAIL: ...; ..." or "INCOMPLETE: ...; ..."
-  std::string scope;         // what the checks cover, and what they do not
-  DeckBeamCheck deck_beams;  // the deck beams' check the verdict read (design/deck_beams.h)
-};
-Verdict DesignVerdict(const Design& design);
 
 // The bar rule of a config: the column curve or the paper's Euler check, with its factors.
 BarRule BarRuleOf(const Config& config);

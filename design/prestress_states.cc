@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "design/design_reader.h"
+#include "design/as_built.h"
 
 namespace tbridge {
 

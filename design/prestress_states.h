@@ -60,7 +60,7 @@ std::vector<double> StateShortenings(const Design& design, const PrestressStateS
 
 // `design` in state `spec`: its prestress reduced by the loss (WithPrestressLoss), then each
 // string's rest length changed by tolerance_sign x ToleranceShortenings (with its stiffness, the
-// reference state then re-derived as built, design/design_reader.h), then warmed by temperature_k
+// reference state then re-derived as built, design/as_built.h), then warmed by temperature_k
 // (WithTemperature). Throws ConfigError where the bridge so changed has no reference state.
 Design DesignInState(const Design& design, const PrestressStateSpec& spec);
 

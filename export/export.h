@@ -14,11 +14,18 @@ namespace tbridge {
 enum class ExportFormat { kCalculix, kOpenSees };
 inline constexpr std::array<Named<ExportFormat>, 2> kExportFormatNames{
     {{ExportFormat::kCalculix, "calculix"}, {ExportFormat::kOpenSees, "opensees"}}};
-inline constexpr const char* kExportFormats = "calculix or opensees";
 
-// The format `text` names ("calculix" or "opensees"); nullopt for any other text.
+// The format `text` names (one of kExportFormatNames); nullopt for any other text.
 inline std::optional<ExportFormat> ExportFormatOf(const std::string& text) {
   return ValueIn(kExportFormatNames, text);
+}
+
+// What an error says is allowed where a text names no format: "expected calculix or opensees".
+inline std::string ExpectedExportFormats() {
+  std::string out = "expected";
+  for (size_t k = 0; k < kExportFormatNames.size(); ++k)
+    out += std::string(k == 0 ? " " : " or ") + kExportFormatNames[k].name;
+  return out;
 }
 
 // Writes `design` in `format` (`options.modes` is CalculiX's). Throws ModelError when the

@@ -22,15 +22,16 @@
 #include "app/simulation_report.h"
 #include "bridge/design_model.h"
 #include "checks/static_check.h"
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
 #include "core/progress.h"
 #include "design/design.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
 #include "dynamics/modal.h"
 #include "export/export.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/verified_design.h"
 #include "sweep/sweep.h"
 #include "truss/truss_design.h"
@@ -430,8 +431,7 @@ PYBIND11_MODULE(tbridge, m) {
         options.modes = modes;
         const std::optional<ExportFormat> chosen = ExportFormatOf(format);
         if (!chosen) {
-          throw ConfigError("format", "'" + format + "'",
-                            std::string("expected ") + kExportFormats);
+          throw ConfigError("format", "'" + format + "'", ExpectedExportFormats());
         }
         std::ostringstream os;
         WriteExport(design, *chosen, options, os);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "checks/verdict.h"
 #include "core/error.h"
 #include "sizing/verified_design.h"
 

@@ -14,6 +14,7 @@
 #include "checks/comfort_check.h"
 #include "checks/dynamic_check.h"
 #include "checks/static_check.h"
+#include "checks/verdict.h"
 #include "core/error.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"

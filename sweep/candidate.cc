@@ -5,6 +5,7 @@
 
 #include "bridge/design_model.h"
 #include "checks/dynamic_check.h"
+#include "checks/verdict.h"
 #include "core/error.h"
 #include "core/member_area.h"
 #include "dynamics/model.h"

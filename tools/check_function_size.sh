@@ -17,7 +17,7 @@ if [ ! -f "$build/compile_commands.json" ]; then
   exit 2
 fi
 
-dirs=(core optim statics design truss dynamics bridge checks sizing sweep export app tools python)
+dirs=(core optim statics design truss dynamics bridge checks io sizing sweep export app tools python)
 if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
   mapfile -t files < <(git ls-files "${dirs[@]/%//*.cc}")
 else

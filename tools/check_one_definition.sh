@@ -42,7 +42,7 @@ define "member from area (stiffness (E A + T) / L)" core/member_area.h \
 define "member from area (rest length)" core/member_area.h \
   "/ \\(1(\\.0)? \\+ [^;]*${modulus}"
 
-rooms=(core optim statics design truss dynamics bridge checks sizing sweep export app tools python)
+rooms=(core optim statics design truss dynamics bridge checks io sizing sweep export app tools python)
 
 # Checks the tree at $1; names each formula written more than once or not at all, and returns 1
 # when there is one.

@@ -18,12 +18,13 @@ declare -A below=(
   [dynamics]="core"
   [bridge]="core optim statics design dynamics"
   [checks]="core optim statics design dynamics bridge"
+  [io]="core optim statics design dynamics bridge checks"
   [sizing]="core optim statics design dynamics bridge checks"
   [sweep]="core optim statics design dynamics bridge checks sizing"
   [export]="core optim statics design truss dynamics bridge"
-  [app]="core optim statics design truss dynamics bridge checks sizing sweep export"
-  [tools]="core optim statics design truss dynamics bridge checks sizing sweep export app"
-  [python]="core optim statics design truss dynamics bridge checks sizing sweep export app"
+  [app]="core optim statics design truss dynamics bridge checks io sizing sweep export"
+  [tools]="core optim statics design truss dynamics bridge checks io sizing sweep export app"
+  [python]="core optim statics design truss dynamics bridge checks io sizing sweep export app"
 )
 
 status=0

@@ -7,11 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "checks/verdict.h"
 #include "core/json_reader.h"
 #include "core/progress.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
 #include "design/plausibility.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/verified_design.h"
 #include "tools/commands.h"
 #include "tools/output.h"

@@ -5,11 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "core/progress.h"
 #include "design/design.h"
-#include "design/design_report.h"
 #include "design/plausibility.h"
+#include "io/design_report.h"
 #include "sizing/memory_estimate.h"
 #include "sizing/verified_design.h"
 #include "tools/commands.h"

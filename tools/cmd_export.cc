@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "core/json_reader.h"
-#include "design/design_reader.h"
 #include "export/export.h"
 #include "export/truss_calculix.h"
 #include "export/truss_opensees.h"
+#include "io/design_reader.h"
 #include "tools/commands.h"
 #include "tools/output.h"
 #include "truss/truss_design.h"
@@ -50,12 +50,11 @@ int RunExportCommand(const std::vector<std::string>& args) {
   }
   const std::string format = parsed.Required("-f");
   const std::optional<ExportFormat> chosen = ExportFormatOf(format);
-  if (!chosen)
-    throw OptionError("--format", "'" + format + "'", std::string("expected ") + kExportFormats);
+  if (!chosen) throw OptionError("--format", "'" + format + "'", ExpectedExportFormats());
   CalculixOptions options;
   options.rigid_bars = parsed.Flag("--rigid-bars");
   options.modes = ParseWholeNumber(parsed, "-m", "--modes", options.modes, 1);
-  if (parsed.Value("-m") && format != "calculix")
+  if (parsed.Value("-m") && *chosen != ExportFormat::kCalculix)
     throw UsageError("--modes: only the calculix format computes modes");
   const std::string out_path = parsed.Required("-o");
   const nlohmann::json file = ReadJsonFile(parsed.positionals[0]);
@@ -66,7 +65,7 @@ int RunExportCommand(const std::vector<std::string>& args) {
     const TrussDesign design = CheckTrussDesignFile(file);
     OutputTransaction outputs;
     outputs.ProtectInput(parsed.positionals[0]);
-    if (format == "calculix") {
+    if (*chosen == ExportFormat::kCalculix) {
       WriteTrussCalculix(design, options.modes, outputs.Stage(out_path));
     } else {
       WriteTrussOpenSees(design, outputs.Stage(out_path));

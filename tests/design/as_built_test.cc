@@ -1,4 +1,4 @@
-// A design whose members were edited in its file (design/design_reader.h, WithAreas): the
+// A design whose members were edited in its file (io/design_reader.h, WithAreas): the
 // reference state the members carry as built, re-derived by the nonlinear static solve, against
 // the linear response of the design's own tangent to the same change of load, and against the
 // string law and node equilibrium at the geometry it finds.
@@ -9,9 +9,9 @@
 
 #include "core/string_law.h"
 #include "design/design.h"
-#include "design/design_reader.h"
 #include "design/equilibrium.h"
 #include "design/static_model.h"
+#include "io/design_reader.h"
 #include "statics/static_solve.h"
 
 namespace tbridge {

@@ -12,8 +12,8 @@
 
 #include "core/error.h"
 #include "design/design.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 
 namespace tbridge {
 namespace {

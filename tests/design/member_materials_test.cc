@@ -12,7 +12,7 @@
 #include "core/error.h"
 #include "core/json_reader.h"
 #include "design/design.h"
-#include "design/design_report.h"
+#include "io/design_report.h"
 
 namespace tbridge {
 namespace {

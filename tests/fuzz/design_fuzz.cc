@@ -24,9 +24,9 @@
 #include "core/config.h"
 #include "core/error.h"
 #include "core/json_reader.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
 #include "design/plausibility.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/verified_design.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -7,8 +7,8 @@
 
 #include "bridge/design_model.h"
 #include "cli_support.h"
-#include "design/design_reader.h"
 #include "dynamics/modal.h"
+#include "io/design_reader.h"
 
 namespace {
 

@@ -8,8 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "design/design_reader.h"
-#include "design/design_report.h"
+#include "checks/verdict.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/verified_design.h"
 
 namespace tbridge {

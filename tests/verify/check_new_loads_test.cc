@@ -1,4 +1,4 @@
-// `tbridge check` of a design under loads it was not designed for (design/design_loads.h): the
+// `tbridge check` of a design under loads it was not designed for (io/design_loads.h): the
 // bridge as designed (members, rest lengths, deck plates) read back from its file with an edited
 // payload or superimposed dead load, and checked under them.
 
@@ -6,10 +6,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "checks/verdict.h"
 #include "design/design.h"
-#include "design/design_loads.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
+#include "io/design_loads.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/verified_design.h"
 
 namespace tbridge {

@@ -9,9 +9,10 @@
 #include "checks/comfort_check.h"
 #include "checks/dynamic_check.h"
 #include "checks/static_check.h"
-#include "design/design_report.h"
+#include "checks/verdict.h"
 #include "design/equilibrium.h"
 #include "design/static_model.h"
+#include "io/design_report.h"
 #include "sizing/verified_design.h"
 
 namespace tbridge {

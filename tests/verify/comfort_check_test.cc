@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "dynamics/simulation.h"

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "checks/comfort_check.h"
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "design/equilibrium.h"
 #include "design/equilibrium_basis.h"

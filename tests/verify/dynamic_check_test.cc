@@ -11,6 +11,7 @@
 #include "app/scenario.h"
 #include "bridge/design_model.h"
 #include "checks/load_scenarios.h"
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "core/error.h"
 #include "design/static_model.h"

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "checks/comfort_check.h"
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "optim/dense_qp.h"
 #include "sizing/comfort_sizing.h"

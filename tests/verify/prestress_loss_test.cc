@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "checks/verdict.h"
 #include "core/string_law.h"
 #include "design/design.h"
 #include "design/equilibrium.h"

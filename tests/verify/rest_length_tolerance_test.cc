@@ -9,10 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "checks/verdict.h"
+#include "design/as_built.h"
 #include "design/design.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
 #include "design/prestress_states.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/sizing_problem.h"
 #include "sizing/verified_design.h"
 #include "verify/prestress_state_support.h"

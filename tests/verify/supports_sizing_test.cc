@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "checks/static_check.h"
+#include "checks/verdict.h"
 #include "design/design.h"
 #include "sizing/sizing_problem.h"
 #include "sizing/verified_design.h"

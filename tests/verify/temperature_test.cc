@@ -6,11 +6,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "checks/verdict.h"
 #include "core/config.h"
+#include "design/as_built.h"
 #include "design/design.h"
-#include "design/design_reader.h"
-#include "design/design_report.h"
 #include "design/prestress_states.h"
+#include "io/design_reader.h"
+#include "io/design_report.h"
 #include "sizing/sizing_problem.h"
 #include "sizing/verified_design.h"
 #include "statics/static_solve.h"

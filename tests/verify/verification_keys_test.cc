@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "sizing/verified_design.h"
 

@@ -8,6 +8,7 @@
 #include "checks/comfort_check.h"
 #include "checks/dynamic_check.h"
 #include "checks/static_check.h"
+#include "checks/verdict.h"
 #include "core/config.h"
 #include "optim/solvers.h"
 #include "sizing/sizing_problem.h"

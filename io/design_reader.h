@@ -29,17 +29,4 @@ Design ReadDesign(const nlohmann::json& file);
 // an area < 0 or not finite, or `areas` of the wrong size.
 Design WithAreas(const Design& design, const std::vector<double>& areas);
 
-// `design` with its strings' rest lengths shortened by `shortenings` [m] (one per string, in the
-// file's order; negative: longer), each string's stiffness E A / L0 with it, as an engineer edits
-// the design file; then read back by ReadDesign, which re-derives the reference state as built.
-// Throws ConfigError naming the key for a rest length that would not be positive, or
-// `shortenings` of the wrong size.
-Design WithRestLengths(const Design& design, const std::vector<double>& shortenings);
-
-// `design` at a uniform temperature `delta_k` [K] from that at which it was built: each
-// string's rest length and each bar's length longer by its material's thermal_expansion x
-// delta_k, the supports where they are, and the reference state re-derived as built (as
-// WithRestLengths). Throws ConfigError naming loads.temperature_delta_k where it does not stand.
-Design WithTemperature(const Design& design, double delta_k);
-
 }  // namespace tbridge

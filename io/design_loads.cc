@@ -1,4 +1,4 @@
-#include "design/design_loads.h"
+#include "io/design_loads.h"
 
 #include <nlohmann/json.hpp>
 #include <optional>

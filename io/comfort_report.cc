@@ -1,4 +1,4 @@
-#include "design/comfort_report.h"
+#include "io/comfort_report.h"
 
 #include <algorithm>
 #include <cstdio>

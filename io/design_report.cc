@@ -1,4 +1,4 @@
-#include "design/design_report.h"
+#include "io/design_report.h"
 
 #include <algorithm>
 #include <array>
@@ -12,9 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "checks/verdict.h"
 #include "design/abutments.h"
-#include "design/comfort_report.h"
-#include "design/design_loads.h"
+#include "io/comfort_report.h"
+#include "io/design_loads.h"
 
 namespace tbridge {
 
