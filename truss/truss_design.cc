@@ -47,11 +47,13 @@ TrussSizing SizingOf(const nlohmann::json& file, const TrussModel& m) {
                                 "groups[" + std::to_string(g) + "].area");
   }
   const nlohmann::json& solver = file.at("solver");
-  const std::string name = solver.value("name", "");
+  // Text only: a name of another type is refused as a wrong one (value() would throw on it).
+  const nlohmann::json* given = solver.contains("name") ? &solver.at("name") : nullptr;
+  const std::string name = given && given->is_string() ? given->get<std::string>() : "";
   const std::optional<SolverKind> kind = ValueIn(kSolverNames, name);
   if (!kind) {
     throw ConfigError(
-        "solver.name", solver.contains("name") ? Show(solver.at("name")) : "(missing)",
+        "solver.name", given ? Show(*given) : "(missing)",
         "one of " + ChoiceText(AllNames(kSolverNames)) + ", as tbridge design writes it");
   }
   s.outcome.solver = *kind;

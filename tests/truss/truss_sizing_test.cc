@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/config.h"
+#include "core/design_choices.h"
 #include "core/error.h"
 #include "truss/truss_check.h"
 #include "truss/truss_design.h"
@@ -193,6 +194,28 @@ TEST_CASE("truss check: a design file's prestress is held to be a self-stress", 
   const TrussDesign loosened = CheckTrussDesignFile(file);
   CHECK_FALSE(loosened.check.pass);
   CHECK_THAT(loosened.check.governing, Catch::Contains("displacement"));
+}
+
+TEST_CASE("truss check: a design file naming no solver tbridge has is refused, naming the key",
+          "[truss]") {
+  const TrussDesign d = DesignTruss(Shipped("motes_prism_design"));
+  std::ostringstream os;
+  WriteTrussDesignJson(d, os);
+  nlohmann::json file = nlohmann::json::parse(os.str());
+  // As written, the solver that ran is one of the names the reader knows.
+  REQUIRE(ValueIn(kSolverNames, file["solver"]["name"].get<std::string>()));
+  for (const nlohmann::json& name : {nlohmann::json("abaqus"), nlohmann::json(7)}) {
+    file["solver"]["name"] = name;
+    try {
+      CheckTrussDesignFile(file);
+      FAIL("a solver named " << name.dump() << " was read");
+    } catch (const ConfigError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("solver.name") && Catch::Contains("ipopt"));
+    }
+  }
+  file["solver"].erase("name");
+  CHECK_THROWS_WITH(CheckTrussDesignFile(file),
+                    Catch::Contains("solver.name") && Catch::Contains("(missing)"));
 }
 
 }  // namespace
