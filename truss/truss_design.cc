@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
@@ -37,53 +39,117 @@ double NumberAt(const nlohmann::json& j, const char* key, const std::string& pat
   return j.at(key).get<double>();
 }
 
-// The sizing as the file records it: the groups' areas and the solver's record.
-TrussSizing SizingOf(const nlohmann::json& file, const TrussModel& m) {
-  TrussSizing s;
-  s.group_areas.resize(m.num_groups());
-  const nlohmann::json& groups = file.at("groups");
-  for (int g = 0; g < m.num_groups(); ++g) {
-    s.group_areas[g] = NumberAt(groups.at(static_cast<size_t>(g)), "area",
-                                "groups[" + std::to_string(g) + "].area");
+// The file's record of the solve, read back as written (the check recomputes what it judges):
+// text where present, else "".
+std::string RecordText(JsonSection& section, const std::string& key) {
+  const nlohmann::json* v = section.Raw(key);
+  if (v == nullptr) return "";
+  if (!v->is_string())
+    throw ConfigError(section.PathOf(key), Show(*v), "a string, as tbridge design writes it");
+  return v->get<std::string>();
+}
+
+// A number of the record: 0 where absent, NaN where null (how JSON holds a NaN written).
+double RecordNumber(JsonSection& section, const std::string& key) {
+  const nlohmann::json* v = section.Raw(key);
+  if (v == nullptr) return 0.0;
+  if (v->is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (!v->is_number()) {
+    throw ConfigError(section.PathOf(key), Show(*v),
+                      "a number or null, as tbridge design writes it");
   }
-  const nlohmann::json& solver = file.at("solver");
-  // Text only: a name of another type is refused as a wrong one (value() would throw on it).
-  const nlohmann::json* given = solver.contains("name") ? &solver.at("name") : nullptr;
-  const std::string name = given && given->is_string() ? given->get<std::string>() : "";
-  const std::optional<SolverKind> kind = ValueIn(kSolverNames, name);
+  return v->get<double>();
+}
+
+int RecordCount(JsonSection& section, const std::string& key) {
+  return section.Integer(key, 0, 0, std::numeric_limits<int>::max());
+}
+
+std::vector<std::string> RecordTexts(JsonSection& section, const std::string& key) {
+  const nlohmann::json* v = section.Raw(key);
+  std::vector<std::string> out;
+  if (v == nullptr) return out;
+  const bool texts =
+      v->is_array() &&
+      std::all_of(v->begin(), v->end(), [](const nlohmann::json& e) { return e.is_string(); });
+  if (!texts) {
+    throw ConfigError(section.PathOf(key), Show(*v),
+                      "a list of strings, as tbridge design writes it");
+  }
+  for (const nlohmann::json& e : *v) out.push_back(e.get<std::string>());
+  return out;
+}
+
+// The solver's name: one of kSolverNames.
+SolverKind SolverOf(JsonSection& solver) {
+  const nlohmann::json* given = solver.Raw("name");
+  const std::optional<SolverKind> kind =
+      given && given->is_string() ? ValueIn(kSolverNames, given->get<std::string>()) : std::nullopt;
   if (!kind) {
     throw ConfigError(
         "solver.name", given ? Show(*given) : "(missing)",
         "one of " + ChoiceText(AllNames(kSolverNames)) + ", as tbridge design writes it");
   }
-  s.outcome.solver = *kind;
-  s.outcome.status = solver.value("status", "");
-  s.outcome.iterations = solver.value("iterations", 0);
-  s.start = solver.value("start", "");
-  s.tries = solver.value("tries", std::vector<std::string>{});
-  const nlohmann::json& k = solver.at("kkt");
-  s.kkt.stationarity = k.value("stationarity", 0.0);
-  s.kkt.feasibility = k.value("feasibility", 0.0);
-  s.kkt.complementarity = k.value("complementarity", 0.0);
-  s.kkt.second_order = k.value("second_order", false);
-  s.kkt.second_order_by = k.value("second_order_by", "");
-  s.kkt.proved_local_optimum = k.value("proved_local_optimum", false);
-  s.kkt.failed = k.value("failed", "");
-  s.kkt.active_rows = k.value("active_rows", 0);
-  s.kkt.active_bounds = k.value("active_bounds", 0);
-  s.kkt.free_variables = k.value("free_variables", 0);
-  s.kkt.null_space_dimension = k.value("null_space_dimension", 0);
-  if (file.contains("mass_attribution") && file.at("mass_attribution").is_object()) {
-    const nlohmann::json& a = file.at("mass_attribution");
-    if (a.contains("by_constraint_kg") && a.at("by_constraint_kg").is_object()) {
-      for (auto it = a.at("by_constraint_kg").begin(); it != a.at("by_constraint_kg").end(); ++it)
-        s.attribution.by_constraint_kg.emplace_back(it.key(),
-                                                    it->is_number() ? it->get<double>() : 0.0);
+  return *kind;
+}
+
+KktCertificate KktOf(JsonSection k) {
+  KktCertificate c;
+  c.stationarity = RecordNumber(k, "stationarity");
+  c.feasibility = RecordNumber(k, "feasibility");
+  c.complementarity = RecordNumber(k, "complementarity");
+  c.second_order = k.Bool("second_order", false);
+  c.second_order_by = RecordText(k, "second_order_by");
+  c.proved_local_optimum = k.Bool("proved_local_optimum", false);
+  c.failed = RecordText(k, "failed");
+  c.active_rows = RecordCount(k, "active_rows");
+  c.active_bounds = RecordCount(k, "active_bounds");
+  c.free_variables = RecordCount(k, "free_variables");
+  c.null_space_dimension = RecordCount(k, "null_space_dimension");
+  return c;
+}
+
+TrussMassAttribution AttributionOf(JsonSection a) {
+  TrussMassAttribution out;
+  if (const nlohmann::json* by = a.Raw("by_constraint_kg")) {
+    if (!by->is_object()) {
+      throw ConfigError(a.PathOf("by_constraint_kg"), Show(*by),
+                        "an object of masses by constraint kind [kg]");
     }
-    s.attribution.structure_kg = a.value("structure_kg", 0.0);
-    s.attribution.stationarity_residual = a.value("stationarity_residual", 0.0);
-    s.attribution.active_rows = a.value("active_rows", 0);
+    JsonSection kinds(*by, a.PathOf("by_constraint_kg"));
+    for (auto it = by->begin(); it != by->end(); ++it)
+      out.by_constraint_kg.emplace_back(it.key(), RecordNumber(kinds, it.key()));
   }
+  out.structure_kg = RecordNumber(a, "structure_kg");
+  out.stationarity_residual = RecordNumber(a, "stationarity_residual");
+  out.active_rows = RecordCount(a, "active_rows");
+  return out;
+}
+
+// The sizing as the file records it: the groups' areas and the solver's record. Every key of
+// the record is read as the type tbridge design writes, or refused naming it.
+TrussSizing SizingOf(JsonSection& file, const TrussModel& m) {
+  TrussSizing s;
+  s.group_areas.resize(m.num_groups());
+  const nlohmann::json* groups = file.Raw("groups");
+  if (groups == nullptr || !groups->is_array() ||
+      static_cast<int>(groups->size()) != m.num_groups()) {
+    throw ConfigError("groups", groups ? Show(*groups) : "(missing)",
+                      "one entry per config.structure.groups (" + std::to_string(m.num_groups()) +
+                          "), as tbridge design writes it");
+  }
+  for (int g = 0; g < m.num_groups(); ++g) {
+    s.group_areas[g] = NumberAt(groups->at(static_cast<size_t>(g)), "area",
+                                "groups[" + std::to_string(g) + "].area");
+  }
+  JsonSection solver = file.Section("solver", false);
+  s.outcome.solver = SolverOf(solver);
+  s.outcome.status = RecordText(solver, "status");
+  s.outcome.iterations = RecordCount(solver, "iterations");
+  s.start = RecordText(solver, "start");
+  s.tries = RecordTexts(solver, "tries");
+  s.kkt = KktOf(solver.Section("kkt", false));
+  if (file.Has("mass_attribution")) s.attribution = AttributionOf(file.Section("mass_attribution"));
   return s;
 }
 
@@ -123,21 +189,28 @@ Eigen::VectorXd PrestressOf(const nlohmann::json& members, const TrussModel& m) 
 }  // namespace
 
 TrussDesign CheckTrussDesignFile(const nlohmann::json& file) {
-  if (!file.is_object() || file.value("kind", "") != "structure") {
+  if (!file.is_object() || !file.contains("kind") || file.at("kind") != "structure") {
     throw ConfigError(
         "kind", file.is_object() && file.contains("kind") ? Show(file.at("kind")) : "(missing)",
         "\"structure\": the design file of a structure to design");
   }
-  const Config config = ParseConfig(file.at("config"));
+  JsonSection root(file, "");
+  const nlohmann::json* config_json = root.Raw("config");
+  if (config_json == nullptr) throw ConfigError("config", "(missing)", "the design's config");
+  const Config config = ParseConfig(*config_json);
   TrussDesign d{config, BuildTrussModel(config), {}, {}, {}};
-  const nlohmann::json& members = file.at("members");
-  if (!members.is_array() || static_cast<int>(members.size()) != d.model.num_members()) {
-    throw ConfigError(
-        "members", members.is_array() ? std::to_string(members.size()) + " members" : Show(members),
-        "one entry per member of config.structure.members (" +
-            std::to_string(d.model.num_members()) + ")");
+  const nlohmann::json* given = root.Raw("members");
+  if (given == nullptr || !given->is_array() ||
+      static_cast<int>(given->size()) != d.model.num_members()) {
+    throw ConfigError("members",
+                      given == nullptr    ? "(missing)"
+                      : given->is_array() ? std::to_string(given->size()) + " members"
+                                          : Show(*given),
+                      "one entry per member of config.structure.members (" +
+                          std::to_string(d.model.num_members()) + ")");
   }
-  d.sizing = SizingOf(file, d.model);
+  const nlohmann::json& members = *given;
+  d.sizing = SizingOf(root, d.model);
   d.sizing.prestress = PrestressOf(members, d.model);
   Eigen::VectorXd areas(d.model.num_members());
   for (int e = 0; e < d.model.num_members(); ++e) {

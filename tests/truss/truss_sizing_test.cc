@@ -4,11 +4,13 @@
 // shares nothing with these, is tests/independent/test_product_designs.py).
 #include "truss/truss_sizing.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/config.h"
 #include "core/design_choices.h"
@@ -216,6 +218,54 @@ TEST_CASE("truss check: a design file naming no solver tbridge has is refused, n
   file["solver"].erase("name");
   CHECK_THROWS_WITH(CheckTrussDesignFile(file),
                     Catch::Contains("solver.name") && Catch::Contains("(missing)"));
+}
+
+// `file` read by CheckTrussDesignFile: "" where it is read, else the ConfigError's text; any
+// other exception (a JSON library's type error) fails the test.
+std::string RefusalOf(const nlohmann::json& file) {
+  try {
+    CheckTrussDesignFile(file);
+    return "";
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+}
+
+TEST_CASE("truss check: every record of a design file of another type, or missing, is named",
+          "[truss]") {
+  const TrussDesign d = DesignTruss(Shipped("truss_10bar_stress"));
+  std::ostringstream os;
+  WriteTrussDesignJson(d, os);
+  const nlohmann::json written = nlohmann::json::parse(os.str());
+  REQUIRE(RefusalOf(written).empty());
+  // Each leaf of the solver's record and of the mass attribution given an object, which no
+  // writer writes there: refused, naming the key by its path.
+  std::vector<std::string> leaves;
+  for (const char* section : {"/solver", "/solver/kkt", "/mass_attribution"}) {
+    for (const auto& [key, value] : written.at(nlohmann::json::json_pointer(section)).items()) {
+      if (!value.is_object()) leaves.push_back(std::string(section) + "/" + key);
+    }
+  }
+  REQUIRE(leaves.size() >= 15);  // name, status, ..., the certificate's eleven, the attribution's
+  for (const std::string& pointer : leaves) {
+    nlohmann::json file = written;
+    file[nlohmann::json::json_pointer(pointer)] = nlohmann::json::object();
+    std::string path = pointer.substr(1);
+    std::replace(path.begin(), path.end(), '/', '.');
+    INFO(pointer);
+    CHECK_THAT(RefusalOf(file), Catch::Contains(path));
+  }
+  // Each top-level key the reader needs taken away: refused, naming it.
+  for (const char* key : {"kind", "config", "members", "groups", "solver"}) {
+    nlohmann::json file = written;
+    file.erase(key);
+    INFO(key);
+    CHECK_THAT(RefusalOf(file), Catch::Contains(key) && Catch::Contains("missing"));
+  }
+  // A null where a number of the certificate stands is the NaN the writer wrote there.
+  nlohmann::json nan = written;
+  nan["solver"]["kkt"]["stationarity"] = nullptr;
+  CHECK(RefusalOf(nan).empty());
 }
 
 }  // namespace
