@@ -13,6 +13,7 @@
 #include "core/design_choices.h"
 #include "core/member_group.h"
 #include "design/limit_mode.h"
+#include "optim/kkt_certificate.h"
 
 namespace tbridge {
 
@@ -273,14 +274,8 @@ struct Resizing {
   std::vector<std::string> comfort_rows;
   // The certificate of local optimality of the program whose solution is the design
   // (optim/kkt_certificate.h), in its scaled variables, every row of the whole program counted.
-  struct Kkt {
-    bool computed = false;  // false where nothing was sized
-    double stationarity = 0, feasibility = 0, complementarity = 0;
-    bool second_order = false, proved_local_optimum = false;
-    std::string second_order_by;  // "vertex" | "reduced Hessian" | ""
-    std::string failed;           // what failed; "" when proved
-    int active_rows = 0, active_bounds = 0, free_variables = 0, null_space_dimension = 0;
-  } kkt;
+  // None where nothing was sized.
+  std::optional<KktCertificate> kkt;
   // Wall time by part over every design of the loop (the first design, each sizing, the
   // second start) [s]: what a run's time goes to (`tbridge design --progress` prints it). Not a
   // result, and not in the design's JSON: it varies from run to run.

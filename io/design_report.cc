@@ -16,6 +16,7 @@
 #include "design/abutments.h"
 #include "io/comfort_report.h"
 #include "io/design_loads.h"
+#include "optim/kkt_json.h"
 
 namespace tbridge {
 
@@ -711,23 +712,11 @@ json MassJson(const Design& d) {
 
 // The solver section, with its optimality certificate when one was computed.
 json SolverJson(const Design& d) {
-  const Resizing::Kkt& kkt = d.resizing.kkt;
   return {{"name", NameOf(d.solver.solver)},
           {"status", d.solver.status},
           {"iterations", d.solver.iterations},
           {"problem", d.solver_form},
-          {"kkt", !kkt.computed ? json(nullptr)
-                                : json{{"stationarity", kkt.stationarity},
-                                       {"feasibility", kkt.feasibility},
-                                       {"complementarity", kkt.complementarity},
-                                       {"second_order", kkt.second_order},
-                                       {"second_order_by", kkt.second_order_by},
-                                       {"proved_local_optimum", kkt.proved_local_optimum},
-                                       {"failed", kkt.failed},
-                                       {"active_rows", kkt.active_rows},
-                                       {"active_bounds", kkt.active_bounds},
-                                       {"free_variables", kkt.free_variables},
-                                       {"null_space_dimension", kkt.null_space_dimension}}}};
+          {"kkt", d.resizing.kkt ? KktJson(*d.resizing.kkt) : json(nullptr)}};
 }
 
 // A design read from its file (tbridge check) was not sized here: no record, rather than
@@ -952,8 +941,8 @@ void AppendSummaryResizing(std::string& out, const Design& d, const Verdict& ver
     }
     if (!r.optima.empty()) line("  " + r.optima);
   }
-  if (d.resizing.kkt.computed) {
-    const Resizing::Kkt& k = d.resizing.kkt;
+  if (d.resizing.kkt) {
+    const KktCertificate& k = *d.resizing.kkt;
     line(k.proved_local_optimum
              ? Format("optimality: first- and second-order conditions hold (stationarity %.1e, "
                       "feasibility %.1e, "

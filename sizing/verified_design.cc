@@ -740,11 +740,9 @@ constexpr int kSecondOrderMaxFree = 64;
 // solved about `current`: every row of the whole program, each orbit's rows under the mirror
 // symmetries alike (ImageCorrections), as the sizing poses them; every row counts in the
 // feasibility.
-Resizing::Kkt Certify(const Design& current, const SizingCorrections& corrections,
-                      const SizingProblem& full, const Eigen::VectorXd& x,
-                      const std::string& why_not) {
-  Resizing::Kkt out;
-  out.computed = true;
+KktCertificate Certify(const Design& current, const SizingCorrections& corrections,
+                       const SizingProblem& full, const Eigen::VectorXd& x,
+                       const std::string& why_not) {
   const SizingCorrections alike = full.ImageCorrections(corrections);
   const SizingProblem whole(current, alike);
   const int rows = whole.num_constraints(), nv = whole.num_variables();
@@ -786,19 +784,9 @@ Resizing::Kkt Certify(const Design& current, const SizingCorrections& correction
       posed.DenseJacobian(y, jac);
     };
   }
-  const KktCertificate c = CertifyLocalOptimum(in, kSizingTolerance);
-  out.stationarity = c.stationarity;
-  out.feasibility = c.feasibility;
-  out.complementarity = c.complementarity;
-  out.second_order = c.second_order;
-  out.second_order_by = c.second_order_by;
-  out.active_rows = c.active_rows;
-  out.active_bounds = c.active_bounds;
-  out.free_variables = c.free_variables;
-  out.null_space_dimension = c.null_space_dimension;
-  out.proved_local_optimum = c.proved_local_optimum && why_not.empty();
-  out.failed = c.failed;
-  if (!in.at && !c.second_order) {
+  KktCertificate out = CertifyLocalOptimum(in, kSizingTolerance);
+  out.proved_local_optimum = out.proved_local_optimum && why_not.empty();
+  if (!in.at && !out.second_order) {
     out.failed += " (the second-order test was not run: more than " +
                   std::to_string(kSecondOrderMaxFree) + " free directions)";
   }

@@ -301,7 +301,8 @@ TEST_CASE("a binding comfort row's piece below is tried, and the lighter passing
         std::string::npos;
   CHECK(tried);
   CHECK(d.resizing.converged);
-  CHECK(d.resizing.kkt.proved_local_optimum);
+  REQUIRE(d.resizing.kkt.has_value());
+  CHECK(d.resizing.kkt->proved_local_optimum);
 }
 
 }  // namespace tbridge

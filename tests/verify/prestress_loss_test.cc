@@ -110,7 +110,8 @@ TEST_CASE("a verified design passes with and without its prestress loss, and boo
   REQUIRE(std::string(kConstraintKinds[kRobustnessKind]) == "robustness");
   CHECK(d.attribution.mass_by_kind_kg[kRobustnessKind] > 0.0);
   CHECK(none.attribution.mass_by_kind_kg[kRobustnessKind] == 0.0);
-  CHECK(d.resizing.kkt.proved_local_optimum);
+  REQUIRE(d.resizing.kkt.has_value());
+  CHECK(d.resizing.kkt->proved_local_optimum);
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ TEST_CASE("a cable bridge is sized to its strings' serviceability stress", "[ver
   CHECK(f.utilisation >= 0.99);
   REQUIRE(std::string(kConstraintKinds[kServiceStressKind]) == "serviceability_stress");
   CHECK(d.attribution.mass_by_kind_kg[kServiceStressKind] > 0.0);
-  CHECK(d.resizing.kkt.proved_local_optimum);
+  REQUIRE(d.resizing.kkt.has_value());
+  CHECK(d.resizing.kkt->proved_local_optimum);
   // Without the limit (f_const at f_uk, above the design stress) the same bridge is lighter: the
   // limit is what the share above pays for.
   Config loose = config;

@@ -97,7 +97,8 @@ TEST_CASE("a verified design holds its abutments within their capacity and books
   CHECK(held.attribution.premium_by_kind_kg[kSupportsKind] > 0.0);
   CHECK(free.attribution.mass_by_kind_kg[kSupportsKind] == 0.0);
   CHECK(free.attribution.premium_by_kind_kg[kSupportsKind] == 0.0);
-  CHECK(held.resizing.kkt.proved_local_optimum);
+  REQUIRE(held.resizing.kkt.has_value());
+  CHECK(held.resizing.kkt->proved_local_optimum);
 }
 
 }  // namespace
