@@ -36,7 +36,8 @@ void WeighMembers(Design& d, std::vector<double>& masses) {
 
 }  // namespace
 
-void SolveAsBuilt(Design& d, std::vector<std::string> edited, const Eigen::Matrix3Xd& drawn,
+// `drawn` by value: the callers pass the design's own nodes, which the solve moves.
+void SolveAsBuilt(Design& d, std::vector<std::string> edited, Eigen::Matrix3Xd drawn,
                   double bar_scale) {
   Structure& s = d.topology.structure;
   const int nb = s.num_bars(), ns = s.num_strings();

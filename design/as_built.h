@@ -23,7 +23,7 @@ namespace tbridge {
 // this state's alone: `edited`, and the largest move of a node from `drawn` and change of a
 // member's force. Throws ConfigError naming the edited members when the structure as built does
 // not stand.
-void SolveAsBuilt(Design& d, std::vector<std::string> edited, const Eigen::Matrix3Xd& drawn,
+void SolveAsBuilt(Design& d, std::vector<std::string> edited, Eigen::Matrix3Xd drawn,
                   double bar_scale = 1.0);
 
 // `design` with its strings' rest lengths shortened by `shortenings` [m] (one per string, in the

@@ -69,6 +69,9 @@ TEST_CASE(
   const double scale = 1 + alpha * delta_k;
   const Design warm = WithTemperature(d, delta_k);
   REQUIRE(warm.as_built.re_derived);
+  // The warmed bridge's nodes moved from those drawn (its deck by about L alpha dT / 4 and more):
+  // measured against a copy of the drawn geometry, not the nodes the solve moved.
+  CHECK(warm.as_built.node_move_m > 1e-6);
 
   const Structure& s = d.topology.structure;
   const int nb = s.num_bars();
