@@ -5,7 +5,7 @@
 // can be read against it.
 //
 //   build/bench/bench_moving_load [n_min=3] [n_max=6] [config=configs/default.json] [stabilised=1]
-//   [reference]
+//   [all|modal|reference] [cutoffs_hz=25,50,100,200,400]
 //
 // `config` may instead be a pattern of design files with %d for n (e.g. out/default_n%d.json,
 // written by `tbridge design`): the runs are then of those designs (the verified ones).
@@ -22,7 +22,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "bridge/design_model.h"
 #include "checks/load_scenarios.h"
@@ -83,7 +85,17 @@ int main(int argc, char** argv) {
   const std::string path =
       argc > 3 ? argv[3] : std::string(TBRIDGE_SOURCE_DIR) + "/configs/default.json";
   const bool stabilised = argc > 4 ? std::atoi(argv[4]) != 0 : true;
-  const bool reference_only = argc > 5 && std::string(argv[5]) == "reference";
+  // "reference": RK4 alone; "modal": RK4 and the modal runs; "all" (or none): SDIRK3 as well.
+  const std::string methods = argc > 5 ? argv[5] : "all";
+  const bool reference_only = methods == "reference";
+  const bool no_sdirk = reference_only || methods == "modal";
+  // The modal run's cutoffs [Hz]: argv[6] as a comma-separated list, or five from 25 to 400 Hz.
+  std::vector<double> cutoffs = {25.0, 50.0, 100.0, 200.0, 400.0};
+  if (argc > 6) {
+    cutoffs.clear();
+    std::stringstream list(argv[6]);
+    for (std::string item; std::getline(list, item, ',');) cutoffs.push_back(std::stod(item));
+  }
   std::printf(
       "n,method,dt_s,steps,seconds,force_error_of_resistance,deck_peak_error,deck_peak_m\n");
   for (int n = n_min; n <= n_max; ++n) {
@@ -105,7 +117,7 @@ int main(int argc, char** argv) {
     const DynamicModel model = BuildDynamicModel(d, options);
     const LoadsConfig& l = config.loads;
     DynamicsConfig scene =
-        MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s);
+        MovingLoadScenario(d, l.travelling_load_n, TravellingCrossing(d), l.dynamic_dt_s);
     // Stabilised bar lengths: over a crossing of 8 s or more, RK4's drift of the bar lengths
     // passes the guard's 1e-3 from n = 6.
     scene.stabilisation.enabled = stabilised;
@@ -128,11 +140,11 @@ int main(int argc, char** argv) {
     StaticState standing;
     bool converged = false;
     const auto stations_start = Clock::now();
-    const StationResponses stations = MovingLoadStations(d, model, statics, l.travelling_load_n,
-                                                         scene.duration, standing, converged);
+    const StationResponses stations = MovingLoadStations(
+        d, model, statics, l.travelling_load_n, TravellingCrossing(d), standing, converged);
     const double stations_s = std::chrono::duration<double>(Clock::now() - stations_start).count();
     std::printf("%d,station_solves,,%zu,%.4g,,,\n", n, stations.forces.size(), stations_s);
-    for (const double cutoff : {25.0, 50.0, 100.0, 200.0, 400.0}) {
+    for (const double cutoff : cutoffs) {
       if (reference_only) break;
       const auto start = Clock::now();
       ModalRunOptions modal = ModalRunOptionsOf(d);
@@ -157,7 +169,7 @@ int main(int argc, char** argv) {
       line(name, sc, r);
     }
     for (const double dt : {4e-3, 2e-3, 1e-3, 5e-4}) {
-      if (reference_only) break;
+      if (no_sdirk) break;
       DynamicsConfig sc = scene;
       sc.dt = dt;
       sc.integrator = IntegratorKind::kSdirk3;

@@ -28,6 +28,7 @@ struct LoadRun {
   double station_force = 0;
   double gamma = 1.0;
   bool walking = false;  // the walking load: the one a modal run may take
+  Crossing crossing;     // a travelling load's timing: when it stands at each station
 };
 
 LoadRun MakeRun(const char* name, std::string load, DynamicsConfig scenario, double station_force,
@@ -68,15 +69,19 @@ std::vector<LoadRun> LoadRuns(const Design& d, bool paper) {
                 PaperTravellingScenario(d, paper_duration, l.dynamic_dt_s, IntegratorKind::kRk4,
                                         d.deck.station_load),
                 d.deck.station_load, gamma_g_q));
+    const double span = d.config.bridge.span;
+    runs.back().crossing = {span, span / paper_duration, 0.0};
   }
   if (l.Asks(LoadFamily::kTravelling) && l.travelling_load_n > 0) {
-    runs.push_back(
-        MakeRun("moving_load",
-                Describe("Q_t = ", l.travelling_load_n, " N") +
-                    Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
-                MovingLoadScenario(d, l.travelling_load_n, l.travelling_speed_m_s, l.dynamic_dt_s),
-                l.travelling_load_n, gamma_g_q));
+    const Crossing crossing = TravellingCrossing(d);
+    runs.push_back(MakeRun("moving_load",
+                           Describe("Q_t = ", l.travelling_load_n, " N") +
+                               Describe(" on ", l.travelling_contact_length_m, " m") +
+                               Describe(" crossing at ", l.travelling_speed_m_s, " m/s"),
+                           MovingLoadScenario(d, l.travelling_load_n, crossing, l.dynamic_dt_s),
+                           l.travelling_load_n, gamma_g_q));
     runs.back().walking = true;
+    runs.back().crossing = crossing;
   }
   if (l.Asks(LoadFamily::kWind) && d.topology.planes == 2 && l.wind_n_per_m > 0) {
     runs.push_back(MakeRun("wind_gust",
@@ -354,8 +359,8 @@ DynamicCheck CheckDynamics(const Design& d, std::optional<double> max_steps,
     bool converged = false;
     const auto solve_stations = [&]() {
       if (stations || run.station_force == 0) return;
-      stations = MovingLoadStations(d, model, statics, run.station_force, run.scenario.duration,
-                                    standing, converged);
+      stations = MovingLoadStations(d, model, statics, run.station_force, run.crossing, standing,
+                                    converged);
     };
     bool done = false;
     const bool modal = Modal(run, l);

@@ -44,25 +44,32 @@ DynamicsConfig PaperTravellingScenario(const Design& design, double duration_s, 
   return run;
 }
 
-DynamicsConfig MovingLoadScenario(const Design& design, double force_n, double speed_m_s,
+Crossing TravellingCrossing(const Design& design) {
+  const LoadsConfig& l = design.config.loads;
+  return {design.config.bridge.span, l.travelling_speed_m_s, l.travelling_contact_length_m};
+}
+
+DynamicsConfig MovingLoadScenario(const Design& design, double force_n, const Crossing& crossing,
                                   double dt_s) {
   RequireStations(design, "moving load");
   const Actions& a = design.actions;
-  const double span = design.config.bridge.span;
-  DynamicsConfig run = PeaksOnly(span / speed_m_s, dt_s, IntegratorKind::kRk4);
+  const double span = crossing.span_m;
+  DynamicsConfig run = PeaksOnly(crossing.DurationS(), dt_s, IntegratorKind::kRk4);
   const int count = static_cast<int>(a.station_nodes.size());
   for (int k = 0; k < count; ++k) {
     // The deck points either side: the previous station (or the support at 0), the next (or
     // the support at the span). The load reaches this station at x_k / v.
-    const double before = k == 0 ? 0.0 : a.station_x[k - 1];
-    const double after = k + 1 == count ? span : a.station_x[k + 1];
+    const double before = crossing.TimeAtS(k == 0 ? 0.0 : a.station_x[k - 1]);
+    const double at = crossing.TimeAtS(a.station_x[k]);
+    const double after = crossing.TimeAtS(k + 1 == count ? span : a.station_x[k + 1]);
     const double share = force_n / static_cast<double>(a.station_nodes[k].size());
     for (const int v : a.station_nodes[k]) {
       LoadStepConfig l;
-      l.t_start = before / speed_m_s;
-      l.t_end = after / speed_m_s;
-      l.rise_s = (a.station_x[k] - before) / speed_m_s;
-      l.fall_s = (after - a.station_x[k]) / speed_m_s;
+      l.t_start = before;
+      l.t_end = after;
+      l.rise_s = at - before;
+      l.fall_s = after - at;
+      l.spread_s = crossing.SpreadS();
       l.node = v + 1;
       l.force = {0, -share, 0};
       run.loads.push_back(l);

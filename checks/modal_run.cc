@@ -12,6 +12,7 @@
 #include "design/mirror.h"
 #include "design/static_model.h"
 #include "dynamics/modal.h"
+#include "dynamics/node_forces.h"
 
 namespace tbridge {
 
@@ -148,26 +149,142 @@ std::string FormModalBasis(const DynamicModel& model, const StationResponses& st
   return "";
 }
 
-// The march over the stations' segments, each in steps of out.sample_dt_s: the quasi-static
-// response plus the modes' excess, exact for a load linear in time on each segment. Takes the
-// peak member forces into `peak` and `low`, the largest deck displacement into `deck_peak`,
-// and the support reactions' peaks and the sample count into `out`.
+// The modal force's corners: F is linear in t between knots (the load's centre at the first
+// support, at each station, at the second support), and at knot j its slope changes by
+// `slope_change[j]` (per mode). A spread load turns each corner over `spread_s` about it.
+struct ModalCorners {
+  std::vector<double> time;                  // per knot [s]
+  std::vector<Eigen::ArrayXd> slope_change;  // per knot, per mode [N/s per unit coordinate]
+};
+
+ModalCorners CornersOf(const StationResponses& stations, const ModalBasis& basis) {
+  const int count = static_cast<int>(stations.time_s.size());
+  const int m = static_cast<int>(basis.omega.size());
+  ModalCorners c;
+  std::vector<Eigen::ArrayXd> value;  // F at each knot, per mode
+  const auto add_knot = [&](double t, const Eigen::ArrayXd& f) {
+    // Knots at one time (a station at a support) keep the later value: F steps there, which
+    // the march does not see (as a load's sudden arrival it is the quasi-static part's).
+    if (!c.time.empty() && t <= c.time.back()) {
+      value.back() = f;
+      return;
+    }
+    c.time.push_back(t);
+    value.push_back(f);
+  };
+  add_knot(stations.start_s, Eigen::ArrayXd::Zero(m));
+  for (int k = 0; k < count; ++k) add_knot(stations.time_s[k], basis.station.col(k).array());
+  add_knot(stations.end_s, Eigen::ArrayXd::Zero(m));
+  Eigen::ArrayXd slope = Eigen::ArrayXd::Zero(m), next(m);
+  for (size_t j = 0; j < c.time.size(); ++j) {
+    if (j + 1 < c.time.size()) {
+      next = (value[j + 1] - value[j]) / (c.time[j + 1] - c.time[j]);
+    } else {
+      next.setZero();
+    }
+    c.slope_change.push_back(next - slope);
+    slope = next;
+  }
+  return c;
+}
+
+// The times the march stops at, in order, and what happens there: a knot's corner (all at once
+// with no spread: de/dt jumps by -dS / omega^2), a spread corner starting (d2F/dt2 rises by
+// dS / spread) or ending (falls by it), or a station time, where the quasi-static response
+// peaks (sampled, nothing changes).
+struct MarchMark {
+  double t;
+  int knot;  // the corner's knot (ModalCorners), or -1: a station time
+  enum class Kind { kCorner, kSpreadStart, kSpreadEnd, kStation } kind;
+};
+
+std::vector<MarchMark> MarksOf(const StationResponses& stations, const ModalCorners& corners) {
+  std::vector<MarchMark> marks;
+  const double spread = stations.spread_s;
+  for (size_t j = 0; j < corners.time.size(); ++j) {
+    const int knot = static_cast<int>(j);
+    const double t = corners.time[j];
+    if (spread > 0) {
+      marks.push_back({t - 0.5 * spread, knot, MarchMark::Kind::kSpreadStart});
+      marks.push_back({t + 0.5 * spread, knot, MarchMark::Kind::kSpreadEnd});
+    } else {
+      marks.push_back({t, knot, MarchMark::Kind::kCorner});
+    }
+  }
+  for (const double t : stations.time_s) marks.push_back({t, -1, MarchMark::Kind::kStation});
+  std::stable_sort(marks.begin(), marks.end(),
+                   [](const MarchMark& a, const MarchMark& b) { return a.t < b.t; });
+  return marks;
+}
+
+// The quasi-static response at time t: the standing response plus each station's change by
+// its share of the load then (LoadShape of its lever-rule ramps, spread as the load is), the
+// same share the nonlinear run's loads take (checks/load_scenarios.h). Asked at times in
+// order: it keeps the first station whose share is not over.
+class QuasiStatic {
+ public:
+  QuasiStatic(const StationResponses& stations, const std::vector<Eigen::VectorXd>& force_change_at,
+              const std::vector<Eigen::VectorXd>& deck_change_at, size_t groups)
+      : s_(stations),
+        force_change_(force_change_at),
+        deck_change_(deck_change_at),
+        groups_(groups) {}
+
+  void At(double t, Eigen::VectorXd& force, Eigen::VectorXd& deck,
+          std::vector<Eigen::Vector3d>& reaction) {
+    const int count = static_cast<int>(s_.time_s.size());
+    const double half = 0.5 * s_.spread_s;
+    force = s_.standing_forces;
+    deck = s_.standing_deck_y;
+    reaction.assign(s_.standing_reactions.begin(),
+                    s_.standing_reactions.begin() + static_cast<std::ptrdiff_t>(groups_));
+    while (first_ < count && t >= Knot(first_ + 1) + half) ++first_;
+    for (int k = first_; k < count && Knot(k - 1) - half < t; ++k) {
+      const double before = Knot(k - 1), at = Knot(k), after = Knot(k + 1);
+      const double w = LoadShape(t, before, after, at - before, after - at, s_.spread_s);
+      if (w == 0) continue;
+      force += w * force_change_[k];
+      deck += w * deck_change_[k];
+      for (size_t g = 0; g < groups_; ++g)
+        reaction[g] += w * (s_.reactions[k][g] - s_.standing_reactions[g]);
+    }
+  }
+
+ private:
+  // Station k's time; k = -1 and k = count: the supports'.
+  double Knot(int k) const {
+    const int count = static_cast<int>(s_.time_s.size());
+    return k < 0 ? s_.start_s : k >= count ? s_.end_s : s_.time_s[k];
+  }
+  const StationResponses& s_;
+  const std::vector<Eigen::VectorXd>& force_change_;
+  const std::vector<Eigen::VectorXd>& deck_change_;
+  size_t groups_;
+  int first_ = 0;
+};
+
+// The march in steps of at most out.sample_dt_s between the marks (MarksOf): the quasi-static
+// response plus the modes' excess e, exact for the modal force F piecewise quadratic in t. With
+// F'' = g constant between two marks, e'' + omega^2 e = -g / omega^2: e turns about
+// -g / omega^4 as a free undamped oscillator. Takes the peak member forces into `peak` and
+// `low`, the largest deck displacement into `deck_peak`, and the support reactions' peaks and
+// the sample count into `out`.
 void MarchModes(const DynamicModel& model, const StationResponses& stations,
                 const ModalBasis& basis, const std::vector<Eigen::VectorXd>& force_change_at,
                 const std::vector<Eigen::VectorXd>& deck_change_at, ModalRunResult& out,
                 Eigen::VectorXd& peak, Eigen::VectorXd& low, double& deck_peak) {
-  const int nb = static_cast<int>(model.bars.size()), ns = static_cast<int>(model.strings.size()),
-            nm = nb + ns;
+  const int nm = static_cast<int>(model.bars.size() + model.strings.size());
   const int count = static_cast<int>(stations.forces.size());
   const int n_deck = static_cast<int>(model.deck_nodes.size());
   const int m = static_cast<int>(basis.omega.size());
-  // The march. Segment s runs from station s - 1 to station s (station -1: the start at the
-  // first support; station `count`: the end at the second), the load shared between the two.
-  const Eigen::ArrayXd omega = basis.omega.array(), omega_sq = omega.square();
+  const ModalCorners corners = CornersOf(stations, basis);
+  const std::vector<MarchMark> marks = MarksOf(stations, corners);
+  const Eigen::ArrayXd omega = basis.omega.array(), omega_sq = omega.square(),
+                       omega_4 = omega_sq.square();
+  // The march's state and workspace: it allocates nothing as it goes.
   Eigen::ArrayXd e = Eigen::ArrayXd::Zero(m), v = Eigen::ArrayXd::Zero(m),
-                 slope = Eigen::ArrayXd::Zero(m);
-  Eigen::ArrayXd c(m), s(m), e_next(m),
-      next_slope(m);  // the march's workspace: it allocates nothing
+                 g = Eigen::ArrayXd::Zero(m), centre = Eigen::ArrayXd::Zero(m);
+  Eigen::ArrayXd c(m), s(m), e_next(m), y(m);
   Eigen::VectorXd force(nm), deck(n_deck), excess_force(nm), excess_deck(n_deck);
   // The support reactions: the stations' own (nonlinear, at their geometry: the deck chain's
   // turn at the support carries a share of the load) by the load's share, as the forces, plus
@@ -178,66 +295,58 @@ void MarchModes(const DynamicModel& model, const StationResponses& stations,
                             ? std::min(reaction_ends.size(), stations.standing_reactions.size())
                             : 0;
   out.peak_reactions.assign(groups, ReactionPeak{});
+  std::vector<Eigen::Vector3d> reaction;
   const auto at_rest = [&model](int node) { return Eigen::Vector3d(model.positions.col(node)); };
   const auto excess_of = [&excess_force](int member) { return excess_force[member]; };
   const Eigen::Vector3d no_load = Eigen::Vector3d::Zero();
   Eigen::VectorXd start_y(n_deck);
   for (int n = 0; n < n_deck; ++n) start_y[n] = model.positions(1, model.deck_nodes[n]);
-  const auto time_of = [&](int k) {
-    return k < 0 ? 0.0 : k >= count ? stations.duration_s : stations.time_s[k];
-  };
-  const auto evaluate = [&](int before, double share_after) {
-    // QS: the standing response plus each station's change, by its share.
-    force = stations.standing_forces;
-    deck = stations.standing_deck_y;
-    if (before >= 0) {
-      force += (1 - share_after) * force_change_at[before];
-      deck += (1 - share_after) * deck_change_at[before];
-    }
-    if (before + 1 < count) {
-      force += share_after * force_change_at[before + 1];
-      deck += share_after * deck_change_at[before + 1];
-    }
+  QuasiStatic quasi_static(stations, force_change_at, deck_change_at, groups);
+  const auto evaluate = [&](double t) {
+    quasi_static.At(t, force, deck, reaction);
     excess_force.noalias() = basis.member.transpose() * e.matrix();
     excess_deck.noalias() = basis.deck.transpose() * e.matrix();
     force += excess_force;
     deck += excess_deck;
     peak = peak.cwiseMax(force);
     low = low.cwiseMin(force);
-    for (size_t g = 0; g < groups; ++g) {
-      Eigen::Vector3d r = stations.standing_reactions[g];
-      if (before >= 0)
-        r += (1 - share_after) * (stations.reactions[before][g] - stations.standing_reactions[g]);
-      if (before + 1 < count)
-        r += share_after * (stations.reactions[before + 1][g] - stations.standing_reactions[g]);
-      out.peak_reactions[g].Take(
-          r + GroupReaction(model, reaction_ends[g], no_load, at_rest, excess_of));
-    }
+    for (size_t k = 0; k < groups; ++k)
+      out.peak_reactions[k].Take(
+          reaction[k] + GroupReaction(model, reaction_ends[k], no_load, at_rest, excess_of));
     deck_peak = std::max(deck_peak, (deck - start_y).cwiseAbs().maxCoeff());
     ++out.samples;
   };
-  evaluate(-1, 0.0);
-  for (int seg = 0; seg <= count; ++seg) {
-    const double t0 = time_of(seg - 1), t1 = time_of(seg), length = t1 - t0;
-    if (length <= 0) continue;
-    // The modal force's slope on this segment and the jump of de/dt it makes at t0.
-    next_slope.setZero();
-    if (seg < count) next_slope += basis.station.col(seg).array();
-    if (seg > 0) next_slope -= basis.station.col(seg - 1).array();
-    next_slope /= length;
-    v -= (next_slope - slope) / omega_sq;
-    slope = next_slope;
+  const auto march_to = [&](double t0, double t1) {
+    const double length = t1 - t0;
+    if (length <= 0) return;
     const int steps = std::max(1, static_cast<int>(std::ceil(length / out.sample_dt_s - 1e-9)));
     const double h = length / steps;
     c = (omega * h).cos();
     s = (omega * h).sin();
     for (int step = 1; step <= steps; ++step) {
-      e_next = e * c + v / omega * s;
-      v = v * c - e * omega * s;
+      y = e - centre;
+      e_next = centre + y * c + v / omega * s;
+      v = v * c - y * omega * s;
       e = e_next;
-      evaluate(seg - 1, static_cast<double>(step) / steps);
+      evaluate(step == steps ? t1 : t0 + step * h);
+    }
+  };
+  evaluate(0.0);
+  double t = 0;
+  for (const MarchMark& mark : marks) {
+    const double at = std::min(mark.t, stations.duration_s);
+    march_to(t, at);
+    t = std::max(t, at);
+    if (mark.knot < 0) continue;
+    const Eigen::ArrayXd& change = corners.slope_change[static_cast<size_t>(mark.knot)];
+    if (mark.kind == MarchMark::Kind::kCorner) {
+      v -= change / omega_sq;
+    } else {
+      g += (mark.kind == MarchMark::Kind::kSpreadStart ? 1.0 : -1.0) / stations.spread_s * change;
+      centre = -g / omega_4;
     }
   }
+  march_to(t, stations.duration_s);
 }
 
 }  // namespace
@@ -252,8 +361,9 @@ ModalRunOptions ModalRunOptionsOf(const Design& d) {
 }
 
 StationResponses MovingLoadStations(const Design& d, const DynamicModel& model,
-                                    const StaticModel& statics, double force_n, double duration_s,
-                                    StaticState& standing, bool& converged) {
+                                    const StaticModel& statics, double force_n,
+                                    const Crossing& crossing, StaticState& standing,
+                                    bool& converged) {
   const StaticState start = ReferenceState(statics, d);
   StationResponses out;
   const int n_deck = static_cast<int>(model.deck_nodes.size());
@@ -321,8 +431,10 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model,
   out.standing_forces = forces(standing);
   out.standing_deck_y = deck_y(standing);
   out.standing_reactions = reactions(standing);
-  out.duration_s = duration_s;
-  const double span = d.config.bridge.span;
+  out.duration_s = crossing.DurationS();
+  out.start_s = crossing.TimeAtS(0.0);
+  out.end_s = crossing.TimeAtS(crossing.span_m);
+  out.spread_s = crossing.SpreadS();
   Eigen::Matrix3Xd loads = model.loads;
   for (int k = 0; k < stations; ++k) {
     const std::vector<int>& nodes = d.actions.station_nodes[k];
@@ -339,7 +451,7 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model,
     out.reactions.push_back(r.converged ? reactions(r.state) : out.standing_reactions);
     out.load_nodes.push_back(nodes);
     out.load_forces.push_back(std::move(alone));
-    out.time_s.push_back(d.actions.station_x[k] / span * duration_s);
+    out.time_s.push_back(crossing.TimeAtS(d.actions.station_x[k]));
   }
   return out;
 }

@@ -93,12 +93,13 @@ struct LoadsConfig {
   bool Asks(LoadFamily family) const {
     return std::find(cases.begin(), cases.end(), family) != cases.end();
   }
-  double superimposed_dead_n_per_m = 0.0;  // surfacing, railings [N/m], on the deck
-  double travelling_load_n = 10000.0;      // Q_t [N]: EN 1991-2 5.3.2.2 Q_fwk for footbridges
-  double travelling_speed_m_s = 1.5;       // v [m/s]: walking pace
-  double wind_n_per_m = 1200.0;            // transverse line load on the deck [N/m] (3D)
-  double wind_rise_s = 1.0;                // the dynamic check's gust rises over this [s]
-  double dynamic_dt_s = 1e-4;              // the step the dynamic check's runs ask for [s]
+  double superimposed_dead_n_per_m = 0.0;    // surfacing, railings [N/m], on the deck
+  double travelling_load_n = 10000.0;        // Q_t [N]: EN 1991-2 5.3.2.2 Q_fwk for footbridges
+  double travelling_speed_m_s = 1.5;         // v [m/s]: walking pace
+  double travelling_contact_length_m = 0.1;  // c [m]: Q_fwk's square (EN 1991-2 5.3.2.2)
+  double wind_n_per_m = 1200.0;              // transverse line load on the deck [N/m] (3D)
+  double wind_rise_s = 1.0;                  // the dynamic check's gust rises over this [s]
+  double dynamic_dt_s = 1e-4;                // the step the dynamic check's runs ask for [s]
   // A run of more member-steps (steps x members) is not done: the dynamic check is then not
   // run, and the design INCOMPLETE.
   double dynamic_max_member_steps = 2e9;
@@ -108,7 +109,7 @@ struct LoadsConfig {
   double dynamic_modal_cutoff_hz = 100.0;  // [Hz]
   // The modal run is done where the bridge's linear deck response to a station's load is within
   // this fraction of its nonlinear one; beyond it the nonlinear run.
-  double dynamic_modal_max_nonlinearity = 0.015;
+  double dynamic_modal_max_nonlinearity = 0.03;
   double gamma_g_sup = 1.35;  // unfavourable permanent
   double gamma_g_inf = 1.0;   // favourable permanent
   double gamma_q = 1.5;       // payload and travelling load

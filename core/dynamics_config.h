@@ -54,6 +54,7 @@ struct LoadStepConfig {
   double rise_s = 0;                     // [s], >= 0; rise_s + fall_s <= t_end - t_start
   double fall_s = 0;                     // [s], >= 0
   double frequency_hz = 0;  // [Hz], >= 0; > 0: the force times sin(2 pi frequency_hz t)
+  double spread_s = 0;      // [s], >= 0; > 0: the shape's mean over spread_s about each time
 };
 
 struct RecordConfig {

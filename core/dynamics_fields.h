@@ -84,6 +84,12 @@ void DescribeFields(L& l, V& v) requires std::is_same_v<std::remove_const_t<L>, 
           "0: the force as given; f > 0: the force times sin(2·pi·f·t), a harmonic load such as a "
           "pedestrian crowd's (the comfort check's load, `comfort`)"},
       l.frequency_hz, Range::Closed(0.0, 1e6));
+  v.Number(KeyInfo{"spread_s", "s",
+                   "0: the shape as given; s > 0: at each time the mean of that shape over the "
+                   "s about it, so that each corner of the ramps turns over s and the force acts "
+                   "from t_start - s/2 to t_end + s/2. A load spread over a length c moving at v "
+                   "is, on each deck node, its point load's ramps spread over s = c/v"},
+           l.spread_s, Range::Closed(0.0, 1e6));
 }
 
 template <class R, class V>

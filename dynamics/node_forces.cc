@@ -28,6 +28,7 @@ NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& ti
                       l.rise_s,
                       l.fall_s,
                       l.omega_rad_s,
+                      l.spread_s,
                       l.node * dim_,
                       {l.force.x(), l.force.y(), l.force.z()}});
   }
@@ -36,7 +37,7 @@ NodeLoads::NodeLoads(const DynamicModel& model, const std::vector<TimedLoad>& ti
 void NodeLoads::At(double t, double* force) const {
   std::memcpy(force, constant_.data(), sizeof(double) * static_cast<size_t>(constant_.size()));
   for (const PackedLoad& l : timed_) {
-    double shape = LoadShape(t, l.t_start, l.t_end, l.rise_s, l.fall_s);
+    double shape = LoadShape(t, l.t_start, l.t_end, l.rise_s, l.fall_s, l.spread_s);
     if (l.omega != 0.0) shape *= std::sin(l.omega * t);
     if (shape != 0.0) {
       for (int d = 0; d < dim_; ++d) force[l.o + d] += shape * l.f[d];

@@ -13,19 +13,47 @@
 namespace tbridge {
 
 // A force on one node (0-based) for t_start <= t < t_end [s], added to the constant loads,
-// ramped up over rise_s and down over fall_s (LoadStepConfig); with omega_rad_s > 0 it is
-// harmonic, force sin(omega_rad_s t) (a pedestrian crowd's load, checks/comfort_check.h).
+// ramped up over rise_s and down over fall_s and spread over spread_s (LoadStepConfig); with
+// omega_rad_s > 0 it is harmonic, force sin(omega_rad_s t) (a pedestrian crowd's load,
+// checks/comfort_check.h).
 struct TimedLoad {
   double t_start = 0, t_end = 0;
   int node = 0;
   Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]; z ignored when dim = 2
   double rise_s = 0, fall_s = 0;
   double omega_rad_s = 0;  // [rad/s]; 0: the force as given
+  double spread_s = 0;     // [s]; 0: the shape as given
 };
 
+// The integral of the unspread shape (below) from t_start to t [s]; rise_s + fall_s <= t_end -
+// t_start.
+inline double LoadShapeIntegral(double t, double t_start, double t_end, double rise_s,
+                                double fall_s) {
+  if (t <= t_start) return 0.0;
+  const double total = t_end - t_start - 0.5 * (rise_s + fall_s);
+  if (t >= t_end) return total;
+  const double left = t_end - t;
+  if (fall_s > 0 && left < fall_s) return total - 0.5 * left * left / fall_s;
+  const double u = t - t_start;
+  if (rise_s > 0 && u < rise_s) return 0.5 * u * u / rise_s;
+  return u - 0.5 * rise_s;
+}
+
 // The fraction of a timed load's force acting at t: 0 outside [t_start, t_end), linear over
-// the rise and the fall, 1 between.
-inline double LoadShape(double t, double t_start, double t_end, double rise_s, double fall_s) {
+// the rise and the fall, 1 between; with spread_s > 0, that shape's mean over
+// [t - spread_s / 2, t + spread_s / 2]: a load spread over a length c moving at v is, on each
+// node it passes, its point load's shape spread over c / v. The spread rounds each corner of
+// the shape into a parabola (the force's slope changes over spread_s, not at once), so that
+// an undamped model does not ring at its highest modes at each corner (checks/modal_run.h).
+inline double LoadShape(double t, double t_start, double t_end, double rise_s, double fall_s,
+                        double spread_s = 0) {
+  if (spread_s > 0) {
+    const double half = 0.5 * spread_s;
+    if (t <= t_start - half || t >= t_end + half) return 0.0;
+    return (LoadShapeIntegral(t + half, t_start, t_end, rise_s, fall_s) -
+            LoadShapeIntegral(t - half, t_start, t_end, rise_s, fall_s)) /
+           spread_s;
+  }
   if (t < t_start || t >= t_end) return 0.0;
   double f = 1.0;
   if (rise_s > 0 && t < t_start + rise_s) f = (t - t_start) / rise_s;
@@ -65,7 +93,7 @@ class NodeLoads {
 
  private:
   struct PackedLoad {
-    double t_start, t_end, rise_s, fall_s, omega;
+    double t_start, t_end, rise_s, fall_s, omega, spread_s;
     int o;
     double f[3];
   };

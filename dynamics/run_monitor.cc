@@ -53,8 +53,8 @@ RunMonitor::RunMonitor(const DynamicModel& model, const EngineFrame& engine,
   loads_dot_x0_ = loads_.dot(x0_);
   has_loads_ = loads_.cwiseAbs().maxCoeff() > 0;
   for (const LoadStepConfig& l : config.loads) {
-    TimedLoadState s{(l.node - 1) * dim_, l.t_start, l.t_end, l.rise_s, l.fall_s,
-                     {0, 0, 0},           {0, 0, 0}};
+    TimedLoadState s{(l.node - 1) * dim_, l.t_start, l.t_end,  l.rise_s, l.fall_s,
+                     l.spread_s,          {0, 0, 0}, {0, 0, 0}};
     for (int d = 0; d < dim_; ++d) {
       s.force[d] = l.force[d];
       s.last[d] = x0_(s.o + d);
@@ -119,10 +119,12 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   // the middle of that part).
   const double work = load_dot_x - loads_dot_x0_;
   for (TimedLoadState& l : timed_) {
-    const double overlap = std::min(t, l.t_end) - std::max(t_old, l.t_start);
+    // A spread load acts from half its spread before t_start to half after t_end.
+    const double first = l.t_start - 0.5 * l.spread_s, last = l.t_end + 0.5 * l.spread_s;
+    const double overlap = std::min(t, last) - std::max(t_old, first);
     if (overlap > 0) {
-      const double mid = std::max(t_old, l.t_start) + 0.5 * overlap;
-      const double shape = LoadShape(mid, l.t_start, l.t_end, l.rise_s, l.fall_s);
+      const double mid = std::max(t_old, first) + 0.5 * overlap;
+      const double shape = LoadShape(mid, l.t_start, l.t_end, l.rise_s, l.fall_s, l.spread_s);
       double fdx = 0;
       for (int d = 0; d < dim_; ++d) fdx += l.force[d] * (y[l.o + d] - l.last[d]);
       timed_work_ += shape * fdx * overlap / (t - t_old);

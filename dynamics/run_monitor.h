@@ -70,7 +70,7 @@ class RunMonitor {
   };
   struct TimedLoadState {
     int o;  // coordinate offset of its node
-    double t_start, t_end, rise_s, fall_s;
+    double t_start, t_end, rise_s, fall_s, spread_s;
     double force[3];  // [N]
     double last[3];   // node position at the previous accepted step [m]
   };

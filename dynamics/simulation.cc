@@ -218,7 +218,7 @@ SimulationResult Simulate(const DynamicModel& model, const DynamicsConfig& confi
     }
     timed.push_back({l.t_start, l.t_end, l.node - 1,
                      Eigen::Vector3d(l.force[0], l.force[1], l.force[2]), l.rise_s, l.fall_s,
-                     2.0 * std::numbers::pi * l.frequency_hz});
+                     2.0 * std::numbers::pi * l.frequency_hz, l.spread_s});
   }
   SimulationResult result;
   result.dim = dim;

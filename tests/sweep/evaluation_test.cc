@@ -55,6 +55,7 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why",
   // Without deck-string prestress every bar of the planar bridge is an inverted pendulum
   // (docs/topology.md); tbridge design refuses it, and so does the sweep.
   json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
                {"design", {{"deck_string_min_radius", 0.0}}},
                {"sweep", {{"n", {2}}}}};
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
@@ -68,18 +69,19 @@ TEST_CASE("an unstable candidate is no design: infeasible, its note says why",
 
 TEST_CASE("an INCOMPLETE candidate (a dynamic run not done) is infeasible, its note says why",
           "[sweep]") {
-  // The engineering defaults at n = 1 with a dynamic-run budget below the walking load's
-  // 80 000 steps of 5 members: the design's dynamic check is not run, so its verdict is
-  // INCOMPLETE. The same candidate with the default budget is feasible: the budget alone
+  // The engineering defaults at n = 1, the walking load run nonlinearly, with a dynamic-run
+  // budget below its 80 667 steps of 5 members: the design's dynamic check is not run, so its
+  // verdict is INCOMPLETE. The same candidate with the default budget is feasible: the budget alone
   // decides. The sweep's own run-based constraints are off: this is the verified design's
   // verdict alone.
   json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
                {"sweep",
                 {{"n", {1}},
                  {"constraints",
                   {{"bar_capacity_during_motion", false}, {"no_slack_under_service", false}}}}}};
   const SweepSpec full = ParseSweepSpec(root);
-  root["loads"] = {{"dynamic_max_member_steps", 1000.0}};
+  root["loads"]["dynamic_max_member_steps"] = 1000.0;
   const SweepSpec starved = ParseSweepSpec(root);
   const std::vector<Candidate> grid = EnumerateCandidates(full.sweep);
   REQUIRE(grid.size() == 1);
@@ -101,6 +103,7 @@ TEST_CASE(
   // design.memory_limit_bytes 50 MB: the default bridge at n = 6 is estimated at 112 MB
   // (sizing/memory_estimate.h) and refused before any work; at n = 1 (21 MB) it is designed.
   json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
                {"design", {{"memory_limit_bytes", 5e7}}},
                {"sweep",
                 {{"n", {1, 6}},
@@ -126,6 +129,7 @@ TEST_CASE(
 TEST_CASE("grow_area prestrain keeps the deck strings at the allowed stress and costs mass",
           "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
                {"sweep", test::PaperSweep({{"n", {2}}, {"deck_prestrain", {1.0, 0.99, 0.9999}}})}};
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
@@ -167,7 +171,9 @@ TEST_CASE(
     "[sweep]") {
   // The paper's outer loop at n = 2: the minimum-mass design, its dynamic check the paper's
   // travelling load (f on each deck station for 0.25 s, eqs 50-51) by RK4.
-  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}})}};
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
+               {"sweep", test::PaperSweep({{"n", {2}}})}};
   root["sweep"]["constraints"]["max_dynamic_stress_ratio"] = 10.0;
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
@@ -209,6 +215,7 @@ TEST_CASE(
 TEST_CASE("a verified candidate reads its own dynamic check and a prestrained one is checked again",
           "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
                {"sweep", {{"n", {1}}, {"deck_prestrain", {1.0, 0.99}}}}};
   const SweepSpec spec = ParseSweepSpec(root);
   const std::vector<Candidate> grid = EnumerateCandidates(spec.sweep);
@@ -238,7 +245,9 @@ TEST_CASE("an unverified candidate whose dynamic run is not done is infeasible, 
           "[sweep]") {
   // The paper's n = 2 with a budget below its travelling load's run: the dynamic check leaves
   // the run undone, so the dynamic constraint cannot be shown and the candidate is infeasible.
-  json root = {{"bridge", {{"beta_deg", 10}}}, {"sweep", test::PaperSweep({{"n", {2}}})}};
+  json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
+               {"sweep", test::PaperSweep({{"n", {2}}})}};
   root["sweep"]["constraints"]["bar_capacity_during_motion"] = true;
   root = test::WithPaperSwitches(root);
   root["loads"]["dynamic_max_member_steps"] = 1000.0;
@@ -254,6 +263,7 @@ TEST_CASE("an unverified candidate whose dynamic run is not done is infeasible, 
 
 TEST_CASE("a class-k candidate runs the paper's travelling load in the dynamic check", "[sweep]") {
   json root = {{"bridge", {{"beta_deg", 10}}},
+               {"loads", {{"dynamic_method", "rk4"}}},
                {"sweep", test::PaperSweep({{"n", {2}}, {"p", {2}}})}};
   root["sweep"]["report"] = {{"dynamic_check", true}};
   const SweepSpec spec = ParseSweepSpec(test::WithPaperSwitches(root));
