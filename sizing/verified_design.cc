@@ -272,9 +272,10 @@ std::map<std::pair<int, int>, int> ClosestRows(const SizingProblem& full,
 }
 
 // The rows to pose next: of each member's (or deck node's) rows of one kind, the closest to
-// its limit: every taut string's, and every strength and deflection row's below a margin of
-// 1.01 (every member whose loads pull it toward its limit; above 1 is a force or deflection
-// the other way). A violated row is the closest of its member, so it is posed; the others of
+// its limit: every taut string's, and every strength and deflection row's below `margin`: 1.01
+// for a sizing (every member whose loads pull it toward its limit; above 1 is a force or
+// deflection the other way), less for the polish, which starts at a solution
+// (kPolishNearMargin). A violated row is the closest of its member, so it is posed; the others of
 // that member wait for a later round, if the solution violates them. One per member and kind,
 // not every station within 0.1 of the closest: at n = 5 that posed 3 000-7 600 of the 16 500
 // rows and SLSQP's dense subproblem took half a sizing's time. Two per member (within 0.02 of
@@ -285,14 +286,14 @@ std::map<std::pair<int, int>, int> ClosestRows(const SizingProblem& full,
 // first sizing at n = 8 started again from its start twice (7.5 s of its 12 s; with every
 // member posed, 5 s), and the 3D bridge at n = 1 grew to 1e5 times its mass, its prestress
 // lost in a first round that posed no taut row.
-std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g) {
+std::vector<char> NearLimits(const SizingProblem& full, const Eigen::VectorXd& g, double margin) {
   std::vector<char> near(full.rows().size(), 0);
   for (const auto& [key, r] : ClosestRows(full, g)) {
     // The taut strings' and the comfort rows are few, and each is the only one of its kind for its
     // member or mode.
     const bool always = key.first == SizingRow::kTaut || key.first == SizingRow::kReferenceTaut ||
                         key.first == SizingRow::kComfort;
-    near[r] = always || g[r] < 1.01;
+    near[r] = always || g[r] < margin;
   }
   return near;
 }
@@ -315,6 +316,8 @@ bool AtFloor(const SizingProblem& full, const Eigen::VectorXd& x, const SizingRo
 struct ActiveSet {
   std::vector<char> posed;
   Eigen::VectorXd multipliers;  // empty: none known
+  // Each member's closest row is posed where its margin is below this (NearLimits).
+  double near_margin = 1.01;
 };
 
 // Solves the sizing by active sets: each member's closest row at the start is posed
@@ -366,7 +369,7 @@ SolverOutcome SolveSizing(const Design& current, const SizingCorrections& correc
     full.Margins(x, g);
     full.Constraints(x, posed_g);
     bool added = false, violated = false, wandered = false;
-    const std::vector<char> near = NearLimits(full, g);
+    const std::vector<char> near = NearLimits(full, g, active.near_margin);
     std::vector<int> unposed_violations;
     for (int r = 0; r < rows; ++r) {
       const bool bad = violated_at(r);
@@ -829,6 +832,13 @@ SolverKind PolishSolver(SolverKind solver) {
 // otherwise the kept one stays and `kept.not_optimal` says why. What the polish found is added
 // to `record.optima`.
 constexpr int kPolishRounds = 3;
+// The polish starts at a solution, where a row far from its bound stays far: it poses each
+// member's closest row only within this margin (the rounds add any row it then violates). Ipopt's
+// iteration factorises a KKT system whose rows all read every variable, at a cost growing as the
+// rows squared: on the default at n = 6 the polish's programs had 371 rows at the sizing's margin
+// (1.01), 40 ms an iteration, and 213 at this one, 10 ms, for the same design, proved
+// (BENCHMARKS.md).
+constexpr double kPolishNearMargin = 0.1;
 
 void Polish(const Config& config, SolverKind solver, BestSizing& kept, Design& best,
             Resizing& record, ProgressReporter* progress) {
@@ -843,6 +853,7 @@ void Polish(const Config& config, SolverKind solver, BestSizing& kept, Design& b
     const SizingProblem problem(at.current, at.corrections);
     Eigen::VectorXd x = at.x;
     ActiveSet active;
+    active.near_margin = kPolishNearMargin;
     Design d = Size(config, at.current, at.corrections, polisher, problem, x, record.time_s,
                     progress, active, kPolishTolerance);
     if (!d.solver.success) {
