@@ -190,7 +190,7 @@ bool RunModal(const Design& d, const DynamicModel& model, const StaticModel& sta
   DynamicRun& record = run.record;
   record.done = true;
   record.dt = r.sample_dt_s;
-  record.duration = stations.duration_s;
+  record.duration = stations.crossing.DurationS();
   record.steps = r.samples;
   std::ostringstream os;
   os << "modal (" << r.modes << " modes to " << r.highest_mode_hz << " Hz)";

@@ -151,7 +151,8 @@ std::string FormModalBasis(const DynamicModel& model, const StationResponses& st
 
 // The modal force's corners: F is linear in t between knots (the load's centre at the first
 // support, at each station, at the second support), and at knot j its slope changes by
-// `slope_change[j]` (per mode). A spread load turns each corner over `spread_s` about it.
+// `slope_change[j]` (per mode). A spread load turns each corner over the crossing's spread
+// (Crossing::SpreadS) about it.
 struct ModalCorners {
   std::vector<double> time;                  // per knot [s]
   std::vector<Eigen::ArrayXd> slope_change;  // per knot, per mode [N/s per unit coordinate]
@@ -172,9 +173,9 @@ ModalCorners CornersOf(const StationResponses& stations, const ModalBasis& basis
     c.time.push_back(t);
     value.push_back(f);
   };
-  add_knot(stations.start_s, Eigen::ArrayXd::Zero(m));
+  add_knot(stations.crossing.TimeAtS(0.0), Eigen::ArrayXd::Zero(m));
   for (int k = 0; k < count; ++k) add_knot(stations.time_s[k], basis.station.col(k).array());
-  add_knot(stations.end_s, Eigen::ArrayXd::Zero(m));
+  add_knot(stations.crossing.TimeAtS(stations.crossing.span_m), Eigen::ArrayXd::Zero(m));
   Eigen::ArrayXd slope = Eigen::ArrayXd::Zero(m), next(m);
   for (size_t j = 0; j < c.time.size(); ++j) {
     if (j + 1 < c.time.size()) {
@@ -200,7 +201,7 @@ struct MarchMark {
 
 std::vector<MarchMark> MarksOf(const StationResponses& stations, const ModalCorners& corners) {
   std::vector<MarchMark> marks;
-  const double spread = stations.spread_s;
+  const double spread = stations.crossing.SpreadS();
   for (size_t j = 0; j < corners.time.size(); ++j) {
     const int knot = static_cast<int>(j);
     const double t = corners.time[j];
@@ -233,7 +234,7 @@ class QuasiStatic {
   void At(double t, Eigen::VectorXd& force, Eigen::VectorXd& deck,
           std::vector<Eigen::Vector3d>& reaction) {
     const int count = static_cast<int>(s_.time_s.size());
-    const double half = 0.5 * s_.spread_s;
+    const double spread = s_.crossing.SpreadS(), half = 0.5 * spread;
     force = s_.standing_forces;
     deck = s_.standing_deck_y;
     reaction.assign(s_.standing_reactions.begin(),
@@ -241,7 +242,7 @@ class QuasiStatic {
     while (first_ < count && t >= Knot(first_ + 1) + half) ++first_;
     for (int k = first_; k < count && Knot(k - 1) - half < t; ++k) {
       const double before = Knot(k - 1), at = Knot(k), after = Knot(k + 1);
-      const double w = LoadShape(t, before, after, at - before, after - at, s_.spread_s);
+      const double w = LoadShape(t, before, after, at - before, after - at, spread);
       if (w == 0) continue;
       force += w * force_change_[k];
       deck += w * deck_change_[k];
@@ -254,7 +255,8 @@ class QuasiStatic {
   // Station k's time; k = -1 and k = count: the supports'.
   double Knot(int k) const {
     const int count = static_cast<int>(s_.time_s.size());
-    return k < 0 ? s_.start_s : k >= count ? s_.end_s : s_.time_s[k];
+    if (k < 0) return s_.crossing.TimeAtS(0.0);
+    return k >= count ? s_.crossing.TimeAtS(s_.crossing.span_m) : s_.time_s[k];
   }
   const StationResponses& s_;
   const std::vector<Eigen::VectorXd>& force_change_;
@@ -334,7 +336,7 @@ void MarchModes(const DynamicModel& model, const StationResponses& stations,
   evaluate(0.0);
   double t = 0;
   for (const MarchMark& mark : marks) {
-    const double at = std::min(mark.t, stations.duration_s);
+    const double at = std::min(mark.t, stations.crossing.DurationS());
     march_to(t, at);
     t = std::max(t, at);
     if (mark.knot < 0) continue;
@@ -342,11 +344,12 @@ void MarchModes(const DynamicModel& model, const StationResponses& stations,
     if (mark.kind == MarchMark::Kind::kCorner) {
       v -= change / omega_sq;
     } else {
-      g += (mark.kind == MarchMark::Kind::kSpreadStart ? 1.0 : -1.0) / stations.spread_s * change;
+      g += (mark.kind == MarchMark::Kind::kSpreadStart ? 1.0 : -1.0) / stations.crossing.SpreadS() *
+           change;
       centre = -g / omega_4;
     }
   }
-  march_to(t, stations.duration_s);
+  march_to(t, stations.crossing.DurationS());
 }
 
 }  // namespace
@@ -431,10 +434,7 @@ StationResponses MovingLoadStations(const Design& d, const DynamicModel& model,
   out.standing_forces = forces(standing);
   out.standing_deck_y = deck_y(standing);
   out.standing_reactions = reactions(standing);
-  out.duration_s = crossing.DurationS();
-  out.start_s = crossing.TimeAtS(0.0);
-  out.end_s = crossing.TimeAtS(crossing.span_m);
-  out.spread_s = crossing.SpreadS();
+  out.crossing = crossing;
   Eigen::Matrix3Xd loads = model.loads;
   for (int k = 0; k < stations; ++k) {
     const std::vector<int>& nodes = d.actions.station_nodes[k];

@@ -58,10 +58,7 @@ struct StationResponses {
   std::vector<std::vector<int>> load_nodes;
   std::vector<Eigen::Matrix3Xd> load_forces;
   std::vector<double> time_s;  // per station: when the load's centre stands there [s]
-  double start_s = 0;          // when its centre is at the first support [s]
-  double end_s = 0;            // when its centre is at the second support [s]
-  double spread_s = 0;         // each station's share spread over this (Crossing::SpreadS) [s]
-  double duration_s = 0;       // the crossing's [s]
+  Crossing crossing;           // the load's crossing: its supports' times, spread and duration
 };
 
 // The static responses of `force_n` crossing the deck of `d` as `crossing` says (stations in

@@ -45,11 +45,22 @@ inline double LoadShapeIntegral(double t, double t_start, double t_end, double r
 // node it passes, its point load's shape spread over c / v. The spread rounds each corner of
 // the shape into a parabola (the force's slope changes over spread_s, not at once), so that
 // an undamped model does not ring at its highest modes at each corner (checks/modal_run.h).
+// The interval a timed load acts over [s]: [t_start, t_end), widened by half the spread either
+// side when it is spread.
+struct LoadInterval {
+  double first, last;
+};
+inline LoadInterval LoadActive(double t_start, double t_end, double spread_s) {
+  const double half = spread_s > 0 ? 0.5 * spread_s : 0.0;
+  return {t_start - half, t_end + half};
+}
+
 inline double LoadShape(double t, double t_start, double t_end, double rise_s, double fall_s,
                         double spread_s = 0) {
   if (spread_s > 0) {
+    const LoadInterval active = LoadActive(t_start, t_end, spread_s);
+    if (t <= active.first || t >= active.last) return 0.0;
     const double half = 0.5 * spread_s;
-    if (t <= t_start - half || t >= t_end + half) return 0.0;
     return (LoadShapeIntegral(t + half, t_start, t_end, rise_s, fall_s) -
             LoadShapeIntegral(t - half, t_start, t_end, rise_s, fall_s)) /
            spread_s;

@@ -119,11 +119,10 @@ void RunMonitor::Accept(long step, double t_old, double t, const double* y, doub
   // the middle of that part).
   const double work = load_dot_x - loads_dot_x0_;
   for (TimedLoadState& l : timed_) {
-    // A spread load acts from half its spread before t_start to half after t_end.
-    const double first = l.t_start - 0.5 * l.spread_s, last = l.t_end + 0.5 * l.spread_s;
-    const double overlap = std::min(t, last) - std::max(t_old, first);
+    const LoadInterval active = LoadActive(l.t_start, l.t_end, l.spread_s);
+    const double overlap = std::min(t, active.last) - std::max(t_old, active.first);
     if (overlap > 0) {
-      const double mid = std::max(t_old, first) + 0.5 * overlap;
+      const double mid = std::max(t_old, active.first) + 0.5 * overlap;
       const double shape = LoadShape(mid, l.t_start, l.t_end, l.rise_s, l.fall_s, l.spread_s);
       double fdx = 0;
       for (int d = 0; d < dim_; ++d) fdx += l.force[d] * (y[l.o + d] - l.last[d]);
