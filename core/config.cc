@@ -95,6 +95,15 @@ void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
   }
 }
 
+void CheckDeckForCases(const DesignConfig& d, const LoadsConfig& l) {
+  if (d.deck_section == DeckSection::kGirders &&
+      l.cases == std::vector<LoadFamily>{LoadFamily::kPaper}) {
+    throw ConfigError("design.deck_section", "\"girders\"",
+                      "must be \"plate\" with loads.cases [\"paper\"]: the paper's deck is eq "
+                      "7's plate, and its design keeps it");
+  }
+}
+
 void CheckCasesForBridge(const BridgeConfig& b, const LoadsConfig& l) {
   // The temperature only accompanies: it leaves no case of its own.
   const auto wind = [](LoadFamily c) {
@@ -136,6 +145,7 @@ void ApplyPaperSwitches(Config& c) {
   c.design.yield_safety_factor = 10.0;
   c.design.buckling_safety_factor = 1.0;
   c.design.bar_resistance = BarResistanceRule::kEuler;
+  c.design.deck_section = DeckSection::kPlate;
   c.loads.cases = {LoadFamily::kPaper};
   if (c.dynamics) {
     c.dynamics->deck_inertia = false;
@@ -189,6 +199,7 @@ Config ParseConfig(const nlohmann::json& root) {
     c.loads = ParseSection<LoadsConfig>(top.Section("loads"), CheckLoadsRules);
     CheckCasesForBridge(c.bridge, c.loads);
     CheckAngleForCases(c.bridge, c.loads);
+    CheckDeckForCases(c.design, c.loads);
     c.comfort = ParseSection<ComfortConfig>(top.Section("comfort"));
     c.supports = ParseSection<SupportsConfig>(top.Section("supports"));
   }
@@ -249,6 +260,7 @@ void Validate(const Config& c) {
     CheckLoadsRules(c.loads);
     CheckCasesForBridge(c.bridge, c.loads);
     CheckAngleForCases(c.bridge, c.loads);
+    CheckDeckForCases(c.design, c.loads);
     ValidateFields(c.comfort, kComfortSection.name);
     ValidateFields(c.supports, kSupportsSection.name);
   }

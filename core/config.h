@@ -54,7 +54,10 @@ struct DesignConfig {
   // paper's A >= 2 l sqrt(SF C / (pi E)) with SF = buckling_safety_factor.
   BarResistanceRule bar_resistance = BarResistanceRule::kColumnCurve;
   double imperfection_factor = 0.49;  // alpha of the column curve (curve c: solid sections)
-  int max_sizings = 25;               // the verified sizing's designs at most (outer iterations)
+  // What carries the deck between two stations: "plate", the paper's solid plate of the deck's
+  // width; "girders", two steel I-girders under the deck's edges (design/deck_beams.h).
+  DeckSection deck_section = DeckSection::kPlate;
+  int max_sizings = 25;  // the verified sizing's designs at most (outer iterations)
   // The static utilisation above which the verified sizing does not run the dynamic runs on
   // one of its own designs (it fails whatever they find); the design it delivers runs them.
   double dynamic_screen = 1.1;

@@ -36,7 +36,8 @@ inline const SectionInfo kDesignSection{
     "design", "minimum-mass problem and sizing",
     "`beta_range_deg` has two angles, the first below the second; `bridge.beta_deg` `\"auto\"` "
     "needs a "
-    "verified design, so not with `loads.cases` `[\"paper\"]` (the paper's angle is fixed)."};
+    "verified design, so not with `loads.cases` `[\"paper\"]` (the paper's angle is fixed); "
+    "`deck_section` `\"girders\"` neither (the paper's deck is eq 7's plate)."};
 inline const SectionInfo kLoadsSection{
     "loads", "actions and their combinations",
     "`cases` lists no name twice; `\"paper\"` stands alone (the paper's one case replaces the "
@@ -314,6 +315,22 @@ void DescribeFields(D& d, V& v) requires std::is_same_v<std::remove_const_t<D>, 
               "program prices "
               "bars by Euler and the bars are then sized by this rule"},
       d.bar_resistance, kBarResistanceNames);
+  EnumChoice(v,
+             KeyInfo{"deck_section", "–",
+                     "what carries the deck between two deck stations (a section of length "
+                     "l = L/2^n), simply supported on them, sized to the lightest that passes "
+                     "its bending (ultimate cases) and its sag (`loads.deck_sag_limit`). "
+                     "`\"plate\"`: the paper's solid steel plate of the deck's width (eqs 6-7); "
+                     "its weight grows as l^3/4 or faster, so sections longer than a few metres "
+                     "carry a plate no footbridge has. `\"girders\"`: two steel I-girders under "
+                     "the deck's edges, each of a rolled I-section's proportions (A = 10.0 cm² "
+                     "(h / 100 mm)^1.53 within 3 % and I = 0.17·A·h² within 4.1 % of the IPE "
+                     "100-600 series), "
+                     "sized by their depth h (at least 80 mm, IPE 80's, the smallest rolled), "
+                     "braced by the decking, which is part of "
+                     "`loads.superimposed_dead_n_per_m`; in plan the pair bends about the deck's "
+                     "centre line. The paper's switches keep eq 7's plate"},
+             d.deck_section, kDeckSectionNames);
   v.Number(KeyInfo{"imperfection_factor", "–",
                    "alpha of the column curve: 0.49 (curve c, solid sections), 0.34 (b), 0.21 (a), "
                    "0.76 (d)"},

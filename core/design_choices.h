@@ -15,6 +15,11 @@ enum class BarResistanceRule { kColumnCurve, kEuler };
 inline constexpr std::array<Named<BarResistanceRule>, 2> kBarResistanceNames{
     {{BarResistanceRule::kColumnCurve, "column_curve"}, {BarResistanceRule::kEuler, "euler"}}};
 
+// design.deck_section: see DesignConfig::deck_section.
+enum class DeckSection { kPlate, kGirders };
+inline constexpr std::array<Named<DeckSection>, 2> kDeckSectionNames{
+    {{DeckSection::kPlate, "plate"}, {DeckSection::kGirders, "girders"}}};
+
 // loads.dynamic_method: see LoadsConfig::dynamic_method.
 enum class DynamicMethod { kModal, kRk4 };
 inline constexpr std::array<Named<DynamicMethod>, 2> kDynamicMethodNames{
@@ -80,6 +85,7 @@ inline constexpr std::array<Named<LoadFamily>, 7> kLoadFamilyNames{
      {LoadFamily::kTemperature, "temperature"}}};
 
 inline const char* NameOf(BarResistanceRule k) { return NameIn(kBarResistanceNames, k); }
+inline const char* NameOf(DeckSection k) { return NameIn(kDeckSectionNames, k); }
 inline const char* NameOf(DynamicMethod k) { return NameIn(kDynamicMethodNames, k); }
 inline const char* NameOf(TrafficClass k) { return NameIn(kTrafficClassNames, k); }
 inline const char* NameOf(ComfortLevel k) { return NameIn(kComfortLevelNames, k); }

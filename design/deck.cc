@@ -58,6 +58,25 @@ Deck DeckOfThickness(const BridgeConfig& b, const Material& m, const DesignConfi
   return deck;
 }
 
+double GirderArea(double depth_m) {
+  return kGirderAreaAt100mm * std::pow(depth_m / 0.1, kGirderAreaExponent);
+}
+
+double GirderInertia(double depth_m) {
+  return kGirderInertiaRatio * GirderArea(depth_m) * depth_m * depth_m;
+}
+
+Deck DeckOfGirders(const BridgeConfig& b, const Material& m, const DesignConfig& d,
+                   double depth_m) {
+  Deck deck;
+  deck.section_length = b.span / std::ldexp(1.0, b.n);
+  deck.girder_depth = depth_m;
+  deck.section_mass = 2.0 * m.density * GirderArea(depth_m) * deck.section_length;
+  deck.thickness = deck.section_mass / (m.density * b.deck_width * deck.section_length);
+  FillLoads(deck, b, m, d);
+  return deck;
+}
+
 void CheckComputable(const Deck& deck, const BridgeConfig& b, const Material& m,
                      const DesignConfig& d) {
   const std::pair<const char*, double> derived[] = {

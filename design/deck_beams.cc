@@ -25,13 +25,35 @@ CheckStatus DeckBeamCheck::Status() const {
                                                              : CheckStatus::kPassed;
 }
 
+namespace {
+
+// The elastic section of one deck section across the deck's whole width.
+struct DeckSectionProperties {
+  double vertical_modulus;  // [m^3]
+  double lateral_modulus;   // [m^3], bending in plan under the wind
+  double inertia;           // vertical [m^4]
+};
+
+DeckSectionProperties PropertiesOf(const Deck& deck, double width) {
+  if (deck.girder_depth > 0) {
+    // Two girders: vertically each bends alone (modulus 2 I / h); in plan the decking ties them
+    // into one section about the deck's centre line, each girder's area at w / 2 from it (their
+    // own lateral inertia neglected: small beside it).
+    const double h = deck.girder_depth, inertia = 2.0 * GirderInertia(h);
+    return {2.0 * inertia / h, GirderArea(h) * width, inertia};
+  }
+  const double t = deck.thickness, w = width;
+  return {w * t * t / 6.0, t * w * w / 6.0, w * t * t * t / 12.0};
+}
+
+}  // namespace
+
 DeckBeamCheck CheckDeckBeams(const Config& config, const Deck& deck,
                              const std::vector<LoadCase>& cases) {
-  const double l = deck.section_length, w = config.bridge.deck_width, t = deck.thickness;
+  const double l = deck.section_length;
   const double E = config.material.youngs_modulus;
-  const double vertical_modulus = w * t * t / 6.0,
-               lateral_modulus = t * w * w / 6.0;  // elastic, [m^3]
-  const double inertia = w * t * t * t / 12.0;     // [m^4]
+  const auto [vertical_modulus, lateral_modulus, inertia] =
+      PropertiesOf(deck, config.bridge.deck_width);
   DeckBeamCheck out;
   out.stress_rd_pa = config.material.yield_stress / config.design.yield_safety_factor;
   out.sag_limit_m = l / config.loads.deck_sag_limit;
@@ -63,7 +85,8 @@ DeckBeamCheck CheckDeckBeams(const Config& config, const Deck& deck,
 namespace {
 
 // The larger of the stress and sag ratios: both fall as the plate thickens (the weight grows
-// with t, the section modulus with t^2, the inertia with t^3).
+// with t, the section modulus with t^2, the inertia with t^3) or the girders deepen (the
+// weight as A, the modulus as A h, the inertia as A h^2).
 double WorstRatio(const DeckBeamCheck& c) { return std::max(c.utilisation, c.SagRatio()); }
 
 }  // namespace
@@ -74,29 +97,41 @@ Deck SizeDeckBeams(const Config& config, const Deck& start) {
   const Material& m = config.material;
   const DesignConfig& d = config.design;
   std::vector<std::string> notes;
-  Deck deck = start;
+  // The one size that sizes the section: the plate's thickness, or the girders' depth.
+  const bool girders = d.deck_section == DeckSection::kGirders;
+  const auto deck_of = [&](double size) {
+    return girders ? DeckOfGirders(b, m, d, size) : DeckOfThickness(b, m, d, size);
+  };
+  const double size0 = girders ? start.section_length / 20.0 : start.thickness;
+  Deck deck = girders ? deck_of(size0) : start;
   // The paper's travelling load f = F_tot / 2^n carries the beams' own weight: the cases
-  // follow the deck, so repeat until the thickness holds still (a few rounds: f changes by
-  // the beams' share of F_tot).
+  // follow the deck, so repeat until the size holds still (a few rounds: f changes by the
+  // beams' share of F_tot).
   for (int round = 0; round < 50; ++round) {
     const std::vector<LoadCase> cases = MakeLoadCases(config, deck, notes);
-    auto ratio = [&](double t) {
-      return WorstRatio(CheckDeckBeams(config, DeckOfThickness(b, m, d, t), cases));
+    auto ratio = [&](double size) {
+      return WorstRatio(CheckDeckBeams(config, deck_of(size), cases));
     };
-    if (!(ratio(start.thickness * 1e3) > 0)) return start;  // no case loads the beams: eq 7 stays
-    // Bracket the thinnest passing plate from eq 7's, then bisect in log t to the last bit.
-    double lo = start.thickness, hi = start.thickness;
-    while (ratio(lo) <= 1.0 && lo > 1e-12 * start.thickness) lo *= 0.5;
+    if (!(ratio(size0 * 1e3) > 0)) return start;  // no case loads the beams: eq 7 stays
+    // Bracket the smallest passing size from the start's (eq 7's plate, girders l / 20 deep),
+    // then bisect in log size to the last bit: both ratios fall as the size grows.
+    double lo = size0, hi = size0;
+    while (ratio(lo) <= 1.0 && lo > 1e-12 * size0) lo *= 0.5;
     while (ratio(hi) > 1.0) hi *= 2.0;
     for (int k = 0; k < 200 && hi - lo > 4e-16 * hi; ++k) {
       const double mid = std::sqrt(lo * hi);
       (ratio(mid) > 1.0 ? lo : hi) = mid;
     }
-    const bool settled = std::abs(hi - deck.thickness) <= 1e-14 * hi;
-    deck = DeckOfThickness(b, m, d, hi);
+    const bool floored = girders && hi < kMinGirderDepth;
+    if (floored) hi = kMinGirderDepth;
+    const double last = girders ? deck.girder_depth : deck.thickness;
+    const bool settled = std::abs(hi - last) <= 1e-14 * hi;
+    deck = deck_of(hi);
     const DeckBeamCheck check = CheckDeckBeams(config, deck, cases);
-    deck.sized_by = check.utilisation >= check.SagRatio() ? "bending (" + check.governing_case + ")"
-                                                          : "sag (" + check.sag_case + ")";
+    deck.sized_by = floored ? "the smallest rolled girder (IPE 80)"
+                    : check.utilisation >= check.SagRatio()
+                        ? "bending (" + check.governing_case + ")"
+                        : "sag (" + check.sag_case + ")";
     if (settled) break;
   }
   return deck;

@@ -126,7 +126,9 @@ void RequireDeck(const json& file, const Deck& deck) {
       {"thickness", deck.thickness},       {"section_length", deck.section_length},
       {"section_mass", deck.section_mass}, {"beams_mass", deck.beams_mass},
       {"total_load", deck.total_load},     {"node_load", deck.node_load}};
-  for (const auto& [key, value] : derived) {
+  std::vector<std::pair<const char*, double>> checked(std::begin(derived), std::end(derived));
+  if (deck.girder_depth > 0) checked.emplace_back("girder_depth", deck.girder_depth);
+  for (const auto& [key, value] : checked) {
     const double given = Number(j, key, "deck");
     if (std::abs(given - value) <= kDerivedTolerance * std::abs(value)) continue;
     throw ConfigError(

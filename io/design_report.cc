@@ -44,6 +44,7 @@ json Units() {
        {{"section_length", "m"},
         {"section_mass", "kg"},
         {"thickness", "m"},
+        {"girder_depth", "m"},
         {"node_load", "N"},
         {"total_load", "N"},
         {"beams_mass", "kg"},
@@ -694,6 +695,8 @@ json DeckJson(const Design& d, const DeckBeamCheck& beams) {
   return {{"section_length", d.deck.section_length},
           {"section_mass", d.deck.section_mass},
           {"thickness", d.deck.thickness},
+          {"section", NameOf(d.config.design.deck_section)},
+          {"girder_depth", d.deck.girder_depth > 0 ? json(d.deck.girder_depth) : json()},
           {"node_load", d.deck.node_load},
           {"total_load", d.deck.total_load},
           {"beams_mass", d.deck.beams_mass},
@@ -790,10 +793,15 @@ void AppendSummaryHead(std::string& out, const Design& d) {
   line(Format("topology: %d nodes (%d fixed), %d bars, %d strings (%d deck), class %d",
               s.num_nodes(), s.num_nodes() - s.num_free_nodes(), s.num_bars(), s.num_strings(),
               CountDeckStrings(d), s.TensegrityClass()));
+  const std::string section =
+      d.deck.girder_depth > 0
+          ? Format("two girders %.4g mm deep (rolled-I proportions, %.4g cm² each)",
+                   d.deck.girder_depth * 1e3, GirderArea(d.deck.girder_depth) * 1e4)
+          : Format("thickness %.4g mm", d.deck.thickness * 1e3);
   line(
-      Format("deck: section l = %.4g m, m_d = %.5g kg, thickness %.4g mm; f = %.6g N per deck "
-             "node, F_tot = %.6g N",
-             d.deck.section_length, d.deck.section_mass, d.deck.thickness * 1e3, d.deck.node_load,
+      Format("deck: section l = %.4g m, m_d = %.5g kg, %s; f = %.6g N per deck node, F_tot = "
+             "%.6g N",
+             d.deck.section_length, d.deck.section_mass, section.c_str(), d.deck.node_load,
              d.deck.total_load));
 }
 
@@ -801,10 +809,11 @@ void AppendSummaryHead(std::string& out, const Design& d) {
 void AppendSummaryDesign(std::string& out, const Design& d, const DeckBeamCheck& beams) {
   const auto line = LineAppender(out);
   line(
-      Format("deck beams: thickness set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / "
+      Format("deck beams: %s set by %s; bending utilisation %.4f (%s), sag %.4g mm of l_d / "
              "%g = %.4g mm (%s)",
-             d.deck.sized_by.c_str(), beams.utilisation, beams.governing_case.c_str(),
-             beams.sag_m * 1e3, d.config.loads.deck_sag_limit, beams.sag_limit_m * 1e3,
+             d.deck.girder_depth > 0 ? "girders' depth" : "thickness", d.deck.sized_by.c_str(),
+             beams.utilisation, beams.governing_case.c_str(), beams.sag_m * 1e3,
+             d.config.loads.deck_sag_limit, beams.sag_limit_m * 1e3,
              beams.sag_case.empty() ? "no serviceability case" : beams.sag_case.c_str()));
   if (d.solver_form == kReadFromFile) {
     line(Format("design: read from its file, checked as written; equilibrium residual %.2e N",

@@ -129,6 +129,26 @@ TEST_CASE("a string over 200 mm in diameter warns naming the member") {
   CHECK(PlausibilityWarnings(bar).empty());
 }
 
+TEST_CASE("a solid plate deck over 40 mm warns naming the key that gives girders") {
+  const char* config = R"({"bridge": {"n": 1, "deck_width": 2}})";
+  Design d = Sketch(config, 0.02, 1000);
+  d.deck.section_length = 6;
+  d.deck.thickness = 0.04;
+  d.deck.section_mass = 7850 * 2 * 6 * 0.04;
+  d.deck.sized_by = "sag (sls_payload_full)";
+  CHECK(PlausibilityWarnings(d).empty());
+  d.deck.thickness = 0.0401;
+  d.deck.section_mass = 7850 * 2 * 6 * 0.0401;
+  const std::vector<std::string> w = PlausibilityWarnings(d);
+  REQUIRE(w.size() == 1);
+  CHECK_THAT(w[0], Catch::Contains("solid plate 40.1 mm thick") && Catch::Contains("l = 6 m") &&
+                       Catch::Contains("315 kg/m^2") &&
+                       Catch::Contains("design.deck_section \"girders\""));
+  // Girders of that mass are what the warning asks for.
+  d.deck.girder_depth = 0.3;
+  CHECK(PlausibilityWarnings(d).empty());
+}
+
 TEST_CASE("a bridge over 3 t per metre of span warns naming the mass and the span") {
   // The default 12 m span: 3 t/m is 36 000 kg.
   const char* config = R"({"bridge": {"n": 3}})";
