@@ -230,14 +230,14 @@ std::vector<std::string> PlausibilityWarnings(const Design& d) {
           "bridge.payload, bridge.deck_width and material.density in SI units?");
     }
     CheckAbutmentThrust(d, out);
-    if (d.deck.girder_depth == 0 && t > kMaxPlausiblePlateDeck) {
-      const double per_area =
-          d.deck.section_mass / (d.config.bridge.deck_width * d.deck.section_length);
+    const double per_area =
+        d.deck.section_mass / (d.config.bridge.deck_width * d.deck.section_length);
+    if (d.deck.girder_depth == 0 && per_area > kMaxPlausiblePlateDeckMass) {
       out.push_back(
           "the deck is a solid plate " +
           Format("%.4g mm thick over its sections of l = %.4g m", t * 1e3, d.deck.section_length) +
           Format(" (%.0f kg/m^2, ", per_area) + "set by " + d.deck.sized_by + ")" +
-          Format(", thicker than %g mm", kMaxPlausiblePlateDeck * 1e3) +
+          Format(", heavier than %g kg/m^2 (40 mm of steel)", kMaxPlausiblePlateDeckMass) +
           ": a deck of such sections is carried by girders (design.deck_section "
           "\"girders\")");
     }

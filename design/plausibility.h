@@ -44,10 +44,11 @@ inline constexpr double kMaxPlausibleStringDiameter = 0.2;  // [m]
 // 30-100 m weighs about 1-2 t/m, a footbridge a few hundred kg/m; above 3 t/m the loads or the
 // materials are more likely wrong than the bridge heavy.
 inline constexpr double kMaxPlausibleMassPerSpan = 3000;  // [kg/m]
-// A solid plate deck thicker than this (design.deck_section "plate", an engineering design):
-// steel deck plates are 10-20 mm on stiffeners or girders; a 40 mm plate weighs 314 kg/m^2, as
-// much as a crowd, and thickens as its section lengthens.
-inline constexpr double kMaxPlausiblePlateDeck = 0.04;  // [m]
+// A solid plate deck heavier than this per square metre (design.deck_section "plate", an
+// engineering design): 40 mm of steel. Steel deck plates are 10-20 mm on stiffeners or girders;
+// at 314 kg/m^2 the plate weighs about as much as the crowd it carries (4 kPa), and it thickens
+// as its section lengthens.
+inline constexpr double kMaxPlausiblePlateDeckMass = 314;  // [kg/m^2]
 // An abutment's horizontal reaction over the load path's own thrust W L / (8 d): a truss or
 // cable of depth d that carries a uniform load W over the span L pushes or pulls its supports
 // with the simply supported moment W L / 8 over its lever arm d, and the same load concentrated
