@@ -191,6 +191,27 @@ TEST_CASE("deck girders: utilisation and sag against the hand calculation, sized
   }
 }
 
+TEST_CASE("deck girders: a design file reads back with its girders, and another depth is refused",
+          "[design][deck]") {
+  Config c;
+  c.bridge.payload = 72000;  // 4 kPa on the 1.5 m deck: girders deeper than IPE 80
+  c.design.deck_section = DeckSection::kGirders;
+  const Design designed = RunDesign(c);
+  REQUIRE(designed.deck.girder_depth > kMinGirderDepth);
+  std::ostringstream os;
+  WriteDesignJson(designed, os);
+  nlohmann::json file = nlohmann::json::parse(os.str());
+  CHECK(file["deck"]["section"] == "girders");
+  CHECK(ReadDesign(file).deck.girder_depth == designed.deck.girder_depth);
+  file["deck"]["girder_depth"] = 1.1 * designed.deck.girder_depth;
+  try {
+    ReadDesign(file);
+    FAIL("a deeper girder was read");
+  } catch (const ConfigError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("deck.girder_depth") && Catch::Contains("tbridge design"));
+  }
+}
+
 TEST_CASE("deck girders: no shallower than the smallest rolled girder", "[design][deck]") {
   // Sections of 0.75 m under the default's 12 kN need far less than IPE 80: the girders stay
   // 80 mm deep, and pass with room.
