@@ -110,6 +110,24 @@ void ChooseAngle(AngleSearch& record) {
   }
 }
 
+// Where the trial at the angle chosen, started from another angle's sizes, and the design kept
+// there, started fresh, are not equal in mass, the record says so: the sizing's fixed point
+// depends on its start, and the search's masses either side are its trials'.
+void NoteTrialApart(AngleSearch& record, const Design& kept) {
+  for (const AngleSearch::Trial& t : record.trials) {
+    if (t.beta_deg != record.chosen_deg) continue;
+    const double kept_kg = kept.mass.structure;
+    if (std::abs(t.mass_kg - kept_kg) <= kEqualMass * kept_kg) return;
+    const std::string& n = record.note;
+    if (!n.empty() && n.compare(n.size() - std::min<size_t>(n.size(), 2), 2, "; ") != 0)
+      record.note += "; ";
+    record.note += Format("the trial at the angle chosen weighed %.6g kg, ", t.mass_kg) +
+                   "this design of it (started fresh, as with the angle given) " +
+                   Format("%.6g kg: ", kept_kg) + "the sizing's fixed point depends on its start";
+    return;
+  }
+}
+
 }  // namespace
 
 Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
@@ -193,6 +211,7 @@ Design DesignAtBestAngle(const Config& config, ProgressReporter* progress) {
     progress->SetOuterPrefix(Format("angle chosen, %g deg: ", record.chosen_deg));
   Design out = DesignAndVerify(chosen, progress);
   if (progress != nullptr) progress->SetOuterPrefix("");
+  NoteTrialApart(record, out);
   out.config.bridge.beta_auto = true;
   out.angle = std::move(record);
   return out;
