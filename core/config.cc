@@ -86,8 +86,13 @@ void CheckDesignRules(const DesignConfig& d) {
   }
 }
 
+// loads.cases is the paper's one case: its switches hold (KeepsPaperSwitches).
+bool PaperCasesOnly(const LoadsConfig& l) {
+  return l.cases == std::vector<LoadFamily>{LoadFamily::kPaper};
+}
+
 void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
-  if (b.beta_auto && l.cases == std::vector<LoadFamily>{LoadFamily::kPaper}) {
+  if (b.beta_auto && PaperCasesOnly(l)) {
     throw ConfigError(
         "bridge.beta_deg", "\"auto\"",
         "must be a number with loads.cases [\"paper\"]: the paper's design is checked, not "
@@ -96,8 +101,7 @@ void CheckAngleForCases(const BridgeConfig& b, const LoadsConfig& l) {
 }
 
 void CheckDeckForCases(const DesignConfig& d, const LoadsConfig& l) {
-  if (d.deck_section == DeckSection::kGirders &&
-      l.cases == std::vector<LoadFamily>{LoadFamily::kPaper}) {
+  if (d.deck_section == DeckSection::kGirders && PaperCasesOnly(l)) {
     throw ConfigError("design.deck_section", "\"girders\"",
                       "must be \"plate\" with loads.cases [\"paper\"]: the paper's deck is eq "
                       "7's plate, and its design keeps it");
@@ -153,9 +157,7 @@ void ApplyPaperSwitches(Config& c) {
   }
 }
 
-bool KeepsPaperSwitches(const Config& c) {
-  return c.loads.cases == std::vector<LoadFamily>{LoadFamily::kPaper};
-}
+bool KeepsPaperSwitches(const Config& c) { return PaperCasesOnly(c.loads); }
 
 Config ParseConfig(const nlohmann::json& root) {
   JsonSection top(root, "");
